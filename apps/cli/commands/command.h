@@ -1,0 +1,35 @@
+// The CLI's subcommands. Each registers its options on the app and runs when selected; run
+// functions return the process exit code.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+
+#include "luxel/core/error.h"
+#include "luxel/gi2d/medium2d.h"
+#include "luxel/gi2d/scene2d.h"
+
+namespace luxel::cli {
+
+using Runner = std::function<int()>;
+
+Runner addRenderCommand(CLI::App& app);
+Runner addInfoCommand(CLI::App& app);
+Runner addCompareCommand(CLI::App& app);
+Runner addRasterCommand(CLI::App& app);
+
+// Prints "luxel: error: <message>" to stderr and returns the exit code for bad input.
+int reportError(const Error& error);
+
+// "512x384" -> (512, 384); an empty string gives (0, 0) = the scene's own size.
+Result<std::pair<int, int>> parseSize(const std::string& text);
+
+// Loads a scene and rasterises it at `size` (empty = the scene's canvas).
+Result<gi2d::Medium2D> loadMedium(const std::string& scenePath, const std::string& size,
+                                  int supersample, gi2d::Scene2D* sceneOut = nullptr);
+
+inline constexpr int kExitBadInput = 1;
+
+}  // namespace luxel::cli

@@ -1,0 +1,42 @@
+// Helpers shared by the CLI subcommands.
+#include <cstdio>
+
+#include "commands/command.h"
+#include "luxel/gi2d/rasterize.h"
+#include "luxel/gi2d/scene2d_json.h"
+
+namespace luxel::cli {
+
+int reportError(const Error& error) {
+    std::fprintf(stderr, "luxel: error: %s\n", error.message().c_str());
+    return kExitBadInput;
+}
+
+Result<std::pair<int, int>> parseSize(const std::string& text) {
+    if (text.empty()) return std::pair{0, 0};
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X')) {
+        return Error("--size '" + text + "' is not WIDTHxHEIGHT (e.g. 512x512)");
+    }
+    if (Status s = gi2d::validateCanvasSize(w, h); !s) return Error("--size " + s.error().message());
+    return std::pair{w, h};
+}
+
+Result<gi2d::Medium2D> loadMedium(const std::string& scenePath, const std::string& size,
+                                  int supersample, gi2d::Scene2D* sceneOut) {
+    auto dims = parseSize(size);
+    if (!dims) return dims.error();
+    auto scene = gi2d::loadScene2D(scenePath);
+    if (!scene) return scene.error();
+    gi2d::RasterOptions raster;
+    raster.width = dims->first;
+    raster.height = dims->second;
+    raster.supersample = supersample;
+    auto medium = gi2d::rasterize(*scene, raster);
+    if (!medium) return Error(scenePath + ": " + medium.error().message());
+    if (sceneOut) *sceneOut = std::move(*scene);
+    return medium;
+}
+
+}  // namespace luxel::cli

@@ -1,0 +1,75 @@
+// `luxel compare`: error metrics between a test image and a reference, optional diff picture.
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "commands/command.h"
+#include "luxel/core/image_io.h"
+#include "luxel/core/metrics.h"
+
+namespace luxel::cli {
+namespace {
+
+struct CompareArgs {
+    std::string test, reference, diff, mask;
+    float diffScale = 0.0f;
+};
+
+// |a - b| averaged over channels, scaled so that `scale` maps to white (0 = the max error).
+Image diffImage(const Image& a, const Image& b, double scale) {
+    Image out(a.width(), a.height(), 3);
+    for (int y = 0; y < a.height(); ++y) {
+        for (int x = 0; x < a.width(); ++x) {
+            double d = 0;
+            for (int c = 0; c < a.channels(); ++c) d += std::abs(a.at(x, y, c) - b.at(x, y, c));
+            const float v = static_cast<float>(d / a.channels() / scale);
+            out.setRgb(x, y, Rgb(v));
+        }
+    }
+    return out;
+}
+
+int runCompare(const CompareArgs& args) {
+    auto a = readImage(args.test);
+    if (!a) return reportError(a.error());
+    auto b = readImage(args.reference);
+    if (!b) return reportError(b.error());
+    Image mask;
+    if (!args.mask.empty()) {
+        auto m = readImage(args.mask);
+        if (!m) return reportError(m.error());
+        mask = std::move(*m);
+    }
+    auto errors = compareImages(*a, *b, args.mask.empty() ? nullptr : &mask);
+    if (!errors) return reportError(errors.error());
+    std::printf("pixels        %zu\n", errors->countedPixels);
+    std::printf("RMSE          %.6g  (%.3f%% of reference mean %.6g)\n", errors->rmse,
+                errors->meanReference > 0 ? 100.0 * errors->rmse / errors->meanReference : 0.0,
+                errors->meanReference);
+    std::printf("relative L1   %.6g\n", errors->relativeL1);
+    std::printf("max abs error %.6g\n", errors->maxAbsError);
+    if (!args.diff.empty()) {
+        const double scale = args.diffScale > 0 ? args.diffScale
+                             : errors->maxAbsError > 0 ? errors->maxAbsError
+                                                       : 1.0;
+        if (Status s = writePng(args.diff, diffImage(*a, *b, scale), PngEncoding::Linear); !s) {
+            return reportError(s.error());
+        }
+        std::printf("wrote %s (white = %.6g)\n", args.diff.c_str(), scale);
+    }
+    return 0;
+}
+
+}  // namespace
+
+Runner addCompareCommand(CLI::App& app) {
+    auto args = std::make_shared<CompareArgs>();
+    app.add_option("test", args->test, "image to judge (.exr or .png)")->required();
+    app.add_option("reference", args->reference, "reference image")->required();
+    app.add_option("--diff", args->diff, "write |test - reference| as a PNG");
+    app.add_option("--diff-scale", args->diffScale, "error shown as white (default: max error)");
+    app.add_option("--mask", args->mask, "only pixels where this image is > 0.5 count");
+    return [args] { return runCompare(*args); };
+}
+
+}  // namespace luxel::cli

@@ -1,0 +1,71 @@
+// `luxel info`: what a scene holds and the memory rendering it needs.
+#include <cstdio>
+#include <memory>
+
+#include "commands/command.h"
+#include "luxel/core/memory.h"
+#include "luxel/gi2d/ray_march.h"
+#include "luxel/gi2d/reference_solver.h"
+#include "luxel/gi2d/scene2d_json.h"
+
+namespace luxel::cli {
+namespace {
+
+struct InfoArgs {
+    std::string scene, size;
+    int rays = gi2d::ReferenceOptions{}.rays;
+};
+
+void printRgb(const char* label, Rgb v) {
+    std::printf("  %-18s (%g, %g, %g)\n", label, v.r, v.g, v.b);
+}
+
+int runInfo(const InfoArgs& args) {
+    auto dims = parseSize(args.size);
+    if (!dims) return reportError(dims.error());
+    auto scene = gi2d::loadScene2D(args.scene);
+    if (!scene) return reportError(scene.error());
+    const int w = dims->first > 0 ? dims->first : scene->width;
+    const int h = dims->first > 0 ? dims->second : scene->height;
+
+    std::printf("%s\n", args.scene.c_str());
+    std::printf("  canvas             %dx%d\n", scene->width, scene->height);
+    if (w != scene->width || h != scene->height) std::printf("  render size        %dx%d\n", w, h);
+    printRgb("background E", scene->background.emission);
+    printRgb("background sigma", scene->background.absorption);
+    printRgb("boundary radiance", scene->boundaryRadiance);
+    std::printf("  shapes             %zu\n", scene->shapes.size());
+    for (std::size_t i = 0; i < scene->shapes.size(); ++i) {
+        const gi2d::Shape& s = scene->shapes[i];
+        const Rgb e = s.material.scaledEmission(), a = s.material.absorption;
+        std::printf("    %2zu %-8s %-16s E (%g, %g, %g)  sigma (%g, %g, %g)\n", i,
+                    gi2d::geometryTypeName(s.geometry), s.name.c_str(), e.r, e.g, e.b, a.r, a.g,
+                    a.b);
+    }
+    const std::uint64_t medium = gi2d::mediumBytes(w, h);
+    const std::uint64_t reference =
+        medium + gi2d::RayMarcher::bytesFor(w, h) + imageBytes(w, h, 3) * 2;
+    std::printf("  memory: medium %s, reference solver %s (available %s)\n",
+                formatBytes(medium).c_str(), formatBytes(reference).c_str(),
+                formatBytes(availableMemoryBytes()).c_str());
+    std::printf("  reference work: %.3g rays at %d rays/pixel\n",
+                static_cast<double>(gi2d::referenceRayCount(w, h, args.rays)), args.rays);
+    if (Status s = checkMemory(reference, "rendering " + std::to_string(w) + "x" +
+                                              std::to_string(h));
+        !s) {
+        return reportError(s.error());
+    }
+    return 0;
+}
+
+}  // namespace
+
+Runner addInfoCommand(CLI::App& app) {
+    auto args = std::make_shared<InfoArgs>();
+    app.add_option("scene", args->scene, "scene file (.json)")->required();
+    app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
+    app.add_option("--rays", args->rays, "directions per pixel")->capture_default_str();
+    return [args] { return runInfo(*args); };
+}
+
+}  // namespace luxel::cli

@@ -1,0 +1,34 @@
+// luxel: render 2D light-transport scenes, inspect them and compare images.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <map>
+
+#include "commands/command.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"luxel: real-time light transport in 2D and voxel worlds"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "luxel 0.1.0");
+    std::map<CLI::App*, luxel::cli::Runner> runners;
+    auto add = [&](const char* name, const char* help, auto addCommand) {
+        CLI::App* sub = app.add_subcommand(name, help);
+        runners[sub] = addCommand(*sub);
+    };
+    add("render", "render a scene to a fluence image", luxel::cli::addRenderCommand);
+    add("info", "describe a scene and the memory it needs", luxel::cli::addInfoCommand);
+    add("compare", "compare two images (RMSE, relative L1, max error)",
+        luxel::cli::addCompareCommand);
+    add("raster", "write the rasterised medium (emission, absorption) as images",
+        luxel::cli::addRasterCommand);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+    for (auto& [sub, run] : runners) {
+        if (sub->parsed()) return run();
+    }
+    return 0;
+}

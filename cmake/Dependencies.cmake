@@ -1,0 +1,13 @@
+# Third-party libraries, all from Debian packages (deps/debian-packages.txt).
+find_package(Threads REQUIRED)
+find_package(TBB REQUIRED)
+find_package(nlohmann_json 3.10 REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(PNG REQUIRED)
+find_package(OpenEXR 3 REQUIRED)
+if(LUXEL_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(LUXEL_BUILD_BENCH)
+  find_package(benchmark REQUIRED)
+endif()

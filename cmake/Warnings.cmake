@@ -1,0 +1,19 @@
+# Compiler warnings and sanitizers as INTERFACE targets that every luxel target links.
+add_library(luxel_warnings INTERFACE)
+target_compile_options(luxel_warnings INTERFACE -Wall -Wextra -Wshadow -Wnon-virtual-dtor -Wpedantic)
+if(LUXEL_WERROR)
+  target_compile_options(luxel_warnings INTERFACE -Werror)
+endif()
+
+add_library(luxel_sanitizers INTERFACE)
+if(LUXEL_SANITIZE)
+  target_compile_options(luxel_sanitizers INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer
+                                                    -fno-sanitize-recover=undefined)
+  target_link_options(luxel_sanitizers INTERFACE -fsanitize=address,undefined)
+endif()
+
+# Common settings for every luxel target.
+function(luxel_target_defaults target)
+  target_link_libraries(${target} PRIVATE luxel_warnings)
+  target_link_libraries(${target} PUBLIC luxel_sanitizers)
+endfunction()

@@ -1,0 +1,20 @@
+// Thread-count control for the oneTBB loops.
+#include "luxel/core/parallel.h"
+
+#include <thread>
+
+namespace luxel {
+
+ThreadLimit::ThreadLimit(int threads) {
+    if (threads > 0) {
+        control_ = std::make_unique<tbb::global_control>(
+            tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+    }
+}
+
+int hardwareThreads() {
+    const unsigned n = std::thread::hardware_concurrency();
+    return n == 0 ? 1 : static_cast<int>(n);
+}
+
+}  // namespace luxel
