@@ -190,8 +190,9 @@ Status validateCanvasSize(int width, int height) {
 }
 
 Result<Medium2D> rasterize(const Scene2D& scene, const RasterOptions& options) {
-    const int width = options.width > 0 ? options.width : scene.width;
-    const int height = options.height > 0 ? options.height : scene.height;
+    const bool sceneSize = options.width == 0 && options.height == 0;
+    const int width = sceneSize ? scene.width : options.width;
+    const int height = sceneSize ? scene.height : options.height;
     if (Status s = validateCanvasSize(width, height); !s) return s.error();
     if (Status s = validateCanvasSize(scene.width, scene.height); !s) {
         return Error("scene canvas " + s.error().message());

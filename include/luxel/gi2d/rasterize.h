@@ -11,7 +11,7 @@
 namespace luxel::gi2d {
 
 struct RasterOptions {
-    // Output size in pixels; 0 = the scene's canvas. A different size scales the scene (each axis
+    // Output size in pixels; 0x0 = the scene's canvas. A different size scales the scene (each axis
     // by its own factor) and divides absorption by the mean scale so optical depths stay the same;
     // opaque materials stay opaque per pixel.
     int width = 0, height = 0;

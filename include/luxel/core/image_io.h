@@ -1,0 +1,39 @@
+// Reading and writing images. PNG holds 8-bit sRGB-encoded colour; EXR holds linear float.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "luxel/core/error.h"
+#include "luxel/core/image.h"
+
+namespace luxel {
+
+// How 8-bit PNG values map to floats.
+enum class PngEncoding {
+    Srgb,    // colour: decode/encode with the sRGB transfer curve (linear floats in memory)
+    Linear,  // data (masks, absorption maps): value / 255, no curve
+};
+
+// Readers refuse images larger than this (per side, and in total) before allocating anything.
+constexpr int kMaxImageSide = 65536;
+constexpr std::uint64_t kMaxImagePixels = std::uint64_t{1} << 28;
+
+// Reads any PNG (grey, grey+alpha, palette, RGB, RGBA; 8 or 16 bit). The result has 1 (grey),
+// 2 (grey+alpha), 3 (RGB) or 4 (RGBA) channels; alpha is always linear.
+Result<Image> readPng(const std::string& path, PngEncoding encoding = PngEncoding::Srgb);
+// Writes 8-bit PNG with 1, 3 or 4 channels (2 is written as grey+alpha). Values are clamped to
+// [0, 1] after encoding; NaN writes as 0.
+Status writePng(const std::string& path, const Image& image,
+                PngEncoding encoding = PngEncoding::Srgb);
+
+// Reads an EXR as linear float: R,G,B(,A) channels (Y alone as 1 channel).
+Result<Image> readExr(const std::string& path);
+// Writes 32-bit float EXR with channels R,G,B (3), R,G,B,A (4) or Y (1).
+Status writeExr(const std::string& path, const Image& image);
+
+// Chooses PNG or EXR by the file extension (case-insensitive); anything else is an error.
+Result<Image> readImage(const std::string& path);
+Status writeImage(const std::string& path, const Image& image);
+
+}  // namespace luxel

@@ -1,0 +1,160 @@
+// EXR reading and writing with the OpenEXR 3 C++ API (32-bit float channels, linear values).
+#include <ImathBox.h>
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "luxel/core/image_io.h"
+
+namespace luxel {
+
+namespace {
+
+Error readError(const std::string& path, const std::string& problem) {
+    return Error("cannot read EXR '" + path + "': " + problem);
+}
+
+Error writeError(const std::string& path, const std::string& problem) {
+    return Error("cannot write EXR '" + path + "': " + problem);
+}
+
+// OpenEXR's own message for a missing file is long and varies by version; opening it first gives
+// the same message as the PNG reader.
+bool canOpen(const std::string& path, int* error) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (file == nullptr) {
+        *error = errno;
+        return false;
+    }
+    std::fclose(file);
+    return true;
+}
+
+// The channels to read, in image order: R,G,B(,A), or Y(,A).
+std::vector<std::string> chooseChannels(const Imf::ChannelList& list) {
+    const auto has = [&](const char* name) { return list.findChannel(name) != nullptr; };
+    std::vector<std::string> names;
+    if (has("R") && has("G") && has("B")) {
+        names = {"R", "G", "B"};
+    } else if (has("Y")) {
+        names = {"Y"};
+    } else {
+        return names;
+    }
+    if (has("A")) names.push_back("A");
+    return names;
+}
+
+std::string listChannels(const Imf::ChannelList& list) {
+    std::string out;
+    for (auto it = list.begin(); it != list.end(); ++it) {
+        if (!out.empty()) out += ", ";
+        out += it.name();
+    }
+    return out.empty() ? "none" : out;
+}
+
+Result<Image> readExrImpl(const std::string& path) {
+    Imf::InputFile file(path.c_str());
+    const Imf::Header& header = file.header();
+    const Imath::Box2i window = header.dataWindow();
+    const std::int64_t width = std::int64_t{window.max.x} - window.min.x + 1;
+    const std::int64_t height = std::int64_t{window.max.y} - window.min.y + 1;
+    if (width <= 0 || height <= 0) return readError(path, "the data window is empty");
+    if (width > kMaxImageSide || height > kMaxImageSide ||
+        static_cast<std::uint64_t>(width * height) > kMaxImagePixels) {
+        return readError(path, "image too large (" + std::to_string(width) + "x" +
+                                   std::to_string(height) + "; the limit is " +
+                                   std::to_string(kMaxImageSide) + " per side and " +
+                                   std::to_string(kMaxImagePixels) + " pixels)");
+    }
+
+    const Imf::ChannelList& list = header.channels();
+    const std::vector<std::string> names = chooseChannels(list);
+    if (names.empty()) {
+        return readError(path, "no R,G,B or Y channels (the file has: " + listChannels(list) + ")");
+    }
+    for (const std::string& name : names) {
+        const Imf::Channel& channel = list[name];
+        if (channel.xSampling != 1 || channel.ySampling != 1) {
+            return readError(path, "channel " + name + " is subsampled, which is not supported");
+        }
+    }
+
+    const int channels = static_cast<int>(names.size());
+    Image image(static_cast<int>(width), static_cast<int>(height), channels);
+    const std::size_t xStride = sizeof(float) * channels;
+    const std::size_t yStride = xStride * static_cast<std::size_t>(width);
+    Imf::FrameBuffer frameBuffer;
+    for (int c = 0; c < channels; ++c) {
+        // Slice::Make offsets the pointer by the data window origin without overflow.
+        frameBuffer.insert(
+            names[c], Imf::Slice::Make(Imf::FLOAT, image.data() + c, window, xStride, yStride));
+    }
+    file.setFrameBuffer(frameBuffer);
+    file.readPixels(window.min.y, window.max.y);
+    return image;
+}
+
+Status writeExrImpl(const std::string& path, const Image& image) {
+    static const std::vector<std::string> kNames[] = {
+        {"Y"}, {"Y", "A"}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
+    const std::vector<std::string>& names = kNames[image.channels() - 1];
+
+    Imf::Header header(image.width(), image.height());
+    for (const std::string& name : names) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    Imf::OutputFile file(path.c_str(), header);
+
+    const std::size_t xStride = sizeof(float) * image.channels();
+    const std::size_t yStride = xStride * static_cast<std::size_t>(image.width());
+    Imf::FrameBuffer frameBuffer;
+    for (int c = 0; c < image.channels(); ++c) {
+        frameBuffer.insert(names[c],
+                           Imf::Slice::Make(Imf::FLOAT, image.data() + c, Imath::V2i(0, 0),
+                                            image.width(), image.height(), xStride, yStride));
+    }
+    file.setFrameBuffer(frameBuffer);
+    file.writePixels(image.height());
+    return Ok{};
+}
+
+}  // namespace
+
+Result<Image> readExr(const std::string& path) {
+    int error = 0;
+    if (!canOpen(path, &error)) {
+        return Error("cannot open '" + path + "': " + std::generic_category().message(error));
+    }
+    try {
+        return readExrImpl(path);
+    } catch (const std::exception& e) {
+        return readError(path, e.what());
+    } catch (...) {
+        return readError(path, "unknown error");
+    }
+}
+
+Status writeExr(const std::string& path, const Image& image) {
+    if (image.empty() || image.channels() < 1 || image.channels() > 4) {
+        return writeError(path, "the image is empty");
+    }
+    try {
+        return writeExrImpl(path, image);
+    } catch (const std::exception& e) {
+        return writeError(path, e.what());
+    } catch (...) {
+        return writeError(path, "unknown error");
+    }
+}
+
+}  // namespace luxel

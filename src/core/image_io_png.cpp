@@ -1,0 +1,321 @@
+// PNG reading and writing with libpng's classic API.
+//
+// libpng reports errors by longjmp. Every call that can fail runs inside a small function that owns
+// the setjmp and holds only C data, so a jump never skips a C++ destructor; buffers and cleanup
+// live in the calling frame, which has no setjmp.
+#include <png.h>
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstdio>
+#include <exception>
+#include <memory>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "luxel/core/image_io.h"
+#include "luxel/core/tonemap.h"
+
+namespace luxel {
+
+namespace {
+
+// State for libpng's callbacks.
+struct PngContext {
+    std::FILE* file = nullptr;
+    int ioErrno = 0;  // errno of a failed read or write, reported with the error
+    char error[256] = {};
+    char warning[256] = {};
+};
+
+struct PngHeader {
+    png_uint_32 width = 0;
+    png_uint_32 height = 0;
+    int bitDepth = 0;
+    int channels = 0;
+    std::size_t rowBytes = 0;
+};
+
+struct FileCloser {
+    void operator()(std::FILE* file) const {
+        if (file != nullptr) std::fclose(file);
+    }
+};
+
+// Frees libpng's structures on every way out of the calling function.
+struct PngReadStructs {
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    ~PngReadStructs() {
+        if (png != nullptr)
+            png_destroy_read_struct(&png, info != nullptr ? &info : nullptr, nullptr);
+    }
+};
+
+struct PngWriteStructs {
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    ~PngWriteStructs() {
+        if (png != nullptr) png_destroy_write_struct(&png, info != nullptr ? &info : nullptr);
+    }
+};
+
+void onPngError(png_structp png, png_const_charp message) {
+    auto* context = static_cast<PngContext*>(png_get_error_ptr(png));
+    std::snprintf(context->error, sizeof context->error, "%s", message);
+    png_longjmp(png, 1);
+}
+
+// Warnings are kept rather than printed: a later error such as "Invalid IHDR data" is explained
+// only by the warning before it.
+void onPngWarning(png_structp png, png_const_charp message) {
+    auto* context = static_cast<PngContext*>(png_get_error_ptr(png));
+    std::snprintf(context->warning, sizeof context->warning, "%s", message);
+}
+
+void readFromFile(png_structp png, png_bytep data, std::size_t length) {
+    auto* context = static_cast<PngContext*>(png_get_io_ptr(png));
+    if (std::fread(data, 1, length, context->file) != length) {
+        if (std::feof(context->file)) png_error(png, "unexpected end of file (truncated?)");
+        context->ioErrno = errno;
+        png_error(png, "read error");
+    }
+}
+
+void writeToFile(png_structp png, png_bytep data, std::size_t length) {
+    auto* context = static_cast<PngContext*>(png_get_io_ptr(png));
+    if (std::fwrite(data, 1, length, context->file) != length) {
+        context->ioErrno = errno;
+        png_error(png, "write error");
+    }
+}
+
+void flushFile(png_structp png) {
+    auto* context = static_cast<PngContext*>(png_get_io_ptr(png));
+    std::fflush(context->file);
+}
+
+// Reads the header and sets up expansion to 8 or 16 bits per channel with 1 to 4 channels.
+bool readPngHeader(png_structp png, png_infop info, PngHeader* header) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_set_sig_bytes(png, 8);
+    png_set_user_limits(png, kMaxImageSide, kMaxImageSide);
+    png_read_info(png, info);
+    // Palette -> RGB, grey below 8 bits -> 8 bits, tRNS -> an alpha channel.
+    png_set_expand(png);
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    header->width = png_get_image_width(png, info);
+    header->height = png_get_image_height(png, info);
+    header->bitDepth = png_get_bit_depth(png, info);
+    header->channels = png_get_channels(png, info);
+    header->rowBytes = png_get_rowbytes(png, info);
+    return true;
+}
+
+bool readPngRows(png_structp png, png_bytepp rows) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_read_image(png, rows);
+    // Reading to IEND also catches files truncated after the pixel data.
+    png_read_end(png, nullptr);
+    return true;
+}
+
+bool writePngRows(png_structp png, png_infop info, const PngHeader* header, int colorType,
+                  bool srgb, png_bytepp rows) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_set_IHDR(png, info, header->width, header->height, 8, colorType, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    if (srgb) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_write_info(png, info);
+    png_write_image(png, rows);
+    png_write_end(png, nullptr);
+    return true;
+}
+
+Error openError(const std::string& path, int error) {
+    return Error("cannot open '" + path + "': " + std::generic_category().message(error));
+}
+
+Error readError(const std::string& path, const std::string& problem) {
+    return Error("cannot read PNG '" + path + "': " + problem);
+}
+
+Error writeError(const std::string& path, const std::string& problem) {
+    return Error("cannot write PNG '" + path + "': " + problem);
+}
+
+std::string describeFailure(const PngContext& context) {
+    std::string message = context.error[0] != '\0' ? context.error : "unknown libpng error";
+    if (context.ioErrno != 0) message += ": " + std::generic_category().message(context.ioErrno);
+    if (context.warning[0] != '\0') message += std::string(" (") + context.warning + ")";
+    return message;
+}
+
+int alphaChannel(int channels) {
+    return channels == 2 ? 1 : (channels == 4 ? 3 : -1);
+}
+
+Result<Image> readPngImpl(const std::string& path, PngEncoding encoding) {
+    std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
+    if (!file) return openError(path, errno);
+
+    std::array<png_byte, 8> signature{};
+    if (std::fread(signature.data(), 1, signature.size(), file.get()) != signature.size()) {
+        if (std::ferror(file.get())) return openError(path, errno);
+        return readError(path, "not a PNG file (too short)");
+    }
+    if (png_sig_cmp(signature.data(), 0, signature.size()) != 0) {
+        return readError(path, "not a PNG file (bad signature)");
+    }
+
+    PngContext context;
+    context.file = file.get();
+    PngReadStructs structs;
+    structs.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &context, onPngError, onPngWarning);
+    if (structs.png == nullptr) return readError(path, "cannot initialise libpng");
+    structs.info = png_create_info_struct(structs.png);
+    if (structs.info == nullptr) return readError(path, "cannot initialise libpng");
+    png_set_read_fn(structs.png, &context, readFromFile);
+
+    PngHeader header;
+    if (!readPngHeader(structs.png, structs.info, &header)) {
+        return readError(path, describeFailure(context));
+    }
+    const std::uint64_t pixels = std::uint64_t{header.width} * header.height;
+    if (header.width == 0 || header.height == 0 || header.width > kMaxImageSide ||
+        header.height > kMaxImageSide || pixels > kMaxImagePixels) {
+        return readError(path, "image too large (" + std::to_string(header.width) + "x" +
+                                   std::to_string(header.height) + "; the limit is " +
+                                   std::to_string(kMaxImageSide) + " per side and " +
+                                   std::to_string(kMaxImagePixels) + " pixels)");
+    }
+    if (header.channels < 1 || header.channels > 4 ||
+        (header.bitDepth != 8 && header.bitDepth != 16)) {
+        return readError(path, "unsupported layout (" + std::to_string(header.channels) +
+                                   " channels of " + std::to_string(header.bitDepth) + " bits)");
+    }
+
+    std::vector<png_byte> bytes(header.rowBytes * header.height);
+    std::vector<png_bytep> rows(header.height);
+    for (png_uint_32 y = 0; y < header.height; ++y) rows[y] = bytes.data() + y * header.rowBytes;
+    if (!readPngRows(structs.png, rows.data())) return readError(path, describeFailure(context));
+
+    const int width = static_cast<int>(header.width);
+    const int height = static_cast<int>(header.height);
+    const int channels = header.channels;
+    const int alpha = alphaChannel(channels);
+    const bool srgb = encoding == PngEncoding::Srgb;
+    Image image(width, height, channels);
+    float* out = image.data();
+    if (header.bitDepth == 8) {
+        std::array<float, 256> linearLut{}, srgbLut{};
+        for (int v = 0; v < 256; ++v) {
+            linearLut[v] = static_cast<float>(v) / 255.0f;
+            srgbLut[v] = srgbToLinear(linearLut[v]);
+        }
+        for (int y = 0; y < height; ++y) {
+            const png_byte* row = rows[y];
+            for (int i = 0; i < width * channels; ++i) {
+                const bool colour = srgb && i % channels != alpha;
+                *out++ = colour ? srgbLut[row[i]] : linearLut[row[i]];
+            }
+        }
+    } else {
+        for (int y = 0; y < height; ++y) {
+            const png_byte* row = rows[y];
+            for (int i = 0; i < width * channels; ++i) {
+                // 16-bit PNG samples are big-endian.
+                const int value = (row[2 * i] << 8) | row[2 * i + 1];
+                const float v = static_cast<float>(value) / 65535.0f;
+                *out++ = srgb && i % channels != alpha ? srgbToLinear(v) : v;
+            }
+        }
+    }
+    return image;
+}
+
+Status writePngImpl(const std::string& path, const Image& image, PngEncoding encoding) {
+    if (image.empty()) return writeError(path, "the image is empty");
+    const int width = image.width();
+    const int height = image.height();
+    const int channels = image.channels();
+    const int alpha = alphaChannel(channels);
+    const bool srgb = encoding == PngEncoding::Srgb;
+
+    std::vector<png_byte> bytes(image.size());
+    const float* in = image.data();
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+        const float v = in[i];
+        const bool colour = srgb && static_cast<int>(i % channels) != alpha;
+        // linearToSrgb clamps to [0, 1] and maps NaN to 0; the plain path does the same here.
+        const float encoded = colour ? linearToSrgb(v) : (v > 0.0f ? std::min(v, 1.0f) : 0.0f);
+        bytes[i] = static_cast<png_byte>(encoded * 255.0f + 0.5f);
+    }
+    const std::size_t rowBytes = static_cast<std::size_t>(width) * channels;
+    std::vector<png_bytep> rows(height);
+    for (int y = 0; y < height; ++y) rows[y] = bytes.data() + y * rowBytes;
+
+    int colorType = PNG_COLOR_TYPE_GRAY;
+    if (channels == 2) colorType = PNG_COLOR_TYPE_GRAY_ALPHA;
+    if (channels == 3) colorType = PNG_COLOR_TYPE_RGB;
+    if (channels == 4) colorType = PNG_COLOR_TYPE_RGB_ALPHA;
+
+    std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "wb"));
+    if (!file) return openError(path, errno);
+
+    PngContext context;
+    context.file = file.get();
+    bool written = false;
+    {
+        PngWriteStructs structs;
+        structs.png =
+            png_create_write_struct(PNG_LIBPNG_VER_STRING, &context, onPngError, onPngWarning);
+        if (structs.png != nullptr) structs.info = png_create_info_struct(structs.png);
+        if (structs.info == nullptr) {
+            std::snprintf(context.error, sizeof context.error, "cannot initialise libpng");
+        } else {
+            png_set_write_fn(structs.png, &context, writeToFile, flushFile);
+            PngHeader header;
+            header.width = static_cast<png_uint_32>(width);
+            header.height = static_cast<png_uint_32>(height);
+            written =
+                writePngRows(structs.png, structs.info, &header, colorType, srgb, rows.data());
+        }
+    }
+    const bool closed = std::fclose(file.release()) == 0;
+    const int closeErrno = errno;
+    if (!written || !closed) {
+        // A partial file would only fail later, in some other program.
+        std::remove(path.c_str());
+        if (!written) return writeError(path, describeFailure(context));
+        return writeError(path, std::generic_category().message(closeErrno));
+    }
+    return Ok{};
+}
+
+}  // namespace
+
+Result<Image> readPng(const std::string& path, PngEncoding encoding) {
+    try {
+        return readPngImpl(path, encoding);
+    } catch (const std::exception& e) {
+        return readError(path, e.what());
+    } catch (...) {
+        return readError(path, "unknown error");
+    }
+}
+
+Status writePng(const std::string& path, const Image& image, PngEncoding encoding) {
+    try {
+        return writePngImpl(path, image, encoding);
+    } catch (const std::exception& e) {
+        return writeError(path, e.what());
+    } catch (...) {
+        return writeError(path, "unknown error");
+    }
+}
+
+}  // namespace luxel
