@@ -23,6 +23,8 @@ void Image::setRgb(int x, int y, Rgb value) {
     for (int c = 0; c < std::min(channels_, 3); ++c) p[c] = value[c];
 }
 
-void Image::fill(float value) { std::fill(data_.begin(), data_.end(), value); }
+void Image::fill(float value) {
+    std::fill(data_.begin(), data_.end(), value);
+}
 
 }  // namespace luxel

@@ -14,7 +14,9 @@ ProgressBar::ProgressBar(std::string label, std::uint64_t total, bool enabled)
       start_(std::chrono::steady_clock::now()),
       lastDraw_(start_) {}
 
-ProgressBar::~ProgressBar() { finish(); }
+ProgressBar::~ProgressBar() {
+    finish();
+}
 
 void ProgressBar::advance(std::uint64_t units) {
     const std::uint64_t done = done_.fetch_add(units, std::memory_order_relaxed) + units;
@@ -29,7 +31,8 @@ void ProgressBar::advance(std::uint64_t units) {
 
 void ProgressBar::draw(std::uint64_t done) {
     const double fraction = static_cast<double>(done) / static_cast<double>(total_);
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     const double eta = fraction > 0 ? elapsed * (1.0 - fraction) / fraction : 0.0;
     constexpr int kWidth = 30;
     const int filled = static_cast<int>(fraction * kWidth);

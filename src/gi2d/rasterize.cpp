@@ -2,9 +2,9 @@
 //
 // While shapes are drawn, the absorption image holds the per-pixel opacity A = 1 - T over one pixel
 // length and the emission image holds the emitted radiance L = E * A. A shape with coverage c
-// replaces that fraction of the pixel:  A = (1 - c) A + c (1 - t_s),  L = (1 - c) L + c E_s (1 - t_s).
-// At the end sigma = -ln(1 - A) and E = L / A. Keeping A rather than T avoids cancellation for
-// faint media (1 - t_s is computed with expm1).
+// replaces that fraction of the pixel:  A = (1 - c) A + c (1 - t_s),  L = (1 - c) L + c E_s (1 -
+// t_s). At the end sigma = -ln(1 - A) and E = L / A. Keeping A rather than T avoids cancellation
+// for faint media (1 - t_s is computed with expm1).
 #include "luxel/gi2d/rasterize.h"
 
 #include <algorithm>
@@ -143,7 +143,8 @@ LayerSample sampleLayer(const ImageLayer& layer, float intensity, Vec2d p) {
         s.absorption = layer.absorption->rgb(tx, ty) * layer.absorptionScale;
         if (!layer.emission) s.coverage = texelAlpha(*layer.absorption, tx, ty);
     } else if (s.emission.maxComponent() > 0.0f) {
-        s.absorption = Rgb(kOpaqueAbsorption);  // an emission sprite: lit texels are opaque emitters
+        s.absorption =
+            Rgb(kOpaqueAbsorption);  // an emission sprite: lit texels are opaque emitters
     } else {
         s.coverage = 0.0f;  // ... and dark texels leave what is below
     }
@@ -234,8 +235,9 @@ Result<Medium2D> rasterize(const Scene2D& scene, const RasterOptions& options) {
                 Rgb sigma, emission;
                 for (int c = 0; c < 3; ++c) {
                     const float opacity = std::clamp(a[c], 0.0f, 1.0f);
-                    sigma[c] = std::min(static_cast<float>(-std::log1p(-static_cast<double>(opacity))),
-                                        kMaxAbsorption);
+                    sigma[c] =
+                        std::min(static_cast<float>(-std::log1p(-static_cast<double>(opacity))),
+                                 kMaxAbsorption);
                     emission[c] = opacity > 0.0f ? l[c] / opacity : 0.0f;
                 }
                 medium.absorption.setRgb(x, y, sigma);

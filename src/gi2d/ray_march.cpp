@@ -105,10 +105,10 @@ RaySegment RayMarcher::march(Vec2d origin, Vec2d direction, double maxDistance,
         const int size = 1 << k;
         const int bx0 = (cx >> k) << k, by0 = (cy >> k) << k;
         // Distances to the block's exit planes along each axis.
-        const double tx = direction.x > 0 ? (bx0 + size - origin.x) * invX
+        const double tx = direction.x > 0   ? (bx0 + size - origin.x) * invX
                           : direction.x < 0 ? (bx0 - origin.x) * invX
                                             : inf;
-        const double ty = direction.y > 0 ? (by0 + size - origin.y) * invY
+        const double ty = direction.y > 0   ? (by0 + size - origin.y) * invY
                           : direction.y < 0 ? (by0 - origin.y) * invY
                                             : inf;
         const double exit = std::min(std::min(tx, ty), maxDistance);

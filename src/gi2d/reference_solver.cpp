@@ -34,8 +34,8 @@ Result<Image> solveReference(const Medium2D& medium, const ReferenceOptions& opt
     }
     const int w = medium.width(), h = medium.height();
     const std::uint64_t bytes = RayMarcher::bytesFor(w, h) + imageBytes(w, h, 3);
-    if (Status s = checkMemory(bytes, "the reference solver at " + std::to_string(w) + "x" +
-                                          std::to_string(h));
+    if (Status s = checkMemory(
+            bytes, "the reference solver at " + std::to_string(w) + "x" + std::to_string(h));
         !s) {
         return s.error();
     }
@@ -43,7 +43,8 @@ Result<Image> solveReference(const Medium2D& medium, const ReferenceOptions& opt
     Image fluence(w, h, 3);
     parallelForRange(h, 1, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {
-            for (int x = 0; x < w; ++x) fluence.setRgb(x, y, referenceFluenceAt(marcher, x, y, options));
+            for (int x = 0; x < w; ++x)
+                fluence.setRgb(x, y, referenceFluenceAt(marcher, x, y, options));
             if (options.onRowsDone) options.onRowsDone(1);
         }
     });

@@ -38,7 +38,8 @@ class Cli : public testing::Test {
   protected:
     void SetUp() override {
         dir_ = fs::temp_directory_path() /
-               ("luxel_cli_" + std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+               ("luxel_cli_" +
+                std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }
@@ -75,8 +76,9 @@ const char* kSmallScene = R"({
 
 TEST_F(Cli, RenderWritesExrAndDisplayPngAndPrintsTimings) {
     const std::string scene = write("small.json", kSmallScene);
-    const RunResult r = runLuxel("render " + scene + " --solver reference --rays 64 --threads 2 --out " +
-                                 path("f.exr") + " --png " + path("d.png"));
+    const RunResult r =
+        runLuxel("render " + scene + " --solver reference --rays 64 --threads 2 --out " +
+                 path("f.exr") + " --png " + path("d.png"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("Mrays/s"), std::string::npos) << r.output;
     auto fluence = luxel::readExr(path("f.exr"));
@@ -127,16 +129,17 @@ TEST_F(Cli, RasterCompareAndInfo) {
 }
 
 TEST_F(Cli, MalformedJsonReportsLineAndColumn) {
-    const std::string scene = write("bad.json", "{\n  \"canvas\": [48, 32],\n  \"shapes\": [,]\n}\n");
+    const std::string scene =
+        write("bad.json", "{\n  \"canvas\": [48, 32],\n  \"shapes\": [,]\n}\n");
     expectError("render " + scene + " --out " + path("x.exr"), "bad.json:3:");
 }
 
 TEST_F(Cli, UnknownShapeTypeAndField) {
-    std::string scene =
-        write("t.json", R"({"canvas": [8, 8], "shapes": [{"type": "triangle"}]})");
+    std::string scene = write("t.json", R"({"canvas": [8, 8], "shapes": [{"type": "triangle"}]})");
     expectError("render " + scene + " --out " + path("x.exr"), "unknown shape type 'triangle'");
-    scene = write("f.json",
-                  R"({"canvas": [8, 8], "shapes": [{"type": "circle", "center": [1, 1], "radiuss": 2}]})");
+    scene = write(
+        "f.json",
+        R"({"canvas": [8, 8], "shapes": [{"type": "circle", "center": [1, 1], "radiuss": 2}]})");
     expectError("info " + scene, "radiuss");
 }
 
@@ -167,9 +170,9 @@ TEST_F(Cli, NanAndNegativeEmission) {
 
 TEST_F(Cli, MissingFiles) {
     expectError("render " + path("nope.json") + " --out " + path("x.exr"), "nope.json");
-    const std::string scene = write(
-        "img.json",
-        R"({"canvas": [8, 8], "shapes": [{"type": "image", "emission": "missing.png"}]})");
+    const std::string scene =
+        write("img.json",
+              R"({"canvas": [8, 8], "shapes": [{"type": "image", "emission": "missing.png"}]})");
     expectError("render " + scene + " --out " + path("x.exr"), "missing.png");
     expectError("compare " + path("a.exr") + " " + path("b.exr"), "a.exr");
 }

@@ -8,7 +8,9 @@
 namespace luxel::gi2d {
 namespace {
 
-Shape circle(Vec2d c, double r, Rgb e, Rgb a) { return {"c", Circle{c, r}, Material{e, a}}; }
+Shape circle(Vec2d c, double r, Rgb e, Rgb a) {
+    return {"c", Circle{c, r}, Material{e, a}};
+}
 Shape box(Vec2d min, Vec2d max, Rgb e, Rgb a) {
     return {"b", Box{(min + max) * 0.5, max - min, 0.0}, Material{e, a}};
 }
@@ -19,11 +21,11 @@ TEST(Rasterize, OpaqueEmitterEdgesKeepFullRadiance) {
     Scene2D scene{16, 8, {}, {}, {}, ""};
     scene.shapes.push_back(box({0, 0}, {8.5, 8}, Rgb(2.0f), Rgb(kOpaqueAbsorption)));
     const Medium2D m = rasterize(scene).value();
-    EXPECT_FLOAT_EQ(m.emission.at(8, 3, 0), 2.0f);                  // half covered
-    EXPECT_NEAR(m.absorption.at(8, 3, 0), std::log(2.0), 1e-4);     // T = 1 - 0.5
-    EXPECT_FLOAT_EQ(m.emission.at(3, 3, 1), 2.0f);                  // inside
-    EXPECT_NEAR(m.absorption.at(3, 3, 1), kMaxAbsorption, 1e-3);    // opaque, clamped
-    EXPECT_EQ(m.emission.at(9, 3, 0), 0.0f);                        // outside
+    EXPECT_FLOAT_EQ(m.emission.at(8, 3, 0), 2.0f);                // half covered
+    EXPECT_NEAR(m.absorption.at(8, 3, 0), std::log(2.0), 1e-4);   // T = 1 - 0.5
+    EXPECT_FLOAT_EQ(m.emission.at(3, 3, 1), 2.0f);                // inside
+    EXPECT_NEAR(m.absorption.at(3, 3, 1), kMaxAbsorption, 1e-3);  // opaque, clamped
+    EXPECT_EQ(m.emission.at(9, 3, 0), 0.0f);                      // outside
     EXPECT_EQ(m.absorption.at(9, 3, 0), 0.0f);
 }
 
@@ -84,7 +86,8 @@ TEST(Rasterize, RotatedBoxAndPolygonCoverTheSameSquare) {
     const Medium2D ma = rasterize(a).value(), mb = rasterize(b).value();
     for (int y = 0; y < 40; ++y) {
         for (int x = 0; x < 40; ++x) {
-            EXPECT_NEAR(ma.absorption.at(x, y, 0), mb.absorption.at(x, y, 0), 2e-3) << x << "," << y;
+            EXPECT_NEAR(ma.absorption.at(x, y, 0), mb.absorption.at(x, y, 0), 2e-3)
+                << x << "," << y;
         }
     }
 }
@@ -106,7 +109,9 @@ TEST(Rasterize, MovingShapeChangesTheMediumSmoothly) {
         }
         const double centroid = sumX / sum;
         EXPECT_NEAR(centroid, 10.0 + step * 0.125, 0.02);
-        if (previous >= 0) EXPECT_NEAR(centroid - previous, 0.125, 0.02);
+        if (previous >= 0) {
+            EXPECT_NEAR(centroid - previous, 0.125, 0.02);
+        }
         previous = centroid;
     }
 }
@@ -117,7 +122,7 @@ TEST(Rasterize, ScalingKeepsOpticalDepthAndOpacity) {
     const Medium2D m = rasterize(scene, {80, 60, 16}).value();
     EXPECT_EQ(m.width(), 80);
     EXPECT_EQ(m.height(), 60);
-    EXPECT_NEAR(m.absorption.at(1, 1, 0), 0.01f, 1e-6);  // sigma per pixel halves at 2x
+    EXPECT_NEAR(m.absorption.at(1, 1, 0), 0.01f, 1e-6);             // sigma per pixel halves at 2x
     EXPECT_NEAR(m.absorption.at(30, 30, 0), kMaxAbsorption, 1e-3);  // opaque stays opaque
     EXPECT_NEAR(m.emission.at(30, 30, 0), 1.0f, 1e-6);
 }
@@ -136,14 +141,12 @@ TEST(Rasterize, RejectsAbsurdSizes) {
     for (auto [w, h] : {std::pair{-5, 10}, {10, 100000}, {70000, 70000}}) {
         auto r = rasterize(scene, {w, h, 16});
         ASSERT_FALSE(r.ok()) << w << "x" << h;
-        EXPECT_NE(r.error().message().find("is invalid"), std::string::npos)
-            << r.error().message();
+        EXPECT_NE(r.error().message().find("is invalid"), std::string::npos) << r.error().message();
     }
     // Fits the side limit but not the memory of any machine this runs on: refused, not crashed.
     auto huge = rasterize(scene, {65536, 65536, 16});
     if (!huge.ok()) {
-        EXPECT_NE(huge.error().message().find("only"), std::string::npos)
-            << huge.error().message();
+        EXPECT_NE(huge.error().message().find("only"), std::string::npos) << huge.error().message();
     }
 }
 

@@ -47,8 +47,8 @@ TEST(ReferenceAnalytic, DiskInVacuumMatchesArcsineLaw) {
         const double exact = E * std::asin(R / r) / kPi;
         // The anti-aliased edge acts like a disk about half a pixel larger (medium2d.md §2).
         const double exactHalfPixel = E * std::asin((R + 0.5) / r) / kPi;
-        std::printf("disk r/R %.2f: got %.6f exact %.6f (%+.2f%%) R+0.5 %.6f (%+.2f%%)\n",
-                    r / R, got, exact, 100 * (got / exact - 1), exactHalfPixel,
+        std::printf("disk r/R %.2f: got %.6f exact %.6f (%+.2f%%) R+0.5 %.6f (%+.2f%%)\n", r / R,
+                    got, exact, 100 * (got / exact - 1), exactHalfPixel,
                     100 * (got / exactHalfPixel - 1));
         EXPECT_NEAR(got / exact, 1.0, 0.02) << "r/R = " << r / R;
         EXPECT_NEAR(got / exactHalfPixel, 1.0, 0.004) << "r/R = " << r / R;
@@ -102,8 +102,8 @@ TEST(ReferenceAnalytic, AbsorbingSlabFollowsBeerLambertAndItsAngularIntegral) {
     const double E = 3.0, sigma = 0.02, wallBottom = 8.0, slabTop = 20.0, slabBottom = 60.0;
     const double d = slabBottom - slabTop;
     Scene2D scene{w, h, {}, {}, {}, ""};
-    scene.shapes.push_back(box({-4, -4}, {w + 4.0, wallBottom}, Rgb(static_cast<float>(E)),
-                               Rgb(kOpaqueAbsorption)));
+    scene.shapes.push_back(
+        box({-4, -4}, {w + 4.0, wallBottom}, Rgb(static_cast<float>(E)), Rgb(kOpaqueAbsorption)));
     scene.shapes.push_back(
         box({-4, slabTop}, {w + 4.0, slabBottom}, Rgb(0.0f), Rgb(static_cast<float>(sigma))));
     const RayMarcher marcher(rasterOrDie(scene));

@@ -19,7 +19,8 @@ Result<std::pair<int, int>> parseSize(const std::string& text) {
     if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X')) {
         return Error("--size '" + text + "' is not WIDTHxHEIGHT (e.g. 512x512)");
     }
-    if (Status s = gi2d::validateCanvasSize(w, h); !s) return Error("--size " + s.error().message());
+    if (Status s = gi2d::validateCanvasSize(w, h); !s)
+        return Error("--size " + s.error().message());
     return std::pair{w, h};
 }
 

@@ -49,7 +49,7 @@ int runCompare(const CompareArgs& args) {
     std::printf("relative L1   %.6g\n", errors->relativeL1);
     std::printf("max abs error %.6g\n", errors->maxAbsError);
     if (!args.diff.empty()) {
-        const double scale = args.diffScale > 0 ? args.diffScale
+        const double scale = args.diffScale > 0        ? args.diffScale
                              : errors->maxAbsError > 0 ? errors->maxAbsError
                                                        : 1.0;
         if (Status s = writePng(args.diff, diffImage(*a, *b, scale), PngEncoding::Linear); !s) {

@@ -50,8 +50,8 @@ int runInfo(const InfoArgs& args) {
                 formatBytes(availableMemoryBytes()).c_str());
     std::printf("  reference work: %.3g rays at %d rays/pixel\n",
                 static_cast<double>(gi2d::referenceRayCount(w, h, args.rays)), args.rays);
-    if (Status s = checkMemory(reference, "rendering " + std::to_string(w) + "x" +
-                                              std::to_string(h));
+    if (Status s =
+            checkMemory(reference, "rendering " + std::to_string(w) + "x" + std::to_string(h));
         !s) {
         return reportError(s.error());
     }

@@ -91,8 +91,7 @@ int runRender(const RenderArgs& args) {
 Runner addRenderCommand(CLI::App& app) {
     auto args = std::make_shared<RenderArgs>();
     app.add_option("scene", args->scene, "scene file (.json)")->required();
-    app.add_option("--solver", args->solver, "light transport solver")
-        ->capture_default_str();
+    app.add_option("--solver", args->solver, "light transport solver")->capture_default_str();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
     app.add_option("--rays", args->rays, "directions per pixel (reference solver)")
         ->capture_default_str();

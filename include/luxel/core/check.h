@@ -19,17 +19,18 @@ template <typename A, typename B>
 
 }  // namespace luxel::detail
 
-#define LUXEL_CHECK(cond)                                                                  \
-    do {                                                                                   \
+#define LUXEL_CHECK(cond)                                                                      \
+    do {                                                                                       \
         if (!(cond)) ::luxel::detail::checkFailed(__FILE__, __LINE__, "Check failed: " #cond); \
     } while (false)
 
-#define LUXEL_CHECK_OP(a, op, b)                                                                  \
-    do {                                                                                          \
-        const auto& luxelA_ = (a);                                                                \
-        const auto& luxelB_ = (b);                                                                \
-        if (!(luxelA_ op luxelB_))                                                                \
-            ::luxel::detail::checkOpFailed(__FILE__, __LINE__, #a " " #op " " #b, luxelA_, luxelB_); \
+#define LUXEL_CHECK_OP(a, op, b)                                                           \
+    do {                                                                                   \
+        const auto& luxelA_ = (a);                                                         \
+        const auto& luxelB_ = (b);                                                         \
+        if (!(luxelA_ op luxelB_))                                                         \
+            ::luxel::detail::checkOpFailed(__FILE__, __LINE__, #a " " #op " " #b, luxelA_, \
+                                           luxelB_);                                       \
     } while (false)
 
 #define LUXEL_CHECK_EQ(a, b) LUXEL_CHECK_OP(a, ==, b)

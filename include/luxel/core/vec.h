@@ -21,11 +21,17 @@ using Vec2 = Vec2T<float>;
 using Vec2d = Vec2T<double>;
 
 template <typename T>
-constexpr T dot(Vec2T<T> a, Vec2T<T> b) { return a.x * b.x + a.y * b.y; }
+constexpr T dot(Vec2T<T> a, Vec2T<T> b) {
+    return a.x * b.x + a.y * b.y;
+}
 template <typename T>
-constexpr T cross(Vec2T<T> a, Vec2T<T> b) { return a.x * b.y - a.y * b.x; }
+constexpr T cross(Vec2T<T> a, Vec2T<T> b) {
+    return a.x * b.y - a.y * b.x;
+}
 template <typename T>
-T length(Vec2T<T> a) { return std::sqrt(dot(a, a)); }
+T length(Vec2T<T> a) {
+    return std::sqrt(dot(a, a));
+}
 
 // An RGB triple: radiance, absorption coefficient or transmittance per channel.
 struct Rgb {
@@ -50,6 +56,8 @@ struct Rgb {
     constexpr float minComponent() const { return std::min(r, std::min(g, b)); }
 };
 
-inline Rgb expRgb(Rgb v) { return {std::exp(v.r), std::exp(v.g), std::exp(v.b)}; }
+inline Rgb expRgb(Rgb v) {
+    return {std::exp(v.r), std::exp(v.g), std::exp(v.b)};
+}
 
 }  // namespace luxel

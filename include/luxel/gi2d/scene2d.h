@@ -2,8 +2,9 @@
 // material (emission radiance + absorption coefficient). Later shapes are drawn over earlier ones
 // where they cover (the depth order of the HRC seed: far first, near last).
 //
-// Units: lengths in scene pixels (the canvas size given in the scene), y pointing down, pixel (i, j)
-// covering [i, i+1] x [j, j+1]. Absorption sigma is per scene pixel of length. Emission is radiance.
+// Units: lengths in scene pixels (the canvas size given in the scene), y pointing down, pixel (i,
+// j) covering [i, i+1] x [j, j+1]. Absorption sigma is per scene pixel of length. Emission is
+// radiance.
 #pragma once
 
 #include <memory>

@@ -1,4 +1,5 @@
-// Scene files: JSON in, Scene2D out (and back). The format is documented in docs/scene-format-2d.md.
+// Scene files: JSON in, Scene2D out (and back). The format is documented in
+// docs/scene-format-2d.md.
 #pragma once
 
 #include <string>
