@@ -2,8 +2,11 @@
 #include "luxel/gi2d/ray_march.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <unordered_map>
 
 #include "luxel/core/check.h"
 
@@ -11,64 +14,99 @@ namespace luxel::gi2d {
 
 namespace {
 constexpr int kMaxBlockLevel = 12;
+
+// floor() for coordinates within the canvas; std::floor is a library call without SSE4.1.
+inline int floorToInt(double x) {
+    const int i = static_cast<int>(x);
+    return i - (x < i ? 1 : 0);
 }
+
+// Bitwise hash of the six floats of a material.
+struct MaterialBits {
+    std::uint32_t words[6];
+    bool operator==(const MaterialBits&) const = default;
+};
+struct MaterialBitsHash {
+    std::size_t operator()(const MaterialBits& m) const {
+        std::uint64_t h = 0x9e3779b97f4a7c15ull;
+        for (std::uint32_t w : m.words) h = (h ^ w) * 0x100000001b3ull;
+        return static_cast<std::size_t>(h ^ (h >> 29));
+    }
+};
+}  // namespace
 
 RayMarcher::RayMarcher(const Medium2D& medium)
     : width_(medium.width()), height_(medium.height()), boundary_(medium.boundaryRadiance) {
-    cells_.resize(static_cast<std::size_t>(width_) * height_);
-    for (int y = 0; y < height_; ++y) {
-        for (int x = 0; x < width_; ++x) {
-            const Rgb s = medium.absorption.rgb(x, y), e = medium.emission.rgb(x, y);
-            cells_[static_cast<std::size_t>(y) * width_ + x] = {{s.r, s.g, s.b}, {e.r, e.g, e.b}};
-        }
-    }
+    LUXEL_CHECK_LE(static_cast<std::uint64_t>(width_) * height_, kMaxPixels);
+    buildPalette(medium);
     buildBlockLevels();
 }
 
 std::uint64_t RayMarcher::bytesFor(std::uint64_t width, std::uint64_t height) {
-    return width * height * (sizeof(Cell) + 1);
+    return width * height * (sizeof(std::uint32_t) + sizeof(Material) + 8);
+}
+
+void RayMarcher::buildPalette(const Medium2D& medium) {
+    grid_.resize(static_cast<std::size_t>(width_) * height_);
+    std::unordered_map<MaterialBits, std::uint32_t, MaterialBitsHash> ids;
+    MaterialBits previous{};
+    std::uint32_t previousId = std::numeric_limits<std::uint32_t>::max();
+    for (int y = 0; y < height_; ++y) {
+        for (int x = 0; x < width_; ++x) {
+            const Rgb s = medium.absorption.rgb(x, y), e = medium.emission.rgb(x, y);
+            const Material m{{s.r, s.g, s.b}, {e.r, e.g, e.b}};
+            MaterialBits bits;
+            std::memcpy(bits.words, &m, sizeof bits.words);
+            // Neighbours usually share a material: skip the hash lookup for runs.
+            if (previousId == std::numeric_limits<std::uint32_t>::max() || !(bits == previous)) {
+                auto [it, inserted] =
+                    ids.try_emplace(bits, static_cast<std::uint32_t>(palette_.size()));
+                if (inserted) palette_.push_back(m);
+                previous = bits;
+                previousId = it->second;
+            }
+            grid_[static_cast<std::size_t>(y) * width_ + x] = previousId << kLevelBits;
+        }
+    }
 }
 
 void RayMarcher::buildBlockLevels() {
-    blockLevel_.assign(cells_.size(), 0);
-    // uniform[k] marks aligned blocks of side 2^k (inside the canvas) whose cells are identical;
-    // a block is uniform when its 4 children are and their first cells are equal.
-    std::vector<std::uint8_t> previous(cells_.size(), 1), current;
-    int prevW = width_, prevH = height_;
+    // uniform[k] marks aligned blocks of side 2^k (inside the canvas) with one material; a block
+    // is uniform when its 4 children are and their first pixels share the material.
+    std::vector<std::uint8_t> previous(grid_.size(), 1), current;
+    int prevW = width_;
     for (int k = 1; k <= kMaxBlockLevel; ++k) {
         const int w = width_ >> k, h = height_ >> k;
         if (w == 0 || h == 0) break;
         current.assign(static_cast<std::size_t>(w) * h, 0);
         bool any = false;
+        const int half = 1 << (k - 1);
         for (int by = 0; by < h; ++by) {
             for (int bx = 0; bx < w; ++bx) {
                 auto child = [&](int i, int j) {
                     return previous[static_cast<std::size_t>(2 * by + j) * prevW + 2 * bx + i];
                 };
                 if (!(child(0, 0) && child(1, 0) && child(0, 1) && child(1, 1))) continue;
-                const int half = 1 << (k - 1);
-                auto cellAt = [&](int i, int j) -> const Cell& {
-                    return cells_[static_cast<std::size_t>((by << k) + j * half) * width_ +
-                                  (bx << k) + i * half];
+                auto idAt = [&](int i, int j) {
+                    return grid_[static_cast<std::size_t>((by << k) + j * half) * width_ +
+                                 (bx << k) + i * half] >>
+                           kLevelBits;
                 };
-                const Cell& first = cellAt(0, 0);
-                if (!(first == cellAt(1, 0) && first == cellAt(0, 1) && first == cellAt(1, 1))) {
-                    continue;
-                }
+                const std::uint32_t first = idAt(0, 0);
+                if (first != idAt(1, 0) || first != idAt(0, 1) || first != idAt(1, 1)) continue;
                 current[static_cast<std::size_t>(by) * w + bx] = 1;
                 any = true;
+                const std::uint32_t word = (first << kLevelBits) | static_cast<std::uint32_t>(k);
                 for (int y = by << k; y < (by + 1) << k; ++y) {
-                    std::fill_n(&blockLevel_[static_cast<std::size_t>(y) * width_ + (bx << k)],
-                                1 << k, static_cast<std::uint8_t>(k));
+                    std::fill_n(&grid_[static_cast<std::size_t>(y) * width_ + (bx << k)], 1 << k,
+                                word);
                 }
             }
         }
         if (!any) break;
         previous.swap(current);
         prevW = w;
-        prevH = h;
     }
-    (void)prevH;
 }
 
 RaySegment RayMarcher::march(Vec2d origin, Vec2d direction, double maxDistance,
@@ -84,15 +122,20 @@ RaySegment RayMarcher::march(Vec2d origin, Vec2d direction, double maxDistance,
 
     float radiance[3] = {0, 0, 0};
     float transmittance[3] = {1, 1, 1};
-    // The pending run of identical cells and its total length.
-    const Cell* run = nullptr;
+    // The pending run of one material and its total length.
+    std::uint32_t run = std::numeric_limits<std::uint32_t>::max();
     double runLength = 0.0;
     auto flushRun = [&] {
-        if (run == nullptr || runLength <= 0.0) return;
+        if (run == std::numeric_limits<std::uint32_t>::max() || runLength <= 0.0) return;
+        const Material& m = palette_[run];
+        const float length = static_cast<float>(runLength);
+        // Grey absorption (the common case) needs one exp for all channels.
+        const bool grey = m.sigma[0] == m.sigma[1] && m.sigma[1] == m.sigma[2];
+        const float greyT = grey ? std::exp(-m.sigma[0] * length) : 0.0f;
         for (int c = 0; c < 3; ++c) {
-            if (run->sigma[c] == 0.0f) continue;  // vacuum: t = 1 and nothing emitted
-            const float t = std::exp(-run->sigma[c] * static_cast<float>(runLength));
-            radiance[c] += transmittance[c] * run->emission[c] * (1.0f - t);
+            if (m.sigma[c] == 0.0f) continue;  // vacuum: t = 1 and nothing emitted
+            const float t = grey ? greyT : std::exp(-m.sigma[c] * length);
+            radiance[c] += transmittance[c] * m.emission[c] * (1.0f - t);
             transmittance[c] *= t;
         }
     };
@@ -100,8 +143,9 @@ RaySegment RayMarcher::march(Vec2d origin, Vec2d direction, double maxDistance,
     double t = 0.0;
     bool leftCanvas = false;
     while (true) {
-        const std::size_t index = static_cast<std::size_t>(cy) * width_ + cx;
-        const int k = blockLevel_[index];
+        const std::uint32_t word = grid_[static_cast<std::size_t>(cy) * width_ + cx];
+        const int k = static_cast<int>(word & kLevelMask);
+        const std::uint32_t material = word >> kLevelBits;
         const int size = 1 << k;
         const int bx0 = (cx >> k) << k, by0 = (cy >> k) << k;
         // Distances to the block's exit planes along each axis.
@@ -112,14 +156,13 @@ RaySegment RayMarcher::march(Vec2d origin, Vec2d direction, double maxDistance,
                           : direction.y < 0 ? (by0 - origin.y) * invY
                                             : inf;
         const double exit = std::min(std::min(tx, ty), maxDistance);
-        const Cell* cell = &cells_[index];
-        if (run == nullptr || !(*run == *cell)) {
+        if (material != run) {
             flushRun();
             if (std::max(transmittance[0], std::max(transmittance[1], transmittance[2])) < cutoff) {
-                run = nullptr;
+                run = std::numeric_limits<std::uint32_t>::max();
                 break;
             }
-            run = cell;
+            run = material;
             runLength = 0.0;
         }
         runLength += std::max(exit - t, 0.0);
@@ -133,14 +176,14 @@ RaySegment RayMarcher::march(Vec2d origin, Vec2d direction, double maxDistance,
             cx = direction.x > 0 ? bx0 + size : bx0 - 1;
         } else {
             const double x = origin.x + t * direction.x;
-            cx = static_cast<int>(std::floor(x));
+            cx = floorToInt(x);
             if (direction.x < 0 && x == cx) --cx;
         }
         if (stepY) {
             cy = direction.y > 0 ? by0 + size : by0 - 1;
         } else {
             const double y = origin.y + t * direction.y;
-            cy = static_cast<int>(std::floor(y));
+            cy = floorToInt(y);
             if (direction.y < 0 && y == cy) --cy;
         }
         if (cx < 0 || cy < 0 || cx >= width_ || cy >= height_) {

@@ -22,8 +22,11 @@ struct RaySegment {
 
 class RayMarcher {
   public:
-    // Keeps a packed copy of the medium plus the block quadtree (about 25 bytes per pixel).
+    // Keeps a packed copy of the medium: per pixel a 32-bit word (material id + block level) and a
+    // palette of the distinct (sigma, E) pairs. The medium must have at most kMaxPixels pixels.
     explicit RayMarcher(const Medium2D& medium);
+
+    static constexpr std::uint64_t kMaxPixels = 1ull << 28;
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -35,24 +38,30 @@ class RayMarcher {
     RaySegment march(Vec2d origin, Vec2d direction, double maxDistance = 1e30,
                      float cutoff = 1e-6f) const;
 
-    // Bytes the marcher holds for a medium of this size.
+    // Bytes the marcher holds for a medium of this size (at most: every pixel distinct).
     static std::uint64_t bytesFor(std::uint64_t width, std::uint64_t height);
 
   private:
-    struct Cell {
+    struct Material {
         float sigma[3];
         float emission[3];
-        bool operator==(const Cell&) const = default;
+        bool operator==(const Material&) const = default;
     };
 
+    // Per pixel word: material id in the high 28 bits, block level in the low 4. One small word
+    // per step keeps the traversal in cache; the palette is only read where the material changes.
+    static constexpr int kLevelBits = 4;
+    static constexpr std::uint32_t kLevelMask = (1u << kLevelBits) - 1;
+
+    void buildPalette(const Medium2D& medium);
     void buildBlockLevels();
 
     int width_, height_;
     Rgb boundary_;
-    std::vector<Cell> cells_;
-    // Per cell: the largest k such that the aligned 2^k block holding the cell lies inside the
-    // canvas and all its cells are identical.
-    std::vector<std::uint8_t> blockLevel_;
+    std::vector<Material> palette_;
+    // Per pixel: material id << kLevelBits | k, where k is the largest level such that the
+    // aligned 2^k block holding the pixel lies inside the canvas and has one material.
+    std::vector<std::uint32_t> grid_;
 };
 
 }  // namespace luxel::gi2d
