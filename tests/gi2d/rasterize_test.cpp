@@ -2,6 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
+
+#include "luxel/core/check.h"
 
 #include "luxel/gi2d/rasterize.h"
 
@@ -148,6 +151,48 @@ TEST(Rasterize, RejectsAbsurdSizes) {
     if (!huge.ok()) {
         EXPECT_NE(huge.error().message().find("only"), std::string::npos) << huge.error().message();
     }
+}
+
+}  // namespace
+}  // namespace luxel::gi2d
+
+namespace luxel::gi2d {
+namespace {
+
+TEST(RasterizeImageLayer, EmissionSpriteAndAbsorptionMap) {
+    // A 2x1 emission image: left texel lit (opaque emitter), right texel dark (leaves the
+    // background); stretched over an 8x4 canvas region.
+    auto emission = std::make_shared<Image>(2, 1, 3);
+    emission->setRgb(0, 0, Rgb(0.5f, 1.0f, 0.25f));
+    Scene2D scene{8, 4, {Rgb(0.0f), Rgb(0.1f)}, {}, {}, ""};
+    ImageLayer layer;
+    layer.size = {8, 4};
+    layer.emission = emission;
+    scene.shapes.push_back({"sprite", layer, Material{{}, {}, 2.0f}});
+    Medium2D m = rasterize(scene).value();
+    EXPECT_NEAR(m.emission.at(1, 1, 1), 2.0f, 1e-5);  // intensity 2 x 1.0
+    EXPECT_NEAR(m.absorption.at(1, 1, 0), kMaxAbsorption, 1e-3);
+    EXPECT_NEAR(m.absorption.at(6, 1, 0), 0.1f, 1e-6);  // background kept
+    EXPECT_EQ(m.emission.at(6, 1, 0), 0.0f);
+
+    // An absorption map alone: sigma = value * scale over the whole rectangle.
+    auto absorption = std::make_shared<Image>(1, 1, 1);
+    absorption->at(0, 0, 0) = 0.5f;
+    ImageLayer mask;
+    mask.position = {4, 0};
+    mask.size = {4, 4};
+    mask.absorption = absorption;
+    mask.absorptionScale = 0.6f;
+    scene.shapes = {{"mask", mask, Material{}}};
+    m = rasterize(scene).value();
+    EXPECT_NEAR(m.absorption.at(5, 2, 2), 0.3f, 1e-5);
+    EXPECT_NEAR(m.absorption.at(2, 2, 2), 0.1f, 1e-6);
+}
+
+TEST(CheckMacros, FailedCheckPrintsBothOperandsAndAborts) {
+    const int a = 3, b = 4;
+    EXPECT_DEATH(LUXEL_CHECK_EQ(a + 1, b + 1), "a \\+ 1 == b \\+ 1 with a = 4, b = 5");
+    EXPECT_DEATH(LUXEL_CHECK(a > b), "Check failed: a > b");
 }
 
 }  // namespace
