@@ -1,0 +1,48 @@
+// Holographic Radiance Cascades (Freeman, Sannikov, Margel 2025, arXiv:2505.02041): per-pixel 2D
+// fluence in O(N^2 log N), in the same normalisation as the reference solver (mean radiance over
+// directions), so the two compare pixel for pixel. Design notes: docs/algorithms/hrc.md.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "luxel/core/error.h"
+#include "luxel/core/image.h"
+#include "luxel/gi2d/medium2d.h"
+
+namespace luxel::gi2d {
+
+struct HrcOptions {
+    // Cascades whose rays are marched exactly; the rest are built by ray extension. The paper
+    // traces 3; 1 is the seed's "extend from c0" variant (here with exact optical depth).
+    int tracedLevels = 3;
+    // Opacity-gated cross blur against the row-parity checkerboard (paper Eq 21).
+    bool crossBlur = true;
+    // Which frustums to sum (bit r: 0 = +x, 1 = +y, 2 = -x, 3 = -y); debug views use one.
+    unsigned frustumMask = 0xF;
+    // >= 0: instead of the fluence, show cascade n's merged result read at each pixel's next
+    // plane (all cones summed). Debug view; cascades above n are merged as usual.
+    int debugCascade = -1;
+    // Called from the calling thread after each frustum pass with (done, total) steps.
+    std::function<void(int done, int total)> onProgress;
+};
+
+struct HrcMemory {
+    std::uint64_t rayTables = 0;    // T_0 .. T_{N_c - 1}, binary16, reused by the 4 frustums
+    std::uint64_t coneBuffers = 0;  // two R ping-pong buffers, float RGB
+    std::uint64_t frame = 0;        // the rotated medium and its ray marcher
+    std::uint64_t output = 0;       // fluence accumulator
+    std::uint64_t total() const { return rayTables + coneBuffers + frame + output; }
+};
+
+// Memory solveHrc needs for a canvas of this size (the input medium not counted).
+HrcMemory estimateHrcMemory(int width, int height);
+
+// Number of cascades used for a canvas of this size.
+int hrcCascadeCount(int width, int height);
+
+// Fails with a clear message when the memory estimate exceeds the available memory, or for bad
+// options.
+Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options = {});
+
+}  // namespace luxel::gi2d

@@ -1,0 +1,62 @@
+// HRC cone merge with exact angular weights and the odd/even plane rule.
+#include "gi2d/hrc/cone_merge.h"
+
+#include "gi2d/hrc/hrc_geometry.h"
+#include "luxel/core/parallel.h"
+
+namespace luxel::gi2d::hrc {
+
+void ConeBuffer::reset(int planes, int cones, int rows) {
+    planes_ = planes;
+    cones_ = cones;
+    rows_ = rows;
+    data_.resize(static_cast<std::size_t>(planes) * cones * rows);
+}
+
+std::vector<float> coneWeights(int level) {
+    std::vector<float> w(pow2(level + 1));
+    for (int j = 0; j < pow2(level + 1); ++j) w[j] = static_cast<float>(coneWidth(level + 1, j));
+    return w;
+}
+
+void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb sky,
+                  ConeBuffer& out) {
+    const int cones = pow2(n), rows = tables.rows();
+    out.reset(tables.planes(n), cones, rows);
+    const std::vector<float> weight = coneWeights(n);
+    // Fluence of cone j at an upper probe; outside the frame (or above the top cascade) the sky.
+    auto upperFluence = [&](int p, int y, int j) -> Rgb {
+        if (upper != nullptr && upper->inRange(p, y)) return upper->at(p, j, y);
+        return sky * weight[j];
+    };
+    parallelForRange(out.planes() * cones, 1, [&](int begin, int end) {
+        for (int index = begin; index < end; ++index) {
+            const int p = index / cones, i = index % cones;
+            for (int y = 0; y < rows; ++y) {
+                Rgb sum;
+                for (int s = 0; s < 2; ++s) {
+                    const int k = i + s, j = 2 * i + s, dy = rayOffsetY(n, k);
+                    const float w = weight[j];
+                    if (p % 2 == 1) {
+                        // The ray ends exactly on upper plane (p + 1) / 2 (Eq 14).
+                        const Interval seg = tables.get(n, p, y, k);
+                        sum += seg.radiance * w +
+                               seg.transmittance * upperFluence((p + 1) / 2, y + dy, j);
+                    } else {
+                        // Upper plane p / 2 is here: merge near, and far with a double-length
+                        // ray to upper plane p / 2 + 1, then average (Eq 15-17).
+                        const Rgb near = upperFluence(p / 2, y, j);
+                        const Interval seg =
+                            over(tables.get(n, p, y, k), tables.get(n, p + 1, y + dy, k));
+                        const Rgb far = seg.radiance * w +
+                                        seg.transmittance * upperFluence(p / 2 + 1, y + 2 * dy, j);
+                        sum += (near + far) * 0.5f;
+                    }
+                }
+                out.at(p, i, y) = sum;
+            }
+        }
+    });
+}
+
+}  // namespace luxel::gi2d::hrc

@@ -1,0 +1,67 @@
+// HRC ray tables T_n (hrc.md §3-4): for every cascade n, probe plane p, row y and ray k, the
+// interval from (p 2^n, y + 0.5) to that point plus v_n(k). Stored as binary16 (12 bytes per
+// entry), rows innermost: index = ((p * (2^n + 1) + k) * rows + y).
+//
+// Levels below `tracedLevels` are marched exactly through the medium; the rest are built by ray
+// extension (paper Eq 18-20): T_n(k) averages the two bent paths
+//   over(T_{n-1}(2p, y, lo), T_{n-1}(2p+1, y + dy(lo), hi)) and the same with lo and hi swapped,
+// lo = k >> 1, hi = (k + 1) >> 1, which both end at v_n(k) since v_{n-1}(lo) + v_{n-1}(hi) = v_n(k).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "gi2d/hrc/interval.h"
+#include "luxel/gi2d/ray_march.h"
+
+namespace luxel::gi2d::hrc {
+
+class RayTables {
+  public:
+    // Capacity for frames of up to `length` x `rows` (either orientation) and `levels` cascades.
+    RayTables() = default;
+
+    // Shapes the tables for a frame; keeps the allocation when it is large enough.
+    void reset(int length, int rows, int levels);
+
+    int levels() const { return levels_; }
+    int rows() const { return rows_; }
+    int planes(int n) const { return planes_[n]; }
+
+    // Out of range (plane or row outside the frame) reads as empty space: L = 0, T = 1.
+    Interval get(int n, int p, int y, int k) const {
+        if (p < 0 || p >= planes_[n] || y < 0 || y >= rows_) return {};
+        return decode(tables_[n][index(n, p, k, y)]);
+    }
+    void set(int n, int p, int y, int k, const Interval& value) {
+        tables_[n][index(n, p, k, y)] = encode(value);
+    }
+
+    // Bytes for the tables of a frame (entries x 12 bytes).
+    static std::uint64_t bytesFor(int length, int rows, int levels);
+
+  private:
+    struct Entry {
+        std::uint16_t radiance[3];
+        std::uint16_t transmittance[3];
+    };
+    static Entry encode(const Interval& value);
+    static Interval decode(const Entry& entry);
+
+    std::size_t index(int n, int p, int k, int y) const {
+        return (static_cast<std::size_t>(p) * ((1u << n) + 1) + k) * rows_ + y;
+    }
+
+    int levels_ = 0, rows_ = 0;
+    std::vector<int> planes_;
+    std::vector<std::vector<Entry>> tables_;
+};
+
+// Marches T_n for n < tracedLevels with the exact DDA (exact optical depth on diagonals).
+void traceBaseLevels(RayTables& tables, const RayMarcher& marcher, int tracedLevels);
+
+// Builds T_n for tracedLevels <= n < levels by extension.
+void extendLevels(RayTables& tables, int tracedLevels);
+
+}  // namespace luxel::gi2d::hrc
