@@ -36,10 +36,11 @@ Interval ownHalfPixel(const Medium2D& medium, int x, int y) {
     return own;
 }
 
-// Adds this frustum's angular fluence at every pixel: own half pixel, then the merged cones of
-// cascade `level` at the first plane beyond the pixel.
-void readOut(const Medium2D& medium, const FrustumFrame& frame, const ConeBuffer& cones, int level,
-             Rgb sky, Image& fluence) {
+// Adds this frustum's angular fluence arriving at every pixel's read-out plane: the merged cones
+// of cascade `level` at the first plane beyond the pixel. The pixel's own half-pixel segment is
+// the same for every frustum and is applied once at the end.
+void readOut(const FrustumFrame& frame, const ConeBuffer& cones, int level,
+             Rgb sky, Image& beyondSum) {
     const float coneWidthSum = kQuarterTurn;  // the cones of one probe cover 90 degrees
     parallelForRange(frame.rows, 8, [&](int begin, int end) {
         for (int v = begin; v < end; ++v) {
@@ -53,16 +54,16 @@ void readOut(const Medium2D& medium, const FrustumFrame& frame, const ConeBuffer
                 } else {
                     beyond = sky * coneWidthSum;
                 }
-                const Interval own = ownHalfPixel(medium, x, y);
-                const Rgb total = own.radiance * coneWidthSum + own.transmittance * beyond;
-                fluence.setRgb(x, y, fluence.rgb(x, y) + total);
+                beyondSum.setRgb(x, y, beyondSum.rgb(x, y) + beyond);
             }
         }
     });
 }
 
 // Paper Eq 21: 1-px cross blur, centre weight 4, neighbours 1, a neighbour skipped when its
-// opacity differs from the centre's by more than 0.1 (weights renormalised).
+// opacity differs from the centre's by more than 0.1 (weights renormalised). Applied to the light
+// arriving at the read-out planes, where the row-parity checkerboard lives, before the pixel's own
+// segment: blurring own emission would smear an emitter into the opaque wall next to it.
 Image crossBlur(const Medium2D& medium, const Image& fluence) {
     const int w = fluence.width(), h = fluence.height();
     auto opacity = [&](int x, int y) {
@@ -161,14 +162,24 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options) {
             upper = &buffers[current];
             current ^= 1;
         }
-        readOut(medium, frame, *upper, lowest, medium.boundaryRadiance, fluence);
+        readOut(frame, *upper, lowest, medium.boundaryRadiance, fluence);
         if (options.onProgress) options.onProgress(++done, frustums);
     }
 
-    // Angular fluence summed over frustums -> mean radiance over directions.
+    if (options.crossBlur && options.debugCascade < 0) fluence = crossBlur(medium, fluence);
+    // Through the pixel's own half-pixel segment, then angular fluence summed over frustums ->
+    // mean radiance over directions.
+    const float ownWidth = kQuarterTurn * static_cast<float>(frustums);
     const float toMean = static_cast<float>(1.0 / (2.0 * std::numbers::pi));
-    for (std::size_t i = 0; i < fluence.size(); ++i) fluence.data()[i] *= toMean;
-    if (options.crossBlur && options.debugCascade < 0) return crossBlur(medium, fluence);
+    parallelForRange(h, 16, [&](int begin, int end) {
+        for (int y = begin; y < end; ++y) {
+            for (int x = 0; x < w; ++x) {
+                const Interval own = ownHalfPixel(medium, x, y);
+                const Rgb total = own.radiance * ownWidth + own.transmittance * fluence.rgb(x, y);
+                fluence.setRgb(x, y, total * toMean);
+            }
+        }
+    });
     return fluence;
 }
 
