@@ -194,4 +194,34 @@ TEST_F(Cli, SceneTooLargeForMemoryIsRefused) {
     expectError("render " + scene + " --size 65536x65536 --out " + path("x.exr"), "only");
 }
 
+TEST_F(Cli, HrcRendersAndRefusesSizesThatDoNotFit) {
+    const std::string scene = write("small.json", kSmallScene);
+    RunResult r = runLuxel("render " + scene + " --solver hrc --out " + path("h.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("solver hrc"), std::string::npos) << r.output;
+    auto f = luxel::readExr(path("h.exr"));
+    ASSERT_TRUE(f.ok());
+    EXPECT_GT(f->at(16, 16, 0), f->at(40, 16, 0)) << "shadow behind the box";
+    r = runLuxel("render " + scene +
+                 " --solver hrc --frustum +x --cascade 1 --no-blur "
+                 "--traced-levels 1 --out " +
+                 path("d.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    expectError("render " + scene + " --solver hrc --frustum up --out " + path("x.exr"),
+                "--frustum");
+    r = runLuxel("info " + scene + " --solver hrc --size 1024x1024");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("10 cascades"), std::string::npos) << r.output;
+
+    const std::uint64_t needed = luxel::gi2d::mediumBytes(16384, 16384) * 4;
+    if (luxel::availableMemoryBytes() > needed) GTEST_SKIP() << "this machine has the memory";
+    expectError("render " + scene + " --solver hrc --size 16384x16384 --out " + path("x.exr"),
+                "only");
+    r = runLuxel("info " + scene + " --solver hrc --size 16384x16384");  // prints, then refuses
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_NE(r.output.find("luxel: error: rendering 16384x16384 with hrc needs"),
+              std::string::npos)
+        << r.output;
+}
+
 }  // namespace

@@ -14,7 +14,7 @@ TEST(Half, KnownValues) {
     EXPECT_EQ(floatToHalf(1.0f), 0x3c00);
     EXPECT_EQ(floatToHalf(-2.0f), 0xc000);
     EXPECT_EQ(floatToHalf(65504.0f), 0x7bff);
-    EXPECT_EQ(floatToHalf(1e6f), 0x7c00);  // overflow -> inf
+    EXPECT_EQ(floatToHalf(1e6f), 0x7c00);      // overflow -> inf
     EXPECT_EQ(floatToHalf(0x1p-24f), 0x0001);  // smallest subnormal
     EXPECT_EQ(halfToFloat(0x3555), 0.333251953125f);
     EXPECT_TRUE(std::isnan(halfToFloat(floatToHalf(NAN))));

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "gi2d/shipped_scenes.h"
 #include "luxel/core/metrics.h"
 #include "luxel/core/parallel.h"
 #include "luxel/gi2d/rasterize.h"
@@ -14,13 +15,7 @@
 namespace luxel::gi2d {
 namespace {
 
-Medium2D shippedScene(const std::string& name, int width, int height) {
-    auto scene = loadScene2D(std::string(LUXEL_SOURCE_DIR) + "/scenes/2d/" + name);
-    EXPECT_TRUE(scene.ok()) << scene.error().message();
-    auto medium = rasterize(*scene, {width, height, 16});
-    EXPECT_TRUE(medium.ok()) << medium.error().message();
-    return std::move(medium).value();
-}
+using testing_support::shippedScene;
 
 class ReferenceNoise : public testing::TestWithParam<const char*> {};
 
@@ -41,10 +36,7 @@ INSTANTIATE_TEST_SUITE_P(ShippedScenes, ReferenceNoise,
                          testing::Values("penumbra.json", "pinhole.json", "room.json", "fog.json",
                                          "thin-walls.json", "many-lights.json"),
                          [](const auto& param) {
-                             std::string n = param.param;
-                             n = n.substr(0, n.find('.'));
-                             for (char& c : n) c = c == '-' ? '_' : c;
-                             return n;
+                             return testing_support::sceneTestName(param.param);
                          });
 
 TEST(ReferenceDeterminism, SameImageForAnyThreadCount) {

@@ -26,9 +26,22 @@ int reportError(const Error& error);
 // "512x384" -> (512, 384); an empty string gives (0, 0) = the scene's own size.
 Result<std::pair<int, int>> parseSize(const std::string& text);
 
-// Loads a scene and rasterises it at `size` (empty = the scene's canvas).
+// A scene file and the size it will be rendered at.
+struct SizedScene {
+    gi2d::Scene2D scene;
+    int width = 0, height = 0;
+};
+
+// Loads a scene; `size` overrides its canvas ("" = the scene's own).
+Result<SizedScene> loadSizedScene(const std::string& scenePath, const std::string& size);
+
+// Rasterises a loaded scene at its render size.
+Result<gi2d::Medium2D> rasterizeSized(const SizedScene& sized, const std::string& scenePath,
+                                      int supersample);
+
+// Both of the above.
 Result<gi2d::Medium2D> loadMedium(const std::string& scenePath, const std::string& size,
-                                  int supersample, gi2d::Scene2D* sceneOut = nullptr);
+                                  int supersample);
 
 inline constexpr int kExitBadInput = 1;
 

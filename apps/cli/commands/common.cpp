@@ -24,20 +24,31 @@ Result<std::pair<int, int>> parseSize(const std::string& text) {
     return std::pair{w, h};
 }
 
-Result<gi2d::Medium2D> loadMedium(const std::string& scenePath, const std::string& size,
-                                  int supersample, gi2d::Scene2D* sceneOut) {
+Result<SizedScene> loadSizedScene(const std::string& scenePath, const std::string& size) {
     auto dims = parseSize(size);
     if (!dims) return dims.error();
     auto scene = gi2d::loadScene2D(scenePath);
     if (!scene) return scene.error();
-    gi2d::RasterOptions raster;
-    raster.width = dims->first;
-    raster.height = dims->second;
-    raster.supersample = supersample;
-    auto medium = gi2d::rasterize(*scene, raster);
+    SizedScene sized{std::move(*scene), dims->first, dims->second};
+    if (sized.width == 0) {
+        sized.width = sized.scene.width;
+        sized.height = sized.scene.height;
+    }
+    return sized;
+}
+
+Result<gi2d::Medium2D> rasterizeSized(const SizedScene& sized, const std::string& scenePath,
+                                      int supersample) {
+    auto medium = gi2d::rasterize(sized.scene, {sized.width, sized.height, supersample});
     if (!medium) return Error(scenePath + ": " + medium.error().message());
-    if (sceneOut) *sceneOut = std::move(*scene);
     return medium;
+}
+
+Result<gi2d::Medium2D> loadMedium(const std::string& scenePath, const std::string& size,
+                                  int supersample) {
+    auto sized = loadSizedScene(scenePath, size);
+    if (!sized) return sized.error();
+    return rasterizeSized(*sized, scenePath, supersample);
 }
 
 }  // namespace luxel::cli

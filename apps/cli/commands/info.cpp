@@ -4,6 +4,7 @@
 
 #include "commands/command.h"
 #include "luxel/core/memory.h"
+#include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/ray_march.h"
 #include "luxel/gi2d/reference_solver.h"
 #include "luxel/gi2d/scene2d_json.h"
@@ -12,7 +13,7 @@ namespace luxel::cli {
 namespace {
 
 struct InfoArgs {
-    std::string scene, size;
+    std::string scene, size, solver = "reference";
     int rays = gi2d::ReferenceOptions{}.rays;
 };
 
@@ -43,15 +44,27 @@ int runInfo(const InfoArgs& args) {
                     a.b);
     }
     const std::uint64_t medium = gi2d::mediumBytes(w, h);
-    const std::uint64_t reference =
-        medium + gi2d::RayMarcher::bytesFor(w, h) + imageBytes(w, h, 3) * 2;
-    std::printf("  memory: medium %s, reference solver %s (available %s)\n",
-                formatBytes(medium).c_str(), formatBytes(reference).c_str(),
+    std::uint64_t needed = medium;
+    if (args.solver == "reference") {
+        needed += gi2d::RayMarcher::bytesFor(w, h) + imageBytes(w, h, 3) * 2;
+        std::printf("  reference solver: %.3g rays at %d rays/pixel\n",
+                    static_cast<double>(gi2d::referenceRayCount(w, h, args.rays)), args.rays);
+    } else if (args.solver == "hrc") {
+        const gi2d::HrcMemory m = gi2d::estimateHrcMemory(w, h);
+        needed += m.total();
+        std::printf("  hrc: %d cascades; ray tables %s, cone buffers %s, frame %s, output %s\n",
+                    gi2d::hrcCascadeCount(w, h), formatBytes(m.rayTables).c_str(),
+                    formatBytes(m.coneBuffers).c_str(), formatBytes(m.frame).c_str(),
+                    formatBytes(m.output).c_str());
+    } else {
+        return reportError(
+            Error("unknown solver '" + args.solver + "' (available: reference, hrc)"));
+    }
+    std::printf("  memory: medium %s, %s in all with the %s solver (available %s)\n",
+                formatBytes(medium).c_str(), formatBytes(needed).c_str(), args.solver.c_str(),
                 formatBytes(availableMemoryBytes()).c_str());
-    std::printf("  reference work: %.3g rays at %d rays/pixel\n",
-                static_cast<double>(gi2d::referenceRayCount(w, h, args.rays)), args.rays);
-    if (Status s =
-            checkMemory(reference, "rendering " + std::to_string(w) + "x" + std::to_string(h));
+    if (Status s = checkMemory(needed, "rendering " + std::to_string(w) + "x" + std::to_string(h) +
+                                           " with " + args.solver);
         !s) {
         return reportError(s.error());
     }
@@ -64,6 +77,8 @@ Runner addInfoCommand(CLI::App& app) {
     auto args = std::make_shared<InfoArgs>();
     app.add_option("scene", args->scene, "scene file (.json)")->required();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
+    app.add_option("--solver", args->solver, "solver to estimate for: reference, hrc")
+        ->capture_default_str();
     app.add_option("--rays", args->rays, "directions per pixel")->capture_default_str();
     return [args] { return runInfo(*args); };
 }

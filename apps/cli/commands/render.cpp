@@ -4,11 +4,13 @@
 
 #include "commands/command.h"
 #include "luxel/core/image_io.h"
+#include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
 #include "luxel/core/progress.h"
 #include "luxel/core/timer.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/gi2d/display.h"
+#include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/reference_solver.h"
 
 namespace luxel::cli {
@@ -22,6 +24,11 @@ struct RenderArgs {
     std::uint64_t seed = 1;
     float exposure = 0.0f;
     bool quiet = false;
+    // HRC
+    int tracedLevels = gi2d::HrcOptions{}.tracedLevels;
+    bool noBlur = false;
+    std::string frustum;  // debug: one of +x, +y, -x, -y
+    int cascade = -1;     // debug: show one cascade's merged result
 };
 
 bool hasExtension(const std::string& path, const std::string& ext) {
@@ -31,10 +38,46 @@ bool hasExtension(const std::string& path, const std::string& ext) {
     return tail == ext;
 }
 
-int runRender(const RenderArgs& args) {
-    if (args.solver != "reference") {
-        return reportError(Error("unknown solver '" + args.solver + "' (available: reference)"));
+// Frustum name -> HRC frustum mask bit.
+Result<unsigned> frustumMask(const std::string& name) {
+    if (name.empty()) return 0xFu;
+    const char* names[4] = {"+x", "+y", "-x", "-y"};
+    for (unsigned r = 0; r < 4; ++r) {
+        if (name == names[r]) return 1u << r;
     }
+    return Error("--frustum '" + name + "' is not one of +x, +y, -x, -y");
+}
+
+// Runs the chosen solver with a progress bar; returns the fluence and the number of rays (0 when
+// the solver does not cast rays per pixel).
+Result<Image> solve(const RenderArgs& args, const gi2d::Medium2D& medium, double& rays) {
+    const int w = medium.width(), h = medium.height();
+    if (args.solver == "reference") {
+        ProgressBar progress("reference", static_cast<std::uint64_t>(h), !args.quiet);
+        gi2d::ReferenceOptions options;
+        options.rays = args.rays;
+        options.seed = args.seed;
+        options.onRowsDone = [&](int n) { progress.advance(static_cast<std::uint64_t>(n)); };
+        rays = static_cast<double>(gi2d::referenceRayCount(w, h, args.rays));
+        return gi2d::solveReference(medium, options);
+    }
+    if (args.solver == "hrc") {
+        auto mask = frustumMask(args.frustum);
+        if (!mask) return mask.error();
+        ProgressBar progress("hrc", 4, !args.quiet);
+        gi2d::HrcOptions options;
+        options.tracedLevels = args.tracedLevels;
+        options.crossBlur = !args.noBlur;
+        options.frustumMask = *mask;
+        options.debugCascade = args.cascade;
+        options.onProgress = [&](int, int) { progress.advance(); };
+        rays = 0;
+        return gi2d::solveHrc(medium, options);
+    }
+    return Error("unknown solver '" + args.solver + "' (available: reference, hrc)");
+}
+
+int runRender(const RenderArgs& args) {
     if (!hasExtension(args.out, ".exr") && !hasExtension(args.out, ".png")) {
         return reportError(Error("--out '" + args.out + "' must end in .exr or .png"));
     }
@@ -46,20 +89,25 @@ int runRender(const RenderArgs& args) {
     const ToneMapSettings tone{args.exposure, *curve};
     ThreadLimit threadLimit(args.threads);
 
+    auto sized = loadSizedScene(args.scene, args.size);
+    if (!sized) return reportError(sized.error());
+    // Refuse before allocating anything when the medium plus the solver cannot fit.
+    if (args.solver == "hrc") {
+        const std::uint64_t needed = gi2d::mediumBytes(sized->width, sized->height) +
+                                     gi2d::estimateHrcMemory(sized->width, sized->height).total();
+        const std::string what =
+            "HRC at " + std::to_string(sized->width) + "x" + std::to_string(sized->height);
+        if (Status s = checkMemory(needed, what); !s) return reportError(s.error());
+    }
     Stopwatch rasterTime;
-    auto medium = loadMedium(args.scene, args.size, args.supersample);
+    auto medium = rasterizeSized(*sized, args.scene, args.supersample);
     if (!medium) return reportError(medium.error());
     const double rasterSeconds = rasterTime.seconds();
     const int w = medium->width(), h = medium->height();
 
-    ProgressBar progress("render", static_cast<std::uint64_t>(h), !args.quiet);
-    gi2d::ReferenceOptions options;
-    options.rays = args.rays;
-    options.seed = args.seed;
-    options.onRowsDone = [&](int rows) { progress.advance(static_cast<std::uint64_t>(rows)); };
     Stopwatch solveTime;
-    auto fluence = gi2d::solveReference(*medium, options);
-    progress.finish();
+    double rays = 0;
+    auto fluence = solve(args, *medium, rays);
     if (!fluence) return reportError(fluence.error());
     const double solveSeconds = solveTime.seconds();
 
@@ -74,13 +122,14 @@ int runRender(const RenderArgs& args) {
         }
     }
     if (!args.quiet) {
-        const double rays = static_cast<double>(gi2d::referenceRayCount(w, h, args.rays));
-        std::printf("%s: %dx%d, solver %s, %d rays/pixel, %d threads\n", args.scene.c_str(), w, h,
-                    args.solver.c_str(), args.rays,
-                    args.threads > 0 ? args.threads : hardwareThreads());
-        std::printf("  raster %.3f s, solve %.3f s (%.2f Mrays/s)\n", rasterSeconds, solveSeconds,
-                    rays / solveSeconds * 1e-6);
-        std::printf("  wrote %s%s%s\n", args.out.c_str(), args.png.empty() ? "" : ", ",
+        std::printf("%s: %dx%d, solver %s, %d threads\n", args.scene.c_str(), w, h,
+                    args.solver.c_str(), args.threads > 0 ? args.threads : hardwareThreads());
+        std::printf("  raster %.3f s, solve %.3f s (%.2f Mpixel/s", rasterSeconds, solveSeconds,
+                    static_cast<double>(w) * h / solveSeconds * 1e-6);
+        if (rays > 0) {
+            std::printf(", %.2f Mrays/s at %d rays/pixel", rays / solveSeconds * 1e-6, args.rays);
+        }
+        std::printf(")\n  wrote %s%s%s\n", args.out.c_str(), args.png.empty() ? "" : ", ",
                     args.png.c_str());
     }
     return 0;
@@ -91,15 +140,22 @@ int runRender(const RenderArgs& args) {
 Runner addRenderCommand(CLI::App& app) {
     auto args = std::make_shared<RenderArgs>();
     app.add_option("scene", args->scene, "scene file (.json)")->required();
-    app.add_option("--solver", args->solver, "light transport solver")->capture_default_str();
+    app.add_option("--solver", args->solver, "light transport solver: reference, hrc")
+        ->capture_default_str();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
     app.add_option("--rays", args->rays, "directions per pixel (reference solver)")
         ->capture_default_str();
     app.add_option("--threads", args->threads, "worker threads (0 = all cores)")
         ->capture_default_str();
-    app.add_option("--seed", args->seed, "random seed")->capture_default_str();
+    app.add_option("--seed", args->seed, "random seed (reference solver)")->capture_default_str();
     app.add_option("--supersample", args->supersample, "edge samples per pixel side")
         ->capture_default_str();
+    app.add_option("--traced-levels", args->tracedLevels,
+                   "HRC: cascades traced exactly; the rest by ray extension (1 = extend from c0)")
+        ->capture_default_str();
+    app.add_flag("--no-blur", args->noBlur, "HRC: skip the opacity-gated cross blur (Eq 21)");
+    app.add_option("--frustum", args->frustum, "HRC debug: only this frustum (+x, +y, -x, -y)");
+    app.add_option("--cascade", args->cascade, "HRC debug: show cascade N's merged result");
     app.add_option("--out", args->out, "fluence image: .exr (linear float) or .png (tonemapped)")
         ->required();
     app.add_option("--png", args->png, "also write the display image (emission + fluence)");

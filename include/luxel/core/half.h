@@ -19,8 +19,8 @@ inline std::uint16_t floatToHalf(float value) {
         // Subnormal half (or zero): add a magic number so the FPU does the rounding.
         const float magic = std::bit_cast<float>(0x3f000000u);  // 0.5: shifts mantissa into place
         const float shifted = std::bit_cast<float>(absBits) + magic;
-        return static_cast<std::uint16_t>(sign | (std::bit_cast<std::uint32_t>(shifted) -
-                                                  std::bit_cast<std::uint32_t>(magic)));
+        return static_cast<std::uint16_t>(
+            sign | (std::bit_cast<std::uint32_t>(shifted) - std::bit_cast<std::uint32_t>(magic)));
     }
     // Normal: rebias the exponent and round the 13 dropped mantissa bits to nearest even.
     const std::uint32_t mantissaOdd = (absBits >> 13) & 1u;

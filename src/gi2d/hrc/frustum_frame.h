@@ -18,10 +18,18 @@ struct FrustumFrame {
     // Canvas pixel shown at frame pixel (u, v).
     void toCanvas(int u, int v, int& x, int& y) const {
         switch (frustum) {
-            case Frustum::PlusX: x = u, y = v; break;
-            case Frustum::MinusX: x = canvasWidth - 1 - u, y = v; break;
-            case Frustum::PlusY: x = v, y = u; break;
-            default: x = v, y = canvasHeight - 1 - u; break;  // MinusY
+            case Frustum::PlusX:
+                x = u, y = v;
+                break;
+            case Frustum::MinusX:
+                x = canvasWidth - 1 - u, y = v;
+                break;
+            case Frustum::PlusY:
+                x = v, y = u;
+                break;
+            default:
+                x = v, y = canvasHeight - 1 - u;
+                break;  // MinusY
         }
     }
 };

@@ -11,10 +11,14 @@
 
 namespace luxel::gi2d::hrc {
 
-inline constexpr int pow2(int n) { return 1 << n; }
+inline constexpr int pow2(int n) {
+    return 1 << n;
+}
 
 // Offset of ray k of cascade n along the rows (the x offset is 2^n).
-inline constexpr int rayOffsetY(int n, int k) { return 2 * k - pow2(n); }
+inline constexpr int rayOffsetY(int n, int k) {
+    return 2 * k - pow2(n);
+}
 
 // Angle of ray k of cascade n from the frustum axis (paper Eq 13).
 inline double rayAngle(int n, int k) {
@@ -22,7 +26,9 @@ inline double rayAngle(int n, int k) {
 }
 
 // Angular width of cone j of cascade m: the weight carried by a level-(m-1) ray next to it.
-inline double coneWidth(int m, int j) { return rayAngle(m, j + 1) - rayAngle(m, j); }
+inline double coneWidth(int m, int j) {
+    return rayAngle(m, j + 1) - rayAngle(m, j);
+}
 
 // Cascades needed so that 2^count planes cover `length` pixels along the axis (at least 1).
 inline int cascadeCount(int length) {
@@ -32,6 +38,8 @@ inline int cascadeCount(int length) {
 }
 
 // Probe planes of cascade n that start inside a frame `length` pixels long: x = p 2^n < length.
-inline int planeCount(int length, int n) { return (length + pow2(n) - 1) >> n; }
+inline int planeCount(int length, int n) {
+    return (length + pow2(n) - 1) >> n;
+}
 
 }  // namespace luxel::gi2d::hrc

@@ -39,8 +39,8 @@ Interval ownHalfPixel(const Medium2D& medium, int x, int y) {
 // Adds this frustum's angular fluence arriving at every pixel's read-out plane: the merged cones
 // of cascade `level` at the first plane beyond the pixel. The pixel's own half-pixel segment is
 // the same for every frustum and is applied once at the end.
-void readOut(const FrustumFrame& frame, const ConeBuffer& cones, int level,
-             Rgb sky, Image& beyondSum) {
+void readOut(const FrustumFrame& frame, const ConeBuffer& cones, int level, Rgb sky,
+             Image& beyondSum) {
     const float coneWidthSum = kQuarterTurn;  // the cones of one probe cover 90 degrees
     parallelForRange(frame.rows, 8, [&](int begin, int end) {
         for (int v = begin; v < end; ++v) {
@@ -90,7 +90,9 @@ Image crossBlur(const Medium2D& medium, const Image& fluence) {
     return out;
 }
 
-FrustumFrame frameFor(int r, int w, int h) { return makeFrame(static_cast<Frustum>(r), w, h); }
+FrustumFrame frameFor(int r, int w, int h) {
+    return makeFrame(static_cast<Frustum>(r), w, h);
+}
 
 }  // namespace
 

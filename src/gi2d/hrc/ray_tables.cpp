@@ -5,7 +5,6 @@
 #include <cmath>
 
 #include "gi2d/hrc/hrc_geometry.h"
-#include "luxel/core/half.h"
 #include "luxel/core/parallel.h"
 
 namespace luxel::gi2d::hrc {
@@ -27,24 +26,6 @@ std::uint64_t RayTables::bytesFor(int length, int rows, int levels) {
         entries += static_cast<std::uint64_t>(planeCount(length, n)) * (pow2(n) + 1) * rows;
     }
     return entries * sizeof(Entry);
-}
-
-RayTables::Entry RayTables::encode(const Interval& value) {
-    Entry e;
-    for (int c = 0; c < 3; ++c) {
-        e.radiance[c] = floatToHalf(value.radiance[c]);
-        e.transmittance[c] = floatToHalf(value.transmittance[c]);
-    }
-    return e;
-}
-
-Interval RayTables::decode(const Entry& entry) {
-    Interval v;
-    for (int c = 0; c < 3; ++c) {
-        v.radiance[c] = halfToFloat(entry.radiance[c]);
-        v.transmittance[c] = halfToFloat(entry.transmittance[c]);
-    }
-    return v;
 }
 
 namespace {

@@ -5,7 +5,8 @@
 // Levels below `tracedLevels` are marched exactly through the medium; the rest are built by ray
 // extension (paper Eq 18-20): T_n(k) averages the two bent paths
 //   over(T_{n-1}(2p, y, lo), T_{n-1}(2p+1, y + dy(lo), hi)) and the same with lo and hi swapped,
-// lo = k >> 1, hi = (k + 1) >> 1, which both end at v_n(k) since v_{n-1}(lo) + v_{n-1}(hi) = v_n(k).
+// lo = k >> 1, hi = (k + 1) >> 1, which both end at v_n(k) since v_{n-1}(lo) + v_{n-1}(hi) =
+// v_n(k).
 #pragma once
 
 #include <cstdint>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "gi2d/hrc/interval.h"
+#include "luxel/core/half.h"
 #include "luxel/gi2d/ray_march.h"
 
 namespace luxel::gi2d::hrc {
@@ -46,8 +48,22 @@ class RayTables {
         std::uint16_t radiance[3];
         std::uint16_t transmittance[3];
     };
-    static Entry encode(const Interval& value);
-    static Interval decode(const Entry& entry);
+    static Entry encode(const Interval& value) {
+        Entry e;
+        for (int c = 0; c < 3; ++c) {
+            e.radiance[c] = floatToHalf(value.radiance[c]);
+            e.transmittance[c] = floatToHalf(value.transmittance[c]);
+        }
+        return e;
+    }
+    static Interval decode(const Entry& entry) {
+        Interval v;
+        for (int c = 0; c < 3; ++c) {
+            v.radiance[c] = halfToFloat(entry.radiance[c]);
+            v.transmittance[c] = halfToFloat(entry.transmittance[c]);
+        }
+        return v;
+    }
 
     std::size_t index(int n, int p, int k, int y) const {
         return (static_cast<std::size_t>(p) * ((1u << n) + 1) + k) * rows_ + y;
