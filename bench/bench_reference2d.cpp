@@ -63,5 +63,3 @@ BENCHMARK_CAPTURE(rasterize, room, "room.json")
     ->Arg(2048)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-
-BENCHMARK_MAIN();

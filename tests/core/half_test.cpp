@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include "luxel/core/half.h"
 
@@ -40,6 +42,33 @@ TEST(Half, RoundsLikeTheCompiler) {
     }
 }
 #endif
+
+}  // namespace
+}  // namespace luxel
+
+namespace luxel {
+namespace {
+
+TEST(Half, BulkConversionsMatchTheScalarOnes) {
+    std::vector<float> values;
+    std::uint32_t state = 3;
+    for (int i = 0; i < 10007; ++i) {
+        state = state * 1664525u + 1013904223u;
+        const float f = std::bit_cast<float>(state);
+        values.push_back(std::isnan(f) ? 1.0f : f);
+    }
+    std::vector<std::uint16_t> halves(values.size());
+    floatsToHalves(values.data(), halves.data(), values.size());
+    std::vector<float> back(values.size());
+    halvesToFloats(halves.data(), back.data(), halves.size());
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        ASSERT_EQ(halves[i], floatToHalf(values[i])) << values[i];
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(back[i]),
+                  std::bit_cast<std::uint32_t>(halfToFloat(halves[i])));
+    }
+    std::printf("bulk half conversion uses %s\n",
+                hasHardwareHalfConversion() ? "F16C" : "software");
+}
 
 }  // namespace
 }  // namespace luxel

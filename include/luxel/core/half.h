@@ -3,6 +3,7 @@
 #pragma once
 
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 
 namespace luxel {
@@ -40,5 +41,17 @@ inline float halfToFloat(std::uint16_t half) {
     }
     return std::bit_cast<float>(sign | ((exponent + 112u) << 23) | (mantissa << 13));
 }
+
+}  // namespace luxel
+
+namespace luxel {
+
+// Bulk conversions for table rows. They use the CPU's F16C instructions when it has them
+// (checked once at run time) and the functions above otherwise; both round the same way.
+void halvesToFloats(const std::uint16_t* in, float* out, std::size_t count);
+void floatsToHalves(const float* in, std::uint16_t* out, std::size_t count);
+
+// Whether the bulk conversions run on F16C (for benchmarks and notes).
+bool hasHardwareHalfConversion();
 
 }  // namespace luxel

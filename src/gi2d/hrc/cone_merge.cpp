@@ -30,24 +30,30 @@ void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb s
         return sky * weight[j];
     };
     parallelForRange(out.planes() * cones, 1, [&](int begin, int end) {
+        // Per-thread scratch: the two rays' table rows here and on the next plane.
+        thread_local DecodedRow here[2], next[2];
         for (int index = begin; index < end; ++index) {
             const int p = index / cones, i = index % cones;
+            const bool odd = p % 2 == 1;
+            for (int s = 0; s < 2; ++s) {
+                here[s].load(tables, n, p, i + s);
+                if (!odd) next[s].load(tables, n, p + 1, i + s);
+            }
             for (int y = 0; y < rows; ++y) {
                 Rgb sum;
                 for (int s = 0; s < 2; ++s) {
                     const int k = i + s, j = 2 * i + s, dy = rayOffsetY(n, k);
                     const float w = weight[j];
-                    if (p % 2 == 1) {
+                    if (odd) {
                         // The ray ends exactly on upper plane (p + 1) / 2 (Eq 14).
-                        const Interval seg = tables.get(n, p, y, k);
+                        const Interval seg = here[s].at(y);
                         sum += seg.radiance * w +
                                seg.transmittance * upperFluence((p + 1) / 2, y + dy, j);
                     } else {
                         // Upper plane p / 2 is here: merge near, and far with a double-length
                         // ray to upper plane p / 2 + 1, then average (Eq 15-17).
                         const Rgb near = upperFluence(p / 2, y, j);
-                        const Interval seg =
-                            over(tables.get(n, p, y, k), tables.get(n, p + 1, y + dy, k));
+                        const Interval seg = over(here[s].at(y), next[s].at(y + dy));
                         const Rgb far = seg.radiance * w +
                                         seg.transmittance * upperFluence(p / 2 + 1, y + 2 * dy, j);
                         sum += (near + far) * 0.5f;

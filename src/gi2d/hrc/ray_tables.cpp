@@ -28,6 +28,26 @@ std::uint64_t RayTables::bytesFor(int length, int rows, int levels) {
     return entries * sizeof(Entry);
 }
 
+void RayTables::decodeRow(int n, int p, int k, std::vector<float>& out) const {
+    out.resize(static_cast<std::size_t>(rows_) * 6);
+    if (p < 0 || p >= planes_[n]) {
+        for (int y = 0; y < rows_; ++y) {
+            float* e = &out[static_cast<std::size_t>(y) * 6];
+            e[0] = e[1] = e[2] = 0.0f;
+            e[3] = e[4] = e[5] = 1.0f;
+        }
+        return;
+    }
+    const Entry* row = &tables_[n][index(n, p, k, 0)];
+    static_assert(sizeof(Entry) == 6 * sizeof(std::uint16_t));
+    halvesToFloats(row[0].radiance, out.data(), out.size());
+}
+
+void RayTables::encodeRow(int n, int p, int k, const std::vector<float>& in) {
+    Entry* row = &tables_[n][index(n, p, k, 0)];
+    floatsToHalves(in.data(), row[0].radiance, static_cast<std::size_t>(rows_) * 6);
+}
+
 namespace {
 
 // Calls body(p, k) for every (plane, ray) pair of cascade n, in parallel.
@@ -58,22 +78,33 @@ void traceBaseLevels(RayTables& tables, const RayMarcher& marcher, int tracedLev
 }
 
 void extendLevels(RayTables& tables, int tracedLevels) {
+    const int rows = tables.rows();
     for (int n = std::max(tracedLevels, 1); n < tables.levels(); ++n) {
         const int h = pow2(n - 1);
         forEachPlaneAndRay(tables, n, [&](int p, int k) {
+            // Per-thread scratch rows, decoded once per (plane, ray) pair.
+            thread_local DecodedRow nearLo, farHi, nearHi, farLo;
+            thread_local std::vector<float> out;
+            out.resize(static_cast<std::size_t>(rows) * 6);
             const int lo = k >> 1, hi = (k + 1) >> 1;
             const int dyLo = 2 * lo - h, dyHi = 2 * hi - h;
-            for (int y = 0; y < tables.rows(); ++y) {
-                const Interval a = over(tables.get(n - 1, 2 * p, y, lo),
-                                        tables.get(n - 1, 2 * p + 1, y + dyLo, hi));
-                if (lo == hi) {  // even k: both paths are the straight ray
-                    tables.set(n, p, y, k, a);
-                    continue;
-                }
-                const Interval b = over(tables.get(n - 1, 2 * p, y, hi),
-                                        tables.get(n - 1, 2 * p + 1, y + dyHi, lo));
-                tables.set(n, p, y, k, average(a, b));
+            nearLo.load(tables, n - 1, 2 * p, lo);
+            farHi.load(tables, n - 1, 2 * p + 1, hi);
+            if (lo != hi) {
+                nearHi.load(tables, n - 1, 2 * p, hi);
+                farLo.load(tables, n - 1, 2 * p + 1, lo);
             }
+            for (int y = 0; y < rows; ++y) {
+                Interval v = over(nearLo.at(y), farHi.at(y + dyLo));
+                // Even k: both paths are the straight ray. Odd k: average the two bent paths.
+                if (lo != hi) v = average(v, over(nearHi.at(y), farLo.at(y + dyHi)));
+                float* e = &out[static_cast<std::size_t>(y) * 6];
+                for (int c = 0; c < 3; ++c) {
+                    e[c] = v.radiance[c];
+                    e[3 + c] = v.transmittance[c];
+                }
+            }
+            tables.encodeRow(n, p, k, out);
         });
     }
 }

@@ -40,10 +40,17 @@ class RayTables {
         tables_[n][index(n, p, k, y)] = encode(value);
     }
 
+    // Decodes row (n, p, k) into `out` (rows x 6 floats: L rgb, T rgb); a plane outside the
+    // frame decodes as empty space.
+    void decodeRow(int n, int p, int k, std::vector<float>& out) const;
+    // Encodes rows x 6 floats into row (n, p, k).
+    void encodeRow(int n, int p, int k, const std::vector<float>& in);
+
     // Bytes for the tables of a frame (entries x 12 bytes).
     static std::uint64_t bytesFor(int length, int rows, int levels);
 
   private:
+    // Six binary16 values: L rgb then T rgb.
     struct Entry {
         std::uint16_t radiance[3];
         std::uint16_t transmittance[3];
@@ -72,6 +79,22 @@ class RayTables {
     int levels_ = 0, rows_ = 0;
     std::vector<int> planes_;
     std::vector<std::vector<Entry>> tables_;
+};
+
+// A decoded table row with out-of-range rows reading as empty space.
+struct DecodedRow {
+    std::vector<float> values;  // rows x 6
+    int rows = 0;
+
+    Interval at(int y) const {
+        if (y < 0 || y >= rows) return {};
+        const float* e = &values[static_cast<std::size_t>(y) * 6];
+        return {{e[0], e[1], e[2]}, {e[3], e[4], e[5]}};
+    }
+    void load(const RayTables& tables, int n, int p, int k) {
+        rows = tables.rows();
+        tables.decodeRow(n, p, k, values);
+    }
 };
 
 // Marches T_n for n < tracedLevels with the exact DDA (exact optical depth on diagonals).

@@ -1,0 +1,74 @@
+// HRC speed on the default scene: ms per frame, Mpixel/s, peak memory, and the error against a
+// cached reference render where one exists (out/reference-cache/room_WxH.exr; `make demo` writes
+// the 512x512 one).
+//   build/release/bench/luxel_bench --benchmark_filter=hrc
+//   LUXEL_BENCH_LARGE=1 build/release/bench/luxel_bench --benchmark_filter=hrc   (adds 4096, 8192)
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+
+#include "luxel/core/image_io.h"
+#include "luxel/core/metrics.h"
+#include "luxel/gi2d/hrc_solver.h"
+#include "luxel/gi2d/rasterize.h"
+#include "luxel/gi2d/scene2d_json.h"
+
+namespace {
+
+double peakRssMiB() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+void hrcDefaultScene(benchmark::State& state) {
+    const int size = static_cast<int>(state.range(0));
+    const char* scenePath = LUXEL_SOURCE_DIR "/scenes/2d/room.json";
+    auto scene = luxel::gi2d::loadScene2D(scenePath);
+    if (!scene) throw std::runtime_error(scene.error().message());
+    auto medium = luxel::gi2d::rasterize(*scene, {size, size, 16});
+    if (!medium) throw std::runtime_error(medium.error().message());
+    luxel::Image fluence;
+    for (auto _ : state) {
+        auto result = luxel::gi2d::solveHrc(*medium);
+        if (!result) {
+            state.SkipWithError(result.error().message().c_str());
+            return;
+        }
+        fluence = std::move(*result);
+    }
+    const double pixels = static_cast<double>(size) * size;
+    state.counters["Mpixel/s"] =
+        benchmark::Counter(pixels * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["peak_MiB"] = peakRssMiB();
+    state.counters["estimate_MiB"] =
+        static_cast<double>(luxel::gi2d::estimateHrcMemory(size, size).total()) / (1 << 20);
+    const std::string cached = std::string(LUXEL_SOURCE_DIR) + "/out/reference-cache/room_" +
+                               std::to_string(size) + "x" + std::to_string(size) + ".exr";
+    if (std::filesystem::exists(cached)) {
+        if (auto reference = luxel::readExr(cached)) {
+            if (auto e = luxel::compareImages(fluence, *reference)) {
+                state.counters["relL1_vs_ref"] = e->relativeL1;
+                state.counters["rmse_vs_ref"] = e->rmse / e->meanReference;
+            }
+        }
+    }
+}
+
+void hrcSizes(benchmark::internal::Benchmark* b) {
+    for (int size : {256, 512, 1024, 2048}) b->Arg(size);
+    if (std::getenv("LUXEL_BENCH_LARGE") != nullptr) b->Arg(4096)->Arg(8192);
+}
+
+}  // namespace
+
+BENCHMARK(hrcDefaultScene)
+    ->Name("hrc/room")
+    ->Apply(hrcSizes)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
