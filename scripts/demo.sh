@@ -23,6 +23,21 @@ for name in "${scenes[@]}"; do
   printf '%-14s %-10s %4d.%02d    %s\n' "$name" "$size" $((ms / 1000)) $((ms % 1000 / 10)) \
     "out/$name.exr (fluence, linear) out/$name.png (display)"
 done
+# The default scene again with Holographic Radiance Cascades, next to the reference, and the error.
+size=$("$luxel" info "scenes/2d/$default_scene.json" | awk '/canvas/ {print $2; exit}')
+start=$(date +%s%N)
+"$luxel" render "scenes/2d/$default_scene.json" --solver hrc --quiet \
+  --out "out/$default_scene-hrc.exr" --png "out/$default_scene-hrc.png"
+ms=$(( ($(date +%s%N) - start) / 1000000 ))
+printf '%-14s %-10s %4d.%02d    %s\n' "$default_scene (hrc)" "$size" $((ms / 1000)) \
+  $((ms % 1000 / 10)) "out/$default_scene-hrc.exr out/$default_scene-hrc.png"
+echo "hrc vs reference on $default_scene:"
+"$luxel" compare "out/$default_scene-hrc.exr" "out/$default_scene.exr" \
+  --diff "out/$default_scene-hrc-diff.png" | sed 's/^/  /'
+# Reference renders double as the benchmark's error yardstick (bench/bench_hrc.cpp).
+mkdir -p out/reference-cache
+cp "out/$default_scene.exr" "out/reference-cache/${default_scene}_$size.exr"
+
 total_ms=$(( ($(date +%s%N) - total_start) / 1000000 ))
 printf 'total %d.%01d s; default scene: out/%s.png\n' $((total_ms / 1000)) $((total_ms % 1000 / 100)) \
   "$default_scene"

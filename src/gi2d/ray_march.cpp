@@ -111,6 +111,40 @@ void RayMarcher::buildBlockLevels() {
 
 RaySegment RayMarcher::march(Vec2d origin, Vec2d direction, double maxDistance,
                              float cutoff) const {
+    return marchImpl(origin, direction, maxDistance, cutoff, true);
+}
+
+RaySegment RayMarcher::segment(Vec2d from, Vec2d to, bool* leavesCanvas) const {
+    const Vec2d delta = to - from;
+    const double len = length(delta);
+    auto outside = [&](Vec2d p) { return p.x < 0 || p.y < 0 || p.x > width_ || p.y > height_; };
+    if (leavesCanvas) *leavesCanvas = outside(to);
+    if (len <= 0.0) return {};
+    const Vec2d dir = delta / len;
+    // Clip [0, len] to the canvas box (slab test).
+    double t0 = 0.0, t1 = len;
+    const double lo[2] = {0.0, 0.0},
+                 hi[2] = {static_cast<double>(width_), static_cast<double>(height_)};
+    const double o[2] = {from.x, from.y}, d[2] = {dir.x, dir.y};
+    for (int a = 0; a < 2; ++a) {
+        if (d[a] == 0.0) {
+            if (o[a] < lo[a] || o[a] > hi[a]) return {};
+            continue;
+        }
+        double ta = (lo[a] - o[a]) / d[a], tb = (hi[a] - o[a]) / d[a];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+    }
+    if (t0 >= t1) return {};
+    Vec2d start = from + dir * t0;
+    start.x = std::clamp(start.x, 0.0, static_cast<double>(width_));
+    start.y = std::clamp(start.y, 0.0, static_cast<double>(height_));
+    return marchImpl(start, dir, t1 - t0, 1e-6f, false);
+}
+
+RaySegment RayMarcher::marchImpl(Vec2d origin, Vec2d direction, double maxDistance, float cutoff,
+                                 bool addBoundary) const {
     LUXEL_DCHECK(std::abs(length(direction) - 1.0) < 1e-6);
     LUXEL_DCHECK(origin.x >= 0 && origin.y >= 0 && origin.x <= width_ && origin.y <= height_);
 
@@ -195,7 +229,7 @@ RaySegment RayMarcher::march(Vec2d origin, Vec2d direction, double maxDistance,
 
     RaySegment out;
     for (int c = 0; c < 3; ++c) {
-        if (leftCanvas) radiance[c] += transmittance[c] * boundary_[c];
+        if (leftCanvas && addBoundary) radiance[c] += transmittance[c] * boundary_[c];
         out.radiance[c] = radiance[c];
         out.transmittance[c] = transmittance[c];
     }

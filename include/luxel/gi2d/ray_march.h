@@ -38,6 +38,11 @@ class RayMarcher {
     RaySegment march(Vec2d origin, Vec2d direction, double maxDistance = 1e30,
                      float cutoff = 1e-6f) const;
 
+    // The part of the segment [from, to] that lies on the canvas, without boundary radiance
+    // (empty space outside). `leftCanvas` tells whether `to` lies outside the canvas, i.e. whether
+    // the ray continues into the open beyond the segment.
+    RaySegment segment(Vec2d from, Vec2d to, bool* leavesCanvas = nullptr) const;
+
     // Bytes the marcher holds for a medium of this size (at most: every pixel distinct).
     static std::uint64_t bytesFor(std::uint64_t width, std::uint64_t height);
 
@@ -53,6 +58,8 @@ class RayMarcher {
     static constexpr int kLevelBits = 4;
     static constexpr std::uint32_t kLevelMask = (1u << kLevelBits) - 1;
 
+    RaySegment marchImpl(Vec2d origin, Vec2d direction, double maxDistance, float cutoff,
+                         bool addBoundary) const;
     void buildPalette(const Medium2D& medium);
     void buildBlockLevels();
 

@@ -1,0 +1,51 @@
+// Vanilla 2D Radiance Cascades (Sannikov, "Radiance Cascades", WIP paper; the seed's raylib
+// version; design notes docs/algorithms/rc2d.md) with the bilinear fix (Osborne & Sannikov 2024,
+// arXiv:2408.14425). Same fluence convention as the reference solver.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "luxel/core/error.h"
+#include "luxel/core/image.h"
+#include "luxel/gi2d/medium2d.h"
+#include "luxel/gi2d/sdf_scene.h"
+
+namespace luxel::gi2d {
+
+enum class RcMerge {
+    Vanilla,      // each ray merges the bilinear blend of 4 upper probes' (pre-averaged) children
+    BilinearFix,  // each ray is traced to each of the 4 upper probes' interval starts (4x rays)
+};
+
+struct RcOptions {
+    int probeSpacing = 1;       // cascade-0 probe spacing in pixels (x2 per cascade)
+    int baseRays = 4;           // cascade-0 directions per probe (x4 per cascade)
+    double baseInterval = 1.0;  // cascade-0 interval length in pixels (x4 per cascade)
+    int maxCascades = 0;        // cap on the cascade count; 0 = ceil(log4(diag / base)) + 1
+    RcMerge merge = RcMerge::Vanilla;
+    // >= 0: show cascade n's merged radiance averaged over its directions (nearest probe) instead
+    // of the fluence. Debug view.
+    int debugCascade = -1;
+};
+
+// Cascade geometry for a canvas (seed formulas): cascade i has probes every spacing * 2^i px,
+// baseRays * 4^i directions at angles 2 pi (k + 0.5) / rays, and covers distances
+// [base (4^i - 1) / 3, base (4^i - 1) / 3 + base 4^i).
+struct RcCascade {
+    double spacing;
+    int probesX, probesY;
+    int rays;
+    double intervalStart, intervalEnd;
+};
+std::vector<RcCascade> rcCascades(int width, int height, const RcOptions& options);
+
+// Bytes solveRc needs (two cascade buffers, pre-averaged, float RGB, plus the output).
+std::uint64_t estimateRcMemory(int width, int height, const RcOptions& options);
+
+// Traces intervals through the pixel medium with the exact DDA (works for every medium).
+Result<Image> solveRc(const Medium2D& medium, const RcOptions& options = {});
+// Traces intervals with sphere tracing; `medium` still supplies the read-out size.
+Result<Image> solveRc(const SdfScene& scene, Rgb boundaryRadiance, const RcOptions& options = {});
+
+}  // namespace luxel::gi2d
