@@ -194,6 +194,38 @@ TEST_F(Cli, SceneTooLargeForMemoryIsRefused) {
     expectError("render " + scene + " --size 65536x65536 --out " + path("x.exr"), "only");
 }
 
+TEST_F(Cli, RcVariantsMarchersAndViews) {
+    const std::string scene = write("small.json", kSmallScene);  // has a faint medium: DDA only
+    RunResult r = runLuxel("render " + scene + " --solver rc --out " + path("v.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("merge vanilla, march dda"), std::string::npos) << r.output;
+    r = runLuxel("render " + scene + " --solver rc --merge bilinear-fix --out " + path("f.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto f = luxel::readExr(path("f.exr"));
+    ASSERT_TRUE(f.ok());
+    EXPECT_GT(f->at(16, 16, 0), f->at(40, 16, 0)) << "shadow behind the box";
+    expectError("render " + scene + " --solver rc --march sdf --out " + path("x.exr"), "SDF");
+    expectError("render " + scene + " --solver rc --merge magic --out " + path("x.exr"), "--merge");
+    expectError("render " + scene + " --solver rc --view sideways --out " + path("x.exr"),
+                "--view");
+    const std::string shapes = write("shapes.json", R"({"canvas": [40, 30], "shapes": [
+        {"type": "circle", "center": [10, 15], "radius": 4, "emission": 2, "opaque": true}]})");
+    r = runLuxel("render " + shapes + " --solver rc --out " + path("s.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("march sdf"), std::string::npos) << r.output;
+    r = runLuxel("render " + shapes + " --solver rc --view probes --cascade 1 --quiet --out " +
+                 path("p.exr") + " --png " + path("p.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto probes = luxel::readPng(path("p.png"));
+    ASSERT_TRUE(probes.ok());
+    EXPECT_GT(probes->at(1, 1, 0), 0.5f) << "cascade-1 probe at (1, 1) is marked";
+    r = runLuxel("render " + shapes + " --view nogi --quiet --out " + path("n.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto dark = luxel::readExr(path("n.exr"));
+    ASSERT_TRUE(dark.ok());
+    EXPECT_EQ(dark->at(30, 15, 0), 0.0f);
+}
+
 TEST_F(Cli, HrcRendersAndRefusesSizesThatDoNotFit) {
     const std::string scene = write("small.json", kSmallScene);
     RunResult r = runLuxel("render " + scene + " --solver hrc --out " + path("h.exr"));
@@ -203,7 +235,7 @@ TEST_F(Cli, HrcRendersAndRefusesSizesThatDoNotFit) {
     ASSERT_TRUE(f.ok());
     EXPECT_GT(f->at(16, 16, 0), f->at(40, 16, 0)) << "shadow behind the box";
     r = runLuxel("render " + scene +
-                 " --solver hrc --frustum +x --cascade 1 --no-blur "
+                 " --solver hrc --frustum +x --view cascade --cascade 1 --no-blur "
                  "--traced-levels 1 --out " +
                  path("d.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -11,7 +11,9 @@
 #include "luxel/core/tonemap.h"
 #include "luxel/gi2d/display.h"
 #include "luxel/gi2d/hrc_solver.h"
+#include "luxel/gi2d/rc_solver.h"
 #include "luxel/gi2d/reference_solver.h"
+#include "luxel/gi2d/sdf_scene.h"
 
 namespace luxel::cli {
 namespace {
@@ -28,7 +30,13 @@ struct RenderArgs {
     int tracedLevels = gi2d::HrcOptions{}.tracedLevels;
     bool noBlur = false;
     std::string frustum;  // debug: one of +x, +y, -x, -y
-    int cascade = -1;     // debug: show one cascade's merged result
+    int cascade = 0;      // debug: the cascade --view cascade|probes shows (hrc, rc)
+    // RC
+    std::string merge = "vanilla", march = "auto", view = "gi";
+    int probeSpacing = gi2d::RcOptions{}.probeSpacing;
+    int baseRays = gi2d::RcOptions{}.baseRays;
+    double baseInterval = gi2d::RcOptions{}.baseInterval;
+    int maxCascades = 0;
 };
 
 bool hasExtension(const std::string& path, const std::string& ext) {
@@ -50,7 +58,45 @@ Result<unsigned> frustumMask(const std::string& name) {
 
 // Runs the chosen solver with a progress bar; returns the fluence and the number of rays (0 when
 // the solver does not cast rays per pixel).
-Result<Image> solve(const RenderArgs& args, const gi2d::Medium2D& medium, double& rays) {
+Result<gi2d::RcOptions> rcOptions(const RenderArgs& args) {
+    gi2d::RcOptions options;
+    if (args.merge == "vanilla") {
+        options.merge = gi2d::RcMerge::Vanilla;
+    } else if (args.merge == "fix" || args.merge == "bilinear-fix") {
+        options.merge = gi2d::RcMerge::BilinearFix;
+    } else {
+        return Error("--merge '" + args.merge + "' is not vanilla or bilinear-fix");
+    }
+    options.probeSpacing = args.probeSpacing;
+    options.baseRays = args.baseRays;
+    options.baseInterval = args.baseInterval;
+    options.maxCascades = args.maxCascades;
+    options.debugCascade = args.view == "cascade" ? std::max(args.cascade, 0) : -1;
+    return options;
+}
+
+// RC traces intervals by sphere tracing when the scene allows it (--march auto) or is told to.
+Result<Image> solveRcFor(const RenderArgs& args, const SizedScene& sized,
+                         const gi2d::Medium2D& medium, std::string& marchUsed) {
+    auto options = rcOptions(args);
+    if (!options) return options.error();
+    if (args.march != "auto" && args.march != "dda" && args.march != "sdf") {
+        return Error("--march '" + args.march + "' is not auto, dda or sdf");
+    }
+    if (args.march != "dda") {
+        auto sdf = gi2d::SdfScene::create(sized.scene, sized.width, sized.height);
+        if (sdf) {
+            marchUsed = "sdf";
+            return gi2d::solveRc(*sdf, sized.scene.boundaryRadiance, *options);
+        }
+        if (args.march == "sdf") return Error("--march sdf: " + sdf.error().message());
+    }
+    marchUsed = "dda";
+    return gi2d::solveRc(medium, *options);
+}
+
+Result<Image> solve(const RenderArgs& args, const SizedScene& sized, const gi2d::Medium2D& medium,
+                    double& rays, std::string& detail) {
     const int w = medium.width(), h = medium.height();
     if (args.solver == "reference") {
         ProgressBar progress("reference", static_cast<std::uint64_t>(h), !args.quiet);
@@ -69,12 +115,36 @@ Result<Image> solve(const RenderArgs& args, const gi2d::Medium2D& medium, double
         options.tracedLevels = args.tracedLevels;
         options.crossBlur = !args.noBlur;
         options.frustumMask = *mask;
-        options.debugCascade = args.cascade;
+        options.debugCascade = args.view == "cascade" ? std::max(args.cascade, 0) : -1;
         options.onProgress = [&](int, int) { progress.advance(); };
         rays = 0;
         return gi2d::solveHrc(medium, options);
     }
-    return Error("unknown solver '" + args.solver + "' (available: reference, hrc)");
+    if (args.solver == "rc") {
+        rays = 0;
+        std::string march;
+        auto result = solveRcFor(args, sized, medium, march);
+        detail = "merge " + args.merge + ", march " + march;
+        return result;
+    }
+    return Error("unknown solver '" + args.solver + "' (available: reference, hrc, rc)");
+}
+
+// Marks the probe centres of cascade --cascade (RC layout) on the display image.
+Status drawProbes(const RenderArgs& args, Image& display) {
+    auto options = rcOptions(args);
+    if (!options) return options.error();
+    const auto cascades = gi2d::rcCascades(display.width(), display.height(), *options);
+    const int c = std::clamp(args.cascade, 0, static_cast<int>(cascades.size()) - 1);
+    const gi2d::RcCascade& cascade = cascades[c];
+    for (int py = 0; py < cascade.probesY; ++py) {
+        for (int px = 0; px < cascade.probesX; ++px) {
+            const int x = static_cast<int>((px + 0.5) * cascade.spacing);
+            const int y = static_cast<int>((py + 0.5) * cascade.spacing);
+            if (display.inside(x, y)) display.setRgb(x, y, Rgb(1.0f, 0.2f, 0.1f));
+        }
+    }
+    return Ok{};
 }
 
 int runRender(const RenderArgs& args) {
@@ -105,9 +175,15 @@ int runRender(const RenderArgs& args) {
     const double rasterSeconds = rasterTime.seconds();
     const int w = medium->width(), h = medium->height();
 
+    if (args.view != "gi" && args.view != "nogi" && args.view != "probes" &&
+        args.view != "cascade") {
+        return reportError(Error("--view '" + args.view + "' is not gi, nogi, probes or cascade"));
+    }
     Stopwatch solveTime;
     double rays = 0;
-    auto fluence = solve(args, *medium, rays);
+    std::string detail;
+    Result<Image> fluence = args.view == "nogi" ? Result<Image>(Image(w, h, 3))
+                                                : solve(args, *sized, *medium, rays, detail);
     if (!fluence) return reportError(fluence.error());
     const double solveSeconds = solveTime.seconds();
 
@@ -117,13 +193,16 @@ int runRender(const RenderArgs& args) {
         if (!hasExtension(args.png, ".png")) {
             return reportError(Error("--png '" + args.png + "' must end in .png"));
         }
-        if (Status s = writePng(args.png, gi2d::displayImage(*medium, *fluence, tone)); !s) {
-            return reportError(s.error());
+        Image display = gi2d::displayImage(*medium, *fluence, tone);
+        if (args.view == "probes") {
+            if (Status s = drawProbes(args, display); !s) return reportError(s.error());
         }
+        if (Status s = writePng(args.png, display); !s) return reportError(s.error());
     }
     if (!args.quiet) {
-        std::printf("%s: %dx%d, solver %s, %d threads\n", args.scene.c_str(), w, h,
-                    args.solver.c_str(), args.threads > 0 ? args.threads : hardwareThreads());
+        std::printf("%s: %dx%d, solver %s%s%s%s, %d threads\n", args.scene.c_str(), w, h,
+                    args.solver.c_str(), detail.empty() ? "" : " (", detail.c_str(),
+                    detail.empty() ? "" : ")", args.threads > 0 ? args.threads : hardwareThreads());
         std::printf("  raster %.3f s, solve %.3f s (%.2f Mpixel/s", rasterSeconds, solveSeconds,
                     static_cast<double>(w) * h / solveSeconds * 1e-6);
         if (rays > 0) {
@@ -140,7 +219,7 @@ int runRender(const RenderArgs& args) {
 Runner addRenderCommand(CLI::App& app) {
     auto args = std::make_shared<RenderArgs>();
     app.add_option("scene", args->scene, "scene file (.json)")->required();
-    app.add_option("--solver", args->solver, "light transport solver: reference, hrc")
+    app.add_option("--solver", args->solver, "light transport solver: reference, hrc, rc")
         ->capture_default_str();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
     app.add_option("--rays", args->rays, "directions per pixel (reference solver)")
@@ -155,7 +234,24 @@ Runner addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     app.add_flag("--no-blur", args->noBlur, "HRC: skip the opacity-gated cross blur (Eq 21)");
     app.add_option("--frustum", args->frustum, "HRC debug: only this frustum (+x, +y, -x, -y)");
-    app.add_option("--cascade", args->cascade, "HRC debug: show cascade N's merged result");
+    app.add_option("--cascade", args->cascade,
+                   "debug: the cascade that --view cascade|probes shows")
+        ->capture_default_str();
+    app.add_option("--merge", args->merge, "RC: vanilla or bilinear-fix")->capture_default_str();
+    app.add_option("--march", args->march, "RC: interval tracing: auto, dda (medium), sdf (shapes)")
+        ->capture_default_str();
+    app.add_option("--probe-spacing", args->probeSpacing, "RC: cascade-0 probe spacing (px)")
+        ->capture_default_str();
+    app.add_option("--base-rays", args->baseRays, "RC: cascade-0 directions per probe")
+        ->capture_default_str();
+    app.add_option("--base-interval", args->baseInterval, "RC: cascade-0 interval length (px)")
+        ->capture_default_str();
+    app.add_option("--max-cascades", args->maxCascades, "RC: cap on the cascade count (0 = none)")
+        ->capture_default_str();
+    app.add_option("--view", args->view,
+                   "gi (default), nogi (emission only), probes (RC probe grid of --cascade on the "
+                   "--png image), cascade (the merged radiance of --cascade)")
+        ->capture_default_str();
     app.add_option("--out", args->out, "fluence image: .exr (linear float) or .png (tonemapped)")
         ->required();
     app.add_option("--png", args->png, "also write the display image (emission + fluence)");
