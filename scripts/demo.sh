@@ -34,6 +34,10 @@ printf '%-14s %-10s %4d.%02d    %s\n' "$default_scene (hrc)" "$size" $((ms / 100
 echo "hrc vs reference on $default_scene:"
 "$luxel" compare "out/$default_scene-hrc.exr" "out/$default_scene.exr" \
   --diff "out/$default_scene-hrc-diff.png" | sed 's/^/  /'
+echo "all 2D solvers on $default_scene (left to right in out/$default_scene-solvers.png:" \
+  "reference, hrc, rc vanilla, rc bilinear fix):"
+"$luxel" compare-solvers "scenes/2d/$default_scene.json" --grid "out/$default_scene-solvers.png" |
+  sed 's/^/  /'
 # Reference renders double as the benchmark's error yardstick (bench/bench_hrc.cpp).
 mkdir -p out/reference-cache
 cp "out/$default_scene.exr" "out/reference-cache/${default_scene}_$size.exr"

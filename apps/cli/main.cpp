@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
     add("info", "describe a scene and the memory it needs", luxel::cli::addInfoCommand);
     add("compare", "compare two images (RMSE, relative L1, max error)",
         luxel::cli::addCompareCommand);
+    add("compare-solvers", "run every 2D solver on a scene: time, error vs reference, memory",
+        luxel::cli::addCompareSolversCommand);
     add("raster", "write the rasterised medium (emission, absorption) as images",
         luxel::cli::addRasterCommand);
 

@@ -226,6 +226,24 @@ TEST_F(Cli, RcVariantsMarchersAndViews) {
     EXPECT_EQ(dark->at(30, 15, 0), 0.0f);
 }
 
+TEST_F(Cli, CompareSolversPrintsOneRowPerSolverAndAGrid) {
+    const std::string scene = write("small.json", kSmallScene);
+    const RunResult r =
+        runLuxel("compare-solvers " + scene + " --rays 64 --grid " + path("grid.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* solver : {"reference", "hrc", "rc-vanilla", "rc-bilinear-fix"}) {
+        EXPECT_NE(r.output.find(std::string("\n") + solver + " "), std::string::npos)
+            << solver << "\n"
+            << r.output;
+    }
+    EXPECT_NE(r.output.find("MiB"), std::string::npos) << r.output;
+    auto grid = luxel::readPng(path("grid.png"));
+    ASSERT_TRUE(grid.ok());
+    EXPECT_EQ(grid->width(), 4 * 48 + 3 * 4);
+    EXPECT_EQ(grid->height(), 32);
+    expectError("compare-solvers " + path("none.json"), "none.json");
+}
+
 TEST_F(Cli, HrcRendersAndRefusesSizesThatDoNotFit) {
     const std::string scene = write("small.json", kSmallScene);
     RunResult r = runLuxel("render " + scene + " --solver hrc --out " + path("h.exr"));

@@ -19,6 +19,7 @@ Runner addRenderCommand(CLI::App& app);
 Runner addInfoCommand(CLI::App& app);
 Runner addCompareCommand(CLI::App& app);
 Runner addRasterCommand(CLI::App& app);
+Runner addCompareSolversCommand(CLI::App& app);
 
 // Prints "luxel: error: <message>" to stderr and returns the exit code for bad input.
 int reportError(const Error& error);

@@ -26,6 +26,7 @@ struct RenderArgs {
     std::uint64_t seed = 1;
     float exposure = 0.0f;
     bool quiet = false;
+    bool stats = false;  // print a machine-readable timing line (for compare-solvers)
     // HRC
     int tracedLevels = gi2d::HrcOptions{}.tracedLevels;
     bool noBlur = false;
@@ -199,6 +200,7 @@ int runRender(const RenderArgs& args) {
         }
         if (Status s = writePng(args.png, display); !s) return reportError(s.error());
     }
+    if (args.stats) std::printf("stats solve_seconds=%.6f\n", solveSeconds);
     if (!args.quiet) {
         std::printf("%s: %dx%d, solver %s%s%s%s, %d threads\n", args.scene.c_str(), w, h,
                     args.solver.c_str(), detail.empty() ? "" : " (", detail.c_str(),
@@ -260,6 +262,7 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option("--tonemap", args->tonemap, "tone curve for PNG output: clamp, reinhard, aces")
         ->capture_default_str();
     app.add_flag("--quiet,-q", args->quiet, "no progress bar or summary");
+    app.add_flag("--stats", args->stats, "print 'stats solve_seconds=S' (for scripts)");
     return [args] { return runRender(*args); };
 }
 

@@ -1,7 +1,7 @@
-// HRC speed on the default scene: ms per frame, Mpixel/s, peak memory, and the error against a
-// cached reference render where one exists (out/reference-cache/room_WxH.exr; `make demo` writes
-// the 512x512 one).
-//   build/release/bench/luxel_bench --benchmark_filter=hrc
+// HRC and RC speed on the default scene: ms per frame, Mpixel/s, peak memory, and the error
+// against a cached reference render where one exists (out/reference-cache/room_WxH.exr; `make demo`
+// writes the 512x512 one).
+//   build/release/bench/luxel_bench --benchmark_filter='hrc|rc'
 //   LUXEL_BENCH_LARGE=1 build/release/bench/luxel_bench --benchmark_filter=hrc   (adds 4096, 8192)
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
@@ -15,6 +15,7 @@
 #include "luxel/core/metrics.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rasterize.h"
+#include "luxel/gi2d/rc_solver.h"
 #include "luxel/gi2d/scene2d_json.h"
 
 namespace {
@@ -25,7 +26,21 @@ double peakRssMiB() {
     return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
-void hrcDefaultScene(benchmark::State& state) {
+enum class Solver { Hrc, RcVanilla, RcFix };
+
+luxel::Result<luxel::Image> solve(Solver solver, const luxel::gi2d::Medium2D& medium) {
+    if (solver == Solver::Hrc) return luxel::gi2d::solveHrc(medium);
+    luxel::gi2d::RcOptions options;
+    if (solver == Solver::RcFix) options.merge = luxel::gi2d::RcMerge::BilinearFix;
+    return luxel::gi2d::solveRc(medium, options);
+}
+
+std::uint64_t memoryEstimate(Solver solver, int size) {
+    if (solver == Solver::Hrc) return luxel::gi2d::estimateHrcMemory(size, size).total();
+    return luxel::gi2d::estimateRcMemory(size, size, {});
+}
+
+void defaultScene(benchmark::State& state, Solver solver) {
     const int size = static_cast<int>(state.range(0));
     const char* scenePath = LUXEL_SOURCE_DIR "/scenes/2d/room.json";
     auto scene = luxel::gi2d::loadScene2D(scenePath);
@@ -34,7 +49,7 @@ void hrcDefaultScene(benchmark::State& state) {
     if (!medium) throw std::runtime_error(medium.error().message());
     luxel::Image fluence;
     for (auto _ : state) {
-        auto result = luxel::gi2d::solveHrc(*medium);
+        auto result = solve(solver, *medium);
         if (!result) {
             state.SkipWithError(result.error().message().c_str());
             return;
@@ -45,8 +60,7 @@ void hrcDefaultScene(benchmark::State& state) {
     state.counters["Mpixel/s"] =
         benchmark::Counter(pixels * 1e-6, benchmark::Counter::kIsIterationInvariantRate);
     state.counters["peak_MiB"] = peakRssMiB();
-    state.counters["estimate_MiB"] =
-        static_cast<double>(luxel::gi2d::estimateHrcMemory(size, size).total()) / (1 << 20);
+    state.counters["estimate_MiB"] = static_cast<double>(memoryEstimate(solver, size)) / (1 << 20);
     const std::string cached = std::string(LUXEL_SOURCE_DIR) + "/out/reference-cache/room_" +
                                std::to_string(size) + "x" + std::to_string(size) + ".exr";
     if (std::filesystem::exists(cached)) {
@@ -66,9 +80,25 @@ void hrcSizes(benchmark::internal::Benchmark* b) {
 
 }  // namespace
 
-BENCHMARK(hrcDefaultScene)
+void rcSizes(benchmark::internal::Benchmark* b) {
+    for (int size : {256, 512, 1024, 2048}) b->Arg(size);
+}
+
+BENCHMARK_CAPTURE(defaultScene, hrc, Solver::Hrc)
     ->Name("hrc/room")
     ->Apply(hrcSizes)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+BENCHMARK_CAPTURE(defaultScene, rcVanilla, Solver::RcVanilla)
+    ->Name("rc-vanilla/room")
+    ->Apply(rcSizes)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+BENCHMARK_CAPTURE(defaultScene, rcFix, Solver::RcFix)
+    ->Name("rc-bilinear-fix/room")
+    ->Apply(rcSizes)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MeasureProcessCPUTime();
