@@ -47,7 +47,7 @@ Result<RunOutcome> runSolver(const CompareSolversArgs& args, const SolverRun& so
     const std::string png = (dir / (std::string(solver.label) + ".png")).string();
     const std::string log = (dir / (std::string(solver.label) + ".log")).string();
     std::vector<std::string> argv = {"/proc/self/exe", "render", args.scene, "--quiet", "--stats",
-                                     "--out", exr, "--png", png};
+                                     "--out",          exr,      "--png",    png};
     if (!args.size.empty()) argv.insert(argv.end(), {"--size", args.size});
     argv.insert(argv.end(), solver.flags.begin(), solver.flags.end());
     std::vector<char*> cargv;
@@ -60,10 +60,11 @@ Result<RunOutcome> runSolver(const CompareSolversArgs& args, const SolverRun& so
                                      O_WRONLY | O_CREAT | O_TRUNC, 0644);
     posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
     pid_t pid = 0;
-    const int spawned = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, cargv.data(),
-                                    environ);
+    const int spawned =
+        posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, cargv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0) return Error(std::string("cannot start a solver process: ") + std::strerror(spawned));
+    if (spawned != 0)
+        return Error(std::string("cannot start a solver process: ") + std::strerror(spawned));
     int status = 0;
     rusage usage{};
     if (wait4(pid, &status, 0, &usage) < 0) return Error("lost the solver process");
@@ -135,13 +136,13 @@ int runCompareSolvers(const CompareSolversArgs& args) {
     const Image& reference = runs[0].fluence;
     std::printf("%s at %dx%d (reference: %d rays/pixel)\n", args.scene.c_str(), reference.width(),
                 reference.height(), args.rays);
-    std::printf("%-16s %10s %10s %10s %9s %12s\n", "solver", "ms", "rel. L1", "RMSE",
-                "RMSE/mean", "peak memory");
+    std::printf("%-16s %10s %10s %10s %9s %12s\n", "solver", "ms", "rel. L1", "RMSE", "RMSE/mean",
+                "peak memory");
     for (std::size_t i = 0; i < runs.size(); ++i) {
         auto e = compareImages(runs[i].fluence, reference);
         if (!e) return reportError(e.error());
-        std::printf("%-16s %10.1f %10.4f %10.5f %8.2f%% %12s\n", solvers[i].label,
-                    runs[i].solveMs, e->relativeL1, e->rmse,
+        std::printf("%-16s %10.1f %10.4f %10.5f %8.2f%% %12s\n", solvers[i].label, runs[i].solveMs,
+                    e->relativeL1, e->rmse,
                     e->meanReference > 0 ? 100.0 * e->rmse / e->meanReference : 0.0,
                     formatBytes(runs[i].peakBytes).c_str());
     }
