@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "gi2d/analytic_disk.h"
 #include "gi2d/shipped_scenes.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/metrics.h"
@@ -39,26 +40,16 @@ TEST(HrcSolver, TracingThreeLevelsBeatsExtendingFromC0) {
     EXPECT_LT(fromC0, 0.06);
 }
 
-Scene2D diskScene(double radius, float emission) {
-    Scene2D scene{320, 320, {}, {}, {}, ""};
-    scene.shapes.push_back(
-        {"disk", Circle{{64, 160}, radius}, Material{Rgb(emission), Rgb(kOpaqueAbsorption)}});
-    return scene;
-}
-
 TEST(HrcSolver, DiskInVacuumFollowsTheArcsineLaw) {
     const double R = 48.0, E = 2.0;
-    const Medium2D medium = rasterize(diskScene(R, static_cast<float>(E))).value();
+    const Medium2D medium =
+        rasterize(testing_support::analyticDiskScene(R, static_cast<float>(E))).value();
     const Image f = solveHrc(medium).value();
-    for (double ratio : {1.5, 2.0, 3.0, 5.0}) {
-        const int x = static_cast<int>(64 + ratio * R), y = 160;
-        const double r = std::hypot(x + 0.5 - 64, y + 0.5 - 160);
-        // The rasterised edge acts like a disk half a pixel larger (docs/conventions.md).
-        const double exact = E * std::asin((R + 0.5) / r) / std::numbers::pi;
-        const double got = f.at(x, y, 0);
-        std::printf("hrc disk r/R %.2f: %.5f vs %.5f (%+.2f%%)\n", r / R, got, exact,
-                    100 * (got / exact - 1));
-        EXPECT_NEAR(got / exact, 1.0, 0.015);
+    for (const auto& probe : testing_support::diskProbes(R, E)) {
+        const double got = f.at(probe.x, probe.y, 0);
+        std::printf("hrc disk r/R %.2f: %.5f vs %.5f (%+.2f%%)\n", probe.distanceOverRadius, got,
+                    probe.exact, 100 * (got / probe.exact - 1));
+        EXPECT_NEAR(got / probe.exact, 1.0, 0.015);
     }
 }
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "gi2d/analytic_disk.h"
 #include "gi2d/shipped_scenes.h"
 #include "luxel/core/metrics.h"
 #include "luxel/gi2d/rasterize.h"
@@ -45,30 +46,22 @@ TEST(RcCascades, SeedFormulas) {
     EXPECT_EQ(d.size(), 5u);  // ceil(log4(360.6 / 2)) + 1
 }
 
-Scene2D diskScene(double radius, float emission) {
-    Scene2D scene{320, 320, {}, {}, {}, ""};
-    scene.shapes.push_back(
-        {"disk", Circle{{64, 160}, radius}, Material{Rgb(emission), Rgb(kOpaqueAbsorption)}});
-    return scene;
-}
-
 TEST(RcSolver, DiskInVacuumFollowsTheArcsineLaw) {
     const double R = 48.0, E = 2.0;
-    const Medium2D medium = rasterize(diskScene(R, static_cast<float>(E))).value();
+    const Medium2D medium =
+        rasterize(testing_support::analyticDiskScene(R, static_cast<float>(E))).value();
     for (RcMerge merge : {RcMerge::Vanilla, RcMerge::BilinearFix}) {
         RcOptions o;
         o.merge = merge;
         const Image f = solveRc(medium, o).value();
-        for (double ratio : {1.5, 2.0, 3.0, 5.0}) {
-            const int x = static_cast<int>(64 + ratio * R), y = 160;
-            const double r = std::hypot(x + 0.5 - 64, y + 0.5 - 160);
-            const double exact = E * std::asin((R + 0.5) / r) / std::numbers::pi;
-            const double got = f.at(x, y, 0);
+        for (const auto& probe : testing_support::diskProbes(R, E)) {
+            const double got = f.at(probe.x, probe.y, 0);
             std::printf("rc %s disk r/R %.2f: %.5f vs %.5f (%+.2f%%)\n",
-                        merge == RcMerge::Vanilla ? "vanilla" : "fix", r / R, got, exact,
-                        100 * (got / exact - 1));
+                        merge == RcMerge::Vanilla ? "vanilla" : "fix", probe.distanceOverRadius,
+                        got, probe.exact, 100 * (got / probe.exact - 1));
             // Vanilla RC rings where an interval ends (rc2d.md §2.7); the fix removes them.
-            EXPECT_NEAR(got / exact, 1.0, merge == RcMerge::Vanilla ? 0.07 : 0.015) << r / R;
+            EXPECT_NEAR(got / probe.exact, 1.0, merge == RcMerge::Vanilla ? 0.07 : 0.015)
+                << probe.distanceOverRadius;
         }
     }
 }
