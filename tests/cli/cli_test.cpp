@@ -23,8 +23,9 @@ struct RunResult {
     std::string output;  // stdout and stderr together
 };
 
-RunResult runLuxel(const std::string& args) {
-    const std::string command = std::string(LUXEL_CLI_PATH) + " " + args + " 2>&1";
+RunResult runLuxel(const std::string& args, const std::string& environment = "") {
+    const std::string command =
+        environment + (environment.empty() ? "" : " ") + LUXEL_CLI_PATH + " " + args + " 2>&1";
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return {-1, "popen failed"};
     std::string output;
@@ -242,6 +243,19 @@ TEST_F(Cli, CompareSolversPrintsOneRowPerSolverAndAGrid) {
     EXPECT_EQ(grid->width(), 4 * 48 + 3 * 4);
     EXPECT_EQ(grid->height(), 32);
     expectError("compare-solvers " + path("none.json"), "none.json");
+}
+
+TEST_F(Cli, DevicesListsVulkanDevicesOrSaysWhyNot) {
+    RunResult r = runLuxel("devices");
+    if (r.exitCode == 0) {
+        EXPECT_NE(r.output.find("device memory"), std::string::npos) << r.output;
+    } else {
+        EXPECT_NE(r.output.find("luxel: error: "), std::string::npos) << r.output;
+    }
+    // No driver at all: a clear one-line error, not a crash.
+    r = runLuxel("devices", "VK_DRIVER_FILES=/nonexistent.json VK_ICD_FILENAMES=/nonexistent.json");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("luxel: error: "), std::string::npos) << r.output;
 }
 
 TEST_F(Cli, HrcRendersAndRefusesSizesThatDoNotFit) {

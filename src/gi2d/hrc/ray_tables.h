@@ -11,9 +11,11 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "gi2d/hrc/interval.h"
+#include "luxel/core/error.h"
 #include "luxel/core/half.h"
 #include "luxel/gi2d/ray_march.h"
 
@@ -45,6 +47,12 @@ class RayTables {
     void decodeRow(int n, int p, int k, std::vector<float>& out) const;
     // Encodes rows x 6 floats into row (n, p, k).
     void encodeRow(int n, int p, int k, const std::vector<float>& in);
+
+    // The raw binary16 storage of level n (6 values per entry; layout in
+    // src/gpu/shaders/shared/hrc_layout.h), for GPU uploads and readbacks.
+    std::span<std::uint16_t> levelHalves(int n) {
+        return {tables_[n][0].radiance, tables_[n].size() * 6};
+    }
 
     // Bytes for the tables of a frame (entries x 12 bytes).
     static std::uint64_t bytesFor(int length, int rows, int levels);
@@ -102,5 +110,17 @@ void traceBaseLevels(RayTables& tables, const RayMarcher& marcher, int tracedLev
 
 // Builds T_n for tracedLevels <= n < levels by extension.
 void extendLevels(RayTables& tables, int tracedLevels);
+
+}  // namespace luxel::gi2d::hrc
+
+namespace luxel::gpu {
+class Context;
+}
+
+namespace luxel::gi2d::hrc {
+
+// The same as extendLevels for level n alone, on the GPU (shader hrc_extend): uploads T_{n-1},
+// dispatches, reads T_n back. Returns the pass's GPU time in milliseconds.
+Result<double> extendLevelOnGpu(gpu::Context& context, RayTables& tables, int n);
 
 }  // namespace luxel::gi2d::hrc

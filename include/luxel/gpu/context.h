@@ -1,0 +1,96 @@
+// The Vulkan compute runtime: instance, device, one compute queue, buffers, compute programs from
+// the embedded SPIR-V, and named, timed dispatches. Headless; Vulkan is loaded at run time, so a
+// machine without a loader or device gets an Error (and the caller its CPU path), never a crash.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "luxel/core/error.h"
+
+namespace luxel::gpu {
+
+struct DeviceInfo {
+    int index = 0;
+    std::string name;
+    std::string type;  // "discrete", "integrated", "virtual", "cpu", "other"
+    std::uint64_t deviceLocalBytes = 0;
+    std::string apiVersion;  // "1.3.238"
+};
+
+// Every Vulkan device the loader reports, or an Error saying why there is none.
+Result<std::vector<DeviceInfo>> listDevices();
+
+struct ContextOptions {
+    // "" = prefer a discrete GPU, then integrated, then anything (lavapipe included); a number
+    // picks that index of listDevices(); otherwise the first device whose name contains it.
+    std::string device;
+    // Enable VK_LAYER_KHRONOS_validation when installed; messages are counted (validationMessages).
+    bool validation = false;
+};
+
+class Buffer;
+class Program;
+struct Dispatch;
+
+// Timing of one named dispatch, from timestamp queries.
+struct PassTiming {
+    std::string name;
+    double milliseconds = 0;
+};
+
+class Context {
+  public:
+    static Result<std::unique_ptr<Context>> create(const ContextOptions& options = {});
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    const DeviceInfo& device() const;
+    // Validation-layer warnings and errors seen so far (0 when validation is off).
+    int validationMessages() const;
+    std::string lastValidationMessage() const;
+
+    // A device-local storage buffer of `bytes` (shared: it outlives nothing but the context);
+    // fails when the device memory would not fit.
+    Result<std::shared_ptr<Buffer>> createBuffer(std::uint64_t bytes);
+    Status upload(Buffer& buffer, std::span<const std::byte> data);
+    Status download(const Buffer& buffer, std::span<std::byte> data);
+
+    // The compute program of an embedded shader (cached by name). `storageBuffers` bindings
+    // 0..n-1 in set 0 and a push-constant block of `pushBytes` (both checked at dispatch).
+    Result<Program*> program(const std::string& shader, int storageBuffers, int pushBytes);
+
+    // Records and runs dispatches in one submission; returns their GPU times.
+    Result<std::vector<PassTiming>> run(std::span<const Dispatch> dispatches);
+
+    struct Impl;
+
+  private:
+    explicit Context(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> impl_;
+};
+
+// One compute dispatch: `groups` workgroups of the program, with its buffers and push constants.
+struct Dispatch {
+    std::string name;
+    Program* program = nullptr;
+    std::vector<Buffer*> buffers;
+    std::vector<std::byte> pushConstants;
+    std::uint32_t groups[3] = {1, 1, 1};
+
+    template <typename T>
+    void setPush(const T& value) {
+        pushConstants.resize(sizeof(T));
+        std::memcpy(pushConstants.data(), &value, sizeof(T));
+    }
+};
+
+// Names of the embedded shaders.
+std::vector<std::string> embeddedShaders();
+
+}  // namespace luxel::gpu

@@ -1,0 +1,111 @@
+// The Vulkan runtime on whatever device is present (Mesa's lavapipe on CPU-only machines). Tests
+// skip, saying why, when there is no Vulkan loader or device. Validation layers are on and any
+// validation message fails the test.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <numeric>
+
+#include "gi2d/hrc/hrc_geometry.h"
+#include "gi2d/hrc/ray_tables.h"
+#include "gpu/shaders/shared/hrc_layout.h"
+#include "luxel/core/half.h"
+#include "luxel/core/rng.h"
+#include "luxel/gpu/context.h"
+
+namespace luxel::gpu {
+namespace {
+
+std::unique_ptr<Context> makeContext() {
+    auto context = Context::create({.device = "", .validation = true});
+    if (!context) return nullptr;
+    return std::move(*context);
+}
+
+#define LUXEL_REQUIRE_GPU(context) \
+    auto context = makeContext();  \
+    if (!context) GTEST_SKIP() << "no Vulkan device: " << Context::create().error().message()
+
+TEST(GpuSharedLayout, OffsetsMatchTheShaderSide) {
+    // std430 push-constant block of four uints: 0, 4, 8, 12 (the shader reads them in order).
+    EXPECT_EQ(sizeof(shared::HrcExtendParams), 16u);
+    EXPECT_EQ(offsetof(shared::HrcExtendParams, level), 0u);
+    EXPECT_EQ(offsetof(shared::HrcExtendParams, rows), 4u);
+    EXPECT_EQ(offsetof(shared::HrcExtendParams, planesBelow), 8u);
+    EXPECT_EQ(offsetof(shared::HrcExtendParams, planes), 12u);
+    EXPECT_EQ(LUXEL_HRC_ENTRY_WORDS * 4, 12);  // = sizeof(RayTables entry): six binary16
+}
+
+TEST(GpuRuntime, EmbedsEveryShader) {
+    const std::vector<std::string> names = embeddedShaders();
+    EXPECT_NE(std::find(names.begin(), names.end(), "hrc_extend"), names.end());
+}
+
+TEST(GpuRuntime, ListsDevicesAndRoundTripsABuffer) {
+    LUXEL_REQUIRE_GPU(context);
+    auto devices = listDevices();
+    ASSERT_TRUE(devices.ok());
+    EXPECT_FALSE(devices->empty());
+    std::printf("device: %s (%s, Vulkan %s)\n", context->device().name.c_str(),
+                context->device().type.c_str(), context->device().apiVersion.c_str());
+
+    std::vector<std::uint32_t> data(10007);
+    std::iota(data.begin(), data.end(), 7u);
+    auto buffer = context->createBuffer(data.size() * 4);
+    ASSERT_TRUE(buffer.ok()) << buffer.error().message();
+    ASSERT_TRUE(context->upload(**buffer, std::as_bytes(std::span(data))).ok());
+    std::vector<std::uint32_t> back(data.size());
+    ASSERT_TRUE(context->download(**buffer, std::as_writable_bytes(std::span(back))).ok());
+    EXPECT_EQ(back, data);
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
+TEST(GpuRuntime, BadRequestsAreErrors) {
+    LUXEL_REQUIRE_GPU(context);
+    EXPECT_FALSE(Context::create({.device = "99", .validation = false}).ok());
+    EXPECT_FALSE(Context::create({.device = "no such device", .validation = false}).ok());
+    EXPECT_FALSE(context->program("no_such_shader", 1, 0).ok());
+    auto huge = context->createBuffer(context->device().deviceLocalBytes * 2 + 1);
+    EXPECT_FALSE(huge.ok());
+}
+
+TEST(GpuHrc, ExtensionMatchesTheCpuPass) {
+    LUXEL_REQUIRE_GPU(context);
+    // A random volumetric frame, 3 traced levels, then level 3..5 by extension on both sides.
+    const int length = 96, rows = 80, levels = 6;
+    gi2d::Medium2D medium{Image(length, rows, 3), Image(length, rows, 3), Rgb()};
+    Pcg32 rng(11);
+    for (int y = 0; y < rows; ++y) {
+        for (int x = 0; x < length; ++x) {
+            medium.absorption.setRgb(x, y,
+                                     Rgb(rng.nextFloat() * 0.5f, rng.nextFloat() * 0.1f, 0.2f));
+            medium.emission.setRgb(x, y, Rgb(rng.nextFloat() * 3.0f, rng.nextFloat(), 0.5f));
+        }
+    }
+    const gi2d::RayMarcher marcher(medium);
+    gi2d::hrc::RayTables cpu, gpu;
+    cpu.reset(length, rows, levels);
+    gpu.reset(length, rows, levels);
+    gi2d::hrc::traceBaseLevels(cpu, marcher, 3);
+    gi2d::hrc::traceBaseLevels(gpu, marcher, 3);
+    gi2d::hrc::extendLevels(cpu, 3);
+    for (int n = 3; n < levels; ++n) {
+        auto ms = gi2d::hrc::extendLevelOnGpu(*context, gpu, n);
+        ASSERT_TRUE(ms.ok()) << ms.error().message();
+        const auto a = cpu.levelHalves(n), b = gpu.levelHalves(n);
+        ASSERT_EQ(a.size(), b.size());
+        int differing = 0;
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            const float x = halfToFloat(a[i]), y = halfToFloat(b[i]);
+            // Same arithmetic in float; at most one binary16 rounding step apart.
+            ASSERT_NEAR(x, y, 1e-3f * std::max(1.0f, std::abs(x))) << "level " << n << " at " << i;
+            differing += a[i] != b[i];
+        }
+        std::printf("level %d: %zu values, %d differ by one rounding step, GPU %.3f ms\n", n,
+                    a.size(), differing, *ms);
+    }
+    EXPECT_EQ(context->validationMessages(), 0) << "[" << context->lastValidationMessage() << "]";
+}
+
+}  // namespace
+}  // namespace luxel::gpu
