@@ -109,3 +109,56 @@ TEST(GpuHrc, ExtensionMatchesTheCpuPass) {
 
 }  // namespace
 }  // namespace luxel::gpu
+
+#include "gi2d/analytic_disk.h"
+#include "gi2d/shipped_scenes.h"
+#include "luxel/core/metrics.h"
+#include "luxel/gi2d/hrc_solver.h"
+#include "luxel/gi2d/rasterize.h"
+
+namespace luxel::gpu {
+namespace {
+
+class GpuHrcScenes : public testing::TestWithParam<std::tuple<const char*, int, int>> {};
+
+TEST_P(GpuHrcScenes, MatchesTheCpuSolver) {
+    LUXEL_REQUIRE_GPU(context);
+    const auto [scene, width, height] = GetParam();
+    const gi2d::Medium2D medium = gi2d::testing_support::shippedScene(scene, width, height);
+    for (bool blur : {true, false}) {
+        gi2d::HrcOptions options;
+        options.crossBlur = blur;
+        const Image cpu = gi2d::solveHrc(medium, options).value();
+        std::vector<PassTiming> timings;
+        auto gpu = gi2d::solveHrcOnGpu(*context, medium, options, &timings);
+        ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+        const ImageErrors e = compareImages(*gpu, cpu).value();
+        std::printf("%s %dx%d blur %d: GPU vs CPU relative L1 %.2e, max %.2e (%zu passes)\n", scene,
+                    width, height, blur, e.relativeL1, e.maxAbsError, timings.size());
+        EXPECT_LT(e.relativeL1, 1e-5);
+    }
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, GpuHrcScenes,
+                         testing::Values(std::tuple{"penumbra.json", 128, 128},
+                                         std::tuple{"fog.json", 96, 80},
+                                         std::tuple{"pinhole.json", 160, 90}),
+                         [](const auto& param) {
+                             return gi2d::testing_support::sceneTestName(std::get<0>(param.param));
+                         });
+
+TEST(GpuHrc, DiskInVacuumFollowsTheArcsineLaw) {
+    LUXEL_REQUIRE_GPU(context);
+    const double R = 48.0, E = 2.0;
+    const gi2d::Medium2D medium =
+        gi2d::rasterize(gi2d::testing_support::analyticDiskScene(R, static_cast<float>(E))).value();
+    const Image f = gi2d::solveHrcOnGpu(*context, medium).value();
+    for (const auto& probe : gi2d::testing_support::diskProbes(R, E)) {
+        EXPECT_NEAR(f.at(probe.x, probe.y, 0) / probe.exact, 1.0, 0.015)
+            << probe.distanceOverRadius;
+    }
+}
+
+}  // namespace
+}  // namespace luxel::gpu

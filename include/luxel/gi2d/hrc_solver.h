@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 #include "luxel/core/error.h"
 #include "luxel/core/image.h"
@@ -44,5 +45,25 @@ int hrcCascadeCount(int width, int height);
 // Fails with a clear message when the memory estimate exceeds the available memory, or for bad
 // options.
 Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options = {});
+
+}  // namespace luxel::gi2d
+
+namespace luxel::gpu {
+class Context;
+struct PassTiming;
+}  // namespace luxel::gpu
+
+namespace luxel::gi2d {
+
+// The same on the GPU (Vulkan compute): the medium is rotated on the CPU and uploaded per frustum;
+// trace, extend, merge, read-out and finish run as named dispatches whose GPU times are appended
+// to `timings` (with "upload" entries for the CPU-side copies, timed on the CPU). The debug
+// cascade view is CPU-only. Device memory is checked before allocating.
+Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
+                            const HrcOptions& options = {},
+                            std::vector<gpu::PassTiming>* timings = nullptr);
+
+// Device memory solveHrcOnGpu needs.
+std::uint64_t estimateHrcGpuMemory(int width, int height);
 
 }  // namespace luxel::gi2d

@@ -27,7 +27,53 @@ struct HrcExtendParams {
     uint planes;       // plane count of T_n
 };
 
+// Push constants of hrc_trace: marches T_level exactly through the frame medium.
+// Frame medium buffer: per pixel (v * length + u) six floats, sigma rgb then emission rgb.
+struct HrcTraceParams {
+    uint level;
+    uint rows;
+    uint planes;
+    uint frameLength;  // frame pixels along the axis
+};
+
+// Push constants of hrc_merge: R_level from R_{level+1} (hasUpper = 0 at the top cascade).
+// R buffers: three floats per entry, index (p * 2^level + i) * rows + y.
+struct HrcMergeParams {
+    uint level;
+    uint rows;
+    uint planes;
+    uint upperPlanes;
+    uint hasUpper;
+    float skyR, skyG, skyB;  // boundary radiance
+};
+
+// Push constants of hrc_readout: adds R_0 at the plane beyond each pixel into the canvas-space
+// accumulator (three floats per canvas pixel).
+struct HrcReadoutParams {
+    uint frustum;  // 0 +x, 1 +y, 2 -x, 3 -y
+    uint frameLength;
+    uint rows;
+    uint canvasWidth;
+    uint canvasHeight;
+    float skyR, skyG, skyB;
+};
+
+// Push constants of hrc_finish: cross blur (Eq 21), own half-pixel segment, 1 / (2 pi).
+// Canvas medium buffer: six floats per pixel as above.
+struct HrcFinishParams {
+    uint width;
+    uint height;
+    uint frustums;  // how many frustums were summed
+    uint blur;      // 1 = opacity-gated cross blur
+};
+
 #ifdef __cplusplus
+static_assert(sizeof(HrcTraceParams) == 16);
+static_assert(sizeof(HrcMergeParams) == 32);
+static_assert(offsetof(HrcMergeParams, skyR) == 20);
+static_assert(sizeof(HrcReadoutParams) == 32);
+static_assert(offsetof(HrcReadoutParams, skyR) == 20);
+static_assert(sizeof(HrcFinishParams) == 16);
 static_assert(sizeof(HrcExtendParams) == 16);
 static_assert(offsetof(HrcExtendParams, rows) == 4);
 static_assert(offsetof(HrcExtendParams, planesBelow) == 8);

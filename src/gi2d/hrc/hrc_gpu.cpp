@@ -1,0 +1,251 @@
+// HRC on the GPU: the CPU pass structure (hrc_solver.cpp) as dispatches of the shaders in
+// src/gpu/shaders/gi2d/hrc_*.comp.glsl, one submission per frustum.
+#include <algorithm>
+#include <string>
+
+#include "gi2d/hrc/cone_merge.h"
+#include "gi2d/hrc/frustum_frame.h"
+#include "gi2d/hrc/hrc_geometry.h"
+#include "gi2d/hrc/ray_tables.h"
+#include "gpu/shaders/shared/hrc_layout.h"
+#include "luxel/core/memory.h"
+#include "luxel/core/timer.h"
+#include "luxel/gi2d/hrc_solver.h"
+#include "luxel/gpu/context.h"
+
+namespace luxel::gi2d {
+
+using namespace hrc;
+namespace shared = gpu::shared;
+
+namespace {
+
+std::uint32_t groupsFor(int count, int size) {
+    return static_cast<std::uint32_t>((count + size - 1) / size);
+}
+
+// Six floats per pixel: sigma rgb, emission rgb (layout in hrc_layout.h).
+std::vector<float> packMedium(const Medium2D& medium) {
+    std::vector<float> out(static_cast<std::size_t>(medium.width()) * medium.height() * 6);
+    for (int y = 0; y < medium.height(); ++y) {
+        for (int x = 0; x < medium.width(); ++x) {
+            float* e = &out[(static_cast<std::size_t>(y) * medium.width() + x) * 6];
+            const Rgb s = medium.absorption.rgb(x, y), em = medium.emission.rgb(x, y);
+            e[0] = s.r, e[1] = s.g, e[2] = s.b, e[3] = em.r, e[4] = em.g, e[5] = em.b;
+        }
+    }
+    return out;
+}
+
+// Entries of T_n and R_n for the larger of the two frame orientations.
+std::uint64_t tableEntries(int width, int height, int n) {
+    std::uint64_t most = 0;
+    for (int r = 0; r < 2; ++r) {
+        const FrustumFrame f = makeFrame(static_cast<Frustum>(r), width, height);
+        if (n >= cascadeCount(f.length)) continue;
+        most = std::max<std::uint64_t>(
+            most, static_cast<std::uint64_t>(planeCount(f.length, n)) * (pow2(n) + 1) * f.rows);
+    }
+    return most;
+}
+
+std::uint64_t coneEntries(int width, int height) {
+    std::uint64_t most = 0;
+    for (int n = 0; n < hrcCascadeCount(width, height); ++n) {
+        for (int r = 0; r < 2; ++r) {
+            const FrustumFrame f = makeFrame(static_cast<Frustum>(r), width, height);
+            if (n >= cascadeCount(f.length)) continue;
+            most = std::max<std::uint64_t>(
+                most, static_cast<std::uint64_t>(planeCount(f.length, n)) * pow2(n) * f.rows);
+        }
+    }
+    return most;
+}
+
+}  // namespace
+
+std::uint64_t estimateHrcGpuMemory(int width, int height) {
+    std::uint64_t bytes = 0;
+    for (int n = 0; n < hrcCascadeCount(width, height); ++n) {
+        bytes += tableEntries(width, height, n) * LUXEL_HRC_ENTRY_WORDS * 4;
+    }
+    const std::uint64_t pixels = static_cast<std::uint64_t>(width) * height;
+    bytes += 2 * coneEntries(width, height) * 12;  // two R buffers
+    bytes += 2 * pixels * 24;                      // canvas and frame media
+    bytes += 2 * pixels * 12;                      // accumulator and fluence
+    return bytes;
+}
+
+Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
+                            const HrcOptions& options, std::vector<gpu::PassTiming>* timings) {
+    const int w = medium.width(), h = medium.height();
+    if (options.tracedLevels < 1) {
+        return Error("HRC traced levels must be >= 1, got " + std::to_string(options.tracedLevels));
+    }
+    if ((options.frustumMask & 0xFu) == 0) return Error("HRC frustum mask selects no frustum");
+    if (options.debugCascade >= 0)
+        return Error("the HRC cascade view runs on the CPU backend only");
+    const std::uint64_t needed = estimateHrcGpuMemory(w, h);
+    if (context.device().deviceLocalBytes > 0 && needed > context.device().deviceLocalBytes) {
+        return Error("HRC at " + std::to_string(w) + "x" + std::to_string(h) + " needs " +
+                     formatBytes(needed) + " of device memory, the device has " +
+                     formatBytes(context.device().deviceLocalBytes));
+    }
+    auto record = [&](const std::string& name, double ms) {
+        if (timings) timings->push_back({name, ms});
+    };
+
+    // Programs.
+    using shared::HrcExtendParams, shared::HrcFinishParams, shared::HrcMergeParams,
+        shared::HrcReadoutParams, shared::HrcTraceParams;
+    auto trace = context.program("hrc_trace", 2, sizeof(HrcTraceParams));
+    auto extend = context.program("hrc_extend", 2, sizeof(HrcExtendParams));
+    auto merge = context.program("hrc_merge", 4, sizeof(HrcMergeParams));
+    auto readout = context.program("hrc_readout", 2, sizeof(HrcReadoutParams));
+    auto finish = context.program("hrc_finish", 3, sizeof(HrcFinishParams));
+    for (auto* p : {&trace, &extend, &merge, &readout, &finish}) {
+        if (!*p) return p->error();
+    }
+
+    // Buffers shared by the frustums.
+    const int levelsMax = hrcCascadeCount(w, h);
+    const std::uint64_t pixels = static_cast<std::uint64_t>(w) * h;
+    std::vector<std::shared_ptr<gpu::Buffer>> tables, weights;
+    for (int n = 0; n < levelsMax; ++n) {
+        auto t = context.createBuffer(tableEntries(w, h, n) * LUXEL_HRC_ENTRY_WORDS * 4);
+        if (!t) return t.error();
+        tables.push_back(*t);
+        const std::vector<float> wn = coneWeights(n);
+        auto wb = context.createBuffer(wn.size() * 4);
+        if (!wb) return wb.error();
+        if (Status s = context.upload(**wb, std::as_bytes(std::span(wn))); !s) return s.error();
+        weights.push_back(*wb);
+    }
+    std::shared_ptr<gpu::Buffer> cones[2];
+    for (auto& c : cones) {
+        auto b = context.createBuffer(coneEntries(w, h) * 12);
+        if (!b) return b.error();
+        c = *b;
+    }
+    auto frameBuffer = context.createBuffer(pixels * 24);
+    auto canvasMedium = context.createBuffer(pixels * 24);
+    auto beyond = context.createBuffer(pixels * 12);
+    auto fluence = context.createBuffer(pixels * 12);
+    for (auto* b : {&frameBuffer, &canvasMedium, &beyond, &fluence}) {
+        if (!*b) return b->error();
+    }
+    {
+        Stopwatch upload;
+        const std::vector<float> packed = packMedium(medium);
+        if (Status s = context.upload(**canvasMedium, std::as_bytes(std::span(packed))); !s) {
+            return s.error();
+        }
+        const std::vector<float> zeros(pixels * 3, 0.0f);
+        if (Status s = context.upload(**beyond, std::as_bytes(std::span(zeros))); !s) {
+            return s.error();
+        }
+        record("upload canvas medium (CPU)", upload.milliseconds());
+    }
+
+    const Rgb sky = medium.boundaryRadiance;
+    int frustums = 0;
+    for (int r = 0; r < 4; ++r) {
+        if (!(options.frustumMask & (1u << r))) continue;
+        ++frustums;
+        const FrustumFrame frame = makeFrame(static_cast<Frustum>(r), w, h);
+        const int levels = cascadeCount(frame.length);
+        const auto rows = static_cast<std::uint32_t>(frame.rows);
+        {
+            Stopwatch upload;
+            const std::vector<float> packed = packMedium(frameMedium(medium, frame));
+            if (Status s = context.upload(**frameBuffer, std::as_bytes(std::span(packed))); !s) {
+                return s.error();
+            }
+            record("upload frame medium " + std::to_string(r) + " (CPU)", upload.milliseconds());
+        }
+        std::vector<gpu::Dispatch> passes;
+        const std::string tag = " f" + std::to_string(r);
+        for (int n = 0; n < levels; ++n) {
+            const auto planes = static_cast<std::uint32_t>(planeCount(frame.length, n));
+            gpu::Dispatch d;
+            d.groups[0] = groupsFor(frame.rows, LUXEL_HRC_GROUP_SIZE);
+            d.groups[1] = static_cast<std::uint32_t>(pow2(n) + 1);
+            d.groups[2] = planes;
+            if (n < options.tracedLevels) {
+                d.name = "trace T" + std::to_string(n) + tag;
+                d.program = *trace;
+                d.buffers = {frameBuffer->get(), tables[n].get()};
+                d.setPush(HrcTraceParams{static_cast<std::uint32_t>(n), rows, planes,
+                                         static_cast<std::uint32_t>(frame.length)});
+            } else {
+                d.name = "extend T" + std::to_string(n) + tag;
+                d.program = *extend;
+                d.buffers = {tables[n - 1].get(), tables[n].get()};
+                d.setPush(HrcExtendParams{
+                    static_cast<std::uint32_t>(n), rows,
+                    static_cast<std::uint32_t>(planeCount(frame.length, n - 1)), planes});
+            }
+            passes.push_back(std::move(d));
+        }
+        int current = 0;
+        for (int n = levels - 1; n >= 0; --n) {
+            const auto planes = static_cast<std::uint32_t>(planeCount(frame.length, n));
+            const bool top = n == levels - 1;
+            gpu::Dispatch d;
+            d.name = "merge R" + std::to_string(n) + tag;
+            d.program = *merge;
+            // The top cascade reads no upper buffer; bind the output twice then (never read).
+            d.buffers = {tables[n].get(), cones[top ? current : current ^ 1].get(),
+                         cones[current].get(), weights[n].get()};
+            d.setPush(HrcMergeParams{
+                static_cast<std::uint32_t>(n), rows, planes,
+                top ? 0u : static_cast<std::uint32_t>(planeCount(frame.length, n + 1)),
+                top ? 0u : 1u, sky.r, sky.g, sky.b});
+            d.groups[0] = groupsFor(frame.rows, LUXEL_HRC_GROUP_SIZE);
+            d.groups[1] = static_cast<std::uint32_t>(pow2(n));
+            d.groups[2] = planes;
+            passes.push_back(std::move(d));
+            current ^= 1;
+        }
+        gpu::Dispatch out;
+        out.name = "readout" + tag;
+        out.program = *readout;
+        out.buffers = {cones[current ^ 1].get(), beyond->get()};
+        out.setPush(HrcReadoutParams{
+            static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(frame.length), rows,
+            static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h), sky.r, sky.g, sky.b});
+        out.groups[0] = groupsFor(frame.length, LUXEL_HRC_GROUP_SIZE);
+        out.groups[1] = rows;
+        passes.push_back(std::move(out));
+        auto ran = context.run(passes);
+        if (!ran) return ran.error();
+        if (timings) timings->insert(timings->end(), ran->begin(), ran->end());
+        if (options.onProgress)
+            options.onProgress(frustums, std::popcount(options.frustumMask & 0xFu));
+    }
+
+    gpu::Dispatch last;
+    last.name = "finish";
+    last.program = *finish;
+    last.buffers = {canvasMedium->get(), beyond->get(), fluence->get()};
+    last.setPush(HrcFinishParams{static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h),
+                                 static_cast<std::uint32_t>(frustums),
+                                 options.crossBlur ? 1u : 0u});
+    last.groups[0] = groupsFor(w, 8);
+    last.groups[1] = groupsFor(h, 8);
+    auto ran = context.run(std::span<const gpu::Dispatch>(&last, 1));
+    if (!ran) return ran.error();
+    if (timings) timings->insert(timings->end(), ran->begin(), ran->end());
+
+    Image result(w, h, 3);
+    Stopwatch download;
+    if (Status s = context.download(
+            **fluence, std::as_writable_bytes(std::span(result.data(), result.size())));
+        !s) {
+        return s.error();
+    }
+    record("download fluence (CPU)", download.milliseconds());
+    return result;
+}
+
+}  // namespace luxel::gi2d

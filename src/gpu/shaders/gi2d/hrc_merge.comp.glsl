@@ -1,0 +1,58 @@
+// HRC cone merge (hrc.md §5, paper Eq 13-17; CPU reference: mergeCascade in
+// src/gi2d/hrc/cone_merge.cpp). One invocation per (row, cone, plane).
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/hrc_layout.h"
+#include "gi2d/hrc_common.glsl"
+
+layout(local_size_x = LUXEL_HRC_GROUP_SIZE) in;
+layout(std430, set = 0, binding = 0) readonly buffer Table { uint table[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Upper { float upper[]; };
+layout(std430, set = 0, binding = 2) writeonly buffer Cones { float cones[]; };
+layout(std430, set = 0, binding = 3) readonly buffer Weights { float weight[]; };
+layout(push_constant) uniform Push { HrcMergeParams params; };
+
+Interval tableAt(int p, int y, int k) {
+    if (p < 0 || p >= int(params.planes) || y < 0 || y >= int(params.rows)) {
+        return emptyInterval();
+    }
+    const uint word = tableWord(params.level, uint(p), uint(k), uint(y), params.rows);
+    return unpackEntry(table[word], table[word + 1u], table[word + 2u]);
+}
+
+// Cone j of the upper cascade at (p, y); outside the frame (or above the top) the sky.
+vec3 upperAt(int p, int y, int j) {
+    if (params.hasUpper == 0u || p < 0 || p >= int(params.upperPlanes) || y < 0 ||
+        y >= int(params.rows)) {
+        return vec3(params.skyR, params.skyG, params.skyB) * weight[j];
+    }
+    const uint upperCones = 1u << (params.level + 1u);
+    const uint base = ((uint(p) * upperCones + uint(j)) * params.rows + uint(y)) * 3u;
+    return vec3(upper[base], upper[base + 1u], upper[base + 2u]);
+}
+
+void main() {
+    const uint y = gl_GlobalInvocationID.x, i = gl_GlobalInvocationID.y;
+    const uint p = gl_GlobalInvocationID.z;
+    if (y >= params.rows || p >= params.planes) return;
+    const int ip = int(p), iy = int(y);
+    vec3 sum = vec3(0.0);
+    for (int s = 0; s < 2; ++s) {
+        const int k = int(i) + s, j = 2 * int(i) + s;
+        const int dy = 2 * k - int(1u << params.level);
+        const float w = weight[j];
+        if ((p & 1u) == 1u) {  // the ray ends on upper plane (p + 1) / 2 (Eq 14)
+            const Interval seg = tableAt(ip, iy, k);
+            sum += seg.radiance * w + seg.transmittance * upperAt((ip + 1) / 2, iy + dy, j);
+        } else {  // near and far merged, then averaged (Eq 15-17)
+            const vec3 near = upperAt(ip / 2, iy, j);
+            const Interval seg = over(tableAt(ip, iy, k), tableAt(ip + 1, iy + dy, k));
+            const vec3 far = seg.radiance * w + seg.transmittance * upperAt(ip / 2 + 1, iy + 2 * dy, j);
+            sum += (near + far) * 0.5;
+        }
+    }
+    const uint base = ((p * (1u << params.level) + i) * params.rows + y) * 3u;
+    cones[base] = sum.x;
+    cones[base + 1u] = sum.y;
+    cones[base + 2u] = sum.z;
+}

@@ -1,0 +1,39 @@
+// HRC read-out (hrc.md §6.2; CPU reference: readOut in src/gi2d/hrc/hrc_solver.cpp): each pixel
+// adds the cones of R_0 at the plane one pixel ahead along this frustum's axis (or the sky beyond
+// the frame) to its canvas-space accumulator.
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/hrc_layout.h"
+
+layout(local_size_x = LUXEL_HRC_GROUP_SIZE) in;
+layout(std430, set = 0, binding = 0) readonly buffer Cones { float cones[]; };
+layout(std430, set = 0, binding = 1) buffer Beyond { float beyond[]; };
+layout(push_constant) uniform Push { HrcReadoutParams params; };
+
+const float kQuarterTurn = 1.57079632679489662;
+
+// Canvas pixel of frame pixel (u, v); matches FrustumFrame::toCanvas.
+uvec2 toCanvas(uint u, uint v) {
+    if (params.frustum == 0u) return uvec2(u, v);
+    if (params.frustum == 2u) return uvec2(params.canvasWidth - 1u - u, v);
+    if (params.frustum == 1u) return uvec2(v, u);
+    return uvec2(v, params.canvasHeight - 1u - u);
+}
+
+void main() {
+    const uint u = gl_GlobalInvocationID.x, v = gl_GlobalInvocationID.y;
+    if (u >= params.frameLength || v >= params.rows) return;
+    const uint plane = u + 1u;  // R_0 has one plane per pixel border and one cone
+    vec3 arriving;
+    if (plane < params.frameLength) {
+        const uint base = (plane * params.rows + v) * 3u;
+        arriving = vec3(cones[base], cones[base + 1u], cones[base + 2u]);
+    } else {
+        arriving = vec3(params.skyR, params.skyG, params.skyB) * kQuarterTurn;
+    }
+    const uvec2 c = toCanvas(u, v);
+    const uint target = (c.y * params.canvasWidth + c.x) * 3u;
+    beyond[target] += arriving.x;
+    beyond[target + 1u] += arriving.y;
+    beyond[target + 2u] += arriving.z;
+}
