@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
         luxel::cli::addCompareCommand);
     add("compare-solvers", "run every 2D solver on a scene: time, error vs reference, memory",
         luxel::cli::addCompareSolversCommand);
+    add("bench", "HRC frame times over canvas sizes, CPU or GPU, per pass",
+        luxel::cli::addBenchCommand);
     add("devices", "list the Vulkan devices the GPU backend can use",
         luxel::cli::addDevicesCommand);
     add("raster", "write the rasterised medium (emission, absorption) as images",

@@ -258,6 +258,39 @@ TEST_F(Cli, DevicesListsVulkanDevicesOrSaysWhyNot) {
     EXPECT_NE(r.output.find("luxel: error: "), std::string::npos) << r.output;
 }
 
+TEST_F(Cli, GpuBackendForHrcAndBench) {
+    const std::string scene = write("small.json", kSmallScene);
+    expectError("render " + scene + " --solver hrc --backend quantum --out " + path("x.exr"),
+                "--backend");
+    expectError("render " + scene + " --solver rc --backend gpu --out " + path("x.exr"),
+                "no GPU path");
+    if (runLuxel("devices").exitCode != 0) GTEST_SKIP() << "no Vulkan device";
+    RunResult r =
+        runLuxel("render " + scene + " --solver hrc --backend gpu --out " + path("g.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("gpu: "), std::string::npos) << r.output;
+    r = runLuxel("render " + scene + " --solver hrc --backend cpu --out " + path("c.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    r = runLuxel("compare " + path("g.exr") + " " + path("c.exr"));
+    const auto at = r.output.find("relative L1");
+    ASSERT_NE(at, std::string::npos) << r.output;
+    EXPECT_LT(std::stod(r.output.substr(at + 11)), 1e-5) << r.output;
+    r = runLuxel("bench " + scene + " --backend gpu --sizes 32,48 --repeat 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("merge"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("\n     48 "), std::string::npos) << r.output;
+    // No driver: --backend gpu fails clearly, auto falls back to the CPU.
+    const std::string noDriver =
+        "VK_DRIVER_FILES=/nonexistent.json VK_ICD_FILENAMES=/nonexistent.json";
+    r = runLuxel("render " + scene + " --solver hrc --backend gpu --out " + path("x.exr"),
+                 noDriver);
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("no Vulkan driver"), std::string::npos) << r.output;
+    r = runLuxel("render " + scene + " --solver hrc --out " + path("a.exr"), noDriver);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("using the CPU backend"), std::string::npos) << r.output;
+}
+
 TEST_F(Cli, HrcRendersAndRefusesSizesThatDoNotFit) {
     const std::string scene = write("small.json", kSmallScene);
     RunResult r = runLuxel("render " + scene + " --solver hrc --out " + path("h.exr"));

@@ -21,6 +21,7 @@ Runner addCompareCommand(CLI::App& app);
 Runner addRasterCommand(CLI::App& app);
 Runner addCompareSolversCommand(CLI::App& app);
 Runner addDevicesCommand(CLI::App& app);
+Runner addBenchCommand(CLI::App& app);
 
 // Prints "luxel: error: <message>" to stderr and returns the exit code for bad input.
 int reportError(const Error& error);

@@ -14,6 +14,7 @@
 #include "luxel/gi2d/rc_solver.h"
 #include "luxel/gi2d/reference_solver.h"
 #include "luxel/gi2d/sdf_scene.h"
+#include "luxel/gpu/context.h"
 
 namespace luxel::cli {
 namespace {
@@ -27,6 +28,7 @@ struct RenderArgs {
     float exposure = 0.0f;
     bool quiet = false;
     bool stats = false;  // print a machine-readable timing line (for compare-solvers)
+    std::string backend = "auto", device;
     // HRC
     int tracedLevels = gi2d::HrcOptions{}.tracedLevels;
     bool noBlur = false;
@@ -96,10 +98,37 @@ Result<Image> solveRcFor(const RenderArgs& args, const SizedScene& sized,
     return gi2d::solveRc(medium, *options);
 }
 
+// The GPU context for --backend gpu, or for auto when a hardware device exists and the solver
+// can use it; nullptr means the CPU path. auto falls back with a one-line note.
+Result<std::unique_ptr<gpu::Context>> chooseGpu(const RenderArgs& args, bool gpuCapable) {
+    if (args.backend != "auto" && args.backend != "cpu" && args.backend != "gpu") {
+        return Error("--backend '" + args.backend + "' is not auto, cpu or gpu");
+    }
+    if (args.backend == "cpu" || !gpuCapable) {
+        if (args.backend == "gpu") return Error("--backend gpu: this view runs on the CPU only");
+        return std::unique_ptr<gpu::Context>();
+    }
+    auto context = gpu::Context::create({args.device, false});
+    if (!context) {
+        if (args.backend == "gpu") return Error("--backend gpu: " + context.error().message());
+        if (!args.quiet) {
+            std::fprintf(stderr, "luxel: note: using the CPU backend (%s)\n",
+                         context.error().message().c_str());
+        }
+        return std::unique_ptr<gpu::Context>();
+    }
+    // A software Vulkan device (lavapipe) is slower than the CPU path: auto skips it.
+    if (args.backend == "auto" && (*context)->device().type == "cpu") {
+        return std::unique_ptr<gpu::Context>();
+    }
+    return std::move(*context);
+}
+
 Result<Image> solve(const RenderArgs& args, const SizedScene& sized, const gi2d::Medium2D& medium,
                     double& rays, std::string& detail) {
     const int w = medium.width(), h = medium.height();
     if (args.solver == "reference") {
+        if (args.backend == "gpu") return Error("--backend gpu: the reference solver is CPU-only");
         ProgressBar progress("reference", static_cast<std::uint64_t>(h), !args.quiet);
         gi2d::ReferenceOptions options;
         options.rays = args.rays;
@@ -111,6 +140,8 @@ Result<Image> solve(const RenderArgs& args, const SizedScene& sized, const gi2d:
     if (args.solver == "hrc") {
         auto mask = frustumMask(args.frustum);
         if (!mask) return mask.error();
+        auto context = chooseGpu(args, args.view != "cascade");
+        if (!context) return context.error();
         ProgressBar progress("hrc", 4, !args.quiet);
         gi2d::HrcOptions options;
         options.tracedLevels = args.tracedLevels;
@@ -119,9 +150,21 @@ Result<Image> solve(const RenderArgs& args, const SizedScene& sized, const gi2d:
         options.debugCascade = args.view == "cascade" ? std::max(args.cascade, 0) : -1;
         options.onProgress = [&](int, int) { progress.advance(); };
         rays = 0;
+        if (*context) {
+            detail = "gpu: " + (*context)->device().name;
+            std::vector<gpu::PassTiming> timings;
+            auto result = gi2d::solveHrcOnGpu(**context, medium, options, &timings);
+            double total = 0;
+            for (const gpu::PassTiming& t : timings) total += t.milliseconds;
+            detail += ", passes " + std::to_string(timings.size()) + ", " +
+                      std::to_string(static_cast<int>(total + 0.5)) + " ms summed";
+            return result;
+        }
+        detail = "cpu";
         return gi2d::solveHrc(medium, options);
     }
     if (args.solver == "rc") {
+        if (args.backend == "gpu") return Error("--backend gpu: RC has no GPU path yet");
         rays = 0;
         std::string march;
         auto result = solveRcFor(args, sized, medium, march);
@@ -263,6 +306,10 @@ Runner addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     app.add_flag("--quiet,-q", args->quiet, "no progress bar or summary");
     app.add_flag("--stats", args->stats, "print 'stats solve_seconds=S' (for scripts)");
+    app.add_option("--backend", args->backend,
+                   "auto (a hardware GPU when there is one, else CPU), cpu or gpu (HRC)")
+        ->capture_default_str();
+    app.add_option("--device", args->device, "GPU: device index or part of its name");
     return [args] { return runRender(*args); };
 }
 

@@ -1,0 +1,130 @@
+// `luxel bench`: HRC frame times over canvas sizes, on the CPU or the GPU, with the GPU passes
+// (timestamp queries) summed by kind.
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "commands/command.h"
+#include "luxel/core/memory.h"
+#include "luxel/core/timer.h"
+#include "luxel/gi2d/hrc_solver.h"
+#include "luxel/gi2d/rasterize.h"
+#include "luxel/gpu/context.h"
+
+namespace luxel::cli {
+namespace {
+
+struct BenchArgs {
+    std::string scene = "scenes/2d/room.json", backend = "cpu", device, sizes = "256,512,1024,2048";
+    int repeat = 3;
+};
+
+Result<std::vector<int>> parseSizes(const std::string& text) {
+    std::vector<int> sizes;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        try {
+            const int size = std::stoi(item);
+            if (Status s = gi2d::validateCanvasSize(size, size); !s) return s.error();
+            sizes.push_back(size);
+        } catch (...) {
+            return Error("--sizes '" + text + "' is not a comma-separated list of sizes");
+        }
+    }
+    if (sizes.empty()) return Error("--sizes is empty");
+    return sizes;
+}
+
+// "merge R3 f0" -> "merge"
+std::string passKind(const std::string& name) {
+    return name.substr(0, name.find(' '));
+}
+
+int runBench(const BenchArgs& args) {
+    auto sizes = parseSizes(args.sizes);
+    if (!sizes) return reportError(sizes.error());
+    if (args.backend != "cpu" && args.backend != "gpu") {
+        return reportError(Error("--backend '" + args.backend + "' is not cpu or gpu"));
+    }
+    auto sized = loadSizedScene(args.scene, "");
+    if (!sized) return reportError(sized.error());
+    std::unique_ptr<gpu::Context> context;
+    if (args.backend == "gpu") {
+        auto created = gpu::Context::create({args.device, false});
+        if (!created) return reportError(Error("--backend gpu: " + created.error().message()));
+        context = std::move(*created);
+        std::printf("device: %s (%s)\n", context->device().name.c_str(),
+                    context->device().type.c_str());
+    }
+    std::printf("%s, hrc on the %s, best of %d\n", args.scene.c_str(), args.backend.c_str(),
+                args.repeat);
+    std::printf("%7s %10s %9s", "size", "ms", "Mpix/s");
+    const char* kinds[] = {"trace", "extend", "merge", "readout", "finish", "upload", "download"};
+    if (context) {
+        for (const char* k : kinds) std::printf(" %9s", k);
+    }
+    std::printf("\n");
+    for (int size : *sizes) {
+        sized->width = sized->height = size;
+        const std::uint64_t needed =
+            gi2d::mediumBytes(size, size) +
+            (context ? gi2d::mediumBytes(size, size) : gi2d::estimateHrcMemory(size, size).total());
+        if (Status s = checkMemory(needed, std::to_string(size) + "^2"); !s) {
+            std::printf("%7d skipped: %s\n", size, s.error().message().c_str());
+            continue;
+        }
+        auto medium = rasterizeSized(*sized, args.scene, 16);
+        if (!medium) return reportError(medium.error());
+        double best = 1e300;
+        std::map<std::string, double> bestPasses;
+        for (int r = 0; r < args.repeat + (context ? 1 : 0); ++r) {  // GPU: one warm-up run
+            std::vector<gpu::PassTiming> timings;
+            Stopwatch clock;
+            auto result = context ? gi2d::solveHrcOnGpu(*context, *medium, {}, &timings)
+                                  : gi2d::solveHrc(*medium);
+            const double ms = clock.milliseconds();
+            if (!result) {
+                std::printf("%7d failed: %s\n", size, result.error().message().c_str());
+                break;
+            }
+            if (context && r == 0) continue;
+            if (ms < best) {
+                best = ms;
+                bestPasses.clear();
+                for (const gpu::PassTiming& t : timings)
+                    bestPasses[passKind(t.name)] += t.milliseconds;
+            }
+        }
+        if (best == 1e300) continue;
+        std::printf("%7d %10.2f %9.2f", size, best, static_cast<double>(size) * size / best * 1e-3);
+        if (context) {
+            for (const char* k : kinds) std::printf(" %9.2f", bestPasses[k]);
+        }
+        std::printf("\n");
+    }
+    if (context) {
+        std::printf(
+            "pass columns: GPU time (timestamps) summed over the 4 frustums; upload and "
+            "download are CPU-side copies\n");
+    }
+    return 0;
+}
+
+}  // namespace
+
+Runner addBenchCommand(CLI::App& app) {
+    auto args = std::make_shared<BenchArgs>();
+    app.add_option("scene", args->scene, "scene file (default: the default scene)")
+        ->capture_default_str();
+    app.add_option("--backend", args->backend, "cpu or gpu")->capture_default_str();
+    app.add_option("--device", args->device, "GPU: device index or part of its name");
+    app.add_option("--sizes", args->sizes, "comma-separated square sizes (e.g. ...,4096,8192)")
+        ->capture_default_str();
+    app.add_option("--repeat", args->repeat, "runs per size (the best is printed)")
+        ->capture_default_str();
+    return [args] { return runBench(*args); };
+}
+
+}  // namespace luxel::cli
