@@ -262,8 +262,8 @@ TEST_F(Cli, GpuBackendForHrcAndBench) {
     const std::string scene = write("small.json", kSmallScene);
     expectError("render " + scene + " --solver hrc --backend quantum --out " + path("x.exr"),
                 "--backend");
-    expectError("render " + scene + " --solver rc --backend gpu --out " + path("x.exr"),
-                "no GPU path");
+    expectError("render " + scene + " --solver reference --backend gpu --out " + path("x.exr"),
+                "CPU-only");
     if (runLuxel("devices").exitCode != 0) GTEST_SKIP() << "no Vulkan device";
     RunResult r =
         runLuxel("render " + scene + " --solver hrc --backend gpu --out " + path("g.exr"));
@@ -275,6 +275,10 @@ TEST_F(Cli, GpuBackendForHrcAndBench) {
     const auto at = r.output.find("relative L1");
     ASSERT_NE(at, std::string::npos) << r.output;
     EXPECT_LT(std::stod(r.output.substr(at + 11)), 1e-5) << r.output;
+    r = runLuxel("render " + scene + " --solver rc --backend gpu --merge bilinear-fix --out " +
+                 path("rg.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("march dda, gpu: "), std::string::npos) << r.output;
     r = runLuxel("bench " + scene + " --backend gpu --sizes 32,48 --repeat 1");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("merge"), std::string::npos) << r.output;

@@ -162,3 +162,53 @@ TEST(GpuHrc, DiskInVacuumFollowsTheArcsineLaw) {
 
 }  // namespace
 }  // namespace luxel::gpu
+
+#include "luxel/gi2d/rc_solver.h"
+
+namespace luxel::gpu {
+namespace {
+
+TEST(GpuRc, MatchesTheCpuSolverForBothMerges) {
+    LUXEL_REQUIRE_GPU(context);
+    for (const char* scene : {"penumbra.json", "fog.json"}) {
+        const gi2d::Medium2D medium = gi2d::testing_support::shippedScene(scene, 96, 72);
+        for (gi2d::RcMerge merge : {gi2d::RcMerge::Vanilla, gi2d::RcMerge::BilinearFix}) {
+            gi2d::RcOptions options;
+            options.merge = merge;
+            const Image cpu = gi2d::solveRc(medium, options).value();
+            std::vector<PassTiming> timings;
+            auto gpu = gi2d::solveRcOnGpu(*context, medium, options, &timings);
+            ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+            const ImageErrors e = compareImages(*gpu, cpu).value();
+            std::printf("rc %s %s: GPU vs CPU relative L1 %.2e, max %.2e (%zu passes)\n", scene,
+                        merge == gi2d::RcMerge::Vanilla ? "vanilla" : "fix", e.relativeL1,
+                        e.maxAbsError, timings.size());
+            EXPECT_LT(e.relativeL1, 1e-5);
+        }
+    }
+    gi2d::RcOptions view;
+    view.debugCascade = 2;
+    const gi2d::Medium2D small = gi2d::testing_support::shippedScene("penumbra.json", 48, 48);
+    const ImageErrors e = compareImages(gi2d::solveRcOnGpu(*context, small, view).value(),
+                                        gi2d::solveRc(small, view).value())
+                              .value();
+    EXPECT_LT(e.relativeL1, 1e-4);
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
+TEST(GpuRc, AnalyticDisk) {
+    LUXEL_REQUIRE_GPU(context);
+    const double R = 48.0, E = 2.0;
+    const gi2d::Medium2D medium =
+        gi2d::rasterize(gi2d::testing_support::analyticDiskScene(R, static_cast<float>(E))).value();
+    gi2d::RcOptions options;
+    options.merge = gi2d::RcMerge::BilinearFix;
+    const Image f = gi2d::solveRcOnGpu(*context, medium, options).value();
+    for (const auto& probe : gi2d::testing_support::diskProbes(R, E)) {
+        EXPECT_NEAR(f.at(probe.x, probe.y, 0) / probe.exact, 1.0, 0.015)
+            << probe.distanceOverRadius;
+    }
+}
+
+}  // namespace
+}  // namespace luxel::gpu

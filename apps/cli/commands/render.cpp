@@ -78,26 +78,6 @@ Result<gi2d::RcOptions> rcOptions(const RenderArgs& args) {
     return options;
 }
 
-// RC traces intervals by sphere tracing when the scene allows it (--march auto) or is told to.
-Result<Image> solveRcFor(const RenderArgs& args, const SizedScene& sized,
-                         const gi2d::Medium2D& medium, std::string& marchUsed) {
-    auto options = rcOptions(args);
-    if (!options) return options.error();
-    if (args.march != "auto" && args.march != "dda" && args.march != "sdf") {
-        return Error("--march '" + args.march + "' is not auto, dda or sdf");
-    }
-    if (args.march != "dda") {
-        auto sdf = gi2d::SdfScene::create(sized.scene, sized.width, sized.height);
-        if (sdf) {
-            marchUsed = "sdf";
-            return gi2d::solveRc(*sdf, sized.scene.boundaryRadiance, *options);
-        }
-        if (args.march == "sdf") return Error("--march sdf: " + sdf.error().message());
-    }
-    marchUsed = "dda";
-    return gi2d::solveRc(medium, *options);
-}
-
 // The GPU context for --backend gpu, or for auto when a hardware device exists and the solver
 // can use it; nullptr means the CPU path. auto falls back with a one-line note.
 Result<std::unique_ptr<gpu::Context>> chooseGpu(const RenderArgs& args, bool gpuCapable) {
@@ -108,7 +88,12 @@ Result<std::unique_ptr<gpu::Context>> chooseGpu(const RenderArgs& args, bool gpu
         if (args.backend == "gpu") return Error("--backend gpu: this view runs on the CPU only");
         return std::unique_ptr<gpu::Context>();
     }
-    auto context = gpu::Context::create({args.device, false});
+#ifdef NDEBUG
+    constexpr bool kValidation = false;
+#else
+    constexpr bool kValidation = true;  // debug builds run with the validation layers
+#endif
+    auto context = gpu::Context::create({args.device, kValidation});
     if (!context) {
         if (args.backend == "gpu") return Error("--backend gpu: " + context.error().message());
         if (!args.quiet) {
@@ -122,6 +107,36 @@ Result<std::unique_ptr<gpu::Context>> chooseGpu(const RenderArgs& args, bool gpu
         return std::unique_ptr<gpu::Context>();
     }
     return std::move(*context);
+}
+
+// RC: sphere tracing when the scene allows it (--march auto) or is told to, else the DDA through
+// the medium, on the GPU when one is chosen.
+Result<Image> solveRcFor(const RenderArgs& args, const SizedScene& sized,
+                         const gi2d::Medium2D& medium, std::string& detail) {
+    auto options = rcOptions(args);
+    if (!options) return options.error();
+    if (args.march != "auto" && args.march != "dda" && args.march != "sdf") {
+        return Error("--march '" + args.march + "' is not auto, dda or sdf");
+    }
+    if (args.backend == "gpu" && args.march == "sdf") {
+        return Error("--backend gpu traces RC intervals with the DDA; use --march dda or auto");
+    }
+    if (args.backend != "gpu" && args.march != "dda") {
+        auto sdf = gi2d::SdfScene::create(sized.scene, sized.width, sized.height);
+        if (sdf) {
+            detail = "merge " + args.merge + ", march sdf, cpu";
+            return gi2d::solveRc(*sdf, sized.scene.boundaryRadiance, *options);
+        }
+        if (args.march == "sdf") return Error("--march sdf: " + sdf.error().message());
+    }
+    auto context = chooseGpu(args, true);
+    if (!context) return context.error();
+    if (*context) {
+        detail = "merge " + args.merge + ", march dda, gpu: " + (*context)->device().name;
+        return gi2d::solveRcOnGpu(**context, medium, *options);
+    }
+    detail = "merge " + args.merge + ", march dda, cpu";
+    return gi2d::solveRc(medium, *options);
 }
 
 Result<Image> solve(const RenderArgs& args, const SizedScene& sized, const gi2d::Medium2D& medium,
@@ -164,12 +179,8 @@ Result<Image> solve(const RenderArgs& args, const SizedScene& sized, const gi2d:
         return gi2d::solveHrc(medium, options);
     }
     if (args.solver == "rc") {
-        if (args.backend == "gpu") return Error("--backend gpu: RC has no GPU path yet");
         rays = 0;
-        std::string march;
-        auto result = solveRcFor(args, sized, medium, march);
-        detail = "merge " + args.merge + ", march " + march;
-        return result;
+        return solveRcFor(args, sized, medium, detail);
     }
     return Error("unknown solver '" + args.solver + "' (available: reference, hrc, rc)");
 }
@@ -307,7 +318,7 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_flag("--quiet,-q", args->quiet, "no progress bar or summary");
     app.add_flag("--stats", args->stats, "print 'stats solve_seconds=S' (for scripts)");
     app.add_option("--backend", args->backend,
-                   "auto (a hardware GPU when there is one, else CPU), cpu or gpu (HRC)")
+                   "auto (a hardware GPU when there is one, else CPU), cpu or gpu (HRC, RC)")
         ->capture_default_str();
     app.add_option("--device", args->device, "GPU: device index or part of its name");
     return [args] { return runRender(*args); };

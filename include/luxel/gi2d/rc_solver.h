@@ -45,7 +45,22 @@ std::uint64_t estimateRcMemory(int width, int height, const RcOptions& options);
 
 // Traces intervals through the pixel medium with the exact DDA (works for every medium).
 Result<Image> solveRc(const Medium2D& medium, const RcOptions& options = {});
-// Traces intervals with sphere tracing; `medium` still supplies the read-out size.
+// Traces intervals with sphere tracing.
 Result<Image> solveRc(const SdfScene& scene, Rgb boundaryRadiance, const RcOptions& options = {});
+
+}  // namespace luxel::gi2d
+
+namespace luxel::gpu {
+class Context;
+struct PassTiming;
+}  // namespace luxel::gpu
+
+namespace luxel::gi2d {
+
+// The DDA variant on the GPU: one dispatch per cascade (shader rc_cascade), top-down, GPU times
+// appended to `timings`; the medium is uploaded once. Same result as solveRc(medium, options).
+Result<Image> solveRcOnGpu(gpu::Context& context, const Medium2D& medium,
+                           const RcOptions& options = {},
+                           std::vector<gpu::PassTiming>* timings = nullptr);
 
 }  // namespace luxel::gi2d

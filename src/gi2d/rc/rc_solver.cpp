@@ -7,12 +7,13 @@
 #include <numbers>
 #include <string>
 
+#include "gi2d/rc/rc_internal.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
 #include "luxel/gi2d/ray_march.h"
 
 namespace luxel::gi2d {
-namespace {
+namespace rc {
 
 Status validate(const RcOptions& o) {
     if (o.probeSpacing < 1 || o.probeSpacing > 64) {
@@ -31,12 +32,16 @@ Status validate(const RcOptions& o) {
     return Ok{};
 }
 
-// Values stored per probe of cascade i: cascade 0 keeps the mean over all its directions (the
-// fluence); higher cascades keep, per direction of cascade i - 1, the mean of its 4 children
-// (pre-averaging: the merge only ever needs that mean).
 int storedPerProbe(const RcCascade& c, int index) {
     return index == 0 ? 1 : c.rays / 4;
 }
+
+}  // namespace rc
+
+using rc::storedPerProbe;
+using rc::validate;
+
+namespace {
 
 // Bilinear footprint of a point on a probe grid: 2 indices and weights per axis, clamped.
 struct Bilinear {
@@ -150,9 +155,16 @@ Result<Image> solveWith(const Tracer& tracer, int w, int h, Rgb sky, const RcOpt
         upper.swap(current);
     }
 
-    // Read-out. `upper` now holds cascade `lowest`.
-    const RcCascade& c = cascades[lowest];
-    const int stored = storedPerProbe(c, lowest);
+    return rc::readOut(cascades[lowest], lowest, upper, w, h, options.debugCascade >= 0);
+}
+
+}  // namespace
+
+namespace rc {
+
+Image readOut(const RcCascade& c, int level, const std::vector<Rgb>& upper, int w, int h,
+              bool nearestProbe) {
+    const int stored = storedPerProbe(c, level);
     auto probeMean = [&](int px, int py) {
         Rgb sum;
         for (int s = 0; s < stored; ++s) {
@@ -165,7 +177,7 @@ Result<Image> solveWith(const Tracer& tracer, int w, int h, Rgb sky, const RcOpt
         for (int y = begin; y < end; ++y) {
             for (int x = 0; x < w; ++x) {
                 const Vec2d pixel{x + 0.5, y + 0.5};
-                if (options.debugCascade >= 0) {  // nearest probe of the chosen cascade
+                if (nearestProbe) {
                     const int px = std::min(static_cast<int>(pixel.x / c.spacing), c.probesX - 1);
                     const int py = std::min(static_cast<int>(pixel.y / c.spacing), c.probesY - 1);
                     out.setRgb(x, y, probeMean(px, py));
@@ -185,7 +197,7 @@ Result<Image> solveWith(const Tracer& tracer, int w, int h, Rgb sky, const RcOpt
     return out;
 }
 
-}  // namespace
+}  // namespace rc
 
 std::vector<RcCascade> rcCascades(int width, int height, const RcOptions& options) {
     const double diagonal = std::hypot(width, height);

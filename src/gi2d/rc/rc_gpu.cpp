@@ -1,0 +1,123 @@
+// Vanilla RC on the GPU: the CPU cascade loop (rc_solver.cpp) as one dispatch per cascade of
+// src/gpu/shaders/gi2d/rc_cascade.comp.glsl; the read-out is shared with the CPU path.
+#include <algorithm>
+#include <string>
+
+#include "gi2d/rc/rc_internal.h"
+#include "gpu/shaders/shared/rc_layout.h"
+#include "luxel/core/memory.h"
+#include "luxel/core/timer.h"
+#include "luxel/gi2d/rc_solver.h"
+#include "luxel/gpu/context.h"
+
+namespace luxel::gi2d {
+
+Result<Image> solveRcOnGpu(gpu::Context& context, const Medium2D& medium, const RcOptions& options,
+                           std::vector<gpu::PassTiming>* timings) {
+    if (Status s = rc::validate(options); !s) return s.error();
+    const int w = medium.width(), h = medium.height();
+    const std::vector<RcCascade> cascades = rcCascades(w, h, options);
+    const int count = static_cast<int>(cascades.size());
+    if (options.debugCascade >= count) {
+        return Error("debug cascade " + std::to_string(options.debugCascade) +
+                     " does not exist (this size has " + std::to_string(count) + ")");
+    }
+    std::uint64_t largest = 0;
+    for (int i = 0; i < count; ++i) {
+        largest = std::max<std::uint64_t>(largest, static_cast<std::uint64_t>(cascades[i].probesX) *
+                                                       cascades[i].probesY *
+                                                       rc::storedPerProbe(cascades[i], i) * 12);
+    }
+    const std::uint64_t pixels = static_cast<std::uint64_t>(w) * h;
+    const std::uint64_t needed = 2 * largest + pixels * 24;
+    if (context.device().deviceLocalBytes > 0 && needed > context.device().deviceLocalBytes) {
+        return Error("RC at " + std::to_string(w) + "x" + std::to_string(h) + " needs " +
+                     formatBytes(needed) + " of device memory, the device has " +
+                     formatBytes(context.device().deviceLocalBytes));
+    }
+    using gpu::shared::RcCascadeParams;
+    auto program = context.program("rc_cascade", 3, sizeof(RcCascadeParams));
+    if (!program) return program.error();
+    auto mediumBuffer = context.createBuffer(pixels * 24);
+    if (!mediumBuffer) return mediumBuffer.error();
+    std::shared_ptr<gpu::Buffer> buffers[2];
+    for (auto& b : buffers) {
+        auto created = context.createBuffer(largest);
+        if (!created) return created.error();
+        b = *created;
+    }
+    {
+        Stopwatch upload;
+        std::vector<float> packed(pixels * 6);
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
+                float* e = &packed[(static_cast<std::size_t>(y) * w + x) * 6];
+                const Rgb s = medium.absorption.rgb(x, y), em = medium.emission.rgb(x, y);
+                e[0] = s.r, e[1] = s.g, e[2] = s.b, e[3] = em.r, e[4] = em.g, e[5] = em.b;
+            }
+        }
+        if (Status s = context.upload(**mediumBuffer, std::as_bytes(std::span(packed))); !s) {
+            return s.error();
+        }
+        if (timings) timings->push_back({"upload medium (CPU)", upload.milliseconds()});
+    }
+
+    const int lowest = std::max(options.debugCascade, 0);
+    std::vector<gpu::Dispatch> passes;
+    int current = 0;
+    for (int i = count - 1; i >= lowest; --i) {
+        const RcCascade& c = cascades[i];
+        const bool top = i + 1 >= count;
+        const RcCascade& up = top ? c : cascades[i + 1];
+        const auto stored = static_cast<std::uint32_t>(rc::storedPerProbe(c, i));
+        RcCascadeParams p{};
+        p.width = static_cast<std::uint32_t>(w);
+        p.height = static_cast<std::uint32_t>(h);
+        p.probesX = static_cast<std::uint32_t>(c.probesX);
+        p.probesY = static_cast<std::uint32_t>(c.probesY);
+        p.rays = static_cast<std::uint32_t>(c.rays);
+        p.stored = stored;
+        p.upperProbesX = static_cast<std::uint32_t>(up.probesX);
+        p.upperProbesY = static_cast<std::uint32_t>(up.probesY);
+        p.upperStored = top ? 0u : static_cast<std::uint32_t>(rc::storedPerProbe(up, i + 1));
+        p.hasUpper = top ? 0u : 1u;
+        p.bilinearFix = options.merge == RcMerge::BilinearFix ? 1u : 0u;
+        p.spacing = static_cast<float>(c.spacing);
+        p.upperSpacing = static_cast<float>(up.spacing);
+        p.intervalStart = static_cast<float>(c.intervalStart);
+        p.intervalEnd = static_cast<float>(c.intervalEnd);
+        p.upperIntervalStart = static_cast<float>(up.intervalStart);
+        p.skyR = medium.boundaryRadiance.r;
+        p.skyG = medium.boundaryRadiance.g;
+        p.skyB = medium.boundaryRadiance.b;
+        gpu::Dispatch d;
+        d.name = "rc cascade " + std::to_string(i);
+        d.program = *program;
+        // The top cascade reads no upper buffer; bind its output twice then (never read).
+        d.buffers = {mediumBuffer->get(), buffers[top ? current : current ^ 1].get(),
+                     buffers[current].get()};
+        d.setPush(p);
+        const std::uint64_t invocations =
+            static_cast<std::uint64_t>(c.probesX) * c.probesY * stored;
+        d.groups[0] = static_cast<std::uint32_t>((invocations + LUXEL_RC_GROUP_SIZE - 1) /
+                                                 LUXEL_RC_GROUP_SIZE);
+        passes.push_back(std::move(d));
+        current ^= 1;
+    }
+    auto ran = context.run(passes);
+    if (!ran) return ran.error();
+    if (timings) timings->insert(timings->end(), ran->begin(), ran->end());
+
+    const RcCascade& c = cascades[lowest];
+    std::vector<Rgb> values(static_cast<std::size_t>(c.probesX) * c.probesY *
+                            rc::storedPerProbe(c, lowest));
+    static_assert(sizeof(Rgb) == 12);
+    if (Status s =
+            context.download(*buffers[current ^ 1], std::as_writable_bytes(std::span(values)));
+        !s) {
+        return s.error();
+    }
+    return rc::readOut(c, lowest, values, w, h, options.debugCascade >= 0);
+}
+
+}  // namespace luxel::gi2d

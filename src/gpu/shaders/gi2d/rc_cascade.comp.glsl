@@ -1,0 +1,136 @@
+// Vanilla Radiance Cascades, one cascade (CPU reference: solveWith in src/gi2d/rc/rc_solver.cpp):
+// every probe traces its directions' intervals through the medium with an exact DDA, merges what
+// lies beyond (bilinear over the 4 upper probes, or the bilinear fix), and stores the mean of each
+// group of 4 directions (pre-averaging). One invocation per (probe, stored value).
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/rc_layout.h"
+
+layout(local_size_x = LUXEL_RC_GROUP_SIZE) in;
+layout(std430, set = 0, binding = 0) readonly buffer Medium { float medium[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Upper { float upper[]; };
+layout(std430, set = 0, binding = 2) writeonly buffer Current { float current[]; };
+layout(push_constant) uniform Push { RcCascadeParams params; };
+
+const float kTwoPi = 6.28318530717958648;
+
+struct Segment {
+    vec3 radiance;
+    vec3 transmittance;
+    bool leaves;  // the end lies outside the canvas: open space beyond
+};
+
+bool outside(vec2 p) {
+    return p.x < 0.0 || p.y < 0.0 || p.x > float(params.width) || p.y > float(params.height);
+}
+
+// The part of [from, to] on the canvas, exact DDA (matches RayMarcher::segment).
+Segment traceSegment(vec2 from, vec2 to) {
+    Segment s = Segment(vec3(0.0), vec3(1.0), outside(to));
+    const vec2 delta = to - from;
+    const float len = length(delta);
+    if (len <= 0.0) return s;
+    const vec2 dir = delta / len;
+    // Clip to the canvas box.
+    float t0 = 0.0, t1 = len;
+    const vec2 hi = vec2(float(params.width), float(params.height));
+    for (int a = 0; a < 2; ++a) {
+        if (dir[a] == 0.0) {
+            if (from[a] < 0.0 || from[a] > hi[a]) return s;
+            continue;
+        }
+        float ta = (0.0 - from[a]) / dir[a], tb = (hi[a] - from[a]) / dir[a];
+        if (ta > tb) { const float tmp = ta; ta = tb; tb = tmp; }
+        t0 = max(t0, ta);
+        t1 = min(t1, tb);
+    }
+    if (t0 >= t1) return s;
+    const vec2 start = clamp(from + dir * t0, vec2(0.0), hi);
+    ivec2 cell = min(ivec2(floor(start)), ivec2(params.width - 1u, params.height - 1u));
+    const ivec2 stepDir = ivec2(dir.x > 0.0 ? 1 : -1, dir.y > 0.0 ? 1 : -1);
+    const vec2 inv = vec2(dir.x != 0.0 ? 1.0 / abs(dir.x) : 1e30, dir.y != 0.0 ? 1.0 / abs(dir.y) : 1e30);
+    vec2 next;
+    next.x = dir.x > 0.0 ? (float(cell.x + 1) - start.x) * inv.x
+           : dir.x < 0.0 ? (start.x - float(cell.x)) * inv.x : 1e30;
+    next.y = dir.y > 0.0 ? (float(cell.y + 1) - start.y) * inv.y
+           : dir.y < 0.0 ? (start.y - float(cell.y)) * inv.y : 1e30;
+    const float span = t1 - t0;
+    float t = 0.0;
+    while (t < span) {
+        if (cell.x < 0 || cell.y < 0 || cell.x >= int(params.width) || cell.y >= int(params.height)) break;
+        if (max(s.transmittance.x, max(s.transmittance.y, s.transmittance.z)) < 1e-6) break;
+        const float exit = min(min(next.x, next.y), span);
+        const uint b = (uint(cell.y) * params.width + uint(cell.x)) * 6u;
+        const vec3 sigma = vec3(medium[b], medium[b + 1u], medium[b + 2u]);
+        const vec3 emission = vec3(medium[b + 3u], medium[b + 4u], medium[b + 5u]);
+        const vec3 tr = exp(-sigma * (exit - t));
+        s.radiance += s.transmittance * emission * (vec3(1.0) - tr);
+        s.transmittance *= tr;
+        t = exit;
+        if (next.x <= next.y) { cell.x += stepDir.x; next.x += inv.x; }
+        else { cell.y += stepDir.y; next.y += inv.y; }
+    }
+    return s;
+}
+
+vec3 upperValue(int ux, int uy, int k) {
+    const uint b = ((uint(uy) * params.upperProbesX + uint(ux)) * params.upperStored + uint(k)) * 3u;
+    return vec3(upper[b], upper[b + 1u], upper[b + 2u]);
+}
+
+vec3 sky() { return vec3(params.skyR, params.skyG, params.skyB); }
+
+vec3 mergedRay(vec2 p, int k) {
+    const float angle = (float(k) + 0.5) * kTwoPi / float(params.rays);
+    const vec2 dir = vec2(cos(angle), sin(angle));
+    const vec2 start = p + dir * params.intervalStart;
+    if (params.hasUpper == 0u) {
+        const Segment seg = traceSegment(start, p + dir * params.intervalEnd);
+        return seg.radiance + seg.transmittance * sky();
+    }
+    // Bilinear footprint on the upper grid (clamped).
+    const vec2 uv = p / params.upperSpacing - 0.5;
+    const vec2 f = floor(uv);
+    const vec2 w1 = uv - f;
+    const ivec2 i0 = ivec2(f);
+    const ivec2 lim = ivec2(params.upperProbesX - 1u, params.upperProbesY - 1u);
+    const ivec2 xs = ivec2(clamp(i0.x, 0, lim.x), clamp(i0.x + 1, 0, lim.x));
+    const ivec2 ys = ivec2(clamp(i0.y, 0, lim.y), clamp(i0.y + 1, 0, lim.y));
+    const vec2 wx = vec2(1.0 - w1.x, w1.x), wy = vec2(1.0 - w1.y, w1.y);
+    if (params.bilinearFix == 0u) {
+        const Segment seg = traceSegment(start, p + dir * params.intervalEnd);
+        vec3 beyond = sky();
+        if (!seg.leaves) {
+            beyond = vec3(0.0);
+            for (int a = 0; a < 2; ++a)
+                for (int b = 0; b < 2; ++b) beyond += upperValue(xs[a], ys[b], k) * (wx[a] * wy[b]);
+        }
+        return seg.radiance + seg.transmittance * beyond;
+    }
+    vec3 sum = vec3(0.0);
+    for (int a = 0; a < 2; ++a) {
+        for (int b = 0; b < 2; ++b) {
+            const vec2 q = (vec2(xs[a], ys[b]) + 0.5) * params.upperSpacing;
+            const Segment seg = traceSegment(start, q + dir * params.upperIntervalStart);
+            const vec3 beyond = seg.leaves ? sky() : upperValue(xs[a], ys[b], k);
+            sum += (seg.radiance + seg.transmittance * beyond) * (wx[a] * wy[b]);
+        }
+    }
+    return sum;
+}
+
+void main() {
+    const uint index = gl_GlobalInvocationID.x;
+    const uint total = params.probesX * params.probesY * params.stored;
+    if (index >= total) return;
+    const uint probe = index / params.stored, s = index % params.stored;
+    const uint px = probe % params.probesX, py = probe / params.probesX;
+    const vec2 p = (vec2(px, py) + 0.5) * params.spacing;
+    const uint group = params.rays / params.stored;
+    vec3 sum = vec3(0.0);
+    for (uint k = s * group; k < (s + 1u) * group; ++k) sum += mergedRay(p, int(k));
+    sum /= float(group);
+    current[index * 3u] = sum.x;
+    current[index * 3u + 1u] = sum.y;
+    current[index * 3u + 2u] = sum.z;
+}
