@@ -9,6 +9,7 @@
 #include "gi2d/hrc/hrc_geometry.h"
 #include "gi2d/hrc/ray_tables.h"
 #include "gpu/shaders/shared/hrc_layout.h"
+#include "gpu/shaders/shared/rc_layout.h"
 #include "luxel/core/half.h"
 #include "luxel/core/rng.h"
 #include "luxel/gpu/context.h"
@@ -36,9 +37,31 @@ TEST(GpuSharedLayout, OffsetsMatchTheShaderSide) {
     EXPECT_EQ(LUXEL_HRC_ENTRY_WORDS * 4, 12);  // = sizeof(RayTables entry): six binary16
 }
 
+TEST(GpuSharedLayout, AllPushConstantBlocks) {
+    // std430 rules for scalars: each field at the next multiple of 4, in declaration order.
+    EXPECT_EQ(sizeof(shared::HrcTraceParams), 16u);
+    EXPECT_EQ(offsetof(shared::HrcTraceParams, frameLength), 12u);
+    EXPECT_EQ(sizeof(shared::HrcMergeParams), 32u);
+    EXPECT_EQ(offsetof(shared::HrcMergeParams, hasUpper), 16u);
+    EXPECT_EQ(offsetof(shared::HrcMergeParams, skyB), 28u);
+    EXPECT_EQ(sizeof(shared::HrcReadoutParams), 32u);
+    EXPECT_EQ(offsetof(shared::HrcReadoutParams, canvasHeight), 16u);
+    EXPECT_EQ(sizeof(shared::HrcFinishParams), 16u);
+    EXPECT_EQ(offsetof(shared::HrcFinishParams, blur), 12u);
+    EXPECT_EQ(sizeof(shared::RcCascadeParams), 80u);
+    EXPECT_EQ(offsetof(shared::RcCascadeParams, bilinearFix), 40u);
+    EXPECT_EQ(offsetof(shared::RcCascadeParams, upperIntervalStart), 60u);
+    EXPECT_EQ(offsetof(shared::RcCascadeParams, skyB), 72u);
+    // Every field is 4 bytes, so a struct's size is 4 x its field count: no hidden padding.
+    static_assert(alignof(shared::RcCascadeParams) == 4);
+}
+
 TEST(GpuRuntime, EmbedsEveryShader) {
     const std::vector<std::string> names = embeddedShaders();
-    EXPECT_NE(std::find(names.begin(), names.end(), "hrc_extend"), names.end());
+    for (const char* shader :
+         {"hrc_trace", "hrc_extend", "hrc_merge", "hrc_readout", "hrc_finish", "rc_cascade"}) {
+        EXPECT_NE(std::find(names.begin(), names.end(), shader), names.end()) << shader;
+    }
 }
 
 TEST(GpuRuntime, ListsDevicesAndRoundTripsABuffer) {
@@ -194,6 +217,19 @@ TEST(GpuRc, MatchesTheCpuSolverForBothMerges) {
                               .value();
     EXPECT_LT(e.relativeL1, 1e-4);
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
+TEST(GpuRc, LargeCascadesFoldIntoTwoDimensionalDispatches) {
+    LUXEL_REQUIRE_GPU(context);
+    // 2100 x 2048 probes at cascade 0 need more than 65535 workgroups of 64 in x.
+    const gi2d::Medium2D medium = gi2d::testing_support::shippedScene("room.json", 2100, 2048);
+    gi2d::RcOptions options;
+    options.maxCascades = 1;  // short intervals keep this fast
+    const Image cpu = gi2d::solveRc(medium, options).value();
+    const Image gpu = gi2d::solveRcOnGpu(*context, medium, options).value();
+    const ImageErrors e = compareImages(gpu, cpu).value();
+    EXPECT_LT(e.relativeL1, 1e-5);
+    EXPECT_GT(cpu.at(2099, 2047, 0) + cpu.at(1000, 1000, 1), 0.0f);
 }
 
 TEST(GpuRc, AnalyticDisk) {
