@@ -10,6 +10,7 @@
 #include "luxel/core/error.h"
 #include "luxel/core/image.h"
 #include "luxel/gi2d/medium2d.h"
+#include "luxel/gpu/fwd.h"
 
 namespace luxel::gi2d {
 
@@ -45,15 +46,6 @@ int hrcCascadeCount(int width, int height);
 // Fails with a clear message when the memory estimate exceeds the available memory, or for bad
 // options.
 Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options = {});
-
-}  // namespace luxel::gi2d
-
-namespace luxel::gpu {
-class Context;
-struct PassTiming;
-}  // namespace luxel::gpu
-
-namespace luxel::gi2d {
 
 // The same on the GPU (Vulkan compute): the medium is rotated on the CPU and uploaded per frustum;
 // trace, extend, merge, read-out and finish run as named dispatches whose GPU times are appended

@@ -10,6 +10,7 @@
 #include "luxel/core/image.h"
 #include "luxel/gi2d/medium2d.h"
 #include "luxel/gi2d/sdf_scene.h"
+#include "luxel/gpu/fwd.h"
 
 namespace luxel::gi2d {
 
@@ -47,15 +48,6 @@ std::uint64_t estimateRcMemory(int width, int height, const RcOptions& options);
 Result<Image> solveRc(const Medium2D& medium, const RcOptions& options = {});
 // Traces intervals with sphere tracing.
 Result<Image> solveRc(const SdfScene& scene, Rgb boundaryRadiance, const RcOptions& options = {});
-
-}  // namespace luxel::gi2d
-
-namespace luxel::gpu {
-class Context;
-struct PassTiming;
-}  // namespace luxel::gpu
-
-namespace luxel::gi2d {
 
 // The DDA variant on the GPU: one dispatch per cascade (shader rc_cascade), top-down, GPU times
 // appended to `timings`; the medium is uploaded once. Same result as solveRc(medium, options).

@@ -7,6 +7,7 @@
 #include "gi2d/hrc/frustum_frame.h"
 #include "gi2d/hrc/hrc_geometry.h"
 #include "gi2d/hrc/ray_tables.h"
+#include "gi2d/medium_gpu.h"
 #include "gpu/shaders/shared/hrc_layout.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/timer.h"
@@ -22,19 +23,6 @@ namespace {
 
 std::uint32_t groupsFor(int count, int size) {
     return static_cast<std::uint32_t>((count + size - 1) / size);
-}
-
-// Six floats per pixel: sigma rgb, emission rgb (layout in hrc_layout.h).
-std::vector<float> packMedium(const Medium2D& medium) {
-    std::vector<float> out(static_cast<std::size_t>(medium.width()) * medium.height() * 6);
-    for (int y = 0; y < medium.height(); ++y) {
-        for (int x = 0; x < medium.width(); ++x) {
-            float* e = &out[(static_cast<std::size_t>(y) * medium.width() + x) * 6];
-            const Rgb s = medium.absorption.rgb(x, y), em = medium.emission.rgb(x, y);
-            e[0] = s.r, e[1] = s.g, e[2] = s.b, e[3] = em.r, e[4] = em.g, e[5] = em.b;
-        }
-    }
-    return out;
 }
 
 // Entries of T_n and R_n for the larger of the two frame orientations.
@@ -136,7 +124,7 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
     }
     {
         Stopwatch upload;
-        const std::vector<float> packed = packMedium(medium);
+        const std::vector<float> packed = packMediumForGpu(medium);
         if (Status s = context.upload(**canvasMedium, std::as_bytes(std::span(packed))); !s) {
             return s.error();
         }
@@ -157,7 +145,7 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
         const auto rows = static_cast<std::uint32_t>(frame.rows);
         {
             Stopwatch upload;
-            const std::vector<float> packed = packMedium(frameMedium(medium, frame));
+            const std::vector<float> packed = packMediumForGpu(frameMedium(medium, frame));
             if (Status s = context.upload(**frameBuffer, std::as_bytes(std::span(packed))); !s) {
                 return s.error();
             }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "gi2d/medium_gpu.h"
 #include "gi2d/rc/rc_internal.h"
 #include "gpu/shaders/shared/rc_layout.h"
 #include "luxel/core/memory.h"
@@ -48,14 +49,7 @@ Result<Image> solveRcOnGpu(gpu::Context& context, const Medium2D& medium, const 
     }
     {
         Stopwatch upload;
-        std::vector<float> packed(pixels * 6);
-        for (int y = 0; y < h; ++y) {
-            for (int x = 0; x < w; ++x) {
-                float* e = &packed[(static_cast<std::size_t>(y) * w + x) * 6];
-                const Rgb s = medium.absorption.rgb(x, y), em = medium.emission.rgb(x, y);
-                e[0] = s.r, e[1] = s.g, e[2] = s.b, e[3] = em.r, e[4] = em.g, e[5] = em.b;
-            }
-        }
+        const std::vector<float> packed = packMediumForGpu(medium);
         if (Status s = context.upload(**mediumBuffer, std::as_bytes(std::span(packed))); !s) {
             return s.error();
         }
