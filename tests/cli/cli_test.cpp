@@ -295,6 +295,21 @@ TEST_F(Cli, GpuBackendForHrcAndBench) {
     EXPECT_NE(r.output.find("using the CPU backend"), std::string::npos) << r.output;
 }
 
+TEST_F(Cli, RendersVoxelScenes) {
+    const std::string scene = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/terrain.json";
+    const RunResult r = runLuxel("render " + scene + " --size 96x54 --out " + path("v.exr") +
+                                 " --png " + path("v.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("voxel world 256x96x256"), std::string::npos) << r.output;
+    auto img = luxel::readExr(path("v.exr"));
+    ASSERT_TRUE(img.ok());
+    EXPECT_EQ(img->width(), 96);
+    EXPECT_GT(img->at(48, 2, 2), img->at(48, 50, 2)) << "sky above, ground below";
+    const std::string bad = write("bad.json", R"({"type": "voxel", "world": {"source": "empty",
+        "size": [8, 8, 8]}, "camera": {"position": [0, 0, 0], "pitch": 120}})");
+    expectError("render " + bad + " --out " + path("x.png"), "camera.pitch");
+}
+
 TEST_F(Cli, HrcRendersAndRefusesSizesThatDoNotFit) {
     const std::string scene = write("small.json", kSmallScene);
     RunResult r = runLuxel("render " + scene + " --solver hrc --out " + path("h.exr"));

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "luxel/core/error.h"
+#include "luxel/core/tonemap.h"
 #include "luxel/gi2d/medium2d.h"
 #include "luxel/gi2d/scene2d.h"
 
@@ -47,5 +48,13 @@ Result<gi2d::Medium2D> loadMedium(const std::string& scenePath, const std::strin
                                   int supersample);
 
 inline constexpr int kExitBadInput = 1;
+
+// A voxel scene render (`luxel render` on a file with "type": "voxel").
+struct VoxelRenderRequest {
+    std::string scene, size, out, png;
+    ToneMapSettings tone;
+    bool quiet = false, stats = false;
+};
+int renderVoxelScene(const VoxelRenderRequest& request);
 
 }  // namespace luxel::cli

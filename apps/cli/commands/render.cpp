@@ -15,6 +15,7 @@
 #include "luxel/gi2d/reference_solver.h"
 #include "luxel/gi2d/sdf_scene.h"
 #include "luxel/gpu/context.h"
+#include "luxel/voxel/voxel_scene.h"
 
 namespace luxel::cli {
 namespace {
@@ -213,6 +214,10 @@ int runRender(const RenderArgs& args) {
     }
     const ToneMapSettings tone{args.exposure, *curve};
     ThreadLimit threadLimit(args.threads);
+    if (voxel::isVoxelSceneFile(args.scene)) {
+        return renderVoxelScene(
+            {args.scene, args.size, args.out, args.png, tone, args.quiet, args.stats});
+    }
 
     auto sized = loadSizedScene(args.scene, args.size);
     if (!sized) return reportError(sized.error());

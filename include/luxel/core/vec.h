@@ -33,6 +33,41 @@ T length(Vec2T<T> a) {
     return std::sqrt(dot(a, a));
 }
 
+template <typename T>
+struct Vec3T {
+    T x = 0, y = 0, z = 0;
+
+    constexpr T operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+    constexpr T& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
+    constexpr Vec3T operator+(Vec3T o) const { return {x + o.x, y + o.y, z + o.z}; }
+    constexpr Vec3T operator-(Vec3T o) const { return {x - o.x, y - o.y, z - o.z}; }
+    constexpr Vec3T operator*(T s) const { return {x * s, y * s, z * s}; }
+    constexpr Vec3T operator/(T s) const { return {x / s, y / s, z / s}; }
+    constexpr Vec3T operator-() const { return {-x, -y, -z}; }
+    constexpr bool operator==(const Vec3T&) const = default;
+};
+
+using Vec3 = Vec3T<float>;
+using Vec3d = Vec3T<double>;
+using Int3 = Vec3T<int>;
+
+template <typename T>
+constexpr T dot(Vec3T<T> a, Vec3T<T> b) {
+    return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+template <typename T>
+constexpr Vec3T<T> cross(Vec3T<T> a, Vec3T<T> b) {
+    return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+template <typename T>
+T length(Vec3T<T> a) {
+    return std::sqrt(dot(a, a));
+}
+template <typename T>
+Vec3T<T> normalize(Vec3T<T> a) {
+    return a / length(a);
+}
+
 // An RGB triple: radiance, absorption coefficient or transmittance per channel.
 struct Rgb {
     float r = 0, g = 0, b = 0;

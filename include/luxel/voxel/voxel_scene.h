@@ -1,0 +1,29 @@
+// Voxel scene files: JSON with the world source (a generator and its parameters, or a MagicaVoxel
+// file), the camera, the sun, the sky and render options. Format: docs/scene-format-voxel.md.
+#pragma once
+
+#include <string>
+
+#include "luxel/core/error.h"
+#include "luxel/voxel/camera.h"
+#include "luxel/voxel/shading.h"
+#include "luxel/voxel/voxel_world.h"
+
+namespace luxel::voxel {
+
+struct VoxelScene {
+    VoxelWorld world;
+    Camera camera;
+    ShadeOptions shading;
+    std::string sourcePath;
+};
+
+// Reads a scene, builds its world (generators run here) and validates everything. Errors name the
+// file, line:column and field. `width`/`height` > 0 override the camera's image size.
+Result<VoxelScene> loadVoxelScene(const std::string& path, int width = 0, int height = 0);
+
+// Whether a JSON file declares itself a voxel scene ("type": "voxel"); false for anything else,
+// including unreadable files (the 2D loader then reports the problem).
+bool isVoxelSceneFile(const std::string& path);
+
+}  // namespace luxel::voxel

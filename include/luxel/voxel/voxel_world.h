@@ -1,0 +1,73 @@
+// A dense voxel world stored in cubic chunks: 32-bit RGBA per voxel (alpha > 0 = solid), chunks of
+// `chunkSize`^3 voxels laid out one after another so any voxel is found in O(1), plus a solid
+// count per chunk so traversal can skip empty chunks. Coordinates: x right, y up, z forward;
+// voxel (i, j, k) covers [i, i+1] x [j, j+1] x [k, k+1].
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "luxel/core/error.h"
+#include "luxel/core/vec.h"
+
+namespace luxel::voxel {
+
+struct Voxel {
+    std::uint8_t r = 0, g = 0, b = 0, a = 0;  // a = 0: empty
+    constexpr bool solid() const { return a != 0; }
+    constexpr bool operator==(const Voxel&) const = default;
+};
+
+// Largest accepted world side, in voxels.
+inline constexpr int kMaxWorldSide = 4096;
+
+class VoxelWorld {
+  public:
+    // An empty world of `size` voxels (each side 1..kMaxWorldSide) in chunks of `chunkSize`
+    // (a power of two in 4..128). Fails with a clear message for bad sizes or when the memory
+    // estimate (bytesFor) exceeds what the machine has.
+    static Result<VoxelWorld> create(Int3 size, int chunkSize = 32);
+
+    // Bytes a world of this size needs (chunks rounded up to whole chunks).
+    static std::uint64_t bytesFor(Int3 size, int chunkSize);
+
+    Int3 size() const { return size_; }
+    int chunkSize() const { return chunkSize_; }
+    Int3 chunkCount() const { return chunks_; }
+
+    bool inside(int x, int y, int z) const {
+        return x >= 0 && y >= 0 && z >= 0 && x < size_.x && y < size_.y && z < size_.z;
+    }
+    // Outside the world reads as empty.
+    Voxel get(int x, int y, int z) const {
+        return inside(x, y, z) ? voxels_[index(x, y, z)] : Voxel{};
+    }
+    bool solid(int x, int y, int z) const { return get(x, y, z).solid(); }
+    // Writes inside the world; outside is ignored.
+    void set(int x, int y, int z, Voxel v);
+
+    // Solid voxels in chunk (cx, cy, cz); 0 means the traversal may skip the chunk.
+    std::uint32_t chunkSolidCount(int cx, int cy, int cz) const {
+        return chunkSolid_[(static_cast<std::size_t>(cz) * chunks_.y + cy) * chunks_.x + cx];
+    }
+    std::uint64_t solidCount() const;
+
+  private:
+    std::size_t index(int x, int y, int z) const {
+        const int shift = chunkShift_, mask = chunkSize_ - 1;
+        const std::size_t chunk =
+            (static_cast<std::size_t>(z >> shift) * chunks_.y + (y >> shift)) * chunks_.x +
+            (x >> shift);
+        const std::size_t local =
+            (static_cast<std::size_t>(z & mask) * chunkSize_ + (y & mask)) * chunkSize_ +
+            (x & mask);
+        return (chunk << (3 * shift)) + local;
+    }
+
+    Int3 size_, chunks_;
+    int chunkSize_ = 32, chunkShift_ = 5;
+    std::vector<Voxel> voxels_;
+    std::vector<std::uint32_t> chunkSolid_;
+};
+
+}  // namespace luxel::voxel

@@ -1,0 +1,163 @@
+// Voxel shading after the seed (ChunkTracer4): face term, sky, reflections; plus shadows/texture.
+#include "luxel/voxel/shading.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "luxel/core/parallel.h"
+#include "luxel/core/tonemap.h"
+
+namespace luxel::voxel {
+namespace {
+
+// Secondary rays start this far off the face. The start-cell rule of castRay already keeps a ray
+// leaving a face out of the voxel behind it; the offset only guards against rounding.
+constexpr double kSurfaceOffset = 1e-7;
+
+std::uint64_t mix(std::uint64_t h) {  // splitmix64 finaliser
+    h ^= h >> 30;
+    h *= 0xbf58476d1ce4e5b9ull;
+    h ^= h >> 27;
+    h *= 0x94d049bb133111ebull;
+    return h ^ (h >> 31);
+}
+
+Vec3d toDouble(Vec3 v) {
+    return {v.x, v.y, v.z};
+}
+Vec3d toDouble(Int3 v) {
+    return {double(v.x), double(v.y), double(v.z)};
+}
+
+Rgb albedo(Voxel v) {
+    return {srgbToLinear(v.r / 255.0f), srgbToLinear(v.g / 255.0f), srgbToLinear(v.b / 255.0f)};
+}
+
+// One ray: what it sees (sky or a shaded voxel) and, on a hit, the reflected ray.
+struct Sample {
+    Rgb colour;
+    Hit hit;
+    bool reflects = false;
+    Ray next;
+};
+
+Sample sample(const VoxelWorld& world, const Ray& ray, const ShadeOptions& options) {
+    Sample s;
+    s.hit = castRay(world, ray, kInfinity, options.stepCap);
+    // A capped ray (world larger than the cap allows) reads as sky rather than the seed's yellow.
+    if (!s.hit.hit) {
+        s.colour = skyColor(ray.direction, options);
+        return s;
+    }
+    const Hit& hit = s.hit;
+    const Vec3d n = toDouble(hit.normal);
+    const bool hasNormal = hit.normal != Int3{};
+    Rgb colour = albedo(world.get(hit.voxel.x, hit.voxel.y, hit.voxel.z));
+    if (options.textures) colour = colour * textureFactor(hit, options);
+    if (options.faceShading) {
+        bool inShadow = false;
+        const Vec3d sun = toDouble(options.sunDirection);
+        if (options.shadows && hasNormal && dot(n, sun) > 0.0) {
+            const Ray shadowRay{hit.point + n * kSurfaceOffset, normalize(sun)};
+            inShadow = castRay(world, shadowRay, kInfinity, options.stepCap).hit;
+        }
+        colour = colour * faceFactor(hit.normal, options.sunDirection, options.ambient, inShadow);
+    }
+    s.colour = colour;
+    if (hasNormal) {
+        const Vec3d d = normalize(ray.direction);
+        s.next = {hit.point + n * kSurfaceOffset, d - n * (2.0 * dot(d, n))};
+        s.reflects = true;
+    }
+    return s;
+}
+
+float reflectivityOf(const VoxelWorld& world, const Hit& hit, const ShadeOptions& options) {
+    const float r =
+        options.materialReflectivity
+            ? options.materialReflectivity(world.get(hit.voxel.x, hit.voxel.y, hit.voxel.z))
+            : options.reflectivity;
+    return std::isfinite(r) ? std::clamp(r, 0.0f, 1.0f) : 0.0f;
+}
+
+}  // namespace
+
+float faceFactor(Int3 normal, Vec3 sunDirection, float ambient, bool inShadow) {
+    float d = normal.x * sunDirection.x + normal.y * sunDirection.y + normal.z * sunDirection.z;
+    if (inShadow) d = std::min(d, 0.0f);
+    return std::min((d + 1.0f) * 0.5f + ambient, 1.0f);
+}
+
+Rgb skyColor(Vec3d direction, const ShadeOptions& options) {
+    const double len = length(direction);
+    const float s = len > 0.0 ? static_cast<float>(std::clamp(direction.y / len, 0.0, 1.0)) : 0.0f;
+    return options.skyHorizon + (options.skyTop - options.skyHorizon) * s;
+}
+
+float textureFactor(const Hit& hit, const ShadeOptions& options) {
+    const int n = std::max(options.textureTexels, 1);
+    const int tu = std::min(static_cast<int>(hit.u * n), n - 1);
+    const int tv = std::min(static_cast<int>(hit.v * n), n - 1);
+    std::uint64_t h = mix(static_cast<std::uint32_t>(hit.voxel.x) * 0x9e3779b97f4a7c15ull);
+    h = mix(h ^ static_cast<std::uint32_t>(hit.voxel.y));
+    h = mix(h ^ static_cast<std::uint32_t>(hit.voxel.z));
+    h = mix(h ^ static_cast<std::uint32_t>((hit.normal.x + 1) * 9 + (hit.normal.y + 1) * 3 +
+                                           (hit.normal.z + 1)));
+    h = mix(h ^ (static_cast<std::uint64_t>(tu) << 16) ^ static_cast<std::uint64_t>(tv));
+    const float noise = static_cast<float>(h >> 40) / static_cast<float>(1 << 24);  // [0, 1)
+    return 1.0f - std::clamp(options.textureStrength, 0.0f, 1.0f) * noise;
+}
+
+Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& options) {
+    const int bounces = std::max(options.maxReflections, 0);
+    Ray current = ray;
+    Rgb sum;
+    if (options.reflectionMode == ShadeOptions::ReflectionMode::SeedRunningAverage) {
+        // The seed's loop: hit k (1-based) adds colour / k, then the sum is scaled by k / (k + 1).
+        for (int k = 1; k <= bounces + 1; ++k) {
+            const Sample s = sample(world, current, options);
+            if (k == 1) {
+                sum = s.colour;
+            } else {
+                sum = (sum + s.colour * (1.0f / k)) * (static_cast<float>(k) / (k + 1));
+            }
+            if (!s.reflects) break;
+            current = s.next;
+        }
+        return sum;
+    }
+    float weight = 1.0f;
+    for (int k = 0; k <= bounces; ++k) {
+        const Sample s = sample(world, current, options);
+        if (!s.reflects || k == bounces) {
+            sum += s.colour * weight;
+            break;
+        }
+        const float r = reflectivityOf(world, s.hit, options);
+        sum += s.colour * (weight * (1.0f - r));
+        weight *= r;
+        if (weight == 0.0f) break;
+        current = s.next;
+    }
+    return sum;
+}
+
+Rgb shadePixel(const VoxelWorld& world, const Camera& camera, int px, int py,
+               const ShadeOptions& options) {
+    return shadeRay(world, camera.primaryRay(px, py), options);
+}
+
+Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& options) {
+    Image image(camera.width(), camera.height(), 3);
+    parallelForRange(camera.height(), 1, [&](int begin, int end) {
+        for (int y = begin; y < end; ++y) {
+            for (int x = 0; x < camera.width(); ++x) {
+                image.setRgb(x, y, shadePixel(world, camera, x, y, options));
+            }
+        }
+    });
+    return image;
+}
+
+}  // namespace luxel::voxel

@@ -1,0 +1,65 @@
+// Chunked dense voxel storage.
+#include "luxel/voxel/voxel_world.h"
+
+#include <bit>
+#include <numeric>
+#include <string>
+
+#include "luxel/core/memory.h"
+
+namespace luxel::voxel {
+
+std::uint64_t VoxelWorld::bytesFor(Int3 size, int chunkSize) {
+    std::uint64_t chunks = 1;
+    for (int a = 0; a < 3; ++a)
+        chunks *= static_cast<std::uint64_t>((size[a] + chunkSize - 1) / chunkSize);
+    const std::uint64_t perChunk = static_cast<std::uint64_t>(chunkSize) * chunkSize * chunkSize;
+    return chunks * (perChunk * sizeof(Voxel) + sizeof(std::uint32_t));
+}
+
+Result<VoxelWorld> VoxelWorld::create(Int3 size, int chunkSize) {
+    for (int a = 0; a < 3; ++a) {
+        if (size[a] < 1 || size[a] > kMaxWorldSide) {
+            return Error("world size " + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                         "x" + std::to_string(size.z) + " is invalid: each side must be in 1.." +
+                         std::to_string(kMaxWorldSide));
+        }
+    }
+    if (chunkSize < 4 || chunkSize > 128 ||
+        !std::has_single_bit(static_cast<unsigned>(chunkSize))) {
+        return Error("chunk size must be a power of two in 4..128, got " +
+                     std::to_string(chunkSize));
+    }
+    const std::string what = "a " + std::to_string(size.x) + "x" + std::to_string(size.y) + "x" +
+                             std::to_string(size.z) + " voxel world";
+    if (Status s = checkMemory(bytesFor(size, chunkSize), what); !s) return s.error();
+    VoxelWorld world;
+    world.size_ = size;
+    world.chunkSize_ = chunkSize;
+    world.chunkShift_ = std::countr_zero(static_cast<unsigned>(chunkSize));
+    for (int a = 0; a < 3; ++a) world.chunks_[a] = (size[a] + chunkSize - 1) / chunkSize;
+    const std::size_t chunks =
+        static_cast<std::size_t>(world.chunks_.x) * world.chunks_.y * world.chunks_.z;
+    world.voxels_.assign(chunks << (3 * world.chunkShift_), Voxel{});
+    world.chunkSolid_.assign(chunks, 0);
+    return world;
+}
+
+void VoxelWorld::set(int x, int y, int z, Voxel v) {
+    if (!inside(x, y, z)) return;
+    Voxel& slot = voxels_[index(x, y, z)];
+    if (slot.solid() != v.solid()) {
+        std::uint32_t& count = chunkSolid_[(static_cast<std::size_t>(z >> chunkShift_) * chunks_.y +
+                                            (y >> chunkShift_)) *
+                                               chunks_.x +
+                                           (x >> chunkShift_)];
+        count = v.solid() ? count + 1 : count - 1;
+    }
+    slot = v;
+}
+
+std::uint64_t VoxelWorld::solidCount() const {
+    return std::accumulate(chunkSolid_.begin(), chunkSolid_.end(), std::uint64_t{0});
+}
+
+}  // namespace luxel::voxel
