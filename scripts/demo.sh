@@ -38,6 +38,13 @@ echo "all 2D solvers on $default_scene (left to right in out/$default_scene-solv
   "reference, hrc, rc vanilla, rc bilinear fix):"
 "$luxel" compare-solvers "scenes/2d/$default_scene.json" --grid "out/$default_scene-solvers.png" |
   sed 's/^/  /'
+# The default voxel scene: terrain, shadows, reflections.
+start=$(date +%s%N)
+"$luxel" render scenes/voxel/terrain.json --quiet --out out/terrain.exr --png out/terrain.png
+ms=$(( ($(date +%s%N) - start) / 1000000 ))
+printf '%-14s %-10s %4d.%02d    %s\n' "terrain" "960x540" $((ms / 1000)) $((ms % 1000 / 10)) \
+  "out/terrain.exr (radiance, linear) out/terrain.png (voxel ray casting)"
+
 # Reference renders double as the benchmark's error yardstick (bench/bench_hrc.cpp).
 mkdir -p out/reference-cache
 cp "out/$default_scene.exr" "out/reference-cache/${default_scene}_$size.exr"
