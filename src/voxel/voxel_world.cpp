@@ -62,4 +62,17 @@ std::uint64_t VoxelWorld::solidCount() const {
     return std::accumulate(chunkSolid_.begin(), chunkSolid_.end(), std::uint64_t{0});
 }
 
+bool VoxelWorld::operator==(const VoxelWorld& other) const {
+    if (!(size_ == other.size_)) return false;
+    if (chunkSize_ == other.chunkSize_) return voxels_ == other.voxels_;
+    for (int z = 0; z < size_.z; ++z) {
+        for (int y = 0; y < size_.y; ++y) {
+            for (int x = 0; x < size_.x; ++x) {
+                if (!(get(x, y, z) == other.get(x, y, z))) return false;
+            }
+        }
+    }
+    return true;
+}
+
 }  // namespace luxel::voxel

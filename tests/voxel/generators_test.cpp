@@ -16,19 +16,6 @@ VoxelWorld makeWorld(Int3 size, int chunkSize = 16) {
     return VoxelWorld::create(size, chunkSize).value();
 }
 
-bool sameWorld(const VoxelWorld& a, const VoxelWorld& b) {
-    if (!(a.size() == b.size())) return false;
-    const Int3 s = a.size();
-    for (int z = 0; z < s.z; ++z) {
-        for (int y = 0; y < s.y; ++y) {
-            for (int x = 0; x < s.x; ++x) {
-                if (!(a.get(x, y, z) == b.get(x, y, z))) return false;
-            }
-        }
-    }
-    return true;
-}
-
 TEST(VoxelNoise, DeterministicBoundedAndZeroOnLattice) {
     const GradientNoise a(7), b(7), c(8);
     bool differs = false;
@@ -58,8 +45,8 @@ TEST(Terrain, DeterministicBySeed) {
     ASSERT_TRUE(generateTerrain(b, o).ok());
     o.seed = 2;
     ASSERT_TRUE(generateTerrain(c, o).ok());
-    EXPECT_TRUE(sameWorld(a, b));
-    EXPECT_FALSE(sameWorld(a, c));
+    EXPECT_TRUE(a == b);
+    EXPECT_FALSE(a == c);
 }
 
 TEST(Terrain, IndependentOfThreadCount) {
@@ -75,7 +62,7 @@ TEST(Terrain, IndependentOfThreadCount) {
         ThreadLimit limit(2);
         ASSERT_TRUE(generateTerrain(two, o).ok());
     }
-    EXPECT_TRUE(sameWorld(one, two));
+    EXPECT_TRUE(one == two);
     EXPECT_EQ(one.solidCount(), two.solidCount());
 }
 
@@ -176,8 +163,8 @@ TEST(VoxelGenerators, RandomFillDensityAndDeterminism) {
         ASSERT_TRUE(fillRandom(b, density, 11).ok());
     }
     ASSERT_TRUE(fillRandom(c, density, 12, Voxel{1, 2, 3, 255}).ok());
-    EXPECT_TRUE(sameWorld(a, b));
-    EXPECT_FALSE(sameWorld(a, c));
+    EXPECT_TRUE(a == b);
+    EXPECT_FALSE(a == c);
     // Binomial: n = 64000, sd = sqrt(n p (1 - p)) ~ 116; allow 6 sd.
     const double n = 40.0 * 40 * 40, mean = n * density,
                  sd = std::sqrt(n * density * (1 - density));

@@ -63,19 +63,6 @@ void expectError(const Bytes& bytes, const std::string& text) {
     EXPECT_EQ(r.error().message().rfind("model.vox: ", 0), 0u) << r.error().message();
 }
 
-bool sameWorld(const VoxelWorld& a, const VoxelWorld& b) {
-    if (!(a.size() == b.size())) return false;
-    const Int3 s = a.size();
-    for (int z = 0; z < s.z; ++z) {
-        for (int y = 0; y < s.y; ++y) {
-            for (int x = 0; x < s.x; ++x) {
-                if (!(a.get(x, y, z) == b.get(x, y, z))) return false;
-            }
-        }
-    }
-    return true;
-}
-
 TEST(VoxImport, MinimalFileWithZUpMapping) {
     // Model 2 wide (x), 3 deep (vox y), 4 tall (vox z); one voxel at vox (1, 2, 3), index 1.
     const Bytes file = voxFile(cat({chunk("SIZE", ints({2, 3, 4})), xyzi({{1, 2, 3, 1}})}));
@@ -128,7 +115,7 @@ TEST(VoxImport, RoundTrip) {
     ASSERT_TRUE(bytes.ok()) << bytes.error().message();
     Result<VoxelWorld> back = parseVox(*bytes, "rt.vox", 8);
     ASSERT_TRUE(back.ok()) << back.error().message();
-    EXPECT_TRUE(sameWorld(w, *back));
+    EXPECT_TRUE(w == *back);
     // Vox SIZE is (x, z, y) of the luxel world.
     EXPECT_EQ((*bytes)[32], 20);
     EXPECT_EQ((*bytes)[36], 9);
@@ -140,7 +127,7 @@ TEST(VoxImport, RoundTrip) {
     Result<VoxelWorld> loaded = loadVox(path);
     std::filesystem::remove(path);
     ASSERT_TRUE(loaded.ok()) << loaded.error().message();
-    EXPECT_TRUE(sameWorld(w, *loaded));
+    EXPECT_TRUE(w == *loaded);
 }
 
 TEST(VoxImport, ManyColoursUseNearest) {

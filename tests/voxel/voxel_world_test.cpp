@@ -72,3 +72,20 @@ TEST(VoxelWorld, MemoryEstimateCoversWholeChunks) {
 
 }  // namespace
 }  // namespace luxel::voxel
+
+namespace luxel::voxel {
+namespace {
+
+TEST(VoxelWorld, EqualityIgnoresTheChunkSize) {
+    VoxelWorld a = VoxelWorld::create({20, 10, 5}, 4).value();
+    VoxelWorld b = VoxelWorld::create({20, 10, 5}, 16).value();
+    EXPECT_TRUE(a == b);
+    a.set(19, 9, 4, {1, 2, 3, 255});
+    EXPECT_FALSE(a == b);
+    b.set(19, 9, 4, {1, 2, 3, 255});
+    EXPECT_TRUE(a == b);
+    EXPECT_FALSE(a == VoxelWorld::create({20, 10, 6}, 4).value());
+}
+
+}  // namespace
+}  // namespace luxel::voxel

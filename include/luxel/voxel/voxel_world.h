@@ -52,6 +52,9 @@ class VoxelWorld {
     }
     std::uint64_t solidCount() const;
 
+    // Same size and the same voxel everywhere (the chunk size does not matter).
+    bool operator==(const VoxelWorld& other) const;
+
   private:
     std::size_t index(int x, int y, int z) const {
         const int shift = chunkShift_, mask = chunkSize_ - 1;
