@@ -112,9 +112,10 @@ int runCompareSolvers(const CompareSolversArgs& args) {
     if (auto size = parseSize(args.size); !size) return reportError(size.error());
     const std::vector<SolverRun> solvers = {
         {"reference", {"--solver", "reference", "--rays", std::to_string(args.rays)}},
-        {"hrc", {"--solver", "hrc"}},
-        {"rc-vanilla", {"--solver", "rc", "--merge", "vanilla"}},
-        {"rc-bilinear-fix", {"--solver", "rc", "--merge", "bilinear-fix"}},
+        // The CPU paths, so peak memory is the solver's own (no Vulkan driver loaded).
+        {"hrc", {"--solver", "hrc", "--backend", "cpu"}},
+        {"rc-vanilla", {"--solver", "rc", "--merge", "vanilla", "--backend", "cpu"}},
+        {"rc-bilinear-fix", {"--solver", "rc", "--merge", "bilinear-fix", "--backend", "cpu"}},
     };
     std::error_code ec;
     const std::filesystem::path dir =
