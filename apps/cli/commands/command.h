@@ -27,6 +27,9 @@ Runner addBenchCommand(CLI::App& app);
 // Prints "luxel: error: <message>" to stderr and returns the exit code for bad input.
 int reportError(const Error& error);
 
+// Whether `path` ends in `ext` (lower-case, with the dot), ignoring case.
+bool hasExtension(const std::string& path, const std::string& ext);
+
 // "512x384" -> (512, 384); an empty string gives (0, 0) = the scene's own size.
 Result<std::pair<int, int>> parseSize(const std::string& text);
 

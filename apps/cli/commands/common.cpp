@@ -1,4 +1,5 @@
 // Helpers shared by the CLI subcommands.
+#include <cctype>
 #include <cstdio>
 
 #include "commands/command.h"
@@ -10,6 +11,13 @@ namespace luxel::cli {
 int reportError(const Error& error) {
     std::fprintf(stderr, "luxel: error: %s\n", error.message().c_str());
     return kExitBadInput;
+}
+
+bool hasExtension(const std::string& path, const std::string& ext) {
+    if (path.size() < ext.size()) return false;
+    std::string tail = path.substr(path.size() - ext.size());
+    for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return tail == ext;
 }
 
 Result<std::pair<int, int>> parseSize(const std::string& text) {

@@ -43,13 +43,6 @@ struct RenderArgs {
     int maxCascades = 0;
 };
 
-bool hasExtension(const std::string& path, const std::string& ext) {
-    if (path.size() < ext.size()) return false;
-    std::string tail = path.substr(path.size() - ext.size());
-    for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return tail == ext;
-}
-
 // Frustum name -> HRC frustum mask bit.
 Result<unsigned> frustumMask(const std::string& name) {
     if (name.empty()) return 0xFu;

@@ -20,10 +20,8 @@ int renderVoxelScene(const VoxelRenderRequest& request) {
     const Image radiance = voxel::render(scene->world, scene->camera, scene->shading);
     const double renderSeconds = renderTime.seconds();
     // EXR keeps linear radiance; PNG gets the display transform.
-    const bool png =
-        request.out.size() >= 4 && (request.out.substr(request.out.size() - 4) == ".png" ||
-                                    request.out.substr(request.out.size() - 4) == ".PNG");
-    const Image out = png ? toneMap(radiance, request.tone) : radiance;
+    const Image out =
+        hasExtension(request.out, ".png") ? toneMap(radiance, request.tone) : radiance;
     if (Status s = writeImage(request.out, out); !s) return reportError(s.error());
     if (!request.png.empty()) {
         if (Status s = writePng(request.png, toneMap(radiance, request.tone)); !s) {
