@@ -1,5 +1,6 @@
 // Voxel ray casting throughput on a 512^3 terrain at 1280x720: luxel's DDA against Embree on the
-// exposed voxel faces, the same rays in the same run (the ratio is the number that matters).
+// exposed voxel faces, the same rays in the same run (the ratio is the number that matters):
+// primary rays, shadow rays towards the sun and first-bounce mirror rays from the primary hits.
 //   build/release/bench/luxel_bench --benchmark_filter=voxel
 #include <benchmark/benchmark.h>
 
@@ -18,12 +19,12 @@ using namespace luxel::voxel;
 struct Setup {
     VoxelWorld world;
     std::unique_ptr<FaceScene> faces;
-    std::vector<Ray> primary, shadow;
+    std::vector<Ray> primary, shadow, reflection;
 };
 
 Setup& setup() {
     static Setup s = [] {
-        Setup out{VoxelWorld::create({512, 512, 512}, 32).value(), nullptr, {}, {}};
+        Setup out{VoxelWorld::create({512, 512, 512}, 32).value(), nullptr, {}, {}, {}};
         TerrainOptions terrain;
         terrain.seed = 3;
         terrain.baseHeight = 0.3;
@@ -44,6 +45,9 @@ Setup& setup() {
                                   static_cast<double>(hit.normal.y),
                                   static_cast<double>(hit.normal.z)};
                     out.shadow.push_back({hit.point + n * 1e-4, sun});
+                    // The mirror ray of the first bounce, as the shading's reflections cast it.
+                    const Vec3d d = ray.direction - n * (2.0 * dot(ray.direction, n));
+                    out.reflection.push_back({hit.point + n * 1e-4, d});
                 }
             }
         }
@@ -63,9 +67,17 @@ void castAll(benchmark::State& state, const std::vector<Ray>& rays, Cast&& cast)
                                                    benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// Loop iterations (voxel visits plus block jumps) per ray: what the traversal's speed scales with.
+double meanSteps(const VoxelWorld& world, const std::vector<Ray>& rays) {
+    double sum = 0;
+    for (const Ray& r : rays) sum += castRay(world, r).steps;
+    return rays.empty() ? 0.0 : sum / static_cast<double>(rays.size());
+}
+
 void voxelPrimaryLuxel(benchmark::State& state) {
     Setup& s = setup();
     castAll(state, s.primary, [&](const Ray& r) { return castRay(s.world, r).hit; });
+    state.counters["steps/ray"] = meanSteps(s.world, s.primary);
 }
 void voxelPrimaryEmbree(benchmark::State& state) {
     Setup& s = setup();
@@ -74,10 +86,21 @@ void voxelPrimaryEmbree(benchmark::State& state) {
 void voxelShadowLuxel(benchmark::State& state) {
     Setup& s = setup();
     castAll(state, s.shadow, [&](const Ray& r) { return castRay(s.world, r).hit; });
+    state.counters["steps/ray"] = meanSteps(s.world, s.shadow);
 }
 void voxelShadowEmbree(benchmark::State& state) {
     Setup& s = setup();
     castAll(state, s.shadow, [&](const Ray& r) { return s.faces->cast(r).hit; });
+}
+
+void voxelReflectionLuxel(benchmark::State& state) {
+    Setup& s = setup();
+    castAll(state, s.reflection, [&](const Ray& r) { return castRay(s.world, r).hit; });
+    state.counters["steps/ray"] = meanSteps(s.world, s.reflection);
+}
+void voxelReflectionEmbree(benchmark::State& state) {
+    Setup& s = setup();
+    castAll(state, s.reflection, [&](const Ray& r) { return s.faces->cast(r).hit; });
 }
 
 }  // namespace
@@ -96,5 +119,13 @@ BENCHMARK(voxelShadowLuxel)
     ->UseRealTime();
 BENCHMARK(voxelShadowEmbree)
     ->Name("voxel/shadow/embree")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(voxelReflectionLuxel)
+    ->Name("voxel/reflection/luxel")
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK(voxelReflectionEmbree)
+    ->Name("voxel/reflection/embree")
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();

@@ -1,4 +1,5 @@
-// Amanatides & Woo (1987) traversal with exact empty-chunk jumps; conventions in dda.h.
+// Amanatides & Woo (1987) traversal with exact jumps over empty chunks and bricks; conventions in
+// dda.h.
 #include "luxel/voxel/dda.h"
 
 #include <algorithm>
@@ -13,9 +14,18 @@ bool finite(const Vec3d& v) {
 }
 
 // t at which the ray leaves `cell` on one axis. The single formula used for every boundary, so a
-// boundary's t is bit-identical however the traversal reached it (plain steps or a chunk jump).
-double exitT(int cell, int step, double origin, double direction) {
-    return (static_cast<double>(cell + (step > 0 ? 1 : 0)) - origin) / direction;
+// boundary's t is bit-identical however the traversal reached it (plain steps or a block jump).
+// A multiplication by the precomputed 1 / direction: a division's latency sits on the loop's
+// critical path, and ties between axes with equal |direction| components stay exact either way.
+double exitT(int cell, int step, double origin, double inverseDirection) {
+    return (static_cast<double>(cell + (step > 0 ? 1 : 0)) - origin) * inverseDirection;
+}
+
+// floor for |x| well inside int range; std::floor is a library call on baseline x86-64 (no
+// SSE4.1 round instruction) and dominated the cost of block jumps.
+int floorToInt(double x) {
+    const int i = static_cast<int>(x);  // truncates towards zero
+    return i - (static_cast<double>(i) > x ? 1 : 0);
 }
 
 // Position inside the voxel on one axis, in [0, 1).
@@ -48,6 +58,76 @@ Hit makeHit(const Ray& ray, Int3 cell, double t, int axis, const int step[3], in
     hit.v = fraction(hit.point[vAxis], cell[vAxis]);
     return hit;
 }
+
+Hit capped(Hit miss, int steps) {
+    miss.capped = true;
+    miss.steps = steps;
+    return miss;
+}
+
+// Traversal state of the per-voxel loop: the current cell, the t it was entered at and through
+// which axis, and the t of the next boundary on each axis.
+struct Walk {
+    const Vec3d& o;
+    const Vec3d& d;
+    Vec3d inv;  // 1 / d (inf on zero components, which never step)
+    Int3 size;
+    int step[3];
+    Int3 cell;
+    double next[3];
+    double t;
+    int axis;
+
+    double exitAt(int c, int a) const { return exitT(c, step[a], o[a], inv[a]); }
+
+    // One A&W step; strict order x, y, z on ties (Amanatides & Woo's comparison chain). False when
+    // the ray leaves the world or passes tMax.
+    bool stepOne(double tMax) {
+        const int a =
+            next[0] <= next[1] ? (next[0] <= next[2] ? 0 : 2) : (next[1] <= next[2] ? 1 : 2);
+        if (next[a] == kInfinity) return false;
+        t = next[a];
+        cell[a] += step[a];
+        axis = a;
+        if (cell[a] < 0 || cell[a] >= size[a] || t > tMax) return false;
+        next[a] = exitAt(cell[a], a);
+        return true;
+    }
+
+    // Jumps to the state the per-voxel loop reaches when it leaves the box of cells [lo, hi]
+    // (which holds the current cell and no solid voxel): the first box plane crossed, lowest axis
+    // on ties, exactly as stepOne orders its steps. False when that leaves the world or passes
+    // tMax.
+    bool leaveBox(const Int3& lo, const Int3& hi, double tMax) {
+        int a = -1;
+        double tJump = kInfinity;
+        for (int b = 0; b < 3; ++b) {
+            if (step[b] == 0) continue;
+            const double tb = exitAt(step[b] > 0 ? hi[b] : lo[b], b);
+            if (tb < tJump) tJump = tb, a = b;
+        }
+        if (a < 0 || tJump == kInfinity) return false;
+        // The other axes: the first cell whose exit the plain loop has not yet taken when it
+        // steps axis a at tJump (crossed = earlier, or tied and a lower axis).
+        for (int b = 0; b < 3; ++b) {
+            if (b == a || step[b] == 0) continue;
+            const auto crossed = [&](double tb) { return tb < tJump || (tb == tJump && b < a); };
+            const int first = cell[b], last = step[b] > 0 ? hi[b] : lo[b];
+            int c = floorToInt(std::clamp(o[b] + tJump * d[b], -1.0, size[b] + 1.0));
+            c = step[b] > 0 ? std::clamp(c, first, last) : std::clamp(c, last, first);
+            while (c != first && !crossed(exitAt(c - step[b], b))) c -= step[b];
+            while (c != last && crossed(exitAt(c, b))) c += step[b];
+            cell[b] = c;
+            next[b] = exitAt(c, b);
+        }
+        t = tJump;
+        cell[a] = step[a] > 0 ? hi[a] + 1 : lo[a] - 1;
+        axis = a;
+        if (cell[a] < 0 || cell[a] >= size[a] || t > tMax) return false;
+        next[a] = exitAt(cell[a], a);
+        return true;
+    }
+};
 
 }  // namespace
 
@@ -92,10 +172,10 @@ Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap, C
             continue;
         }
         const double p = t0 == 0.0 ? o[a] : o[a] + t0 * d[a];
-        double f = std::floor(p);
+        int f = floorToInt(std::clamp(p, -1.0, static_cast<double>(size[a])));
         // On a boundary and moving down: the ray is in the lower cell straight away.
-        if (p == f && step[a] < 0) f -= 1.0;
-        cell[a] = static_cast<int>(std::clamp(f, 0.0, static_cast<double>(size[a] - 1)));
+        if (p == f && step[a] < 0) f -= 1;
+        cell[a] = std::clamp(f, 0, size[a] - 1);
     }
 
     // The face the first cell is entered through: the world face, or for an origin inside the
@@ -107,81 +187,68 @@ Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap, C
         double best = -kInfinity;
         for (int a = 0; a < 3; ++a) {
             if (step[a] == 0) continue;
-            const double te = exitT(cell[a], -step[a], o[a], d[a]);
+            const double te = exitT(cell[a], -step[a], o[a], 1.0 / d[a]);
             if (te >= best) best = te, axis = a;
         }
         if (!(best >= 0.0)) axis = -1;  // -0.0 >= 0: an origin on the face counts
     }
 
-    double next[3];
-    for (int a = 0; a < 3; ++a)
-        next[a] = step[a] != 0 ? exitT(cell[a], step[a], o[a], d[a]) : kInfinity;
+    Walk w{o,  d,   {1.0 / d.x, 1.0 / d.y, 1.0 / d.z}, size, {step[0], step[1], step[2]}, cell, {},
+           t0, axis};
+    for (int a = 0; a < 3; ++a) w.next[a] = step[a] != 0 ? w.exitAt(cell[a], a) : kInfinity;
 
     const auto missAfter = [&miss](int n) {
         miss.steps = n;
         return miss;
     };
-    const int shift = std::countr_zero(static_cast<unsigned>(world.chunkSize()));
-    const bool skipping = skip == ChunkSkip::Enabled;
-    double t = t0;
+    const int chunkShift = std::countr_zero(static_cast<unsigned>(world.chunkSize()));
+    constexpr int brickShift = VoxelWorld::kBrickShift;
+    const bool distances = world.emptySpaceCurrent();
     int steps = 0;
-    for (;;) {
-        if (steps >= cap) {
-            miss.capped = true;
-            return missAfter(steps);
+    if (skip == ChunkSkip::Disabled) {
+        for (;;) {
+            if (steps >= cap) return capped(miss, steps);
+            ++steps;
+            if (world.solid(w.cell.x, w.cell.y, w.cell.z)) {
+                return makeHit(ray, w.cell, w.t, w.axis, step, steps);
+            }
+            if (!w.stepOne(tMax)) return missAfter(steps);
         }
+    }
+    for (;;) {
+        if (steps >= cap) return capped(miss, steps);
         ++steps;
-        if (skipping &&
-            world.chunkSolidCount(cell.x >> shift, cell.y >> shift, cell.z >> shift) == 0) {
-            // Jump to where the plain traversal leaves this (empty) chunk: the first chunk plane
-            // crossed, lowest axis on ties, exactly as the per-voxel loop orders its steps.
-            int a = -1;
-            double tJump = kInfinity;
-            int chunkLo[3], chunkHi[3];
-            for (int b = 0; b < 3; ++b) {
-                const int lo = (cell[b] >> shift) << shift;
-                const int hi = std::min(lo + (1 << shift), size[b]) - 1;
-                chunkLo[b] = lo, chunkHi[b] = hi;
-                if (step[b] == 0) continue;
-                const double tb = exitT(step[b] > 0 ? hi : lo, step[b], o[b], d[b]);
-                if (tb < tJump) tJump = tb, a = b;
+        const Int3 c = w.cell;
+        const std::uint64_t mask =
+            world.brickMask(c.x >> brickShift, c.y >> brickShift, c.z >> brickShift);
+        if (mask != 0) {
+            if ((mask >> VoxelWorld::brickBit(c.x, c.y, c.z)) & 1u) {
+                return makeHit(ray, c, w.t, w.axis, step, steps);
             }
-            if (a < 0 || tJump == kInfinity) return missAfter(steps);
-            // The other axes: the first cell whose exit the plain loop has not yet taken when it
-            // steps axis a at tJump (crossed = earlier, or tied and a lower axis).
-            for (int b = 0; b < 3; ++b) {
-                if (b == a || step[b] == 0) continue;
-                const auto crossed = [&](double tb) {
-                    return tb < tJump || (tb == tJump && b < a);
-                };
-                const int first = cell[b], last = step[b] > 0 ? chunkHi[b] : chunkLo[b];
-                const double p = o[b] + tJump * d[b];
-                int c = static_cast<int>(std::clamp(std::floor(p), -1.0, size[b] + 1.0));
-                c = step[b] > 0 ? std::clamp(c, first, last) : std::clamp(c, last, first);
-                while (c != first && !crossed(exitT(c - step[b], step[b], o[b], d[b]))) {
-                    c -= step[b];
-                }
-                while (c != last && crossed(exitT(c, step[b], o[b], d[b]))) c += step[b];
-                cell[b] = c;
-                next[b] = exitT(c, step[b], o[b], d[b]);
-            }
-            t = tJump;
-            cell[a] = step[a] > 0 ? chunkHi[a] + 1 : chunkLo[a] - 1;
-            axis = a;
-            if (cell[a] < 0 || cell[a] >= size[a] || t > tMax) return missAfter(steps);
-            next[a] = exitT(cell[a], step[a], o[a], d[a]);
+            if (!w.stepOne(tMax)) return missAfter(steps);
             continue;
         }
-        if (world.solid(cell.x, cell.y, cell.z)) return makeHit(ray, cell, t, axis, step, steps);
-        // Strict order x, y, z on ties (Amanatides & Woo's comparison chain).
-        const int a =
-            next[0] <= next[1] ? (next[0] <= next[2] ? 0 : 2) : (next[1] <= next[2] ? 1 : 2);
-        if (next[a] == kInfinity) return missAfter(steps);
-        t = next[a];
-        cell[a] += step[a];
-        axis = a;
-        if (cell[a] < 0 || cell[a] >= size[a] || t > tMax) return missAfter(steps);
-        next[a] = exitT(cell[a], step[a], o[a], d[a]);
+        // An empty brick: leave the empty box of bricks around it when the distances are current,
+        // else the whole chunk when it is empty, else just the brick.
+        Int3 lo, hi;
+        if (distances) {
+            const Int3 b{c.x >> brickShift, c.y >> brickShift, c.z >> brickShift};
+            const int r = world.brickDistance(b.x, b.y, b.z) - 1;
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = std::max((b[a] - r) << brickShift, 0);
+                hi[a] = std::min((b[a] + r + 1) << brickShift, size[a]) - 1;
+            }
+        } else {
+            const int shift =
+                world.chunkSolidCount(c.x >> chunkShift, c.y >> chunkShift, c.z >> chunkShift) == 0
+                    ? chunkShift
+                    : brickShift;
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = (c[a] >> shift) << shift;
+                hi[a] = std::min(lo[a] + (1 << shift), size[a]) - 1;
+            }
+        }
+        if (!w.leaveBox(lo, hi, tMax)) return missAfter(steps);
     }
 }
 

@@ -154,6 +154,7 @@ Status generateTerrain(VoxelWorld& world, const TerrainOptions& o) {
             }
         }
     });
+    world.refreshEmptySpace();
     return Ok{};
 }
 
@@ -186,6 +187,7 @@ Status fillRandom(VoxelWorld& world, double density, std::uint64_t seed,
             }
         }
     });
+    world.refreshEmptySpace();
     return Ok{};
 }
 
@@ -212,6 +214,7 @@ void addSphere(VoxelWorld& world, Vec3 centre, float radius, Voxel v) {
             }
         }
     }
+    world.refreshEmptySpace();
 }
 
 void addBox(VoxelWorld& world, Int3 min, Int3 maxExclusive, Voxel v) {
@@ -226,6 +229,7 @@ void addBox(VoxelWorld& world, Int3 min, Int3 maxExclusive, Voxel v) {
             for (int x = lo.x; x < hi.x; ++x) world.set(x, y, z, v);
         }
     }
+    world.refreshEmptySpace();
 }
 
 }  // namespace luxel::voxel

@@ -208,6 +208,7 @@ class Parser {
             }
             offset += m.size.x;
         }
+        world.refreshEmptySpace();
         return world;
     }
 

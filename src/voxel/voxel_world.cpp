@@ -6,6 +6,7 @@
 #include <string>
 
 #include "luxel/core/memory.h"
+#include "voxel/empty_space.h"
 
 namespace luxel::voxel {
 
@@ -14,7 +15,9 @@ std::uint64_t VoxelWorld::bytesFor(Int3 size, int chunkSize) {
     for (int a = 0; a < 3; ++a)
         chunks *= static_cast<std::uint64_t>((size[a] + chunkSize - 1) / chunkSize);
     const std::uint64_t perChunk = static_cast<std::uint64_t>(chunkSize) * chunkSize * chunkSize;
-    return chunks * (perChunk * sizeof(Voxel) + sizeof(std::uint32_t));
+    // Bricks tile every chunk (chunk sides are powers of two >= 4), 64 voxels per mask word.
+    return chunks * (perChunk * sizeof(Voxel) + sizeof(std::uint32_t) +
+                     perChunk / 64 * (sizeof(std::uint64_t) + sizeof(std::uint8_t)));
 }
 
 Result<VoxelWorld> VoxelWorld::create(Int3 size, int chunkSize) {
@@ -42,6 +45,12 @@ Result<VoxelWorld> VoxelWorld::create(Int3 size, int chunkSize) {
         static_cast<std::size_t>(world.chunks_.x) * world.chunks_.y * world.chunks_.z;
     world.voxels_.assign(chunks << (3 * world.chunkShift_), Voxel{});
     world.chunkSolid_.assign(chunks, 0);
+    for (int a = 0; a < 3; ++a) world.brickCount_[a] = (size[a] + kBrickSide - 1) / kBrickSide;
+    world.bricks_.assign(
+        static_cast<std::size_t>(world.brickCount_.x) * world.brickCount_.y * world.brickCount_.z,
+        0);
+    // Nothing is solid yet: every brick is as far from solid as the cap allows.
+    world.brickDistance_.assign(world.bricks_.size(), kMaxBrickDistance);
     return world;
 }
 
@@ -54,8 +63,20 @@ void VoxelWorld::set(int x, int y, int z, Voxel v) {
                                                chunks_.x +
                                            (x >> chunkShift_)];
         count = v.solid() ? count + 1 : count - 1;
+        std::uint64_t& mask = bricks_[(static_cast<std::size_t>(z >> kBrickShift) * brickCount_.y +
+                                       (y >> kBrickShift)) *
+                                          brickCount_.x +
+                                      (x >> kBrickShift)];
+        if (mask == 0) emptySpaceStale_.value.store(true, std::memory_order_relaxed);
+        mask ^= std::uint64_t{1} << brickBit(x, y, z);
     }
     slot = v;
+}
+
+void VoxelWorld::refreshEmptySpace() {
+    if (emptySpaceCurrent()) return;
+    computeBrickDistances(bricks_, brickCount_, kMaxBrickDistance, brickDistance_);
+    emptySpaceStale_.value = false;
 }
 
 std::uint64_t VoxelWorld::solidCount() const {

@@ -66,8 +66,11 @@ TEST(VoxelWorld, RejectsBadSizesAndChunkSizes) {
 
 TEST(VoxelWorld, MemoryEstimateCoversWholeChunks) {
     // 512^3 in 32^3 chunks: 4 bytes per voxel plus a counter per chunk.
-    EXPECT_EQ(VoxelWorld::bytesFor({512, 512, 512}, 32), 512ull * 512 * 512 * 4 + 16 * 16 * 16 * 4);
-    EXPECT_EQ(VoxelWorld::bytesFor({33, 1, 1}, 32), 2ull * 32 * 32 * 32 * 4 + 2 * 4);
+    EXPECT_EQ(VoxelWorld::bytesFor({512, 512, 512}, 32), 512ull * 512 * 512 * 4 + 16 * 16 * 16 * 4 +
+                                                             512ull * 512 * 512 / 8 +
+                                                             512ull * 512 * 512 / 64);
+    EXPECT_EQ(VoxelWorld::bytesFor({33, 1, 1}, 32),
+              2ull * 32 * 32 * 32 * 4 + 2 * 4 + 2 * 32 * 32 * 32 / 8 + 2 * 32 * 32 * 32 / 64);
 }
 
 }  // namespace

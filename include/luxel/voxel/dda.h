@@ -1,4 +1,5 @@
-// Exact Amanatides & Woo (1987) voxel traversal over a VoxelWorld, with empty-chunk skipping.
+// Exact Amanatides & Woo (1987) voxel traversal over a VoxelWorld, with jumps over empty chunks
+// and empty 4^3 bricks.
 //
 // Conventions and edge-case decisions (see docs voxel.md §2.2):
 // - The ray is P(t) = origin + t * direction; the direction need not be unit length, and t is in
@@ -23,7 +24,7 @@
 //   face the origin lies on when it is exactly on the boundary the ray enters through. An origin
 //   strictly inside a solid voxel gives hit at t = 0 with normal (0, 0, 0).
 // - A hit is reported only when its t <= tMax. The step cap counts loop iterations (voxel visits
-//   and chunk jumps); reaching it returns hit = false, capped = true, steps == cap.
+//   and block jumps); reaching it returns hit = false, capped = true, steps == cap.
 #pragma once
 
 #include <limits>
@@ -48,11 +49,14 @@ struct Hit {
     double t = kInfinity;  // entry t of the hit voxel; +inf on a miss
     Vec3d point;           // origin + t * direction, snapped onto the hit face's plane
     float u = 0, v = 0;    // position on the hit face in [0, 1) (the seed's mapping, see dda.cpp)
-    int steps = 0;         // loop iterations: voxel visits plus chunk jumps
+    int steps = 0;         // loop iterations: voxel visits plus block jumps
 };
 
-// Whether castRay jumps over chunks with no solid voxel (chunkSolidCount == 0). Both settings give
-// the same result except for `steps` (and hence the step cap).
+// Whether castRay jumps over empty space: with the world's brick distances current
+// (VoxelWorld::emptySpaceCurrent) over the largest empty box of bricks around an empty brick, else
+// over an empty chunk (chunkSolidCount == 0) or an empty brick (brickMask == 0); voxels are tested
+// through the brick masks. Both settings give the same result except for `steps` (and hence the
+// step cap).
 enum class ChunkSkip { Enabled, Disabled };
 
 // First solid voxel along the ray with entry t in [0, tMax]. stepCap 0 means 3 * (sx + sy + sz),

@@ -1,9 +1,11 @@
 // A dense voxel world stored in cubic chunks: 32-bit RGBA per voxel (alpha > 0 = solid), chunks of
 // `chunkSize`^3 voxels laid out one after another so any voxel is found in O(1), plus a solid
-// count per chunk so traversal can skip empty chunks. Coordinates: x right, y up, z forward;
+// count per chunk and a 64-bit occupancy mask per 4^3 brick so traversal can skip empty space and
+// test voxels without touching their colours. Coordinates: x right, y up, z forward;
 // voxel (i, j, k) covers [i, i+1] x [j, j+1] x [k, k+1].
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -52,6 +54,34 @@ class VoxelWorld {
     }
     std::uint64_t solidCount() const;
 
+    // Occupancy of brick (bx, by, bz), the kBrickSide^3 voxels from kBrickSide * (bx, by, bz):
+    // bit (z * 16 + y * 4 + x) of the mask is set when local voxel (x, y, z) is solid.
+    static constexpr int kBrickShift = 2, kBrickSide = 1 << kBrickShift;
+    std::uint64_t brickMask(int bx, int by, int bz) const {
+        return bricks_[(static_cast<std::size_t>(bz) * brickCount_.y + by) * brickCount_.x + bx];
+    }
+    static constexpr int brickBit(int x, int y, int z) {
+        constexpr int m = kBrickSide - 1;
+        return ((z & m) << (2 * kBrickShift)) | ((y & m) << kBrickShift) | (x & m);
+    }
+
+    // Empty-space distance of brick (bx, by, bz): the Chebyshev distance, in bricks, to the nearest
+    // brick with a solid voxel (0 for such a brick), capped at kMaxBrickDistance. The box of bricks
+    // within distance - 1 holds no solid voxel, so traversal may cross it in one jump.
+    // Only meaningful while emptySpaceCurrent(): set() makes the distances stale when a brick gains
+    // its first solid voxel (removals only make them conservative), and refreshEmptySpace()
+    // recomputes them. Generators, importers and scene loading refresh when they finish.
+    static constexpr int kMaxBrickDistance = 32;
+    std::uint8_t brickDistance(int bx, int by, int bz) const {
+        return brickDistance_[(static_cast<std::size_t>(bz) * brickCount_.y + by) * brickCount_.x +
+                              bx];
+    }
+    bool emptySpaceCurrent() const {
+        return !emptySpaceStale_.value.load(std::memory_order_relaxed);
+    }
+    void refreshEmptySpace();
+    Int3 brickCount() const { return brickCount_; }
+
     // Same size and the same voxel everywhere (the chunk size does not matter).
     bool operator==(const VoxelWorld& other) const;
 
@@ -67,10 +97,24 @@ class VoxelWorld {
         return (chunk << (3 * shift)) + local;
     }
 
-    Int3 size_, chunks_;
+    Int3 size_, chunks_, brickCount_;
     int chunkSize_ = 32, chunkShift_ = 5;
     std::vector<Voxel> voxels_;
     std::vector<std::uint32_t> chunkSolid_;
+    // One word per brick (bricks tile chunks), so chunk-parallel writers never share one.
+    std::vector<std::uint64_t> bricks_;
+    std::vector<std::uint8_t> brickDistance_;
+    // Written by concurrent set() calls from chunk-parallel generators, hence atomic; copyable so
+    // the world stays a value type.
+    struct StaleFlag {
+        std::atomic<bool> value{false};
+        StaleFlag() = default;
+        StaleFlag(const StaleFlag& o) : value(o.value.load()) {}
+        StaleFlag& operator=(const StaleFlag& o) {
+            value = o.value.load();
+            return *this;
+        }
+    } emptySpaceStale_;
 };
 
 }  // namespace luxel::voxel
