@@ -65,6 +65,10 @@ Hit capped(Hit miss, int steps) {
     return miss;
 }
 
+// Box jumps find the cell on the other axes by stepping from the current one when the box is at
+// most this many cells across (few crossings: cheaper than a floor and checks), else by floor.
+constexpr int kShortWalk = 8;
+
 // Traversal state of the per-voxel loop: the current cell, the t it was entered at and through
 // which axis, and the t of the next boundary on each axis.
 struct Walk {
@@ -113,12 +117,19 @@ struct Walk {
             if (b == a || step[b] == 0) continue;
             const auto crossed = [&](double tb) { return tb < tJump || (tb == tJump && b < a); };
             const int first = cell[b], last = step[b] > 0 ? hi[b] : lo[b];
-            int c = floorToInt(std::clamp(o[b] + tJump * d[b], -1.0, size[b] + 1.0));
-            c = step[b] > 0 ? std::clamp(c, first, last) : std::clamp(c, last, first);
-            while (c != first && !crossed(exitAt(c - step[b], b))) c -= step[b];
-            while (c != last && crossed(exitAt(c, b))) c += step[b];
+            int c = first;
+            double tb = next[b];
+            if (std::abs(last - first) > kShortWalk && crossed(tb)) {
+                // A long way to go: start next to where the ray is at tJump, then correct.
+                c = floorToInt(std::clamp(o[b] + tJump * d[b], -1.0, size[b] + 1.0));
+                c = step[b] > 0 ? std::clamp(c, first, last) : std::clamp(c, last, first);
+                while (c != first && !crossed(exitAt(c - step[b], b))) c -= step[b];
+                tb = exitAt(c, b);
+            }
+            // Step on while the plain loop would already have left the cell.
+            while (c != last && crossed(tb)) c += step[b], tb = exitAt(c, b);
             cell[b] = c;
-            next[b] = exitAt(c, b);
+            next[b] = tb;
         }
         t = tJump;
         cell[a] = step[a] > 0 ? hi[a] + 1 : lo[a] - 1;
@@ -144,6 +155,8 @@ Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap, C
     // Slab test against [0, size]. A zero component (either sign) constrains nothing but the
     // origin: the ray belongs to the cells floor(o), which must exist. Ties on entry keep the
     // highest axis (the plane crossed last under the x-then-y-then-z step order).
+    // The world planes use the same formula as every cell boundary (the reciprocal): consistent t.
+    const Vec3d inv{1.0 / d.x, 1.0 / d.y, 1.0 / d.z};
     double tEnter = -kInfinity, tExit = kInfinity;
     int enterAxis = -1;
     for (int a = 0; a < 3; ++a) {
@@ -151,8 +164,8 @@ Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap, C
             if (!(o[a] >= 0.0 && o[a] < size[a])) return miss;
             continue;
         }
-        double t0 = (0.0 - o[a]) / d[a];
-        double t1 = (static_cast<double>(size[a]) - o[a]) / d[a];
+        double t0 = (0.0 - o[a]) * inv[a];
+        double t1 = (static_cast<double>(size[a]) - o[a]) * inv[a];
         if (t0 > t1) std::swap(t0, t1);
         if (t0 >= tEnter) tEnter = t0, enterAxis = a;
         tExit = std::min(tExit, t1);
@@ -187,7 +200,7 @@ Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap, C
         double best = -kInfinity;
         for (int a = 0; a < 3; ++a) {
             if (step[a] == 0) continue;
-            const double te = exitT(cell[a], -step[a], o[a], 1.0 / d[a]);
+            const double te = exitT(cell[a], -step[a], o[a], inv[a]);
             if (te >= best) best = te, axis = a;
         }
         if (!(best >= 0.0)) axis = -1;  // -0.0 >= 0: an origin on the face counts
