@@ -17,7 +17,8 @@ int renderVoxelScene(const VoxelRenderRequest& request) {
     if (!scene) return reportError(scene.error());
     const double loadSeconds = loadTime.seconds();
     Stopwatch renderTime;
-    const Image radiance = voxel::render(scene->world, scene->camera, scene->shading);
+    const Image radiance =
+        voxel::render(scene->world, scene->camera, scene->shading, &scene->textures);
     const double renderSeconds = renderTime.seconds();
     // EXR keeps linear radiance; PNG gets the display transform.
     const Image out =
