@@ -12,10 +12,6 @@
 namespace luxel::voxel {
 namespace {
 
-// Secondary rays start this far off the face. The start-cell rule of castRay already keeps a ray
-// leaving a face out of the voxel behind it; the offset only guards against rounding.
-constexpr double kSurfaceOffset = 1e-7;
-
 // 32-bit integer hash (Wellons' "lowbias32"), so the GPU shader computes the same bits.
 std::uint32_t mix(std::uint32_t h) {
     h ^= h >> 16;
@@ -63,12 +59,15 @@ Sample sample(const VoxelWorld& world, const TextureSet* textures, const Ray& ra
     } else if (options.textures) {
         colour = colour * textureFactor(hit, options);
     }
+    // Secondary rays start exactly on the face (castRay snaps hit.point onto its plane): the
+    // start-cell rule of castRay puts a ray leaving a face in the cell in front of it, and that
+    // cell is entered through this face (no offset that would move it inside, changing its UVs).
     if (options.faceShading) {
         bool inShadow = false;
         const Vec3d sun = toDouble(options.sunDirection);
         if (options.shadows && hasNormal && dot(n, sun) > 0.0) {
             // Cutout texels let sunlight through: leaves cast dappled shadows.
-            const Ray shadowRay{hit.point + n * kSurfaceOffset, normalize(sun)};
+            const Ray shadowRay{hit.point, normalize(sun)};
             inShadow = castToSurface(world, textures, shadowRay, options.stepCap).hit.hit;
         }
         colour = colour * faceFactor(hit.normal, options.sunDirection, options.ambient, inShadow);
@@ -76,7 +75,7 @@ Sample sample(const VoxelWorld& world, const TextureSet* textures, const Ray& ra
     s.colour = colour;
     if (hasNormal) {
         const Vec3d d = normalize(ray.direction);
-        s.next = {hit.point + n * kSurfaceOffset, d - n * (2.0 * dot(d, n))};
+        s.next = {hit.point, d - n * (2.0 * dot(d, n))};
         s.reflects = true;
     }
     return s;

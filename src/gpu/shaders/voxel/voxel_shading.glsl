@@ -2,8 +2,6 @@
 // sun shadow rays, procedural texture with the same 32-bit hash, PNG texels with cutouts, sky,
 // both reflection modes). Needs voxel_dda.glsl and the texture buffers.
 
-const float kSurfaceOffset = 1e-7;
-
 // Wellons' lowbias32, as mix() in shading.cpp.
 uint mixHash(uint h) {
     h ^= h >> 16;
@@ -71,28 +69,43 @@ float nextDown(float x) {
     return x > 0.0 ? uintBitsToFloat(floatBitsToUint(x) - 1u) : x;
 }
 float nextUp(float x) {
-    return x > 0.0 ? uintBitsToFloat(floatBitsToUint(x) + 1u) : x;
+    return x >= 0.0 ? uintBitsToFloat(floatBitsToUint(x) + 1u) : x;
 }
 
-// continueThroughVoxel (surface_cast.cpp).
+float boundaryOf(ivec3 cell, vec3 d, int a) {
+    return float(cell[a] + (d[a] > 0.0 ? 1 : 0));
+}
+
+// continueThroughVoxel (surface_cast.cpp): the origin of the ray `o + t d` restarted where it
+// leaves `cell`, with edge and corner ties kept in the DDA's axis order.
 vec3 continueThroughVoxel(vec3 o, vec3 d, ivec3 cell) {
+    vec3 exitOf = vec3(kInfinity);
     int exitAxis = -1;
-    float tExit = kInfinity;
     for (int a = 0; a < 3; ++a) {
         if (d[a] == 0.0) continue;
-        const float t = exitT(cell[a], d[a] > 0.0 ? 1 : -1, o[a], d[a]);
-        if (t < tExit) {
-            tExit = t;
-            exitAxis = a;
-        }
+        exitOf[a] = (boundaryOf(cell, d, a) - o[a]) / d[a];
+        if (exitAxis < 0 || exitOf[a] < exitOf[exitAxis]) exitAxis = a;
     }
     if (exitAxis < 0) return o;
+    const float tExit = exitOf[exitAxis];
+    float previous = 0.0;
     vec3 next;
     for (int a = 0; a < 3; ++a) {
         const float lo = float(cell[a]), hi = float(cell[a]) + 1.0;
         float p = d[a] == 0.0 ? o[a] : o[a] + tExit * d[a];
         if (a == exitAxis) {
-            p = d[a] > 0.0 ? hi : lo;
+            p = boundaryOf(cell, d, a);
+        } else if (d[a] != 0.0 && exitOf[a] == tExit) {
+            const float boundary = boundaryOf(cell, d, a);
+            p = boundary - previous * d[a];
+            float t = 0.0;
+            // Bounded: a flushed denormal could otherwise stall the walk.
+            for (int i = 0; i < 64; ++i) {
+                p = d[a] > 0.0 ? nextDown(p) : nextUp(p);
+                t = (boundary - p) / d[a];
+                if (t > previous) break;
+            }
+            previous = t;
         } else if (d[a] > 0.0) {
             p = clamp(p, lo, nextDown(hi));
         } else if (d[a] < 0.0) {
@@ -106,8 +119,9 @@ vec3 continueThroughVoxel(vec3 o, vec3 d, ivec3 cell) {
 // castToSurface (surface_cast.cpp): past cutout texels, at most LUXEL_VOXEL_MAX_CUTOUTS times.
 SurfaceHit castToSurface(vec3 o, vec3 d) {
     SurfaceHit s = SurfaceHit(missHit(), -1, vec4(1.0));
+    vec3 origin = o;
     for (int continuations = 0;; ++continuations) {
-        s.hit = castRay(o, d);
+        s.hit = castRay(origin, d);
         if (!s.hit.hit) return s;
         const int slot = int(voxelValue(s.hit.voxel) >> 24) - 1;
         if (slot < 0 || slot >= 254 || slot >= int(params.textureCount)) {
@@ -123,7 +137,7 @@ SurfaceHit castToSurface(vec3 o, vec3 d) {
             s.slot = -1;
             return s;
         }
-        o = continueThroughVoxel(o, d, s.hit.voxel);
+        origin = continueThroughVoxel(o, d, s.hit.voxel);
     }
     return s;
 }
@@ -158,14 +172,14 @@ Sample shadeSample(vec3 o, vec3 d) {
         bool inShadow = false;
         const vec3 sun = vec3(params.sunX, params.sunY, params.sunZ);
         if ((params.flags & LUXEL_VOXEL_SHADOWS) != 0u && hasNormal && dot(n, sun) > 0.0) {
-            inShadow = castToSurface(h.point + n * kSurfaceOffset, normalize(sun)).hit.hit;
+            inShadow = castToSurface(h.point, normalize(sun)).hit.hit;
         }
         colour = colour * faceFactor(h.normal, sun, params.ambient, inShadow);
     }
     s.colour = colour;
     if (hasNormal) {
         const vec3 dn = normalize(d);
-        s.nextOrigin = h.point + n * kSurfaceOffset;
+        s.nextOrigin = h.point;
         s.nextDirection = dn - n * (2.0 * dot(dn, n));
         s.reflects = true;
     }
