@@ -311,8 +311,10 @@ Result<std::shared_ptr<Buffer>> Context::createBuffer(std::uint64_t bytes) {
     });
 }
 
-Status Context::upload(Buffer& buffer, std::span<const std::byte> data) {
-    LUXEL_CHECK_LE(data.size(), buffer.bytes);
+Status Context::upload(Buffer& buffer, std::span<const std::byte> data, std::uint64_t offset) {
+    LUXEL_CHECK_LE(offset + data.size(), buffer.bytes);
+    LUXEL_CHECK_EQ(offset % 4, 0u);
+    if (data.empty()) return Ok{};
     return guarded([&]() -> Status {
         using M = vk::MemoryPropertyFlagBits;
         auto staging = impl_->makeBuffer(data.size(), vk::BufferUsageFlagBits::eTransferSrc,
@@ -321,7 +323,8 @@ Status Context::upload(Buffer& buffer, std::span<const std::byte> data) {
         std::memcpy(mapped, data.data(), data.size());
         staging->memory.unmapMemory();
         impl_->submitAndWait([&](vk::raii::CommandBuffer& cmd) {
-            cmd.copyBuffer(*staging->buffer, *buffer.buffer, vk::BufferCopy(0, 0, data.size()));
+            cmd.copyBuffer(*staging->buffer, *buffer.buffer,
+                           vk::BufferCopy(0, offset, data.size()));
         });
         return Ok{};
     });

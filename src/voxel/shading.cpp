@@ -7,20 +7,18 @@
 
 #include "luxel/core/parallel.h"
 #include "luxel/core/tonemap.h"
+#include "luxel/voxel/surface_cast.h"
 
 namespace luxel::voxel {
 namespace {
 
-// Secondary rays start this far off the face. The start-cell rule of castRay already keeps a ray
-// leaving a face out of the voxel behind it; the offset only guards against rounding.
-constexpr double kSurfaceOffset = 1e-7;
-
-std::uint64_t mix(std::uint64_t h) {  // splitmix64 finaliser
-    h ^= h >> 30;
-    h *= 0xbf58476d1ce4e5b9ull;
-    h ^= h >> 27;
-    h *= 0x94d049bb133111ebull;
-    return h ^ (h >> 31);
+// 32-bit integer hash (Wellons' "lowbias32"), so the GPU shader computes the same bits.
+std::uint32_t mix(std::uint32_t h) {
+    h ^= h >> 16;
+    h *= 0x7feb352du;
+    h ^= h >> 15;
+    h *= 0x846ca68bu;
+    return h ^ (h >> 16);
 }
 
 Vec3d toDouble(Vec3 v) {
@@ -37,47 +35,62 @@ Rgb albedo(Voxel v) {
 // One ray: what it sees (sky or a shaded voxel) and, on a hit, the reflected ray.
 struct Sample {
     Rgb colour;
-    Hit hit;
+    SurfaceHit surface;
     bool reflects = false;
     Ray next;
 };
 
-Sample sample(const VoxelWorld& world, const Ray& ray, const ShadeOptions& options) {
+Sample sample(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
+              const ShadeOptions& options) {
     Sample s;
-    s.hit = castRay(world, ray, kInfinity, options.stepCap);
+    s.surface = castToSurface(world, textures, ray, options.stepCap);
     // A capped ray (world larger than the cap allows) reads as sky rather than the seed's yellow.
-    if (!s.hit.hit) {
+    if (!s.surface.hit.hit) {
         s.colour = skyColor(ray.direction, options);
         return s;
     }
-    const Hit& hit = s.hit;
+    const Hit& hit = s.surface.hit;
     const Vec3d n = toDouble(hit.normal);
     const bool hasNormal = hit.normal != Int3{};
     Rgb colour = albedo(world.get(hit.voxel.x, hit.voxel.y, hit.voxel.z));
-    if (options.textures) colour = colour * textureFactor(hit, options);
+    if (s.surface.slot >= 0) {
+        const Texel& t = s.surface.texel;
+        colour = colour * Rgb(t.r, t.g, t.b);  // the texel tints the voxel colour
+    } else if (options.textures) {
+        colour = colour * textureFactor(hit, options);
+    }
+    // Secondary rays start exactly on the face (castRay snaps hit.point onto its plane): the
+    // start-cell rule of castRay puts a ray leaving a face in the cell in front of it, and that
+    // cell is entered through this face (no offset that would move it inside, changing its UVs).
     if (options.faceShading) {
         bool inShadow = false;
         const Vec3d sun = toDouble(options.sunDirection);
         if (options.shadows && hasNormal && dot(n, sun) > 0.0) {
-            const Ray shadowRay{hit.point + n * kSurfaceOffset, normalize(sun)};
-            inShadow = castRay(world, shadowRay, kInfinity, options.stepCap).hit;
+            // Cutout texels let sunlight through: leaves cast dappled shadows.
+            const Ray shadowRay{hit.point, normalize(sun)};
+            inShadow = castToSurface(world, textures, shadowRay, options.stepCap).hit.hit;
         }
         colour = colour * faceFactor(hit.normal, options.sunDirection, options.ambient, inShadow);
     }
     s.colour = colour;
     if (hasNormal) {
         const Vec3d d = normalize(ray.direction);
-        s.next = {hit.point + n * kSurfaceOffset, d - n * (2.0 * dot(d, n))};
+        s.next = {hit.point, d - n * (2.0 * dot(d, n))};
         s.reflects = true;
     }
     return s;
 }
 
-float reflectivityOf(const VoxelWorld& world, const Hit& hit, const ShadeOptions& options) {
-    const float r =
-        options.materialReflectivity
-            ? options.materialReflectivity(world.get(hit.voxel.x, hit.voxel.y, hit.voxel.z))
-            : options.reflectivity;
+// A texture's own reflectivity, else the callback's, else the default.
+float reflectivityOf(const VoxelWorld& world, const TextureSet* textures, const SurfaceHit& s,
+                     const ShadeOptions& options) {
+    const Int3 v = s.hit.voxel;
+    float r = options.reflectivity;
+    if (s.slot >= 0 && (*textures)[s.slot].reflectivity) {
+        r = *(*textures)[s.slot].reflectivity;
+    } else if (options.materialReflectivity) {
+        r = options.materialReflectivity(world.get(v.x, v.y, v.z));
+    }
     return std::isfinite(r) ? std::clamp(r, 0.0f, 1.0f) : 0.0f;
 }
 
@@ -99,24 +112,25 @@ float textureFactor(const Hit& hit, const ShadeOptions& options) {
     const int n = std::max(options.textureTexels, 1);
     const int tu = std::min(static_cast<int>(hit.u * n), n - 1);
     const int tv = std::min(static_cast<int>(hit.v * n), n - 1);
-    std::uint64_t h = mix(static_cast<std::uint32_t>(hit.voxel.x) * 0x9e3779b97f4a7c15ull);
+    std::uint32_t h = mix(static_cast<std::uint32_t>(hit.voxel.x) * 0x9e3779b9u);
     h = mix(h ^ static_cast<std::uint32_t>(hit.voxel.y));
     h = mix(h ^ static_cast<std::uint32_t>(hit.voxel.z));
     h = mix(h ^ static_cast<std::uint32_t>((hit.normal.x + 1) * 9 + (hit.normal.y + 1) * 3 +
                                            (hit.normal.z + 1)));
-    h = mix(h ^ (static_cast<std::uint64_t>(tu) << 16) ^ static_cast<std::uint64_t>(tv));
-    const float noise = static_cast<float>(h >> 40) / static_cast<float>(1 << 24);  // [0, 1)
+    h = mix(h ^ (static_cast<std::uint32_t>(tu) << 16) ^ static_cast<std::uint32_t>(tv));
+    const float noise = static_cast<float>(h >> 8) / static_cast<float>(1 << 24);  // [0, 1)
     return 1.0f - std::clamp(options.textureStrength, 0.0f, 1.0f) * noise;
 }
 
-Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& options) {
+Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& options,
+             const TextureSet* textures) {
     const int bounces = std::max(options.maxReflections, 0);
     Ray current = ray;
     Rgb sum;
     if (options.reflectionMode == ShadeOptions::ReflectionMode::SeedRunningAverage) {
         // The seed's loop: hit k (1-based) adds colour / k, then the sum is scaled by k / (k + 1).
         for (int k = 1; k <= bounces + 1; ++k) {
-            const Sample s = sample(world, current, options);
+            const Sample s = sample(world, textures, current, options);
             if (k == 1) {
                 sum = s.colour;
             } else {
@@ -129,12 +143,12 @@ Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& option
     }
     float weight = 1.0f;
     for (int k = 0; k <= bounces; ++k) {
-        const Sample s = sample(world, current, options);
+        const Sample s = sample(world, textures, current, options);
         if (!s.reflects || k == bounces) {
             sum += s.colour * weight;
             break;
         }
-        const float r = reflectivityOf(world, s.hit, options);
+        const float r = reflectivityOf(world, textures, s.surface, options);
         sum += s.colour * (weight * (1.0f - r));
         weight *= r;
         if (weight == 0.0f) break;
@@ -144,16 +158,17 @@ Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& option
 }
 
 Rgb shadePixel(const VoxelWorld& world, const Camera& camera, int px, int py,
-               const ShadeOptions& options) {
-    return shadeRay(world, camera.primaryRay(px, py), options);
+               const ShadeOptions& options, const TextureSet* textures) {
+    return shadeRay(world, camera.primaryRay(px, py), options, textures);
 }
 
-Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& options) {
+Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& options,
+             const TextureSet* textures) {
     Image image(camera.width(), camera.height(), 3);
     parallelForRange(camera.height(), 1, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {
             for (int x = 0; x < camera.width(); ++x) {
-                image.setRgb(x, y, shadePixel(world, camera, x, y, options));
+                image.setRgb(x, y, shadePixel(world, camera, x, y, options, textures));
             }
         }
     });

@@ -203,7 +203,7 @@ class Parser {
                 const std::uint8_t index = b_[v + 3];
                 if (index == 0) continue;
                 Voxel c = palette_[index];
-                c.a = std::max<std::uint8_t>(c.a, 1);  // a listed voxel is solid
+                c.a = 255;  // a listed voxel is a solid plain block (alpha 1..254 are textures)
                 world.set(offset + b_[v], b_[v + 2], b_[v + 1], c);
             }
             offset += m.size.x;

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -90,11 +91,108 @@ Voxel colourOf(const Reader& r, const Json& v, const std::string& path) {
             static_cast<std::uint8_t>(c[2]), 255};
 }
 
+// Reads "textures": PNG files relative to the scene, each with a name shapes refer to.
+TextureSet buildTextures(const Reader& r, const Json* list, const std::filesystem::path& baseDir) {
+    TextureSet set;
+    if (!list) return set;
+    if (!list->is_array()) throw Invalid{"textures", "must be an array"};
+    if (list->size() > static_cast<std::size_t>(kMaxTextures)) {
+        throw Invalid{"textures", "has " + std::to_string(list->size()) + " entries, at most " +
+                                      std::to_string(kMaxTextures) +
+                                      " (voxel alpha 1..254 selects one)"};
+    }
+    for (std::size_t i = 0; i < list->size(); ++i) {
+        const Json& t = (*list)[i];
+        const std::string path = "textures[" + std::to_string(i) + "]";
+        r.allowOnly(t, path, {"name", "file", "reflectivity"});
+        const Json* name = r.find(t, "name");
+        if (!name || !name->is_string() || name->get<std::string>().empty()) {
+            throw Invalid{path + ".name", "must be a non-empty string"};
+        }
+        const Json* file = r.find(t, "file");
+        if (!file || !file->is_string()) throw Invalid{path + ".file", "must be a PNG path"};
+        std::filesystem::path p = file->get<std::string>();
+        if (p.is_relative()) p = baseDir / p;
+        Result<Texture> texture = TextureSet::load(name->get<std::string>(), p.string());
+        if (!texture) throw Invalid{path + ".file", texture.error().message()};
+        if (const Json* v = r.find(t, "reflectivity")) {
+            texture->reflectivity = static_cast<float>(r.number(*v, path + ".reflectivity", 0, 1));
+        }
+        Result<int> slot = set.add(std::move(*texture));
+        if (!slot) throw Invalid{path + ".name", slot.error().message()};
+    }
+    return set;
+}
+
+// The alpha byte of a texture named at `path` (a plain block when there is no such field).
+std::uint8_t materialAlpha(const Reader& r, const Json& object, const std::string& path,
+                           const TextureSet& textures) {
+    const Json* name = r.find(object, "texture");
+    if (!name) return kPlainBlockAlpha;
+    if (!name->is_string()) throw Invalid{path + ".texture", "must be a texture name"};
+    const std::optional<int> slot = textures.find(name->get<std::string>());
+    if (!slot) {
+        std::string known;
+        for (int i = 0; i < textures.size(); ++i) {
+            known += (known.empty() ? "" : ", ") + textures[i].name;
+        }
+        throw Invalid{path + ".texture", "unknown texture '" + name->get<std::string>() +
+                                             "' (defined: " + (known.empty() ? "none" : known) +
+                                             ")"};
+    }
+    return alphaForSlot(*slot);
+}
+
+// "texture_by_color": plain blocks within `tolerance` (per channel) of a colour get a texture.
+// Terrain band colours are jittered by up to 8 per channel, hence the tolerance.
+void textureByColour(const Reader& r, const Json& list, VoxelWorld& world,
+                     const TextureSet& textures) {
+    if (!list.is_array()) throw Invalid{"world.texture_by_color", "must be an array"};
+    struct Rule {
+        Voxel colour;
+        int tolerance;
+        std::uint8_t alpha;
+    };
+    std::vector<Rule> rules;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string path = "world.texture_by_color[" + std::to_string(i) + "]";
+        r.allowOnly(list[i], path, {"color", "tolerance", "texture"});
+        const Json* colour = r.find(list[i], "color");
+        if (!colour) throw Invalid{path, "needs \"color\": [r, g, b]"};
+        if (!r.find(list[i], "texture")) throw Invalid{path, "needs \"texture\": name"};
+        const Json* tolerance = r.find(list[i], "tolerance");
+        rules.push_back({colourOf(r, *colour, path + ".color"),
+                         tolerance ? r.integer(*tolerance, path + ".tolerance", 0, 255) : 0,
+                         materialAlpha(r, list[i], path, textures)});
+    }
+    const Int3 size = world.size();
+    for (int z = 0; z < size.z; ++z) {
+        for (int y = 0; y < size.y; ++y) {
+            for (int x = 0; x < size.x; ++x) {
+                Voxel v = world.get(x, y, z);
+                if (v.a != kPlainBlockAlpha) continue;
+                for (const Rule& rule : rules) {
+                    const auto near = [&](std::uint8_t a, std::uint8_t b) {
+                        return std::abs(int(a) - int(b)) <= rule.tolerance;
+                    };
+                    if (near(v.r, rule.colour.r) && near(v.g, rule.colour.g) &&
+                        near(v.b, rule.colour.b)) {
+                        v.a = rule.alpha;
+                        world.set(x, y, z, v);
+                        break;
+                    }
+                }
+            }
+        }
+    }
+}
+
 // Builds the world described by "world".
-VoxelWorld buildWorld(const Reader& r, const Json& w, const std::filesystem::path& baseDir) {
+VoxelWorld buildWorld(const Reader& r, const Json& w, const std::filesystem::path& baseDir,
+                      const TextureSet& textures) {
     r.allowOnly(w, "world",
                 {"source", "size", "chunk", "seed", "height", "amplitude", "frequency", "octaves",
-                 "water", "caves", "density", "color", "file", "shapes"});
+                 "water", "caves", "density", "color", "file", "shapes", "texture_by_color"});
     const Json* sourceJson = r.find(w, "source");
     if (!sourceJson || !sourceJson->is_string()) {
         throw Invalid{"world.source", "must be \"terrain\", \"random\", \"empty\" or \"vox\""};
@@ -153,17 +251,24 @@ VoxelWorld buildWorld(const Reader& r, const Json& w, const std::filesystem::pat
                       "unknown world source '" + source + "' (known: terrain, random, empty, vox)"};
     }
     if (!status) throw Invalid{"world", status.error().message()};
+    if (const Json* rules = r.find(w, "texture_by_color")) {
+        textureByColour(r, *rules, world, textures);
+    }
 
     if (const Json* shapes = r.find(w, "shapes")) {
         if (!shapes->is_array()) throw Invalid{"world.shapes", "must be an array"};
         for (std::size_t i = 0; i < shapes->size(); ++i) {
             const Json& s = (*shapes)[i];
             const std::string path = "world.shapes[" + std::to_string(i) + "]";
-            r.allowOnly(s, path, {"type", "center", "radius", "min", "max", "color"});
+            r.allowOnly(s, path, {"type", "center", "radius", "min", "max", "color", "texture"});
             const Json* type = r.find(s, "type");
             const Json* colourJson = r.find(s, "color");
-            const Voxel colour =
-                colourJson ? colourOf(r, *colourJson, path + ".color") : Voxel{200, 200, 200, 255};
+            const std::uint8_t alpha = materialAlpha(r, s, path, textures);
+            // Textured shapes default to white, so the texture shows its own colours.
+            Voxel colour = colourJson                  ? colourOf(r, *colourJson, path + ".color")
+                           : alpha == kPlainBlockAlpha ? Voxel{200, 200, 200, 255}
+                                                       : Voxel{255, 255, 255, 255};
+            colour.a = alpha;
             const std::string t = type && type->is_string() ? type->get<std::string>() : "";
             if (t == "sphere") {
                 if (!r.find(s, "center") || !r.find(s, "radius")) {
@@ -309,14 +414,17 @@ Result<VoxelScene> loadVoxelScene(const std::string& path, int width, int height
     }
     const Reader r(root);
     try {
-        r.allowOnly(root, "", {"type", "description", "world", "camera", "sun", "sky", "render"});
+        r.allowOnly(root, "",
+                    {"type", "description", "textures", "world", "camera", "sun", "sky", "render"});
         const Json* world = r.find(root, "world");
         const Json* camera = r.find(root, "camera");
         if (!world) throw Invalid{"", "a voxel scene needs \"world\""};
         if (!camera) throw Invalid{"", "a voxel scene needs \"camera\""};
         const std::filesystem::path baseDir = std::filesystem::path(path).parent_path();
-        VoxelScene scene{buildWorld(r, *world, baseDir), buildCamera(r, *camera, width, height),
-                         buildShading(r, root), path};
+        TextureSet textures = buildTextures(r, r.find(root, "textures"), baseDir);
+        VoxelWorld built = buildWorld(r, *world, baseDir, textures);
+        VoxelScene scene{std::move(built), buildCamera(r, *camera, width, height),
+                         buildShading(r, root), path, std::move(textures)};
         return scene;
     } catch (const Invalid& invalid) {
         const JsonSourceMap map = JsonSourceMap::build(*text);

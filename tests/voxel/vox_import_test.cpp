@@ -80,7 +80,7 @@ TEST(VoxImport, MinimalFileWithZUpMapping) {
 TEST(VoxImport, PaletteSkippedChunksAndVersion200) {
     Bytes rgba(1024, 0);
     rgba[0] = 10, rgba[1] = 20, rgba[2] = 30, rgba[3] = 255;  // colour index 1
-    rgba[4 * 6] = 200, rgba[4 * 6 + 3] = 0;                   // index 7, alpha 0 -> still solid
+    rgba[4 * 6] = 200, rgba[4 * 6 + 3] = 0;  // index 7, alpha 0 -> a solid plain block (255)
     const Bytes file = voxFile(
         cat({chunk("PACK", ints({1})), chunk("SIZE", ints({3, 3, 3})),
              xyzi({{0, 0, 0, 1}, {2, 2, 2, 7}, {1, 1, 1, 0}}),
@@ -91,7 +91,7 @@ TEST(VoxImport, PaletteSkippedChunksAndVersion200) {
     ASSERT_TRUE(r.ok()) << r.error().message();
     EXPECT_EQ(r->solidCount(), 2u);  // colour index 0 is skipped
     EXPECT_EQ(r->get(0, 0, 0), (Voxel{10, 20, 30, 255}));
-    EXPECT_EQ(r->get(2, 2, 2), (Voxel{200, 0, 0, 1}));
+    EXPECT_EQ(r->get(2, 2, 2), (Voxel{200, 0, 0, 255}));
 }
 
 TEST(VoxImport, ModelsSideBySide) {
@@ -109,8 +109,8 @@ TEST(VoxImport, ModelsSideBySide) {
 TEST(VoxImport, RoundTrip) {
     VoxelWorld w = VoxelWorld::create({20, 12, 9}, 4).value();
     addBox(w, {0, 0, 0}, {20, 1, 9}, Voxel{10, 200, 10, 255});
-    addSphere(w, {10, 6, 4.5f}, 4, Voxel{200, 10, 10, 128});
-    w.set(19, 11, 8, Voxel{1, 2, 3, 4});  // the far corner checks the axis mapping
+    addSphere(w, {10, 6, 4.5f}, 4, Voxel{200, 10, 10, 255});
+    w.set(19, 11, 8, Voxel{1, 2, 3, 255});  // the far corner checks the axis mapping
     Result<std::vector<std::uint8_t>> bytes = encodeVox(w);
     ASSERT_TRUE(bytes.ok()) << bytes.error().message();
     Result<VoxelWorld> back = parseVox(*bytes, "rt.vox", 8);
@@ -128,6 +128,12 @@ TEST(VoxImport, RoundTrip) {
     std::filesystem::remove(path);
     ASSERT_TRUE(loaded.ok()) << loaded.error().message();
     EXPECT_TRUE(w == *loaded);
+
+    // Texture slots (alpha 1..254) do not survive: .vox has no such materials.
+    w.set(0, 0, 0, Voxel{10, 200, 10, 4});
+    Result<VoxelWorld> plain = parseVox(encodeVox(w).value(), "rt.vox", 8);
+    ASSERT_TRUE(plain.ok()) << plain.error().message();
+    EXPECT_EQ(plain->get(0, 0, 0), (Voxel{10, 200, 10, 255}));
 }
 
 TEST(VoxImport, ManyColoursUseNearest) {

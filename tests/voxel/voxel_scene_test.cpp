@@ -83,3 +83,100 @@ TEST(VoxelScene, BadInputIsLocated) {
 
 }  // namespace
 }  // namespace luxel::voxel
+
+namespace luxel::voxel {
+namespace {
+
+// A scene next to a copy of the shipped textures, so relative paths resolve.
+std::string textureScene(const std::string& name, const std::string& body) {
+    const auto dir = std::filesystem::temp_directory_path() / "luxel_voxel_textures";
+    std::filesystem::create_directories(dir / "textures");
+    for (const char* t : {"bricks.png", "leaves.png"}) {
+        std::filesystem::copy_file(std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/textures/" + t,
+                                   dir / "textures" / t,
+                                   std::filesystem::copy_options::overwrite_existing);
+    }
+    const auto path = dir / name;
+    std::ofstream(path) << body;
+    return path.string();
+}
+
+const char* kTextures = R"("textures": [{"name": "bricks", "file": "textures/bricks.png"},
+                           {"name": "leaves", "file": "textures/leaves.png", "reflectivity": 0.5}],)";
+
+TEST(VoxelScene, TexturesOnShapesAndByColour) {
+    const std::string path =
+        textureScene("ok.json", std::string(R"({"type": "voxel", )") + kTextures + R"(
+        "world": {"source": "random", "size": [16, 8, 16], "density": 0.3,
+                  "color": [80, 150, 60],
+                  "shapes": [{"type": "box", "min": [2, 1, 2], "max": [4, 3, 4],
+                              "texture": "bricks"}],
+                  "texture_by_color": [{"color": [84, 146, 60], "tolerance": 4,
+                                        "texture": "leaves"}]},
+        "camera": {"position": [8, 6, -8], "look_at": [8, 0, 8]}})");
+    auto scene = loadVoxelScene(path);
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    ASSERT_EQ(scene->textures.size(), 2);
+    EXPECT_EQ(scene->textures[0].width, 16);
+    EXPECT_EQ(scene->textures[1].reflectivity, 0.5f);
+    EXPECT_EQ(scene->world.get(3, 2, 3), (Voxel{255, 255, 255, alphaForSlot(0)}));
+    // Every random voxel matched the colour rule (within 4 per channel) and became leaves.
+    int leaves = 0, plain = 0;
+    for (int z = 0; z < 16; ++z) {
+        for (int y = 0; y < 8; ++y) {
+            for (int x = 0; x < 16; ++x) {
+                const Voxel v = scene->world.get(x, y, z);
+                leaves += v.a == alphaForSlot(1);
+                plain += v.a == kPlainBlockAlpha;
+            }
+        }
+    }
+    EXPECT_GT(leaves, 100);
+    EXPECT_EQ(plain, 0);
+}
+
+TEST(VoxelScene, TextureErrorsAreLocated) {
+    struct Case {
+        std::string textures, shapes, expected;
+    };
+    const std::string box = R"({"type": "box", "min": [0, 0, 0], "max": [2, 2, 2])";
+    std::string many = R"("textures": [)";
+    for (int i = 0; i < 255; ++i) {
+        many += std::string(i ? ", " : "") + R"({"name": "t)" + std::to_string(i) +
+                R"(", "file": "textures/bricks.png"})";
+    }
+    many += "],";
+    const Case cases[] = {
+        {kTextures, box + R"(, "texture": "leafs"})",
+         "world.shapes[0].texture: unknown texture 'leafs' (defined: bricks, leaves)"},
+        {R"("textures": [{"name": "x", "file": "textures/missing.png"}],)", box + "}",
+         "textures[0].file:"},
+        {R"("textures": [{"name": "x", "file": "bad2.json"}],)", box + "}",  // not a PNG
+         "textures[0].file:"},
+        {R"("textures": [{"name": "x", "file": "textures/bricks.png"},
+                         {"name": "x", "file": "textures/leaves.png"}],)",
+         box + "}", "textures[1].name: texture 'x' is defined twice"},
+        {R"("textures": [{"name": "x", "file": "textures/bricks.png", "reflectivity": 2}],)",
+         box + "}", "textures[0].reflectivity: must be in 0..1"},
+        {R"("textures": [{"name": "x", "file": "textures/bricks.png", "size": 2}],)", box + "}",
+         "unknown field 'size'"},
+        {many, box + "}", "textures: has 255 entries, at most 254"},
+    };
+    int i = 0;
+    for (const Case& c : cases) {
+        const std::string name = "bad" + std::to_string(i++) + ".json";
+        const std::string path = textureScene(name, R"({"type": "voxel", )" + c.textures + R"(
+            "world": {"source": "empty", "size": [8, 8, 8], "shapes": [)" +
+                                                        c.shapes + R"(]},
+            "camera": {"position": [0, 0, 0]}})");
+        auto scene = loadVoxelScene(path);
+        ASSERT_FALSE(scene.ok()) << c.expected;
+        EXPECT_NE(scene.error().message().find(c.expected), std::string::npos)
+            << scene.error().message();
+        EXPECT_NE(scene.error().message().find(path + ":"), std::string::npos)
+            << scene.error().message();
+    }
+}
+
+}  // namespace
+}  // namespace luxel::voxel

@@ -57,6 +57,7 @@ struct VoxelRenderRequest {
     std::string scene, size, out, png;
     ToneMapSettings tone;
     bool quiet = false, stats = false;
+    std::string backend = "auto", device;  // --backend auto|cpu|gpu, --device
 };
 int renderVoxelScene(const VoxelRenderRequest& request);
 

@@ -208,8 +208,8 @@ int runRender(const RenderArgs& args) {
     const ToneMapSettings tone{args.exposure, *curve};
     ThreadLimit threadLimit(args.threads);
     if (voxel::isVoxelSceneFile(args.scene)) {
-        return renderVoxelScene(
-            {args.scene, args.size, args.out, args.png, tone, args.quiet, args.stats});
+        return renderVoxelScene({args.scene, args.size, args.out, args.png, tone, args.quiet,
+                                 args.stats, args.backend, args.device});
     }
 
     auto sized = loadSizedScene(args.scene, args.size);
@@ -316,7 +316,7 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_flag("--quiet,-q", args->quiet, "no progress bar or summary");
     app.add_flag("--stats", args->stats, "print 'stats solve_seconds=S' (for scripts)");
     app.add_option("--backend", args->backend,
-                   "auto (a hardware GPU when there is one, else CPU), cpu or gpu (HRC, RC)")
+                   "auto (a hardware GPU when there is one, else CPU), cpu or gpu (HRC, RC, voxel)")
         ->capture_default_str();
     app.add_option("--device", args->device, "GPU: device index or part of its name");
     return [args] { return runRender(*args); };

@@ -1,13 +1,53 @@
-// `luxel render` for voxel scenes: DDA ray casting with shading, shadows and reflections.
+// `luxel render` for voxel scenes: DDA ray casting with shading, shadows and reflections, on the
+// CPU or (--backend) the GPU.
 #include <cstdio>
+#include <memory>
 
 #include "commands/command.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/timer.h"
+#include "luxel/gpu/context.h"
 #include "luxel/voxel/shading.h"
+#include "luxel/voxel/voxel_gpu.h"
 #include "luxel/voxel/voxel_scene.h"
 
 namespace luxel::cli {
+namespace {
+
+// The GPU for --backend gpu, or for auto when a hardware device exists; nullptr means the CPU.
+// auto skips software devices (lavapipe is slower than the CPU path) and falls back with a note.
+Result<std::unique_ptr<gpu::Context>> chooseVoxelGpu(const VoxelRenderRequest& request) {
+    if (request.backend != "auto" && request.backend != "cpu" && request.backend != "gpu") {
+        return Error("--backend '" + request.backend + "' is not auto, cpu or gpu");
+    }
+    if (request.backend == "cpu") return std::unique_ptr<gpu::Context>();
+#ifdef NDEBUG
+    constexpr bool kValidation = false;
+#else
+    constexpr bool kValidation = true;  // debug builds run with the validation layers
+#endif
+    auto context = gpu::Context::create({request.device, kValidation});
+    if (!context) {
+        if (request.backend == "gpu") return Error("--backend gpu: " + context.error().message());
+        if (!request.quiet) {
+            std::fprintf(stderr, "luxel: note: using the CPU backend (%s)\n",
+                         context.error().message().c_str());
+        }
+        return std::unique_ptr<gpu::Context>();
+    }
+    if (request.backend == "auto" && (*context)->device().type == "cpu") {
+        return std::unique_ptr<gpu::Context>();
+    }
+    return std::move(*context);
+}
+
+Result<Image> renderOnGpu(gpu::Context& context, const voxel::VoxelScene& scene) {
+    auto renderer = voxel::VoxelGpuRenderer::create(context, scene.world, &scene.textures);
+    if (!renderer) return renderer.error();
+    return renderer->render(scene.camera, scene.shading);
+}
+
+}  // namespace
 
 int renderVoxelScene(const VoxelRenderRequest& request) {
     auto size = parseSize(request.size);
@@ -16,8 +56,17 @@ int renderVoxelScene(const VoxelRenderRequest& request) {
     auto scene = voxel::loadVoxelScene(request.scene, size->first, size->second);
     if (!scene) return reportError(scene.error());
     const double loadSeconds = loadTime.seconds();
+    auto context = chooseVoxelGpu(request);
+    if (!context) return reportError(context.error());
     Stopwatch renderTime;
-    const Image radiance = voxel::render(scene->world, scene->camera, scene->shading);
+    Image radiance;
+    if (*context) {
+        auto image = renderOnGpu(**context, *scene);
+        if (!image) return reportError(image.error());
+        radiance = std::move(*image);
+    } else {
+        radiance = voxel::render(scene->world, scene->camera, scene->shading, &scene->textures);
+    }
     const double renderSeconds = renderTime.seconds();
     // EXR keeps linear radiance; PNG gets the display transform.
     const Image out =
@@ -32,12 +81,13 @@ int renderVoxelScene(const VoxelRenderRequest& request) {
     if (!request.quiet) {
         const Int3 s = scene->world.size();
         const double pixels = static_cast<double>(radiance.width()) * radiance.height();
-        std::printf("%s: voxel world %dx%dx%d (%llu solid), image %dx%d, %d reflections\n",
+        std::printf("%s: voxel world %dx%dx%d (%llu solid), image %dx%d, %d reflections, %s\n",
                     request.scene.c_str(), s.x, s.y, s.z,
                     static_cast<unsigned long long>(scene->world.solidCount()), radiance.width(),
-                    radiance.height(), scene->shading.maxReflections);
-        std::printf("  world %.3f s, render %.3f s (%.2f Mpixel/s)\n", loadSeconds, renderSeconds,
-                    pixels / renderSeconds * 1e-6);
+                    radiance.height(), scene->shading.maxReflections,
+                    *context ? ("gpu: " + (**context).device().name).c_str() : "cpu");
+        std::printf("  world %.3f s, render %.3f s incl. upload (%.2f Mpixel/s)\n", loadSeconds,
+                    renderSeconds, pixels / renderSeconds * 1e-6);
         std::printf("  wrote %s%s%s\n", request.out.c_str(), request.png.empty() ? "" : ", ",
                     request.png.c_str());
     }

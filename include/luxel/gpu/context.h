@@ -58,7 +58,8 @@ class Context {
     // A device-local storage buffer of `bytes` (shared: it outlives nothing but the context);
     // fails when the device memory would not fit.
     Result<std::shared_ptr<Buffer>> createBuffer(std::uint64_t bytes);
-    Status upload(Buffer& buffer, std::span<const std::byte> data);
+    // Copies `data` into the buffer at byte `offset` (a multiple of 4).
+    Status upload(Buffer& buffer, std::span<const std::byte> data, std::uint64_t offset = 0);
     Status download(const Buffer& buffer, std::span<std::byte> data);
 
     // The compute program of an embedded shader (cached by name). `storageBuffers` bindings

@@ -11,6 +11,7 @@
 #include "luxel/core/vec.h"
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/dda.h"
+#include "luxel/voxel/texture_set.h"
 #include "luxel/voxel/voxel_world.h"
 
 namespace luxel::voxel {
@@ -34,13 +35,14 @@ struct ShadeOptions {
     int maxReflections = 2;               // 0: no reflection rays
     ReflectionMode reflectionMode = ReflectionMode::SeedRunningAverage;
     float reflectivity = 0.3f;  // EnergyConserving, for every voxel unless overridden below
-    // EnergyConserving: per-voxel reflectivity in [0, 1] (empty: `reflectivity` everywhere).
+    // EnergyConserving: per-voxel reflectivity in [0, 1] (empty: `reflectivity` everywhere). A
+    // texture's own reflectivity (texture_set.h) takes precedence. CPU only.
     std::function<float(const Voxel&)> materialReflectivity;
-    bool faceShading = true;        // the seed's dot-product face term
-    float ambient = 0.1f;           // the seed's +0.1 in that term
-    bool shadows = true;            // hard shadows from a shadow ray towards the sun
-    bool textures = true;           // procedural per-texel modulation of the voxel colour
-    int textureTexels = 8;          // texels per face side
+    bool faceShading = true;  // the seed's dot-product face term
+    float ambient = 0.1f;     // the seed's +0.1 in that term
+    bool shadows = true;      // hard shadows from a shadow ray towards the sun
+    bool textures = true;     // procedural per-texel modulation of plain blocks (not PNG textures)
+    int textureTexels = 8;    // texels per face side
     float textureStrength = 0.15f;  // darkest texel is (1 - strength) of the voxel colour
     int stepCap = 0;                // castRay step cap (0: its default)
 };
@@ -56,13 +58,17 @@ Rgb skyColor(Vec3d direction, const ShadeOptions& options);
 // Deterministic texel brightness in [1 - strength, 1] for a hit on a voxel face.
 float textureFactor(const Hit& hit, const ShadeOptions& options);
 
-// Radiance along a ray (primary or not), with reflections per the options.
-Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& options);
+// Radiance along a ray (primary or not), with reflections per the options. `textures` gives the
+// face textures that voxel alpha 1..254 selects (texture_set.h); without it every solid voxel is
+// a plain block.
+Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& options,
+             const TextureSet* textures = nullptr);
 
 Rgb shadePixel(const VoxelWorld& world, const Camera& camera, int px, int py,
-               const ShadeOptions& options);
+               const ShadeOptions& options, const TextureSet* textures = nullptr);
 
 // A camera.width() x camera.height() RGB image, rows in parallel.
-Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& options);
+Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& options,
+             const TextureSet* textures = nullptr);
 
 }  // namespace luxel::voxel

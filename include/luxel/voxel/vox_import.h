@@ -20,10 +20,11 @@ inline constexpr std::uint64_t kMaxVoxFileBytes = std::uint64_t{256} << 20;
 // Reads a .vox file (version 150 or 200). Every model (SIZE + XYZI pair) is placed side by side
 // along luxel x in file order, each at z = 0, y = 0; the world is as wide as their sum and as
 // tall/deep as the largest. Scene-graph chunks (nTRN, nGRP, nSHP), materials and any other
-// chunks are skipped. Each model side must be in 1..256 (XYZI coordinates are bytes). Voxels with
-// colour index 0 (not a valid index) are skipped. Without an RGBA chunk the default MagicaVoxel
-// palette is used. Every bad input is an Error like "model.vox: byte 52: XYZI chunk claims 1000000
-// voxels but holds 40 bytes".
+// chunks are skipped. Palette alpha is ignored: every listed voxel is a plain block (alpha 255;
+// alpha 1..254 would select a face texture, texture_set.h). Each model side must be in 1..256 (XYZI
+// coordinates are bytes). Voxels with colour index 0 (not a valid index) are skipped. Without an
+// RGBA chunk the default MagicaVoxel palette is used. Every bad input is an Error like "model.vox:
+// byte 52: XYZI chunk claims 1000000 voxels but holds 40 bytes".
 Result<VoxelWorld> loadVox(const std::string& path, int chunkSize = 32);
 // The same from bytes in memory; `name` is used in messages.
 Result<VoxelWorld> parseVox(std::span<const std::uint8_t> bytes, const std::string& name,

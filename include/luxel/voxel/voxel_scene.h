@@ -7,6 +7,7 @@
 #include "luxel/core/error.h"
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/shading.h"
+#include "luxel/voxel/texture_set.h"
 #include "luxel/voxel/voxel_world.h"
 
 namespace luxel::voxel {
@@ -16,6 +17,7 @@ struct VoxelScene {
     Camera camera;
     ShadeOptions shading;
     std::string sourcePath;
+    TextureSet textures;  // the scene's "textures", in slot order
 };
 
 // Reads a scene, builds its world (generators run here) and validates everything. Errors name the

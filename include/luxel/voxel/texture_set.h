@@ -1,0 +1,81 @@
+// Face textures for voxels: up to 254 RGBA textures, addressed by the voxel's alpha byte.
+//
+// Voxel alpha is a material byte: 0 = empty, 255 = plain block (procedural texture), 1..254 =
+// texture slot a - 1. A textured face takes the nearest texel at the hit's (u, v): its colour
+// multiplies the voxel colour (a tint), and a texel with alpha < 0.5 is a cutout that the ray
+// passes through (the seed's "transparent pixel: loop to the next block").
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "luxel/core/error.h"
+#include "luxel/core/vec.h"
+#include "luxel/voxel/voxel_world.h"
+
+namespace luxel::voxel {
+
+inline constexpr int kMaxTextures = 254;
+// Largest accepted texture side: faces are one voxel, so more texels only cost memory.
+inline constexpr int kMaxTextureSide = 1024;
+inline constexpr std::uint8_t kPlainBlockAlpha = 255;
+
+// The texture slot a voxel's alpha selects, or -1 for empty and plain blocks.
+constexpr int textureSlotOf(Voxel v) {
+    return v.a >= 1 && v.a <= kMaxTextures ? v.a - 1 : -1;
+}
+// The alpha byte that selects texture `slot` (0..253).
+constexpr std::uint8_t alphaForSlot(int slot) {
+    return static_cast<std::uint8_t>(slot + 1);
+}
+
+// A linear RGB colour and a linear alpha, as stored per texel (and uploaded to the GPU as is).
+struct Texel {
+    float r = 1, g = 1, b = 1, a = 1;
+    constexpr bool cutout() const { return a < 0.5f; }
+    constexpr bool operator==(const Texel&) const = default;
+};
+
+struct Texture {
+    std::string name;
+    int width = 0, height = 0;
+    std::vector<Texel> texels;  // rows top to bottom, as in the image file
+    // Energy-conserving reflections: this material's reflectivity in [0, 1] (empty: the
+    // renderer's default).
+    std::optional<float> reflectivity;
+};
+
+class TextureSet {
+  public:
+    // Adds a texture and returns its slot. Fails for more than kMaxTextures, a duplicate or empty
+    // name, a side outside 1..kMaxTextureSide, a texel count that does not match, non-finite
+    // texels, or a reflectivity outside [0, 1].
+    Result<int> add(Texture texture);
+    // Reads a PNG: colour is sRGB-decoded to linear, alpha is linear (no alpha channel: opaque;
+    // grey images are grey in every channel). Size limits as in add().
+    static Result<Texture> load(const std::string& name, const std::string& path);
+
+    int size() const { return static_cast<int>(textures_.size()); }
+    bool empty() const { return textures_.empty(); }
+    const Texture& operator[](int slot) const { return textures_[slot]; }
+    std::optional<int> find(const std::string& name) const;
+
+    // Nearest texel at face coordinates (u, v) in [0, 1): column floor(u * width), row
+    // floor(v * height) counted from the bottom (v grows upwards on side faces, so images stand
+    // upright on walls). Coordinates are clamped into the texture. `slot` must be valid.
+    Texel lookup(int slot, float u, float v) const;
+
+  private:
+    std::vector<Texture> textures_;
+};
+
+// The texel index lookup() reads, shared with the GPU shader's arithmetic: float products,
+// truncation, clamping to the last texel.
+constexpr int texelColumn(float u, int width) {
+    const int i = static_cast<int>(u * static_cast<float>(width));
+    return i < 0 ? 0 : (i >= width ? width - 1 : i);
+}
+
+}  // namespace luxel::voxel

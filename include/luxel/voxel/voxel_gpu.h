@@ -1,0 +1,63 @@
+// The voxel ray caster on the GPU (Vulkan compute, src/gpu/shaders/voxel/): the same DDA,
+// cutout textures and shading as render() in shading.h, in float instead of double, so images
+// agree with the CPU except at rare pixels where a ray passes within float rounding of a voxel
+// edge (tests/gpu/voxel_gpu_test.cpp bounds them).
+//
+// The world is uploaded once in VoxelWorld's chunked layout with per-chunk solid counts (for
+// chunk skipping); edits are re-uploaded chunk by chunk with updateRegion.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "luxel/core/error.h"
+#include "luxel/core/image.h"
+#include "luxel/voxel/camera.h"
+#include "luxel/voxel/shading.h"
+#include "luxel/voxel/texture_set.h"
+#include "luxel/voxel/voxel_world.h"
+
+namespace luxel::gpu {
+class Context;
+struct PassTiming;
+}  // namespace luxel::gpu
+
+namespace luxel::voxel {
+
+// Device memory for a world of this size and chunk size, its textures, and one output image of
+// width x height.
+std::uint64_t estimateVoxelGpuMemory(Int3 size, int chunkSize, const TextureSet* textures,
+                                     int width, int height);
+
+class VoxelGpuRenderer {
+  public:
+    // Uploads the world and textures. Refuses, with the numbers, when the estimate (for a
+    // 1920x1080 image) exceeds `memoryBudget` bytes (0: the device's memory).
+    static Result<VoxelGpuRenderer> create(gpu::Context& context, const VoxelWorld& world,
+                                           const TextureSet* textures = nullptr,
+                                           std::uint64_t memoryBudget = 0);
+    VoxelGpuRenderer(VoxelGpuRenderer&&) noexcept;
+    VoxelGpuRenderer& operator=(VoxelGpuRenderer&&) noexcept;
+    ~VoxelGpuRenderer();
+
+    // Re-uploads the chunks overlapping [min, maxExclusive) (clipped to the world) and every
+    // chunk's solid count, after edits to `world` (the world given to create, same size).
+    Status updateRegion(const VoxelWorld& world, Int3 min, Int3 maxExclusive);
+
+    // Linear RGB image, as render(world, camera, options, textures). options.materialReflectivity
+    // (a CPU callback) is refused; per-texture reflectivity works. `timings` receives the upload,
+    // dispatch (GPU timestamps) and download times.
+    Result<Image> render(const Camera& camera, const ShadeOptions& options,
+                         std::vector<gpu::PassTiming>* timings = nullptr);
+
+    // Bytes of device memory held now.
+    std::uint64_t deviceBytes() const;
+
+  private:
+    struct State;
+    explicit VoxelGpuRenderer(std::unique_ptr<State> state);
+    std::unique_ptr<State> state_;
+};
+
+}  // namespace luxel::voxel

@@ -1,0 +1,93 @@
+// Voxel renderer structures shared by C++ and GLSL (offsets checked below and in
+// tests/gpu/voxel_gpu_test.cpp). Every field is a 4-byte scalar, so std430 adds no padding.
+//
+// Buffers of voxel_render (set 0):
+//   0 VoxelRenderParams
+//   1 voxels: one uint per voxel (r | g << 8 | b << 16 | a << 24), chunk-major exactly like
+//     VoxelWorld: chunk ((cz * chunksY + cy) * chunksX + cx) << 3 * chunkShift, then
+//     (lz * chunk + ly) * chunk + lx inside it
+//   2 solid voxels per chunk (uint), same chunk order
+//   3 VoxelTextureInfo per texture slot
+//   4 texels: vec4 (linear RGB, linear alpha), rows top to bottom, slot after slot
+//   5 float[256]: srgbToLinear(i / 255), the CPU's own values
+//   6 output: vec4 per pixel (linear RGB, 1), rows top to bottom
+#ifndef LUXEL_GPU_SHARED_VOXEL_LAYOUT_H
+#define LUXEL_GPU_SHARED_VOXEL_LAYOUT_H
+
+#ifdef __cplusplus
+#include <cstddef>
+#include <cstdint>
+namespace luxel::gpu::shared {
+using uint = std::uint32_t;
+#endif
+
+#define LUXEL_VOXEL_GROUP_X 8
+#define LUXEL_VOXEL_GROUP_Y 8
+#define LUXEL_VOXEL_BUFFERS 7
+
+// VoxelRenderParams.flags
+#define LUXEL_VOXEL_FACE_SHADING 1u
+#define LUXEL_VOXEL_SHADOWS 2u
+#define LUXEL_VOXEL_PROCEDURAL_TEXTURE 4u
+#define LUXEL_VOXEL_ENERGY_CONSERVING 8u
+
+// Must equal kMaxCutoutContinuations (surface_cast.h).
+#define LUXEL_VOXEL_MAX_CUTOUTS 64
+
+struct VoxelRenderParams {
+    // World.
+    uint sizeX, sizeY, sizeZ;
+    uint chunkShift;
+    uint chunksX, chunksY, chunksZ;
+    uint stepCap;  // resolved: never 0
+    // Image and options.
+    uint width, height;
+    uint textureCount;
+    uint flags;
+    // Camera (Camera::rayAt in float).
+    float positionX, positionY, positionZ;
+    float tanHalf;
+    float forwardX, forwardY, forwardZ;
+    float aspect;
+    float rightX, rightY, rightZ;
+    uint maxReflections;
+    float upX, upY, upZ;
+    float ambient;
+    // Sun, sky and materials.
+    float sunX, sunY, sunZ;
+    float reflectivity;
+    float skyTopR, skyTopG, skyTopB;
+    float textureStrength;
+    float skyHorizonR, skyHorizonG, skyHorizonB;
+    uint textureTexels;
+};
+
+// Push constants: the band of rows one dispatch renders (images are split into bands so no
+// single dispatch runs long).
+struct VoxelBandPush {
+    uint rowOffset;
+    uint rows;
+};
+
+struct VoxelTextureInfo {
+    uint texelOffset;  // first texel of the slot in the texel buffer
+    uint width;
+    uint height;
+    float reflectivity;  // < 0: none (the renderer's default applies)
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(VoxelRenderParams) == 160);
+static_assert(offsetof(VoxelRenderParams, width) == 32);
+static_assert(offsetof(VoxelRenderParams, positionX) == 48);
+static_assert(offsetof(VoxelRenderParams, maxReflections) == 92);
+static_assert(offsetof(VoxelRenderParams, sunX) == 112);
+static_assert(offsetof(VoxelRenderParams, textureTexels) == 156);
+static_assert(sizeof(VoxelBandPush) == 8);
+static_assert(offsetof(VoxelBandPush, rows) == 4);
+static_assert(sizeof(VoxelTextureInfo) == 16);
+static_assert(offsetof(VoxelTextureInfo, reflectivity) == 12);
+}  // namespace luxel::gpu::shared
+#endif
+
+#endif

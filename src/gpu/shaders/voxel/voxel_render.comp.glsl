@@ -1,0 +1,34 @@
+// The voxel ray caster: one invocation per pixel of a band of rows, shading as the CPU renderer
+// (src/voxel/shading.cpp), writing linear RGB. CPU reference: luxel::voxel::render.
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/voxel_layout.h"
+
+layout(local_size_x = LUXEL_VOXEL_GROUP_X, local_size_y = LUXEL_VOXEL_GROUP_Y) in;
+layout(std430, set = 0, binding = 0) readonly buffer Params { VoxelRenderParams params; };
+layout(std430, set = 0, binding = 1) readonly buffer Voxels { uint voxels[]; };
+layout(std430, set = 0, binding = 2) readonly buffer ChunkSolid { uint chunkSolid[]; };
+layout(std430, set = 0, binding = 3) readonly buffer TextureInfos { VoxelTextureInfo textureInfo[]; };
+layout(std430, set = 0, binding = 4) readonly buffer Texels { vec4 texels[]; };
+layout(std430, set = 0, binding = 5) readonly buffer SrgbTable { float srgbTable[]; };
+layout(std430, set = 0, binding = 6) writeonly buffer Output { vec4 pixels[]; };
+layout(push_constant) uniform Push { VoxelBandPush band; };
+
+#include "voxel/voxel_dda.glsl"
+#include "voxel/voxel_shading.glsl"
+
+void main() {
+    const uint x = gl_GlobalInvocationID.x;
+    const uint y = band.rowOffset + gl_GlobalInvocationID.y;
+    if (x >= params.width || gl_GlobalInvocationID.y >= band.rows || y >= params.height) return;
+    // Camera::rayAt(x + 0.5, y + 0.5).
+    const float w = float(params.width), h = float(params.height);
+    const float sx = (2.0 * (float(x) + 0.5) / w - 1.0) * params.tanHalf * params.aspect;
+    const float sy = (1.0 - 2.0 * (float(y) + 0.5) / h) * params.tanHalf;
+    const vec3 forward = vec3(params.forwardX, params.forwardY, params.forwardZ);
+    const vec3 right = vec3(params.rightX, params.rightY, params.rightZ);
+    const vec3 up = vec3(params.upX, params.upY, params.upZ);
+    const vec3 origin = vec3(params.positionX, params.positionY, params.positionZ);
+    const vec3 direction = normalize(forward + right * sx + up * sy);
+    pixels[y * params.width + x] = vec4(shadeRay(origin, direction), 1.0);
+}

@@ -1,0 +1,228 @@
+// Shading: a port of src/voxel/shading.cpp and src/voxel/surface_cast.cpp in float (face term,
+// sun shadow rays, procedural texture with the same 32-bit hash, PNG texels with cutouts, sky,
+// both reflection modes). Needs voxel_dda.glsl and the texture buffers.
+
+// Wellons' lowbias32, as mix() in shading.cpp.
+uint mixHash(uint h) {
+    h ^= h >> 16;
+    h *= 0x7feb352du;
+    h ^= h >> 15;
+    h *= 0x846ca68bu;
+    return h ^ (h >> 16);
+}
+
+vec3 albedo(uint packed) {
+    return vec3(srgbTable[packed & 0xffu], srgbTable[(packed >> 8) & 0xffu],
+                srgbTable[(packed >> 16) & 0xffu]);
+}
+
+float faceFactor(ivec3 n, vec3 sun, float ambient, bool inShadow) {
+    float d = float(n.x) * sun.x + float(n.y) * sun.y + float(n.z) * sun.z;
+    if (inShadow) d = min(d, 0.0);
+    float f = min((d + 1.0) * 0.5 + ambient, 1.0);
+    return f;
+}
+
+vec3 skyColor(vec3 direction) {
+    const vec3 top = vec3(params.skyTopR, params.skyTopG, params.skyTopB);
+    const vec3 horizon = vec3(params.skyHorizonR, params.skyHorizonG, params.skyHorizonB);
+    const float len = length(direction);
+    const float s = len > 0.0 ? clamp(direction.y / len, 0.0, 1.0) : 0.0;
+    vec3 c = horizon + (top - horizon) * s;
+    return c;
+}
+
+float textureFactor(Hit h) {
+    const int n = max(int(params.textureTexels), 1);
+    const int tu = min(int(h.u * float(n)), n - 1);
+    const int tv = min(int(h.v * float(n)), n - 1);
+    uint x = mixHash(uint(h.voxel.x) * 0x9e3779b9u);
+    x = mixHash(x ^ uint(h.voxel.y));
+    x = mixHash(x ^ uint(h.voxel.z));
+    x = mixHash(x ^ uint((h.normal.x + 1) * 9 + (h.normal.y + 1) * 3 + (h.normal.z + 1)));
+    x = mixHash(x ^ (uint(tu) << 16) ^ uint(tv));
+    const float noise = float(x >> 8) / float(1 << 24);
+    float f = 1.0 - clamp(params.textureStrength, 0.0, 1.0) * noise;
+    return f;
+}
+
+// texelColumn (texture_set.h).
+int texelIndex(float u, int size) {
+    return clamp(int(u * float(size)), 0, size - 1);
+}
+
+vec4 lookupTexel(int slot, float u, float v) {
+    const VoxelTextureInfo info = textureInfo[slot];
+    const int w = int(info.width), h = int(info.height);
+    const int column = texelIndex(u, w);
+    const int row = h - 1 - texelIndex(v, h);
+    return texels[info.texelOffset + uint(row * w + column)];
+}
+
+struct SurfaceHit {
+    Hit hit;
+    int slot;
+    vec4 texel;
+};
+
+float nextDown(float x) {
+    return x > 0.0 ? uintBitsToFloat(floatBitsToUint(x) - 1u) : x;
+}
+float nextUp(float x) {
+    return x >= 0.0 ? uintBitsToFloat(floatBitsToUint(x) + 1u) : x;
+}
+
+float boundaryOf(ivec3 cell, vec3 d, int a) {
+    return float(cell[a] + (d[a] > 0.0 ? 1 : 0));
+}
+
+// continueThroughVoxel (surface_cast.cpp): the origin of the ray `o + t d` restarted where it
+// leaves `cell`, with edge and corner ties kept in the DDA's axis order.
+vec3 continueThroughVoxel(vec3 o, vec3 d, ivec3 cell) {
+    vec3 exitOf = vec3(kInfinity);
+    int exitAxis = -1;
+    for (int a = 0; a < 3; ++a) {
+        if (d[a] == 0.0) continue;
+        exitOf[a] = (boundaryOf(cell, d, a) - o[a]) / d[a];
+        if (exitAxis < 0 || exitOf[a] < exitOf[exitAxis]) exitAxis = a;
+    }
+    if (exitAxis < 0) return o;
+    const float tExit = exitOf[exitAxis];
+    float previous = 0.0;
+    vec3 next;
+    for (int a = 0; a < 3; ++a) {
+        const float lo = float(cell[a]), hi = float(cell[a]) + 1.0;
+        float p = d[a] == 0.0 ? o[a] : o[a] + tExit * d[a];
+        if (a == exitAxis) {
+            p = boundaryOf(cell, d, a);
+        } else if (d[a] != 0.0 && exitOf[a] == tExit) {
+            const float boundary = boundaryOf(cell, d, a);
+            p = boundary - previous * d[a];
+            float t = 0.0;
+            // Bounded: a flushed denormal could otherwise stall the walk.
+            for (int i = 0; i < 64; ++i) {
+                p = d[a] > 0.0 ? nextDown(p) : nextUp(p);
+                t = (boundary - p) / d[a];
+                if (t > previous) break;
+            }
+            previous = t;
+        } else if (d[a] > 0.0) {
+            p = clamp(p, lo, nextDown(hi));
+        } else if (d[a] < 0.0) {
+            p = clamp(p, nextUp(lo), hi);
+        }
+        next[a] = p;
+    }
+    return next;
+}
+
+// castToSurface (surface_cast.cpp): past cutout texels, at most LUXEL_VOXEL_MAX_CUTOUTS times.
+SurfaceHit castToSurface(vec3 o, vec3 d) {
+    SurfaceHit s = SurfaceHit(missHit(), -1, vec4(1.0));
+    vec3 origin = o;
+    for (int continuations = 0;; ++continuations) {
+        s.hit = castRay(origin, d);
+        if (!s.hit.hit) return s;
+        const int slot = int(voxelValue(s.hit.voxel) >> 24) - 1;
+        if (slot < 0 || slot >= 254 || slot >= int(params.textureCount)) {
+            s.slot = -1;
+            s.texel = vec4(1.0);
+            return s;
+        }
+        s.slot = slot;
+        s.texel = lookupTexel(slot, s.hit.u, s.hit.v);
+        if (!(s.texel.a < 0.5)) return s;
+        if (continuations == LUXEL_VOXEL_MAX_CUTOUTS) {
+            s.hit = missHit();
+            s.slot = -1;
+            return s;
+        }
+        origin = continueThroughVoxel(o, d, s.hit.voxel);
+    }
+    return s;
+}
+
+struct Sample {
+    vec3 colour;
+    SurfaceHit surface;
+    bool reflects;
+    vec3 nextOrigin, nextDirection;
+};
+
+Sample shadeSample(vec3 o, vec3 d) {
+    Sample s;
+    s.surface = castToSurface(o, d);
+    s.reflects = false;
+    s.nextOrigin = vec3(0.0);
+    s.nextDirection = vec3(0.0);
+    if (!s.surface.hit.hit) {
+        s.colour = skyColor(d);
+        return s;
+    }
+    const Hit h = s.surface.hit;
+    const vec3 n = vec3(h.normal);
+    const bool hasNormal = h.normal != ivec3(0);
+    vec3 colour = albedo(voxelValue(h.voxel));
+    if (s.surface.slot >= 0) {
+        colour = colour * s.surface.texel.rgb;
+    } else if ((params.flags & LUXEL_VOXEL_PROCEDURAL_TEXTURE) != 0u) {
+        colour = colour * textureFactor(h);
+    }
+    if ((params.flags & LUXEL_VOXEL_FACE_SHADING) != 0u) {
+        bool inShadow = false;
+        const vec3 sun = vec3(params.sunX, params.sunY, params.sunZ);
+        if ((params.flags & LUXEL_VOXEL_SHADOWS) != 0u && hasNormal && dot(n, sun) > 0.0) {
+            inShadow = castToSurface(h.point, normalize(sun)).hit.hit;
+        }
+        colour = colour * faceFactor(h.normal, sun, params.ambient, inShadow);
+    }
+    s.colour = colour;
+    if (hasNormal) {
+        const vec3 dn = normalize(d);
+        s.nextOrigin = h.point;
+        s.nextDirection = dn - n * (2.0 * dot(dn, n));
+        s.reflects = true;
+    }
+    return s;
+}
+
+float reflectivityOf(SurfaceHit s) {
+    float r = params.reflectivity;
+    if (s.slot >= 0 && textureInfo[s.slot].reflectivity >= 0.0) r = textureInfo[s.slot].reflectivity;
+    return (isnan(r) || isinf(r)) ? 0.0 : clamp(r, 0.0, 1.0);
+}
+
+// shadeRay (shading.cpp).
+vec3 shadeRay(vec3 o, vec3 d) {
+    const int bounces = int(params.maxReflections);
+    vec3 sum = vec3(0.0);
+    if ((params.flags & LUXEL_VOXEL_ENERGY_CONSERVING) == 0u) {
+        for (int k = 1; k <= bounces + 1; ++k) {
+            const Sample s = shadeSample(o, d);
+            if (k == 1) {
+                sum = s.colour;
+            } else {
+                sum = (sum + s.colour * (1.0 / float(k))) * (float(k) / float(k + 1));
+            }
+            if (!s.reflects) break;
+            o = s.nextOrigin;
+            d = s.nextDirection;
+        }
+        return sum;
+    }
+    float weight = 1.0;
+    for (int k = 0; k <= bounces; ++k) {
+        const Sample s = shadeSample(o, d);
+        if (!s.reflects || k == bounces) {
+            sum += s.colour * weight;
+            break;
+        }
+        const float r = reflectivityOf(s.surface);
+        sum += s.colour * (weight * (1.0 - r));
+        weight *= r;
+        if (weight == 0.0) break;
+        o = s.nextOrigin;
+        d = s.nextDirection;
+    }
+    return sum;
+}

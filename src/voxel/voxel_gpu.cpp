@@ -1,0 +1,312 @@
+// VoxelGpuRenderer: world and texture upload, per-render parameters, banded dispatches of
+// voxel_render.comp.glsl (CPU reference: render() in shading.cpp).
+#include "luxel/voxel/voxel_gpu.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <numbers>
+#include <string>
+
+#include "gpu/shaders/shared/voxel_layout.h"
+#include "luxel/core/memory.h"
+#include "luxel/core/parallel.h"
+#include "luxel/core/timer.h"
+#include "luxel/core/tonemap.h"
+#include "luxel/gpu/context.h"
+#include "luxel/voxel/surface_cast.h"
+
+namespace luxel::voxel {
+
+namespace shared = gpu::shared;
+
+namespace {
+
+static_assert(LUXEL_VOXEL_MAX_CUTOUTS == kMaxCutoutContinuations);
+static_assert(sizeof(Voxel) == 4);
+
+// Rows per dispatch: keeps every dispatch short on slow devices.
+constexpr int kBandRows = 64;
+// The image size create() budgets for.
+constexpr int kBudgetWidth = 1920, kBudgetHeight = 1080;
+
+Int3 chunkCounts(Int3 size, int chunk) {
+    return {(size.x + chunk - 1) / chunk, (size.y + chunk - 1) / chunk,
+            (size.z + chunk - 1) / chunk};
+}
+
+std::uint64_t chunkTotal(Int3 chunks) {
+    return static_cast<std::uint64_t>(chunks.x) * chunks.y * chunks.z;
+}
+
+std::uint64_t texelCount(const TextureSet* textures) {
+    std::uint64_t n = 0;
+    for (int i = 0; textures && i < textures->size(); ++i) n += (*textures)[i].texels.size();
+    return n;
+}
+
+// One chunk in the GPU layout (VoxelWorld::index): z, then y, then x inside the chunk.
+void packChunk(const VoxelWorld& world, int cx, int cy, int cz, std::uint32_t* out) {
+    const int n = world.chunkSize();
+    for (int lz = 0; lz < n; ++lz) {
+        for (int ly = 0; ly < n; ++ly) {
+            for (int lx = 0; lx < n; ++lx) {
+                const Voxel v = world.get(cx * n + lx, cy * n + ly, cz * n + lz);
+                std::uint32_t word;
+                std::memcpy(&word, &v, 4);  // r | g << 8 | b << 16 | a << 24 (little endian)
+                *out++ = word;
+            }
+        }
+    }
+}
+
+template <typename T>
+std::span<const std::byte> bytesOf(const std::vector<T>& v) {
+    return std::as_bytes(std::span(v));
+}
+
+}  // namespace
+
+std::uint64_t estimateVoxelGpuMemory(Int3 size, int chunkSize, const TextureSet* textures,
+                                     int width, int height) {
+    const std::uint64_t chunks = chunkTotal(chunkCounts(size, chunkSize));
+    const std::uint64_t perChunk = static_cast<std::uint64_t>(chunkSize) * chunkSize * chunkSize;
+    const int slots = textures ? textures->size() : 0;
+    return chunks * perChunk * 4 + chunks * 4 + std::max(slots, 1) * 16 +
+           std::max<std::uint64_t>(texelCount(textures), 1) * 16 + 256 * 4 +
+           sizeof(shared::VoxelRenderParams) + static_cast<std::uint64_t>(width) * height * 16;
+}
+
+struct VoxelGpuRenderer::State {
+    gpu::Context* context = nullptr;
+    Int3 size;
+    int chunkSize = 0;
+    Int3 chunks;
+    int textureCount = 0;
+    std::uint64_t bytes = 0;
+    std::shared_ptr<gpu::Buffer> params, voxels, chunkSolid, textureInfo, texels, srgb, output;
+    std::uint64_t outputBytes = 0;
+    gpu::Program* program = nullptr;
+
+    Status uploadChunkSolid(const VoxelWorld& world) {
+        std::vector<std::uint32_t> counts(chunkTotal(chunks));
+        std::size_t i = 0;
+        for (int cz = 0; cz < chunks.z; ++cz) {
+            for (int cy = 0; cy < chunks.y; ++cy) {
+                for (int cx = 0; cx < chunks.x; ++cx)
+                    counts[i++] = world.chunkSolidCount(cx, cy, cz);
+            }
+        }
+        return context->upload(*chunkSolid, bytesOf(counts));
+    }
+
+    // Uploads chunks [cx0, cx1) of row (cy, cz): contiguous in the GPU layout.
+    Status uploadChunkRow(const VoxelWorld& world, int cx0, int cx1, int cy, int cz) {
+        const std::size_t perChunk = static_cast<std::size_t>(chunkSize) * chunkSize * chunkSize;
+        std::vector<std::uint32_t> words(perChunk * (cx1 - cx0));
+        parallelForRange(cx1 - cx0, 1, [&](int begin, int end) {
+            for (int i = begin; i < end; ++i) {
+                packChunk(world, cx0 + i, cy, cz, words.data() + perChunk * i);
+            }
+        });
+        const std::uint64_t firstChunk =
+            (static_cast<std::uint64_t>(cz) * chunks.y + cy) * chunks.x + cx0;
+        return context->upload(*voxels, bytesOf(words), firstChunk * perChunk * 4);
+    }
+};
+
+VoxelGpuRenderer::VoxelGpuRenderer(std::unique_ptr<State> state) : state_(std::move(state)) {}
+VoxelGpuRenderer::VoxelGpuRenderer(VoxelGpuRenderer&&) noexcept = default;
+VoxelGpuRenderer& VoxelGpuRenderer::operator=(VoxelGpuRenderer&&) noexcept = default;
+VoxelGpuRenderer::~VoxelGpuRenderer() = default;
+
+std::uint64_t VoxelGpuRenderer::deviceBytes() const {
+    return state_ ? state_->bytes + state_->outputBytes : 0;
+}
+
+Result<VoxelGpuRenderer> VoxelGpuRenderer::create(gpu::Context& context, const VoxelWorld& world,
+                                                  const TextureSet* textures,
+                                                  std::uint64_t memoryBudget) {
+    const Int3 size = world.size();
+    const std::uint64_t needed =
+        estimateVoxelGpuMemory(size, world.chunkSize(), textures, kBudgetWidth, kBudgetHeight);
+    const std::uint64_t limit = memoryBudget > 0 ? memoryBudget : context.device().deviceLocalBytes;
+    if (limit > 0 && needed > limit) {
+        return Error("voxel world " + std::to_string(size.x) + "x" + std::to_string(size.y) + "x" +
+                     std::to_string(size.z) + " needs " + formatBytes(needed) +
+                     " of device memory (with a 1920x1080 image), " +
+                     (memoryBudget > 0 ? "the budget is " : "the device has ") +
+                     formatBytes(limit));
+    }
+    auto state = std::make_unique<State>();
+    State& s = *state;
+    s.context = &context;
+    s.size = size;
+    s.chunkSize = world.chunkSize();
+    s.chunks = chunkCounts(size, s.chunkSize);
+    s.textureCount = textures ? textures->size() : 0;
+    auto program =
+        context.program("voxel_render", LUXEL_VOXEL_BUFFERS, sizeof(shared::VoxelBandPush));
+    if (!program) return program.error();
+    s.program = *program;
+
+    const std::uint64_t perChunk =
+        static_cast<std::uint64_t>(s.chunkSize) * s.chunkSize * s.chunkSize;
+    const std::uint64_t chunks = chunkTotal(s.chunks);
+    // Texture table and texels (one dummy entry each when there are none: no empty buffers).
+    std::vector<shared::VoxelTextureInfo> infos(std::max(s.textureCount, 1));
+    std::vector<Texel> texels;
+    for (int i = 0; i < s.textureCount; ++i) {
+        const Texture& t = (*textures)[i];
+        infos[i] = {static_cast<std::uint32_t>(texels.size()), static_cast<std::uint32_t>(t.width),
+                    static_cast<std::uint32_t>(t.height), t.reflectivity.value_or(-1.0f)};
+        texels.insert(texels.end(), t.texels.begin(), t.texels.end());
+    }
+    if (texels.empty()) texels.push_back(Texel{});
+    std::vector<float> srgb(256);
+    for (int i = 0; i < 256; ++i) srgb[i] = srgbToLinear(i / 255.0f);  // albedo() in shading.cpp
+
+    struct Allocation {
+        std::shared_ptr<gpu::Buffer>* buffer;
+        std::uint64_t bytes;
+    };
+    for (const Allocation& a :
+         {Allocation{&s.params, sizeof(shared::VoxelRenderParams)},
+          Allocation{&s.voxels, chunks * perChunk * 4}, Allocation{&s.chunkSolid, chunks * 4},
+          Allocation{&s.textureInfo, infos.size() * 16}, Allocation{&s.texels, texels.size() * 16},
+          Allocation{&s.srgb, srgb.size() * 4}}) {
+        auto b = context.createBuffer(a.bytes);
+        if (!b) return b.error();
+        *a.buffer = *b;
+        s.bytes += a.bytes;
+    }
+    for (int cz = 0; cz < s.chunks.z; ++cz) {
+        for (int cy = 0; cy < s.chunks.y; ++cy) {
+            if (Status st = s.uploadChunkRow(world, 0, s.chunks.x, cy, cz); !st) return st.error();
+        }
+    }
+    if (Status st = s.uploadChunkSolid(world); !st) return st.error();
+    if (Status st = context.upload(*s.textureInfo, bytesOf(infos)); !st) return st.error();
+    if (Status st = context.upload(*s.texels, bytesOf(texels)); !st) return st.error();
+    if (Status st = context.upload(*s.srgb, bytesOf(srgb)); !st) return st.error();
+    return VoxelGpuRenderer(std::move(state));
+}
+
+Status VoxelGpuRenderer::updateRegion(const VoxelWorld& world, Int3 min, Int3 maxExclusive) {
+    State& s = *state_;
+    if (world.size() != s.size || world.chunkSize() != s.chunkSize) {
+        return Error("updateRegion: the world is not the one the renderer was created with");
+    }
+    Int3 lo, hi;
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = std::clamp(min[a], 0, s.size[a]);
+        hi[a] = std::clamp(maxExclusive[a], 0, s.size[a]);
+        if (lo[a] >= hi[a]) return Ok{};  // nothing inside the world
+        lo[a] /= s.chunkSize;
+        hi[a] = (hi[a] - 1) / s.chunkSize + 1;
+    }
+    for (int cz = lo.z; cz < hi.z; ++cz) {
+        for (int cy = lo.y; cy < hi.y; ++cy) {
+            if (Status st = s.uploadChunkRow(world, lo.x, hi.x, cy, cz); !st) return st;
+        }
+    }
+    return s.uploadChunkSolid(world);
+}
+
+Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions& options,
+                                       std::vector<gpu::PassTiming>* timings) {
+    State& s = *state_;
+    if (options.materialReflectivity) {
+        return Error(
+            "the GPU voxel renderer takes reflectivity per texture, not a per-voxel callback");
+    }
+    const int w = camera.width(), h = camera.height();
+    const std::uint64_t outputBytes = static_cast<std::uint64_t>(w) * h * 16;
+    Stopwatch upload;
+    if (!s.output || s.outputBytes < outputBytes) {
+        s.output.reset();
+        s.outputBytes = 0;
+        auto b = s.context->createBuffer(outputBytes);
+        if (!b) return b.error();
+        s.output = *b;
+        s.outputBytes = outputBytes;
+    }
+
+    shared::VoxelRenderParams p{};
+    p.sizeX = s.size.x, p.sizeY = s.size.y, p.sizeZ = s.size.z;
+    p.chunkShift = static_cast<std::uint32_t>(std::countr_zero(static_cast<unsigned>(s.chunkSize)));
+    p.chunksX = s.chunks.x, p.chunksY = s.chunks.y, p.chunksZ = s.chunks.z;
+    p.stepCap = options.stepCap > 0 ? options.stepCap : 3 * (s.size.x + s.size.y + s.size.z);
+    p.width = w, p.height = h;
+    p.textureCount = s.textureCount;
+    p.flags = (options.faceShading ? LUXEL_VOXEL_FACE_SHADING : 0u) |
+              (options.shadows ? LUXEL_VOXEL_SHADOWS : 0u) |
+              (options.textures ? LUXEL_VOXEL_PROCEDURAL_TEXTURE : 0u) |
+              (options.reflectionMode == ShadeOptions::ReflectionMode::EnergyConserving
+                   ? LUXEL_VOXEL_ENERGY_CONSERVING
+                   : 0u);
+    const Vec3d pos = camera.position(), f = camera.forward(), r = camera.right(), u = camera.up();
+    p.positionX = float(pos.x), p.positionY = float(pos.y), p.positionZ = float(pos.z);
+    // Camera::create's tanHalf_ and rayAt's aspect, rounded to float.
+    p.tanHalf = float(std::tan(0.5 * camera.fovYDegrees() * (std::numbers::pi / 180.0)));
+    p.aspect = float(static_cast<double>(w) / h);
+    p.forwardX = float(f.x), p.forwardY = float(f.y), p.forwardZ = float(f.z);
+    p.rightX = float(r.x), p.rightY = float(r.y), p.rightZ = float(r.z);
+    p.upX = float(u.x), p.upY = float(u.y), p.upZ = float(u.z);
+    p.maxReflections = static_cast<std::uint32_t>(std::max(options.maxReflections, 0));
+    p.ambient = options.ambient;
+    p.sunX = options.sunDirection.x, p.sunY = options.sunDirection.y,
+    p.sunZ = options.sunDirection.z;
+    p.reflectivity = options.reflectivity;
+    p.skyTopR = options.skyTop.r, p.skyTopG = options.skyTop.g, p.skyTopB = options.skyTop.b;
+    p.skyHorizonR = options.skyHorizon.r, p.skyHorizonG = options.skyHorizon.g,
+    p.skyHorizonB = options.skyHorizon.b;
+    p.textureStrength = options.textureStrength;
+    p.textureTexels = static_cast<std::uint32_t>(std::max(options.textureTexels, 1));
+    if (Status st = s.context->upload(*s.params, std::as_bytes(std::span(&p, 1))); !st) {
+        return st.error();
+    }
+    if (timings) timings->push_back({"upload parameters (CPU)", upload.milliseconds()});
+
+    std::vector<gpu::Dispatch> dispatches;
+    for (int row = 0; row < h; row += kBandRows) {
+        gpu::Dispatch d;
+        d.name = "voxel render rows " + std::to_string(row);
+        d.program = s.program;
+        d.buffers = {s.params.get(), s.voxels.get(), s.chunkSolid.get(), s.textureInfo.get(),
+                     s.texels.get(), s.srgb.get(),   s.output.get()};
+        const int rows = std::min(kBandRows, h - row);
+        d.setPush(shared::VoxelBandPush{static_cast<std::uint32_t>(row),
+                                        static_cast<std::uint32_t>(rows)});
+        d.groups[0] =
+            static_cast<std::uint32_t>((w + LUXEL_VOXEL_GROUP_X - 1) / LUXEL_VOXEL_GROUP_X);
+        d.groups[1] =
+            static_cast<std::uint32_t>((rows + LUXEL_VOXEL_GROUP_Y - 1) / LUXEL_VOXEL_GROUP_Y);
+        dispatches.push_back(std::move(d));
+    }
+    auto passes = s.context->run(dispatches);
+    if (!passes) return passes.error();
+    if (timings) {
+        double total = 0;
+        for (const gpu::PassTiming& t : *passes) total += t.milliseconds;
+        timings->push_back({"voxel render (GPU)", total});
+    }
+
+    Stopwatch download;
+    std::vector<float> rgba(static_cast<std::size_t>(w) * h * 4);
+    if (Status st = s.context->download(*s.output, std::as_writable_bytes(std::span(rgba))); !st) {
+        return st.error();
+    }
+    Image image(w, h, 3);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const float* px = &rgba[(static_cast<std::size_t>(y) * w + x) * 4];
+            image.setRgb(x, y, {px[0], px[1], px[2]});
+        }
+    }
+    if (timings) timings->push_back({"download image (CPU)", download.milliseconds()});
+    return image;
+}
+
+}  // namespace luxel::voxel

@@ -1,0 +1,238 @@
+// The GPU voxel renderer against the CPU one (render() in shading.h) on whatever Vulkan device is
+// present (lavapipe on CPU-only machines; skipped, saying why, without one). The CPU traces in
+// double and the GPU in float, so a ray grazing a voxel edge can pick the other voxel: the
+// textured terrain bounds the share of such pixels; simple axis-aligned scenes must agree
+// exactly at 8 bits. Validation layers are on and any message fails the test.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "gpu/shaders/shared/voxel_layout.h"
+#include "luxel/core/tonemap.h"
+#include "luxel/gpu/context.h"
+#include "luxel/voxel/generators.h"
+#include "luxel/voxel/surface_cast.h"
+#include "luxel/voxel/voxel_gpu.h"
+#include "luxel/voxel/voxel_scene.h"
+
+namespace luxel::voxel {
+namespace {
+
+std::unique_ptr<gpu::Context> makeContext() {
+    auto context = gpu::Context::create({.device = "", .validation = true});
+    if (!context) return nullptr;
+    return std::move(*context);
+}
+
+#define LUXEL_REQUIRE_GPU(context) \
+    auto context = makeContext();  \
+    if (!context) GTEST_SKIP() << "no Vulkan device: " << gpu::Context::create().error().message()
+
+// 8-bit display values (ACES tonemap, sRGB) of two renders, compared channel by channel.
+struct Parity {
+    double differingPixels = 0;  // share of pixels with a channel off by more than 1/255
+    double meanAbs = 0;          // mean |difference| over all channels, in 1/255 units
+    int maxAbs = 0;              // largest channel difference, in 1/255 units
+};
+
+Parity compareDisplay(const Image& a, const Image& b) {
+    const Image ta = toneMap(a, {}), tb = toneMap(b, {});
+    Parity p;
+    long differing = 0;
+    double sum = 0;
+    for (int y = 0; y < a.height(); ++y) {
+        for (int x = 0; x < a.width(); ++x) {
+            int worst = 0;
+            for (int c = 0; c < 3; ++c) {
+                const auto byte = [&](const Image& im) {
+                    return static_cast<int>(std::lround(linearToSrgb(im.at(x, y, c)) * 255.0f));
+                };
+                const int d = std::abs(byte(ta) - byte(tb));
+                worst = std::max(worst, d);
+                sum += d;
+            }
+            differing += worst > 1;
+            p.maxAbs = std::max(p.maxAbs, worst);
+        }
+    }
+    p.differingPixels = static_cast<double>(differing) / a.pixelCount();
+    p.meanAbs = sum / (3.0 * a.pixelCount());
+    return p;
+}
+
+void print(const char* what, const Parity& p) {
+    std::printf("%s: %.4f%% pixels differ by > 1/255, mean |diff| %.5f/255, max %d/255\n", what,
+                100.0 * p.differingPixels, p.meanAbs, p.maxAbs);
+}
+
+// Slot 0: bricks-like opaque tint; slot 1: leaves with every other texel a cutout.
+TextureSet testTextures() {
+    TextureSet set;
+    Texture opaque{"opaque", 4, 4, {}, 0.0f};
+    for (int i = 0; i < 16; ++i) {
+        opaque.texels.push_back({0.4f + 0.1f * (i % 4), 0.6f, 0.3f + 0.05f * (i / 4), 1.0f});
+    }
+    Texture holes{"holes", 4, 4, {}, std::nullopt};
+    for (int i = 0; i < 16; ++i) {
+        holes.texels.push_back({0.3f, 0.8f, 0.2f, ((i + i / 4) % 2) ? 0.0f : 1.0f});
+    }
+    EXPECT_TRUE(set.add(opaque).ok());
+    EXPECT_TRUE(set.add(holes).ok());
+    return set;
+}
+
+// A 96 x 48 x 96 terrain with a mirror-ish sphere, a textured wall and a cutout canopy.
+VoxelWorld texturedTerrain() {
+    VoxelWorld world = VoxelWorld::create({96, 48, 96}, 16).value();
+    TerrainOptions t;
+    t.seed = 11;
+    t.frequency = 0.02;
+    EXPECT_TRUE(generateTerrain(world, t).ok());
+    addSphere(world, {48, 30, 50}, 7, Voxel{230, 230, 240, 255});
+    addBox(world, {20, 10, 60}, {60, 26, 62}, Voxel{255, 255, 255, alphaForSlot(0)});
+    addBox(world, {30, 28, 20}, {70, 30, 45}, Voxel{255, 255, 255, alphaForSlot(1)});
+    return world;
+}
+
+ShadeOptions terrainShading(ShadeOptions::ReflectionMode mode) {
+    ShadeOptions o;
+    o.sunDirection = {0.4f, 1.0f, 0.3f};
+    o.maxReflections = 2;
+    o.reflectionMode = mode;
+    o.reflectivity = 0.3f;
+    return o;
+}
+
+TEST(VoxelGpuLayout, OffsetsMatchTheShaderSide) {
+    // std430 with 4-byte scalars only: each field at 4 x its index.
+    EXPECT_EQ(sizeof(gpu::shared::VoxelRenderParams), 160u);
+    EXPECT_EQ(offsetof(gpu::shared::VoxelRenderParams, chunkShift), 12u);
+    EXPECT_EQ(offsetof(gpu::shared::VoxelRenderParams, flags), 44u);
+    EXPECT_EQ(offsetof(gpu::shared::VoxelRenderParams, aspect), 76u);
+    EXPECT_EQ(offsetof(gpu::shared::VoxelRenderParams, ambient), 108u);
+    EXPECT_EQ(offsetof(gpu::shared::VoxelRenderParams, skyTopR), 128u);
+    EXPECT_EQ(offsetof(gpu::shared::VoxelRenderParams, skyHorizonB), 152u);
+    EXPECT_EQ(sizeof(gpu::shared::VoxelTextureInfo), 16u);
+    EXPECT_EQ(sizeof(gpu::shared::VoxelBandPush), 8u);
+    EXPECT_EQ(LUXEL_VOXEL_MAX_CUTOUTS, kMaxCutoutContinuations);
+}
+
+TEST(VoxelGpu, MemoryEstimateAndRefusal) {
+    // 512^3 RGBA in 32^3 chunks: 512 MiB of voxels plus small tables and the image.
+    const std::uint64_t big = estimateVoxelGpuMemory({512, 512, 512}, 32, nullptr, 0, 0);
+    EXPECT_GE(big, std::uint64_t{512} << 20);
+    EXPECT_LT(big, (std::uint64_t{512} << 20) + (1u << 20));
+    LUXEL_REQUIRE_GPU(context);
+    const VoxelWorld world = VoxelWorld::create({64, 64, 64}, 16).value();
+    auto refused = VoxelGpuRenderer::create(*context, world, nullptr, 1u << 20);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().message().find("voxel world 64x64x64 needs"), std::string::npos)
+        << refused.error().message();
+    EXPECT_NE(refused.error().message().find("the budget is 1.0 MiB"), std::string::npos)
+        << refused.error().message();
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
+// Axis-aligned boxes, axis-aligned sun, camera looking along an axis: every pixel agrees.
+TEST(VoxelGpu, SimpleAxisAlignedSceneMatchesExactly) {
+    LUXEL_REQUIRE_GPU(context);
+    VoxelWorld world = VoxelWorld::create({32, 16, 32}, 8).value();
+    addBox(world, {0, 0, 0}, {32, 2, 32}, Voxel{180, 180, 180, 255});
+    addBox(world, {10, 2, 12}, {14, 8, 16}, Voxel{200, 60, 40, 255});
+    addBox(world, {18, 2, 20}, {26, 5, 22}, Voxel{60, 90, 200, 255});
+    const Camera camera = Camera::create({16.25, 9.5, 1.5}, 0, -20, 60, 96, 64).value();
+    ShadeOptions options;
+    options.sunDirection = {0.0f, 1.0f, 0.0f};
+    options.maxReflections = 1;
+    auto gpu = VoxelGpuRenderer::create(*context, world);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    auto image = gpu->render(camera, options);
+    ASSERT_TRUE(image.ok()) << image.error().message();
+    const Parity p = compareDisplay(*image, render(world, camera, options));
+    print("axis-aligned boxes", p);
+    EXPECT_LE(p.maxAbs, 1);
+    EXPECT_EQ(p.differingPixels, 0.0);
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
+// Terrain, reflections, shadows, procedural and PNG-style textures with cutouts, both modes.
+TEST(VoxelGpu, TexturedTerrainMatchesTheCpu) {
+    LUXEL_REQUIRE_GPU(context);
+    const VoxelWorld world = texturedTerrain();
+    const TextureSet textures = testTextures();
+    const Camera camera = Camera::lookAt({48, 44, -10}, {48, 20, 50}, 60, 160, 96).value();
+    auto gpu = VoxelGpuRenderer::create(*context, world, &textures);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    for (auto mode : {ShadeOptions::ReflectionMode::SeedRunningAverage,
+                      ShadeOptions::ReflectionMode::EnergyConserving}) {
+        const ShadeOptions options = terrainShading(mode);
+        auto image = gpu->render(camera, options);
+        ASSERT_TRUE(image.ok()) << image.error().message();
+        const Parity p = compareDisplay(*image, render(world, camera, options, &textures));
+        print(mode == ShadeOptions::ReflectionMode::EnergyConserving ? "terrain, energy"
+                                                                     : "terrain, seed",
+              p);
+        EXPECT_LT(p.differingPixels, 0.005);
+        EXPECT_LT(p.meanAbs, 0.05);
+    }
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
+// The shipped garden: PNG textures, cutout leaves, per-texture reflectivity.
+TEST(VoxelGpu, GardenSceneMatchesTheCpu) {
+    LUXEL_REQUIRE_GPU(context);
+    auto scene =
+        loadVoxelScene(std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/garden.json", 192, 108);
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    auto gpu = VoxelGpuRenderer::create(*context, scene->world, &scene->textures);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    auto image = gpu->render(scene->camera, scene->shading);
+    ASSERT_TRUE(image.ok()) << image.error().message();
+    const Parity p = compareDisplay(
+        *image, render(scene->world, scene->camera, scene->shading, &scene->textures));
+    print("garden", p);
+    EXPECT_LT(p.differingPixels, 0.005);
+    EXPECT_LT(p.meanAbs, 0.05);
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
+TEST(VoxelGpu, UpdateRegionMatchesACpuRenderOfTheEditedWorld) {
+    LUXEL_REQUIRE_GPU(context);
+    VoxelWorld world = texturedTerrain();
+    const TextureSet textures = testTextures();
+    const Camera camera = Camera::lookAt({48, 44, -10}, {48, 20, 50}, 60, 128, 80).value();
+    const ShadeOptions options = terrainShading(ShadeOptions::ReflectionMode::EnergyConserving);
+    auto gpu = VoxelGpuRenderer::create(*context, world, &textures);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    const Image before = gpu->render(camera, options).value();
+    // Carve the sphere out, put a block in the sky (a chunk that was empty before).
+    addSphere(world, {48, 30, 50}, 7.5f, Voxel{});
+    addBox(world, {40, 36, 30}, {50, 44, 36}, Voxel{250, 200, 40, 255});
+    ASSERT_TRUE(gpu->updateRegion(world, {40, 22, 30}, {57, 44, 58}).ok());
+    auto after = gpu->render(camera, options);
+    ASSERT_TRUE(after.ok()) << after.error().message();
+    const Parity p = compareDisplay(*after, render(world, camera, options, &textures));
+    print("after updateRegion", p);
+    EXPECT_LT(p.differingPixels, 0.005);
+    EXPECT_GT(compareDisplay(before, *after).differingPixels, 0.01);  // the edit shows
+    // A region outside the world uploads nothing and is fine.
+    EXPECT_TRUE(gpu->updateRegion(world, {-10, -10, -10}, {-1, -1, -1}).ok());
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
+TEST(VoxelGpu, CallbackReflectivityIsRefused) {
+    LUXEL_REQUIRE_GPU(context);
+    const VoxelWorld world = VoxelWorld::create({8, 8, 8}, 8).value();
+    auto gpu = VoxelGpuRenderer::create(*context, world);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    ShadeOptions options;
+    options.materialReflectivity = [](const Voxel&) { return 0.5f; };
+    const Camera camera = Camera::create({4, 4, -4}, 0, 0, 60, 8, 8).value();
+    auto image = gpu->render(camera, options);
+    ASSERT_FALSE(image.ok());
+    EXPECT_NE(image.error().message().find("per texture"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace luxel::voxel
