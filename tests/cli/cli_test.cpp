@@ -310,6 +310,20 @@ TEST_F(Cli, RendersVoxelScenes) {
     expectError("render " + bad + " --out " + path("x.png"), "camera.pitch");
 }
 
+TEST_F(Cli, BenchesVoxelScenes) {
+    const std::string scene = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/garden.json";
+    RunResult r = runLuxel("bench " + scene + " --sizes 64x36,80x45 --repeat 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("voxel ray casting on the cpu"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("\n      80x45 "), std::string::npos) << r.output;
+    expectError("bench " + scene + " --sizes 64x36,banana", "--sizes");
+    expectError("bench " + scene + " --repeat 0", "--repeat");
+    if (runLuxel("devices").exitCode != 0) GTEST_SKIP() << "no Vulkan device";
+    r = runLuxel("bench " + scene + " --backend gpu --sizes 64x36 --repeat 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("dispatch ms"), std::string::npos) << r.output;
+}
+
 TEST_F(Cli, HrcRendersAndRefusesSizesThatDoNotFit) {
     const std::string scene = write("small.json", kSmallScene);
     RunResult r = runLuxel("render " + scene + " --solver hrc --out " + path("h.exr"));

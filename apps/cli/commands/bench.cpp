@@ -1,5 +1,5 @@
 // `luxel bench`: HRC frame times over canvas sizes, on the CPU or the GPU, with the GPU passes
-// (timestamp queries) summed by kind.
+// (timestamp queries) summed by kind. Voxel scenes go to bench_voxel.cpp.
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -11,12 +11,13 @@
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rasterize.h"
 #include "luxel/gpu/context.h"
+#include "luxel/voxel/voxel_scene.h"
 
 namespace luxel::cli {
 namespace {
 
 struct BenchArgs {
-    std::string scene = "scenes/2d/room.json", backend = "cpu", device, sizes = "256,512,1024,2048";
+    std::string scene = "scenes/2d/room.json", backend = "cpu", device, sizes;
     int repeat = 3;
 };
 
@@ -43,7 +44,10 @@ std::string passKind(const std::string& name) {
 }
 
 int runBench(const BenchArgs& args) {
-    auto sizes = parseSizes(args.sizes);
+    if (voxel::isVoxelSceneFile(args.scene)) {
+        return benchVoxelScene({args.scene, args.backend, args.device, args.sizes, args.repeat});
+    }
+    auto sizes = parseSizes(args.sizes.empty() ? "256,512,1024,2048" : args.sizes);
     if (!sizes) return reportError(sizes.error());
     if (args.backend != "cpu" && args.backend != "gpu") {
         return reportError(Error("--backend '" + args.backend + "' is not cpu or gpu"));
@@ -120,8 +124,9 @@ Runner addBenchCommand(CLI::App& app) {
         ->capture_default_str();
     app.add_option("--backend", args->backend, "cpu or gpu")->capture_default_str();
     app.add_option("--device", args->device, "GPU: device index or part of its name");
-    app.add_option("--sizes", args->sizes, "comma-separated square sizes (e.g. ...,4096,8192)")
-        ->capture_default_str();
+    app.add_option("--sizes", args->sizes,
+                   "2D: comma-separated square sizes (default 256,512,1024,2048); voxel: "
+                   "comma-separated WxH (default: the scene's camera size)");
     app.add_option("--repeat", args->repeat, "runs per size (the best is printed)")
         ->capture_default_str();
     return [args] { return runBench(*args); };

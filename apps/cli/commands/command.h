@@ -61,4 +61,12 @@ struct VoxelRenderRequest {
 };
 int renderVoxelScene(const VoxelRenderRequest& request);
 
+// `luxel bench` on a voxel scene: frame times at each of `sizes` (comma-separated WxH; empty = the
+// scene's camera size) on the CPU or the GPU.
+struct VoxelBenchRequest {
+    std::string scene, backend = "cpu", device, sizes;
+    int repeat = 3;
+};
+int benchVoxelScene(const VoxelBenchRequest& request);
+
 }  // namespace luxel::cli
