@@ -44,6 +44,12 @@ start=$(date +%s%N)
 ms=$(( ($(date +%s%N) - start) / 1000000 ))
 printf '%-14s %-10s %4d.%02d    %s\n' "terrain" "960x540" $((ms / 1000)) $((ms % 1000 / 10)) \
   "out/terrain.exr (radiance, linear) out/terrain.png (voxel ray casting)"
+# Textured voxels: PNG textures, cutout leaves casting dappled shadows.
+start=$(date +%s%N)
+"$luxel" render scenes/voxel/garden.json --quiet --out out/garden.png
+ms=$(( ($(date +%s%N) - start) / 1000000 ))
+printf '%-14s %-10s %4d.%02d    %s\n' "garden" "960x540" $((ms / 1000)) $((ms % 1000 / 10)) \
+  "out/garden.png (textures with cutouts)"
 
 # Reference renders double as the benchmark's error yardstick (bench/bench_hrc.cpp).
 mkdir -p out/reference-cache
