@@ -1,0 +1,55 @@
+// ImGui statistics overlay.
+#include "overlay.h"
+
+#include <imgui.h>
+
+namespace luxel::viewer {
+
+void RateMeter::tick(double seconds) {
+    if (last_ >= 0.0 && seconds > last_) {
+        const double instant = 1.0 / (seconds - last_);
+        // Smooth over about ten events, but follow big changes (a solver switch) at once.
+        rate_ = rate_ <= 0.0 || instant > 2 * rate_ || instant < 0.5 * rate_
+                    ? instant
+                    : 0.9 * rate_ + 0.1 * instant;
+    }
+    last_ = seconds;
+}
+
+void drawOverlay(const OverlayInfo& info, ViewerMode& mode) {
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowBgAlpha(0.75f);
+    ImGui::Begin("luxel-view", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::Text("%s mode   window %.0f fps   render %.1f fps", mode.name().c_str(), info.windowFps,
+                info.renderFps);
+    ImGui::Text("internal %dx%d   window %dx%d", mode.internalWidth(), mode.internalHeight(),
+                info.windowWidth, info.windowHeight);
+    if (const Frame* f = info.frame) {
+        ImGui::Text("backend %s   device %s", f->backend.c_str(), f->device.c_str());
+        ImGui::Text("frame %.1f ms%s", f->renderMilliseconds,
+                    f->samples > 0 ? "" : (f->converged ? "" : "  (refining)"));
+        if (f->samples > 0) {
+            ImGui::SameLine();
+            ImGui::Text("  %d rays/pixel%s", f->samples, f->converged ? "" : " (refining)");
+        }
+        if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_SizingFixedFit)) {
+            for (const PassTime& p : f->passes) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(p.name.c_str());
+                ImGui::TableNextColumn();
+                ImGui::Text("%8.2f ms", p.milliseconds);
+            }
+            ImGui::EndTable();
+        }
+        if (!f->note.empty()) ImGui::TextWrapped("note: %s", f->note.c_str());
+    } else {
+        ImGui::TextUnformatted("rendering the first frame...");
+    }
+    if (!info.lastScreenshot.empty()) ImGui::Text("wrote %s", info.lastScreenshot.c_str());
+    ImGui::TextUnformatted("F1 panels   F12 screenshot   Esc quit");
+    if (ImGui::CollapsingHeader("controls", ImGuiTreeNodeFlags_DefaultOpen)) mode.drawPanel();
+    ImGui::End();
+}
+
+}  // namespace luxel::viewer
