@@ -71,6 +71,15 @@ int runApp(const ViewerOptions& options, ViewerMode& mode, std::optional<Script>
                         "); is there a display? Set DISPLAY or run under xvfb-run",
                     kExitNoDisplay);
     }
+    // Without a display SDL falls back to its offscreen driver, which would run invisibly
+    // forever; only an explicit SDL_VIDEODRIVER may choose it.
+    const std::string driver = SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "";
+    if ((driver == "offscreen" || driver == "dummy") && !SDL_getenv("SDL_VIDEODRIVER")) {
+        SDL_Quit();
+        return fail("cannot open a window (no display: SDL found only its '" + driver +
+                        "' driver); set DISPLAY or run under xvfb-run",
+                    kExitNoDisplay);
+    }
     Window w;
     const std::string title = "luxel-view: " + options.scene;
     w.window =
@@ -78,6 +87,7 @@ int runApp(const ViewerOptions& options, ViewerMode& mode, std::optional<Script>
                          windowHeight, SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
     if (!w.window)
         return fail(std::string("cannot create a window: ") + SDL_GetError(), kExitNoDisplay);
+    SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "linear");  // smooth upscaling of small frames
     w.renderer = SDL_CreateRenderer(w.window, -1, SDL_RENDERER_ACCELERATED);
     if (!w.renderer) w.renderer = SDL_CreateRenderer(w.window, -1, SDL_RENDERER_SOFTWARE);
     if (!w.renderer) {

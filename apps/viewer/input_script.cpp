@@ -68,13 +68,13 @@ std::string parseArguments(const std::vector<std::string>& args, ScriptEvent& ev
         case ScriptCommand::Wait:
             if (auto e = expectCount(1, 1, "'wait SECONDS'"); !e.empty()) return e;
             if (!parseNumber(args[0], event.seconds) || event.seconds < 0) {
-                return "wait: '" + args[0] + "' is not a number of seconds >= 0";
+                return "'" + args[0] + "' is not a number of seconds >= 0";
             }
             return "";
         case ScriptCommand::WaitFrames:
             if (auto e = expectCount(1, 1, "'wait_frames N'"); !e.empty()) return e;
             if (!parseInt(args[0], event.frames) || event.frames < 0) {
-                return "wait_frames: '" + args[0] + "' is not a frame count >= 0";
+                return "'" + args[0] + "' is not a frame count >= 0";
             }
             return "";
         case ScriptCommand::WaitRender:

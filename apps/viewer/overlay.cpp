@@ -6,14 +6,17 @@
 namespace luxel::viewer {
 
 void RateMeter::tick(double seconds) {
-    if (last_ >= 0.0 && seconds > last_) {
-        const double instant = 1.0 / (seconds - last_);
-        // Smooth over about ten events, but follow big changes (a solver switch) at once.
-        rate_ = rate_ <= 0.0 || instant > 2 * rate_ || instant < 0.5 * rate_
-                    ? instant
-                    : 0.9 * rate_ + 0.1 * instant;
+    if (windowStart_ < 0.0) {
+        windowStart_ = seconds;
+        return;
     }
-    last_ = seconds;
+    ++count_;
+    // Events per second over windows of at least half a second: steady enough to read.
+    if (seconds - windowStart_ >= 0.5) {
+        rate_ = count_ / (seconds - windowStart_);
+        windowStart_ = seconds;
+        count_ = 0;
+    }
 }
 
 void drawOverlay(const OverlayInfo& info, ViewerMode& mode) {
@@ -48,7 +51,7 @@ void drawOverlay(const OverlayInfo& info, ViewerMode& mode) {
     }
     if (!info.lastScreenshot.empty()) ImGui::Text("wrote %s", info.lastScreenshot.c_str());
     ImGui::TextUnformatted("F1 panels   F12 screenshot   Esc quit");
-    if (ImGui::CollapsingHeader("controls", ImGuiTreeNodeFlags_DefaultOpen)) mode.drawPanel();
+    if (ImGui::CollapsingHeader("controls")) mode.drawPanel();
     ImGui::End();
 }
 

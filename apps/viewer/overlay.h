@@ -17,7 +17,8 @@ class RateMeter {
     double perSecond() const { return rate_; }
 
   private:
-    double last_ = -1.0, rate_ = 0.0;
+    double windowStart_ = -1.0, rate_ = 0.0;
+    int count_ = 0;
 };
 
 struct OverlayInfo {

@@ -50,12 +50,14 @@ class RenderWorker {
         wake_.notify_all();
     }
 
-    // The newest finished frame, or nullptr before the first. `fresh` says whether it arrived
-    // since the previous call.
+    // The newest finished frame, or nullptr before the first. With `fresh`, says whether it
+    // arrived since the previous call that asked.
     std::shared_ptr<const Frame> latest(bool* fresh = nullptr) {
         std::lock_guard lock(mutex_);
-        if (fresh) *fresh = latestSerial_ != takenSerial_;
-        takenSerial_ = latestSerial_;
+        if (fresh) {
+            *fresh = latestSerial_ != takenSerial_;
+            takenSerial_ = latestSerial_;
+        }
         return latest_;
     }
 

@@ -45,6 +45,11 @@ std::vector<ScriptEvent> ScriptPlayer::due(const ScriptClock& clock) {
     std::vector<ScriptEvent> events;
     while (!finished() && !failure_) {
         const ScriptEvent& event = script_.events[next_];
+        // The clock was read before this frame's events ran: a render wait after them must look
+        // at the next frame's clock, which knows about the state they changed.
+        const bool renderWait = event.command == ScriptCommand::WaitRender ||
+                                event.command == ScriptCommand::WaitConverged;
+        if (renderWait && !events.empty()) break;
         if (!waitOver(event, clock)) break;
         const bool isWait = event.command == ScriptCommand::Wait ||
                             event.command == ScriptCommand::WaitFrames ||

@@ -68,28 +68,47 @@ TEST(Renderer2D, ReferenceAccumulatesProgressively) {
     EXPECT_TRUE(renderer.hasMoreWork());
     const Frame second = renderer.step();
     EXPECT_EQ(second.samples, 8);
-    // A new state starts over.
+    // An edited scene starts over; the same state again does not.
     renderer.setState(stateFor(Solver2D::Reference));
+    EXPECT_EQ(renderer.step().samples, 12);
+    State2D edited = stateFor(Solver2D::Reference);
+    edited.sceneVersion = 2;
+    renderer.setState(std::move(edited));
     EXPECT_EQ(renderer.step().samples, 4);
 }
 
-TEST(ProgressiveReference, MeanOfPassesMatchesOneLongSolve) {
+double relativeL1(const Image& a, const Image& b) {
+    double diff = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) diff += std::fabs(a.data()[i] - b.data()[i]);
+    return diff / (meanOf(b) * static_cast<double>(a.size()));
+}
+
+TEST(ProgressiveReference, PassesAreReferenceSolvesAndTheMeanConverges) {
     gi2d::Scene2D scene = *lampScene();
     auto medium = gi2d::rasterize(scene);
     ASSERT_TRUE(medium);
     ProgressiveReference progressive(8);
-    for (int i = 0; i < 16; ++i) ASSERT_TRUE(progressive.addPass(*medium));
-    EXPECT_EQ(progressive.raysPerPixel(), 128);
+    ASSERT_TRUE(progressive.addPass(*medium));
     gi2d::ReferenceOptions options;
-    options.rays = 128;
-    auto full = gi2d::solveReference(*medium, options);
-    ASSERT_TRUE(full);
-    const Image mean = progressive.mean();
-    double diff = 0;
-    for (std::size_t i = 0; i < mean.size(); ++i)
-        diff += std::fabs(mean.data()[i] - full->data()[i]);
-    const double relative = diff / (meanOf(*full) * static_cast<double>(mean.size()));
-    EXPECT_LT(relative, 0.05) << "relative L1 between 16x8 rays and 128 rays: " << relative;
+    options.rays = 8;
+    options.seed = 1;
+    auto firstPass = gi2d::solveReference(*medium, options);
+    ASSERT_TRUE(firstPass);
+    EXPECT_EQ(progressive.mean(), *firstPass);  // pass k is the solver with seed k
+
+    options.rays = 2048;
+    auto truth = gi2d::solveReference(*medium, options);
+    ASSERT_TRUE(truth);
+    ASSERT_TRUE(progressive.addPass(*medium));
+    const double early = relativeL1(progressive.mean(), *truth);
+    while (progressive.passes() < 32) ASSERT_TRUE(progressive.addPass(*medium));
+    const double late = relativeL1(progressive.mean(), *truth);
+    EXPECT_EQ(progressive.raysPerPixel(), 256);
+    EXPECT_LT(late, 0.5 * early) << "relative L1 against 2048 rays: 2 passes " << early
+                                 << ", 32 passes " << late;
+    progressive.reset();
+    EXPECT_EQ(progressive.passes(), 0);
+    EXPECT_TRUE(progressive.mean().empty());
 }
 
 // A renderer that counts its steps, for the worker.

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -102,8 +103,9 @@ class ViewerXvfb : public testing::Test {
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }
+    // Screenshots stay for a look when a test fails or LUXEL_KEEP_VIEW_OUTPUT is set.
     void TearDown() override {
-        if (!HasFailure()) fs::remove_all(dir_);
+        if (!HasFailure() && !std::getenv("LUXEL_KEEP_VIEW_OUTPUT")) fs::remove_all(dir_);
     }
 
     std::string write(const std::string& name, const std::string& text) {
@@ -152,7 +154,8 @@ TEST_F(ViewerXvfb, DraggingTheLightMovesTheLightAndRTogglesGi) {
           "wait_render\n"
           "screenshot_window window.png\n"
           "quit\n");
-    const RunResult r = view(scene + " --size 256x256 --backend cpu --script drag.txt");
+    const RunResult r =
+        view(scene + " --size 256x256 --internal-scale 1 --backend cpu --script drag.txt");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const Image before = png("before.png"), after = png("after.png"), nogi = png("nogi.png");
     ASSERT_EQ(before.width(), 256);
@@ -193,8 +196,9 @@ TEST_F(ViewerXvfb, PaintModeDrawsAWallAndSavesAJsonTheLoaderReads) {
           "wait_render\n"
           "screenshot painted.png\n"
           "quit\n");
-    const RunResult r =
-        view(scene + " --size 256x256 --backend cpu --save painted.json --script paint.txt");
+    const RunResult r = view(
+        scene +
+        " --size 256x256 --internal-scale 1 --backend cpu --save painted.json --script paint.txt");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     auto loaded = luxel::gi2d::loadScene2D(path("painted.json"));
     ASSERT_TRUE(loaded) << loaded.error().message();
@@ -258,8 +262,8 @@ TEST_F(ViewerXvfb, BadInputGivesOneClearLineAndExitCode1) {
 
 TEST_F(ViewerXvfb, NoDisplayIsAClearErrorNotACrash) {
     const std::string scene = write("lamp.json", kLampScene);
-    const RunResult r =
-        run("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(LUXEL_VIEW_PATH) + " " + scene);
+    const RunResult r = run("env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER timeout 60 " +
+                            std::string(LUXEL_VIEW_PATH) + " " + scene);
     EXPECT_EQ(r.exitCode, 2) << r.output;
     EXPECT_NE(r.output.find("luxel-view: error: cannot open a window"), std::string::npos)
         << r.output;
