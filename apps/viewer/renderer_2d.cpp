@@ -131,8 +131,8 @@ gpu::Context* Renderer2D::gpuFor(const View2D& view) {
         note_ = "the reference solver runs on the CPU";
         return nullptr;
     }
-    if (view.cascade >= 0 && view.solver == Solver2D::Hrc) {
-        note_ = "the HRC cascade view runs on the CPU";
+    if (view.cascade >= 0) {
+        note_ = "the cascade view runs on the CPU";
         return nullptr;
     }
     if (!gpuTried_) {
@@ -184,8 +184,8 @@ Status Renderer2D::solve(Frame& frame) {
         case Solver2D::RcVanilla:
         case Solver2D::RcFix: {
             const gi2d::RcOptions options = rcOptionsFor(view);
-            fluence = gpu && view.cascade < 0 ? gi2d::solveRcOnGpu(*gpu, medium_, options, &timings)
-                                              : gi2d::solveRc(medium_, options);
+            fluence = gpu ? gi2d::solveRcOnGpu(*gpu, medium_, options, &timings)
+                          : gi2d::solveRc(medium_, options);
             break;
         }
         case Solver2D::Reference: {

@@ -154,8 +154,9 @@ TEST_F(ViewerXvfb, DraggingTheLightMovesTheLightAndRTogglesGi) {
           "wait_render\n"
           "screenshot_window window.png\n"
           "quit\n");
-    const RunResult r =
-        view(scene + " --size 256x256 --internal-scale 1 --backend cpu --script drag.txt");
+    const RunResult r = view(scene +
+                             " --size 256x256 --internal-scale 1 --backend cpu --record 3 "
+                             "--record-dir rec --script drag.txt");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     const Image before = png("before.png"), after = png("after.png"), nogi = png("nogi.png");
     ASSERT_EQ(before.width(), 256);
@@ -175,6 +176,11 @@ TEST_F(ViewerXvfb, DraggingTheLightMovesTheLightAndRTogglesGi) {
     EXPECT_GT(meanAbsDiff(after, nogi), 0.02);
     EXPECT_LT(regionMean(nogi, 64, 200, 30), 0.2 * regionMean(after, 64, 200, 30));
     EXPECT_GT(regionMean(nogi, 192, 96, 6), 0.5);  // the lamp
+    // --record 3 wrote the first three rendered frames, then stopped.
+    EXPECT_TRUE(fs::exists(path("rec/frame_00002.png")));
+    EXPECT_FALSE(fs::exists(path("rec/frame_00003.png")));
+    EXPECT_EQ(png("rec/frame_00000.png").width(), 256);
+    EXPECT_NE(r.output.find("recorded 3 frames"), std::string::npos) << r.output;
     // The window capture has the frame and the panels.
     const Image window = png("window.png");
     EXPECT_EQ(window.width(), 256);
