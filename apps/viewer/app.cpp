@@ -82,9 +82,8 @@ int runApp(const ViewerOptions& options, ViewerMode& mode, std::optional<Script>
     }
     Window w;
     const std::string title = "luxel-view: " + options.scene;
-    w.window =
-        SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, windowWidth,
-                         windowHeight, SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
+    w.window = SDL_CreateWindow(title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
+                                windowWidth, windowHeight, SDL_WINDOW_RESIZABLE);
     if (!w.window)
         return fail(std::string("cannot create a window: ") + SDL_GetError(), kExitNoDisplay);
     SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "linear");  // smooth upscaling of small frames
@@ -144,6 +143,7 @@ int runApp(const ViewerOptions& options, ViewerMode& mode, std::optional<Script>
         while (SDL_PollEvent(&event)) {
             ImGui_ImplSDL2_ProcessEvent(&event);
             if (event.type == SDL_QUIT) quit = true;
+            if (event.type == SDL_WINDOWEVENT) mode.handleEvent(event, view);
             const bool mouse = event.type == SDL_MOUSEBUTTONDOWN ||
                                event.type == SDL_MOUSEBUTTONUP || event.type == SDL_MOUSEMOTION ||
                                event.type == SDL_MOUSEWHEEL;

@@ -88,6 +88,9 @@ int main(int argc, char** argv) {
         // A third of the window keeps the CPU ray caster interactive on two cores.
         const auto internal =
             internalSize(o, windowW, windowH, {std::max(1, windowW / 3), std::max(1, windowH / 3)});
+        if (o.backend == "gpu") {
+            std::fprintf(stderr, "luxel-view: note: voxel scenes render on the CPU for now\n");
+        }
         mode = std::make_unique<ModeVoxel>(std::move(*scene), internal.first, internal.second,
                                            o.exposure, makeCpuVoxelFrameSource());
     } else {

@@ -154,6 +154,13 @@ void ModeVoxel::handleEvent(const SDL_Event& event, const ViewRect& view) {
         case SDL_KEYUP:
             held_.erase(event.key.keysym.sym);
             break;
+        case SDL_WINDOWEVENT:
+            // Key releases after the focus left never arrive: stop flying.
+            if (event.window.event == SDL_WINDOWEVENT_FOCUS_LOST) {
+                held_.clear();
+                looking_ = false;
+            }
+            break;
         case SDL_MOUSEBUTTONDOWN:
             if (event.button.button == SDL_BUTTON_RIGHT) {
                 looking_ = true;

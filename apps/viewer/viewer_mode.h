@@ -26,7 +26,7 @@ class ViewerMode {
   public:
     virtual ~ViewerMode() = default;
 
-    // Input not taken by the panels. Returns whether the event was used.
+    // Input not taken by the panels (keys, mouse), and window events.
     virtual void handleEvent(const SDL_Event& event, const ViewRect& view) = 0;
     // Once per frame: continuous input (held keys), then post the state if it changed.
     virtual void update(double seconds) = 0;
