@@ -175,6 +175,9 @@ int runApp(const ViewerOptions& options, ViewerMode& mode, std::optional<Script>
                             quit = true;
                         }
                         break;
+                    case ScriptCommand::Resize:
+                        SDL_SetWindowSize(w.window, e.x, e.y);
+                        break;
                     case ScriptCommand::ScreenshotWindow:
                         screenshotsAfterDraw.push_back(e.path);
                         break;

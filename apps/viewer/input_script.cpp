@@ -54,6 +54,7 @@ constexpr CommandSpec kCommands[] = {
     {"click", ScriptCommand::Click},
     {"screenshot", ScriptCommand::Screenshot},
     {"screenshot_window", ScriptCommand::ScreenshotWindow},
+    {"resize", ScriptCommand::Resize},
     {"quit", ScriptCommand::Quit},
 };
 
@@ -135,6 +136,13 @@ std::string parseArguments(const std::vector<std::string>& args, ScriptEvent& ev
             }
             return "";
         }
+        case ScriptCommand::Resize:
+            if (auto e = expectCount(2, 2, "'resize WIDTH HEIGHT'"); !e.empty()) return e;
+            if (!parseInt(args[0], event.x) || !parseInt(args[1], event.y) || event.x < 1 ||
+                event.y < 1 || event.x > 16384 || event.y > 16384) {
+                return "window size '" + args[0] + " " + args[1] + "' is not two sides in 1..16384";
+            }
+            return "";
         case ScriptCommand::Screenshot:
         case ScriptCommand::ScreenshotWindow:
             if (auto e = expectCount(1, 1, "one file name ending in .png"); !e.empty()) return e;

@@ -34,6 +34,7 @@ enum class ScriptCommand {
     Click,
     Screenshot,
     ScreenshotWindow,
+    Resize,
     Quit,
 };
 

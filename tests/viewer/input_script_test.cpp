@@ -27,11 +27,12 @@ TEST(InputScript, ParsesEveryCommand) {
         "screenshot out.png\n"
         "screenshot_window win.PNG\n"
         "wait_converged\n"
+        "resize 640 360\n"
         "quit\n";
     auto script = parseScript(text, "s.txt", anyKey);
     ASSERT_TRUE(script) << script.error().message();
     const auto& e = script->events;
-    ASSERT_EQ(e.size(), 13u);
+    ASSERT_EQ(e.size(), 14u);
     EXPECT_EQ(e[0].command, ScriptCommand::WaitRender);
     EXPECT_EQ(e[1].command, ScriptCommand::Key);
     EXPECT_DOUBLE_EQ(e[1].at, 0.5);
@@ -47,7 +48,10 @@ TEST(InputScript, ParsesEveryCommand) {
     EXPECT_EQ(e[8].frames, 3);
     EXPECT_EQ(e[9].path, "out.png");
     EXPECT_EQ(e[10].command, ScriptCommand::ScreenshotWindow);
-    EXPECT_EQ(e[12].command, ScriptCommand::Quit);
+    EXPECT_EQ(e[12].command, ScriptCommand::Resize);
+    EXPECT_EQ(e[12].x, 640);
+    EXPECT_EQ(e[12].y, 360);
+    EXPECT_EQ(e[13].command, ScriptCommand::Quit);
 }
 
 TEST(InputScript, ErrorsNameTheFileAndLine) {
@@ -66,6 +70,7 @@ TEST(InputScript, ErrorsNameTheFileAndLine) {
         {"screenshot out.jpg\n", "s.txt:1: screenshot: screenshot file 'out.jpg'"},
         {"at soon quit\n", "s.txt:1: expected 'at SECONDS"},
         {"quit now\n", "s.txt:1: quit: expected no arguments"},
+        {"resize 0 10\n", "s.txt:1: resize: window size '0 10'"},
     };
     for (const Case& c : cases) {
         auto script = parseScript(c.text, "s.txt", anyKey);

@@ -152,7 +152,11 @@ TEST_F(ViewerXvfb, DraggingTheLightMovesTheLightAndRTogglesGi) {
           "key R\n"
           "key Space\n"
           "wait_render\n"
+          "screenshot probes.png\n"
           "screenshot_window window.png\n"
+          "resize 384 256\n"
+          "wait_frames 3\n"
+          "screenshot_window resized.png\n"
           "quit\n");
     const RunResult r = view(scene +
                              " --size 256x256 --internal-scale 1 --backend cpu --record 3 "
@@ -181,10 +185,26 @@ TEST_F(ViewerXvfb, DraggingTheLightMovesTheLightAndRTogglesGi) {
     EXPECT_FALSE(fs::exists(path("rec/frame_00003.png")));
     EXPECT_EQ(png("rec/frame_00000.png").width(), 256);
     EXPECT_NE(r.output.find("recorded 3 frames"), std::string::npos) << r.output;
-    // The window capture has the frame and the panels.
+    // SPACE marks probe centres: a sparse set of pixels changes, the rest stays.
+    const Image probes = png("probes.png");
+    int marked = 0;
+    for (int y = 0; y < probes.height(); ++y) {
+        for (int x = 0; x < probes.width(); ++x) {
+            if (std::fabs(probes.rgb(x, y).g - after.rgb(x, y).g) > 0.05f) ++marked;
+        }
+    }
+    EXPECT_GT(marked, 100);
+    EXPECT_LT(marked, static_cast<int>(probes.pixelCount() / 4));
+    // The window capture has the frame and the panels; the window can be resized.
     const Image window = png("window.png");
     EXPECT_EQ(window.width(), 256);
     EXPECT_GT(stddev(window), 0.05);
+    const Image resized = png("resized.png");
+    EXPECT_EQ(resized.width(), 384);
+    EXPECT_EQ(resized.height(), 256);
+    // The 256x256 frame is centred: bars at the sides, the picture in the middle.
+    EXPECT_LT(regionMean(resized, 20, 240, 10), 0.1);
+    EXPECT_GT(regionMean(resized, 64 + 200, 240, 6), 0.1);  // the lit floor at scene (200, 240)
 }
 
 TEST_F(ViewerXvfb, PaintModeDrawsAWallAndSavesAJsonTheLoaderReads) {
@@ -229,6 +249,12 @@ TEST_F(ViewerXvfb, VoxelModeRendersTerrainAndMovesAndEdits) {
           "click 160 120\n"
           "wait_render\n"
           "screenshot edited.png\n"
+          "key H\n"  // hard shadows off
+          "wait_render\n"
+          "screenshot noshadows.png\n"
+          "key =\nkey =\n"  // two more reflections
+          "wait_render\n"
+          "screenshot reflections.png\n"
           "screenshot_window window.png\n"
           "quit\n");
     const RunResult r = view(scene + " --size 320x180 --internal-size 320x180 --script fly.txt");
@@ -247,6 +273,10 @@ TEST_F(ViewerXvfb, VoxelModeRendersTerrainAndMovesAndEdits) {
     EXPECT_GT(meanAbsDiff(start, moved), 0.01);  // W moved the camera
     // The click removed the voxel under the pointer: the picture changes there.
     EXPECT_GT(std::fabs(regionMean(moved, 160, 120, 6) - regionMean(edited, 160, 120, 6)), 1e-4);
+    // Without shadows nothing gets darker; with more reflections the picture changes.
+    const Image noShadows = png("noshadows.png"), reflections = png("reflections.png");
+    EXPECT_GT(regionMean(noShadows, 160, 90, 200), regionMean(edited, 160, 90, 200));
+    EXPECT_GT(meanAbsDiff(noShadows, reflections), 1e-3);
 }
 
 TEST_F(ViewerXvfb, BadInputGivesOneClearLineAndExitCode1) {
