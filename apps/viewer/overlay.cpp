@@ -35,15 +35,9 @@ void drawOverlay(const OverlayInfo& info, ViewerMode& mode) {
             ImGui::SameLine();
             ImGui::Text("  %d rays/pixel%s", f->samples, f->converged ? "" : " (refining)");
         }
-        if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_SizingFixedFit)) {
-            for (const PassTime& p : f->passes) {
-                ImGui::TableNextRow();
-                ImGui::TableNextColumn();
-                ImGui::TextUnformatted(p.name.c_str());
-                ImGui::TableNextColumn();
-                ImGui::Text("%8.2f ms", p.milliseconds);
-            }
-            ImGui::EndTable();
+        // The default font is monospaced: padded text lines up without a table.
+        for (const PassTime& p : f->passes) {
+            ImGui::Text("  %-18s %8.2f ms", p.name.c_str(), p.milliseconds);
         }
         if (!f->note.empty()) ImGui::TextWrapped("note: %s", f->note.c_str());
     } else {
