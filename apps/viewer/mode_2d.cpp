@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 
 #include "luxel/gi2d/scene2d_edit.h"
@@ -197,9 +198,11 @@ Status Mode2D::save() {
     out.close();
     if (!out) {
         saveMessage_ = "could not write " + savePath_;
+        std::fprintf(stderr, "luxel-view: error: %s: cannot write the scene\n", savePath_.c_str());
         return Error(savePath_ + ": cannot write the scene");
     }
     saveMessage_ = "saved " + savePath_;
+    std::printf("luxel-view: saved %s\n", savePath_.c_str());
     return Ok{};
 }
 

@@ -40,7 +40,7 @@ class ViewerMode {
     // Internal resolution; the frame is scaled to the window.
     virtual int internalWidth() const = 0;
     virtual int internalHeight() const = 0;
-    // Problems the app should report on exit (e.g. a failed save).
+    // "2D" or "voxel", for the overlay and the exit summary.
     virtual std::string name() const = 0;
 };
 

@@ -226,6 +226,7 @@ TEST_F(ViewerXvfb, PaintModeDrawsAWallAndSavesAJsonTheLoaderReads) {
         scene +
         " --size 256x256 --internal-scale 1 --backend cpu --save painted.json --script paint.txt");
     ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("luxel-view: saved painted.json"), std::string::npos) << r.output;
     auto loaded = luxel::gi2d::loadScene2D(path("painted.json"));
     ASSERT_TRUE(loaded) << loaded.error().message();
     ASSERT_GT(loaded->shapes.size(), 3u);
