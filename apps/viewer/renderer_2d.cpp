@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 #include "luxel/core/parallel.h"
 #include "luxel/core/timer.h"
@@ -46,14 +47,36 @@ void drawProbes(const View2D& view, Image& picture) {
     }
 }
 
-// Sums the GPU timings of passes with the same name, in order of first appearance.
+// HRC names its passes per frustum ("trace T0 f2", "upload frame medium 2 (CPU)"); the overlay
+// shows each pass summed over the four frustums, so the frustum tokens are dropped.
+bool isDigit(char c) {
+    return c >= '0' && c <= '9';
+}
+
+std::string passGroupName(const std::string& name) {
+    std::istringstream words(name);
+    std::vector<std::string> kept;
+    for (std::string w; words >> w;) {
+        const bool frustum =
+            w.size() >= 2 && w[0] == 'f' && std::all_of(w.begin() + 1, w.end(), isDigit);
+        const bool uploadIndex =
+            name.rfind("upload frame", 0) == 0 && std::all_of(w.begin(), w.end(), isDigit);
+        if (!frustum && !uploadIndex) kept.push_back(w);
+    }
+    std::string joined;
+    for (const std::string& w : kept) joined += (joined.empty() ? "" : " ") + w;
+    return joined;
+}
+
+// Sums the GPU timings per pass group, in order of first appearance.
 std::vector<PassTime> groupTimings(const std::vector<gpu::PassTiming>& timings) {
     std::vector<PassTime> grouped;
     for (const gpu::PassTiming& t : timings) {
+        const std::string name = passGroupName(t.name);
         auto it = std::find_if(grouped.begin(), grouped.end(),
-                               [&](const PassTime& p) { return p.name == t.name; });
+                               [&](const PassTime& p) { return p.name == name; });
         if (it == grouped.end()) {
-            grouped.push_back({t.name, t.milliseconds});
+            grouped.push_back({name, t.milliseconds});
         } else {
             it->milliseconds += t.milliseconds;
         }

@@ -23,7 +23,7 @@ Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
     ParsedOptions parsed;
     ViewerOptions& o = parsed.options;
     std::string size, internalSize;
-    CLI::App app{"luxel-view: interactive 2D radiance cascades and voxel viewer"};
+    CLI::App app{"luxel-view: interactive 2D radiance cascades and voxel viewer", "luxel-view"};
     app.add_option("scene", o.scene, "2D scene (.json) or voxel scene (\"type\": \"voxel\")")
         ->required();
     app.add_option("--size", size, "window size WxH");
