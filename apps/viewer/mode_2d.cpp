@@ -47,6 +47,10 @@ void Mode2D::handleKey(const SDL_KeyboardEvent& key) {
         (void)save();
         return;
     }
+    if (ctrl && k == SDLK_z) {
+        if (paint_.undo(scene_)) sceneChanged();
+        return;
+    }
     gi2d::Shape* lit = light();
     switch (k) {
         case SDLK_SPACE:
@@ -258,6 +262,8 @@ void Mode2D::drawPanel() {
             ImGui::SliderFloat3("absorption", &brush_.absorption.r, 0.0f, 2.0f, "%.3f",
                                 ImGuiSliderFlags_Logarithmic);
         }
+        if (ImGui::Button("undo (Ctrl+Z)") && paint_.undo(scene_)) sceneChanged();
+        ImGui::SameLine();
         if (ImGui::Button("save (Ctrl+S)")) (void)save();
         ImGui::SameLine();
         ImGui::TextUnformatted(savePath_.c_str());

@@ -61,6 +61,7 @@ gi2d::Material brushMaterial(const Brush& brush, const gi2d::Scene2D& scene) {
 
 void PaintTool::begin(gi2d::Scene2D& scene, const Brush& brush, Vec2d point) {
     ++strokeIndex_;
+    strokeStarts_.push_back(scene.shapes.size());
     addSegment(scene, brush, point, point, strokeIndex_);
     last_ = point;
 }
@@ -79,6 +80,15 @@ bool PaintTool::end(gi2d::Scene2D& scene, const Brush& brush, Vec2d point) {
     if (changed) addSegment(scene, brush, *last_, point, strokeIndex_);
     last_.reset();
     return changed;
+}
+
+bool PaintTool::undo(gi2d::Scene2D& scene) {
+    if (active() || strokeStarts_.empty()) return false;
+    const std::size_t start = strokeStarts_.back();
+    strokeStarts_.pop_back();
+    if (start > scene.shapes.size()) return false;  // the scene was replaced meanwhile
+    scene.shapes.resize(start);
+    return true;
 }
 
 }  // namespace luxel::viewer

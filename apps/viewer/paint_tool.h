@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "luxel/core/vec.h"
 #include "luxel/gi2d/scene2d.h"
@@ -39,10 +40,13 @@ class PaintTool {
     // Ends the stroke (adds the last bit of the path if it was not added yet).
     bool end(gi2d::Scene2D& scene, const Brush& brush, Vec2d point);
     bool active() const { return last_.has_value(); }
+    // Removes the shapes of the last stroke still in the scene; false when there is none.
+    bool undo(gi2d::Scene2D& scene);
 
   private:
     std::optional<Vec2d> last_;
     int strokeIndex_ = 0;
+    std::vector<std::size_t> strokeStarts_;  // scene shape count before each stroke
 };
 
 }  // namespace luxel::viewer

@@ -37,6 +37,23 @@ TEST(PaintTool, AStrokeAddsCapsulesAlongThePath) {
     EXPECT_EQ(scene.shapes.back().material.absorption, Rgb(gi2d::kOpaqueAbsorption));
 }
 
+TEST(PaintTool, UndoRemovesTheLastStrokeOnly) {
+    gi2d::Scene2D scene = emptyScene();
+    PaintTool tool;
+    Brush brush;
+    tool.begin(scene, brush, {10, 10});
+    tool.end(scene, brush, {30, 10});
+    tool.begin(scene, brush, {10, 30});
+    tool.extend(scene, brush, {30, 30});
+    tool.end(scene, brush, {40, 30});
+    ASSERT_EQ(scene.shapes.size(), 5u);
+    EXPECT_TRUE(tool.undo(scene));
+    EXPECT_EQ(scene.shapes.size(), 2u);
+    EXPECT_TRUE(tool.undo(scene));
+    EXPECT_TRUE(scene.shapes.empty());
+    EXPECT_FALSE(tool.undo(scene));
+}
+
 TEST(PaintTool, BrushMaterials) {
     const gi2d::Scene2D scene = emptyScene();
     Brush brush;
