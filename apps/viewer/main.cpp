@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
             std::tie(windowW, windowH) =
                 fitWithin(scene->camera.width(), scene->camera.height(), 1280, 720);
         }
-        // A quarter of the window side keeps the CPU ray caster near 5-10 frames per second on
+        // A quarter of the window side keeps the CPU ray caster near 10 frames per second on
         // two cores (240x135 for the 960x540 terrain view).
         const auto internal =
             internalSize(o, windowW, windowH, {std::max(1, windowW / 4), std::max(1, windowH / 4)});
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
         if (windowW == 0)
             std::tie(windowW, windowH) = fitWithin(scene->width, scene->height, 1280, 900);
         // With a hardware GPU the canvas (up to 512 px) renders interactively; HRC on a 2-core
-        // CPU manages about 8 frames per second at 128 px on the long side.
+        // CPU manages about 20 frames per second at 128 px on the long side.
         const int side = o.backend != "cpu" && hasHardwareGpu() ? 512 : 128;
         const auto internal = internalSize(o, scene->width, scene->height,
                                            fitWithin(scene->width, scene->height, side, side));
