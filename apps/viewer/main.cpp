@@ -1,0 +1,118 @@
+// luxel-view: interactive viewer for 2D scenes (radiance cascades) and voxel worlds.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "app.h"
+#include "luxel/core/parallel.h"
+#include "luxel/gi2d/scene2d_json.h"
+#include "luxel/gpu/context.h"
+#include "luxel/voxel/voxel_scene.h"
+#include "mode_2d.h"
+#include "mode_voxel.h"
+#include "script_events.h"
+#include "viewer_options.h"
+
+namespace {
+
+using namespace luxel;
+using namespace luxel::viewer;
+
+int fail(const std::string& message) {
+    std::fprintf(stderr, "luxel-view: error: %s\n", message.c_str());
+    return kExitBadInput;
+}
+
+// Scales (w, h) down to fit in maxW x maxH, keeping the aspect ratio.
+std::pair<int, int> fitWithin(int w, int h, int maxW, int maxH) {
+    const double s = std::min({1.0, static_cast<double>(maxW) / w, static_cast<double>(maxH) / h});
+    return {std::max(1, static_cast<int>(std::lround(w * s))),
+            std::max(1, static_cast<int>(std::lround(h * s)))};
+}
+
+// Internal resolution: --internal-size, else --internal-scale x base, else the default.
+std::pair<int, int> internalSize(const ViewerOptions& o, int baseW, int baseH,
+                                 std::pair<int, int> fallback) {
+    if (o.internalWidth > 0) return {o.internalWidth, o.internalHeight};
+    if (o.internalScale > 0) {
+        return {std::max(1, static_cast<int>(std::lround(baseW * o.internalScale))),
+                std::max(1, static_cast<int>(std::lround(baseH * o.internalScale)))};
+    }
+    return fallback;
+}
+
+// Whether Vulkan lists a GPU that is not a software device (what --backend auto would use).
+bool hasHardwareGpu() {
+    auto devices = gpu::listDevices();
+    if (!devices) return false;
+    for (const gpu::DeviceInfo& d : *devices) {
+        if (d.type != "cpu") return true;
+    }
+    return false;
+}
+
+std::string defaultSavePath(const std::string& scenePath) {
+    return std::filesystem::path(scenePath).stem().string() + ".painted.json";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    auto parsed = parseViewerOptions(std::vector<std::string>(argv + 1, argv + argc));
+    if (!parsed) return fail(parsed.error().message());
+    if (parsed->helpRequested) {
+        std::printf("%s", parsed->helpText.c_str());
+        return 0;
+    }
+    const ViewerOptions& o = parsed->options;
+    ThreadLimit threadLimit(o.threads);
+
+    std::optional<Script> script;
+    if (!o.script.empty()) {
+        auto loaded = loadScript(o.script, isKnownKeyName);
+        if (!loaded) return fail(loaded.error().message());
+        script = std::move(*loaded);
+    }
+
+    std::unique_ptr<ViewerMode> mode;
+    int windowW = o.windowWidth, windowH = o.windowHeight;
+    if (voxel::isVoxelSceneFile(o.scene)) {
+        auto scene = voxel::loadVoxelScene(o.scene);
+        if (!scene) return fail(scene.error().message());
+        if (windowW == 0) {
+            std::tie(windowW, windowH) =
+                fitWithin(scene->camera.width(), scene->camera.height(), 1280, 720);
+        }
+        // A quarter of the window side keeps the CPU ray caster near 10 frames per second on
+        // two cores (240x135 for the 960x540 terrain view).
+        const auto internal =
+            internalSize(o, windowW, windowH, {std::max(1, windowW / 4), std::max(1, windowH / 4)});
+        if (o.backend == "gpu") {
+            std::fprintf(stderr, "luxel-view: note: voxel scenes render on the CPU for now\n");
+        }
+        mode = std::make_unique<ModeVoxel>(std::move(*scene), internal.first, internal.second,
+                                           o.exposure, makeCpuVoxelFrameSource());
+    } else {
+        auto scene = gi2d::loadScene2D(o.scene);
+        if (!scene) return fail(scene.error().message());
+        if (windowW == 0)
+            std::tie(windowW, windowH) = fitWithin(scene->width, scene->height, 1280, 900);
+        // With a hardware GPU the canvas (up to 512 px) renders interactively; HRC on a 2-core
+        // CPU manages about 20 frames per second at 128 px on the long side.
+        const int side = o.backend != "cpu" && hasHardwareGpu() ? 512 : 128;
+        const auto internal = internalSize(o, scene->width, scene->height,
+                                           fitWithin(scene->width, scene->height, side, side));
+        Mode2DSettings settings;
+        settings.view.solver = parseSolver(o.solver);
+        settings.view.backend = o.backend;
+        settings.view.device = o.device;
+        settings.view.exposure = o.exposure;
+        settings.view.width = internal.first;
+        settings.view.height = internal.second;
+        settings.savePath = o.savePath.empty() ? defaultSavePath(o.scene) : o.savePath;
+        mode = std::make_unique<Mode2D>(std::move(*scene), settings);
+    }
+    return runApp(o, *mode, std::move(script), windowW, windowH);
+}

@@ -1,0 +1,274 @@
+// 2D mode: input -> scene and view edits -> State2D posts; panel controls.
+#include "mode_2d.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+
+#include "luxel/gi2d/scene2d_edit.h"
+#include "luxel/gi2d/scene2d_json.h"
+
+namespace luxel::viewer {
+namespace {
+
+// The seed's 1-5 keys: red, green, blue, yellow, white.
+constexpr Rgb kLightColours[5] = {
+    {1.0f, 0.15f, 0.1f}, {0.15f, 1.0f, 0.2f}, {0.15f, 0.3f, 1.0f}, {1.0f, 0.9f, 0.2f}, {1, 1, 1}};
+
+constexpr Solver2D kSolvers[] = {Solver2D::Hrc, Solver2D::RcVanilla, Solver2D::RcFix,
+                                 Solver2D::Reference};
+constexpr const char* kBackends[] = {"auto", "cpu", "gpu"};
+
+}  // namespace
+
+Mode2D::Mode2D(gi2d::Scene2D scene, Mode2DSettings settings)
+    : scene_(std::move(scene)),
+      view_(settings.view),
+      savePath_(std::move(settings.savePath)),
+      lightIndex_(gi2d::brightestEmitter(scene_)),
+      worker_(std::make_unique<Renderer2D>()) {}
+
+gi2d::Shape* Mode2D::light() {
+    if (lightIndex_ < 0 || lightIndex_ >= static_cast<int>(scene_.shapes.size())) return nullptr;
+    return &scene_.shapes[static_cast<std::size_t>(lightIndex_)];
+}
+
+Vec2d Mode2D::toScene(double wx, double wy, const ViewRect& view) const {
+    const Vec2d u = view.toUnit(wx, wy);
+    return {u.x * scene_.width, u.y * scene_.height};
+}
+
+void Mode2D::handleKey(const SDL_KeyboardEvent& key) {
+    const SDL_Keycode k = key.keysym.sym;
+    const bool ctrl = (key.keysym.mod & KMOD_CTRL) != 0;
+    if (ctrl && k == SDLK_s) {
+        (void)save();
+        return;
+    }
+    if (ctrl && k == SDLK_z) {
+        if (paint_.undo(scene_)) sceneChanged();
+        return;
+    }
+    gi2d::Shape* lit = light();
+    switch (k) {
+        case SDLK_SPACE:
+            view_.probes = !view_.probes;
+            break;
+        case SDLK_r:
+            view_.gi = !view_.gi;
+            break;
+        case SDLK_c: {
+            const int n = cascadeCount(view_.solver, view_.width, view_.height);
+            view_.cascade = view_.cascade + 1 >= n ? -1 : view_.cascade + 1;
+            break;
+        }
+        case SDLK_UP:
+        case SDLK_DOWN:
+            if (!lit) return;
+            lit->material.intensity *= k == SDLK_UP ? 1.25f : 0.8f;
+            sceneChanged();
+            return;
+        case SDLK_1:
+        case SDLK_2:
+        case SDLK_3:
+        case SDLK_4:
+        case SDLK_5:
+            if (!lit) return;
+            lit->material.emission = kLightColours[k - SDLK_1];
+            sceneChanged();
+            return;
+        case SDLK_g: {
+            const auto* it = std::find(std::begin(kSolvers), std::end(kSolvers), view_.solver);
+            view_.solver = kSolvers[(it - std::begin(kSolvers) + 1) % std::size(kSolvers)];
+            view_.cascade = -1;
+            break;
+        }
+        case SDLK_b: {
+            int i = 0;
+            while (i < 3 && view_.backend != kBackends[i]) ++i;
+            view_.backend = kBackends[(i + 1) % 3];
+            break;
+        }
+        case SDLK_LEFTBRACKET:
+            view_.exposure -= 0.5f;
+            break;
+        case SDLK_RIGHTBRACKET:
+            view_.exposure += 0.5f;
+            break;
+        case SDLK_p:
+            paintMode_ = !paintMode_;
+            return;
+        case SDLK_TAB:
+            if (paintMode_)
+                brush_.kind = static_cast<BrushKind>((static_cast<int>(brush_.kind) + 1) % 4);
+            return;
+        default:
+            return;
+    }
+    viewChanged();
+}
+
+void Mode2D::handleEvent(const SDL_Event& event, const ViewRect& view) {
+    switch (event.type) {
+        case SDL_KEYDOWN:
+            handleKey(event.key);
+            break;
+        case SDL_MOUSEBUTTONDOWN: {
+            if (event.button.button != SDL_BUTTON_LEFT) break;
+            const Vec2d p = toScene(event.button.x, event.button.y, view);
+            if (paintMode_) {
+                paint_.begin(scene_, brush_, p);
+                sceneChanged();
+                break;
+            }
+            dragIndex_ = gi2d::pickShape(scene_, p, /*tolerance=*/2.0);
+            if (dragIndex_ < 0 && light()) {
+                // Empty space: the light jumps to the pointer, as in the seed.
+                dragIndex_ = lightIndex_;
+                gi2d::translateShape(*light(), p - gi2d::shapeCenter(*light()));
+                sceneChanged();
+            }
+            if (dragIndex_ >= 0 && scene_.shapes[static_cast<std::size_t>(dragIndex_)]
+                                           .material.scaledEmission()
+                                           .maxComponent() > 0) {
+                lightIndex_ = dragIndex_;  // a grabbed emitter becomes the light keys act on
+            }
+            dragLast_ = p;
+            break;
+        }
+        case SDL_MOUSEMOTION: {
+            const Vec2d p = toScene(event.motion.x, event.motion.y, view);
+            if (paint_.active()) {
+                if (paint_.extend(scene_, brush_, p)) sceneChanged();
+            } else if (dragIndex_ >= 0) {
+                gi2d::translateShape(scene_.shapes[static_cast<std::size_t>(dragIndex_)],
+                                     p - dragLast_);
+                dragLast_ = p;
+                sceneChanged();
+            }
+            break;
+        }
+        case SDL_MOUSEBUTTONUP: {
+            if (event.button.button != SDL_BUTTON_LEFT) break;
+            const Vec2d p = toScene(event.button.x, event.button.y, view);
+            if (paint_.active()) {
+                if (paint_.end(scene_, brush_, p)) sceneChanged();
+            } else if (dragIndex_ >= 0) {
+                gi2d::translateShape(scene_.shapes[static_cast<std::size_t>(dragIndex_)],
+                                     p - dragLast_);
+                sceneChanged();
+            }
+            dragIndex_ = -1;
+            break;
+        }
+        case SDL_MOUSEWHEEL:
+            if (paintMode_) {
+                brush_.size =
+                    std::clamp(brush_.size * (event.wheel.y > 0 ? 1.25 : 0.8), 1.0, 400.0);
+            }
+            break;
+        default:
+            break;
+    }
+}
+
+void Mode2D::update(double) {
+    if (!dirty_) return;
+    dirty_ = false;
+    ++generation_;
+    worker_.post({std::make_shared<const gi2d::Scene2D>(scene_), sceneVersion_, view_},
+                 generation_);
+}
+
+std::shared_ptr<const Frame> Mode2D::latestFrame(bool* fresh) {
+    return worker_.latest(fresh);
+}
+
+bool Mode2D::frameCurrent() {
+    auto frame = worker_.latest();
+    return frame && !dirty_ && frame->generation == generation_;
+}
+
+bool Mode2D::frameConverged() {
+    auto frame = worker_.latest();
+    return frameCurrent() && frame->converged;
+}
+
+Status Mode2D::save() {
+    std::ofstream out(savePath_, std::ios::binary);
+    out << gi2d::sceneToJson(scene_);
+    out.close();
+    if (!out) {
+        saveMessage_ = "could not write " + savePath_;
+        std::fprintf(stderr, "luxel-view: error: %s: cannot write the scene\n", savePath_.c_str());
+        return Error(savePath_ + ": cannot write the scene");
+    }
+    saveMessage_ = "saved " + savePath_;
+    std::printf("luxel-view: saved %s\n", savePath_.c_str());
+    return Ok{};
+}
+
+void Mode2D::drawPanel() {
+    int solver = static_cast<int>(
+        std::find(std::begin(kSolvers), std::end(kSolvers), view_.solver) - std::begin(kSolvers));
+    const char* solverLabels[] = {"HRC", "RC vanilla", "RC bilinear fix", "reference"};
+    if (ImGui::Combo("solver (G)", &solver, solverLabels, 4)) {
+        view_.solver = kSolvers[solver];
+        view_.cascade = -1;
+        viewChanged();
+    }
+    int backend = 0;
+    while (backend < 3 && view_.backend != kBackends[backend]) ++backend;
+    if (ImGui::Combo("backend (B)", &backend, kBackends, 3)) {
+        view_.backend = kBackends[backend];
+        viewChanged();
+    }
+    if (ImGui::SliderFloat("exposure ([ ])", &view_.exposure, -6.0f, 6.0f, "%.1f stops")) {
+        viewChanged();
+    }
+    if (ImGui::Checkbox("GI (R)", &view_.gi)) viewChanged();
+    ImGui::SameLine();
+    if (ImGui::Checkbox("probes (SPACE)", &view_.probes)) viewChanged();
+    const int cascades = cascadeCount(view_.solver, view_.width, view_.height);
+    if (cascades > 0 && ImGui::SliderInt("cascade (C)", &view_.cascade, -1, cascades - 1,
+                                         view_.cascade < 0 ? "fluence" : "cascade %d")) {
+        viewChanged();
+    }
+    if (gi2d::Shape* lit = light()) {
+        ImGui::Text("light: %s", lit->name.c_str());
+        if (ImGui::SliderFloat("intensity (Up/Down)", &lit->material.intensity, 0.0f, 100.0f,
+                               "%.2f", ImGuiSliderFlags_Logarithmic)) {
+            sceneChanged();
+        }
+        if (ImGui::ColorEdit3("colour (1-5)", &lit->material.emission.r)) sceneChanged();
+    }
+    ImGui::Separator();
+    ImGui::Checkbox("paint mode (P)", &paintMode_);
+    if (paintMode_) {
+        int kind = static_cast<int>(brush_.kind);
+        const char* kinds[] = {"wall", "emitter", "medium", "eraser"};
+        if (ImGui::Combo("brush (Tab)", &kind, kinds, 4))
+            brush_.kind = static_cast<BrushKind>(kind);
+        float size = static_cast<float>(brush_.size);
+        if (ImGui::SliderFloat("size (wheel)", &size, 1.0f, 200.0f, "%.0f px")) brush_.size = size;
+        if (brush_.kind == BrushKind::Emitter || brush_.kind == BrushKind::Medium) {
+            ImGui::ColorEdit3("emission", &brush_.emission.r);
+            ImGui::SliderFloat("brush intensity", &brush_.intensity, 0.0f, 50.0f, "%.2f",
+                               ImGuiSliderFlags_Logarithmic);
+        }
+        if (brush_.kind == BrushKind::Medium) {
+            ImGui::SliderFloat3("absorption", &brush_.absorption.r, 0.0f, 2.0f, "%.3f",
+                                ImGuiSliderFlags_Logarithmic);
+        }
+        if (ImGui::Button("undo (Ctrl+Z)") && paint_.undo(scene_)) sceneChanged();
+        ImGui::SameLine();
+        if (ImGui::Button("save (Ctrl+S)")) (void)save();
+        ImGui::SameLine();
+        ImGui::TextUnformatted(savePath_.c_str());
+    }
+    if (!saveMessage_.empty()) ImGui::TextUnformatted(saveMessage_.c_str());
+}
+
+}  // namespace luxel::viewer

@@ -1,0 +1,46 @@
+// Voxel mode: fly camera (mouse look with the right button, WASD/QE), reflection count, shading
+// toggles, sun direction, and click-to-edit (left removes, Shift+left adds).
+#pragma once
+
+#include <set>
+
+#include "luxel/voxel/voxel_scene.h"
+#include "render_worker.h"
+#include "renderer_voxel.h"
+#include "viewer_mode.h"
+
+namespace luxel::viewer {
+
+class ModeVoxel : public ViewerMode {
+  public:
+    // `width` x `height`: internal resolution.
+    ModeVoxel(voxel::VoxelScene scene, int width, int height, float exposure,
+              std::unique_ptr<VoxelFrameSource> source);
+
+    void handleEvent(const SDL_Event& event, const ViewRect& view) override;
+    void update(double seconds) override;
+    void drawPanel() override;
+    std::shared_ptr<const Frame> latestFrame(bool* fresh) override;
+    bool frameCurrent() override;
+    bool frameConverged() override { return frameCurrent(); }
+    int internalWidth() const override { return state_.width; }
+    int internalHeight() const override { return state_.height; }
+    std::string name() const override { return "voxel"; }
+
+  private:
+    void handleKey(SDL_Keycode key, bool shift);
+    void move(Vec3d direction, double distance);
+    void setSun(double azimuthDegrees, double elevationDegrees);
+
+    VoxelState state_;
+    Int3 worldSize_;
+    double sunAzimuth_ = 0, sunElevation_ = 45, sunLength_ = 1;
+    float editColour_[3] = {0.9f, 0.35f, 0.2f};
+    std::set<SDL_Keycode> held_;
+    bool looking_ = false;
+    std::uint64_t generation_ = 0;
+    bool dirty_ = true;
+    RenderWorker<RendererVoxel> worker_;
+};
+
+}  // namespace luxel::viewer

@@ -1,0 +1,70 @@
+// The 2D frame producer that runs on the render thread: rasterises the scene at the internal
+// size, runs the chosen solver on the CPU or the GPU (Vulkan), tone maps and marks probes. It
+// caches the medium and the fluence so display-only changes (exposure, probes) are instant.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "frame.h"
+#include "luxel/gi2d/medium2d.h"
+#include "luxel/gi2d/scene2d.h"
+#include "luxel/gpu/fwd.h"
+#include "progressive_reference.h"
+
+namespace luxel::viewer {
+
+enum class Solver2D { Hrc, RcVanilla, RcFix, Reference };
+const char* solverName(Solver2D solver);        // "hrc", "rc", "rc-fix", "reference"
+Solver2D parseSolver(const std::string& name);  // names from solverName; unknown -> Hrc
+
+struct View2D {
+    Solver2D solver = Solver2D::Hrc;
+    std::string backend = "auto";   // auto | cpu | gpu
+    std::string device;             // Vulkan device choice (ContextOptions::device)
+    bool gi = true;                 // false: emission only (the seed's R)
+    bool probes = false;            // mark probe centres (the seed's SPACE)
+    int cascade = -1;               // >= 0: show that cascade instead of the fluence (the seed's C)
+    float exposure = 0.0f;          // stops
+    int width = 256, height = 256;  // internal resolution
+};
+
+struct State2D {
+    std::shared_ptr<const gi2d::Scene2D> scene;
+    std::uint64_t sceneVersion = 0;  // grows with every edit, so the medium is rebuilt only then
+    View2D view;
+};
+
+// Cascades the C key cycles through for this solver and size (0 for the reference solver).
+int cascadeCount(Solver2D solver, int width, int height);
+
+class Renderer2D {
+  public:
+    using State = State2D;
+    Renderer2D();
+    ~Renderer2D();
+
+    void setState(State2D&& state);
+    bool hasMoreWork() const;
+    Frame step();
+
+  private:
+    // Whether to use the GPU for this view; creates the context on first use. Sets `note_`.
+    gpu::Context* gpuFor(const View2D& view);
+    Status solve(Frame& frame);
+
+    State2D state_;
+    bool mediumDirty_ = true, fluenceDirty_ = true, displayDirty_ = true;
+    gi2d::Medium2D medium_;
+    Image fluence_;
+    ProgressiveReference reference_;
+    int referenceTargetPasses_ = 256;  // 1024 rays per pixel, the reference solver's default
+    std::unique_ptr<gpu::Context> gpu_;
+    std::string gpuError_;  // why there is no context ("" = not tried or fine)
+    bool gpuTried_ = false;
+    std::string note_;
+    Frame last_;  // the previous frame's report, reused when only the display changes
+};
+
+}  // namespace luxel::viewer

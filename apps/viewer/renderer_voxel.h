@@ -1,0 +1,56 @@
+// The voxel frame producer on the render thread: owns the world, applies edits (so the ray
+// caster never reads a world being changed), renders through a VoxelFrameSource and tone maps.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "frame.h"
+#include "luxel/core/tonemap.h"
+#include "luxel/voxel/dda.h"
+#include "luxel/voxel/shading.h"
+#include "luxel/voxel/voxel_world.h"
+#include "voxel_frame_source.h"
+
+namespace luxel::viewer {
+
+// A click: remove the first voxel along the ray, or add one on the face it hits.
+struct VoxelEdit {
+    voxel::Ray ray;
+    bool add = false;
+    voxel::Voxel colour{200, 200, 200, 255};
+};
+
+struct FlyCamera {
+    Vec3d position;
+    double yawDegrees = 0, pitchDegrees = 0, fovYDegrees = 60;
+};
+
+struct VoxelState {
+    FlyCamera camera;
+    int width = 320, height = 180;  // internal resolution
+    voxel::ShadeOptions shading;
+    float exposure = 0.0f;
+    std::vector<VoxelEdit> edits;  // new since the previous state
+};
+
+// Applies one edit; returns whether a voxel changed, and the changed voxel in `changed`.
+bool applyVoxelEdit(voxel::VoxelWorld& world, const VoxelEdit& edit, Int3* changed = nullptr);
+
+class RendererVoxel {
+  public:
+    using State = VoxelState;
+    RendererVoxel(voxel::VoxelWorld world, std::unique_ptr<VoxelFrameSource> source);
+
+    void setState(VoxelState&& state);
+    bool hasMoreWork() const { return dirty_; }
+    Frame step();
+
+  private:
+    voxel::VoxelWorld world_;
+    std::unique_ptr<VoxelFrameSource> source_;
+    VoxelState state_;
+    bool dirty_ = false;
+};
+
+}  // namespace luxel::viewer

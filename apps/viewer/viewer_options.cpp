@@ -1,0 +1,73 @@
+// luxel-view command line (CLI11), turned into ViewerOptions.
+#include "viewer_options.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+
+namespace luxel::viewer {
+
+Result<std::pair<int, int>> parseWindowSize(const std::string& text, const std::string& option) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X')) {
+        return Error(option + " '" + text + "' is not WIDTHxHEIGHT (e.g. 640x480)");
+    }
+    if (w < 1 || h < 1 || w > 16384 || h > 16384) {
+        return Error(option + " " + text + ": each side must be in 1..16384");
+    }
+    return std::pair{w, h};
+}
+
+Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
+    ParsedOptions parsed;
+    ViewerOptions& o = parsed.options;
+    std::string size, internalSize;
+    CLI::App app{"luxel-view: interactive 2D radiance cascades and voxel viewer", "luxel-view"};
+    app.add_option("scene", o.scene, "2D scene (.json) or voxel scene (\"type\": \"voxel\")")
+        ->required();
+    app.add_option("--size", size, "window size WxH");
+    app.add_option("--internal-size", internalSize, "render size WxH (independent of the window)");
+    app.add_option("--internal-scale", o.internalScale,
+                   "render size as a fraction of the canvas (2D) or window (voxel)")
+        ->check(CLI::Range(0.05f, 4.0f));
+    app.add_option("--backend", o.backend, "auto | cpu | gpu")
+        ->check(CLI::IsMember({"auto", "cpu", "gpu"}));
+    app.add_option("--device", o.device, "Vulkan device index or name part");
+    app.add_option("--solver", o.solver, "2D solver: hrc | rc | rc-fix | reference")
+        ->check(CLI::IsMember({"hrc", "rc", "rc-fix", "reference"}));
+    app.add_option("--exposure", o.exposure, "exposure in stops");
+    app.add_option("--script", o.script, "timed input events (docs/viewer.md)");
+    app.add_option("--record", o.recordFrames, "write the next N rendered frames as PNG")
+        ->check(CLI::Range(1, 1000000));
+    app.add_option("--record-dir", o.recordDir, "folder for --record frames");
+    app.add_option("--save", o.savePath, "where paint mode saves the scene (Ctrl+S)");
+    app.add_option("--threads", o.threads, "solver threads (0: all)")->check(CLI::Range(0, 1024));
+    app.add_flag("--no-overlay", o.hideOverlay, "start with the panels hidden (F1 shows them)");
+
+    std::vector<std::string> reversed(args.rbegin(), args.rend());
+    try {
+        app.parse(reversed);
+    } catch (const CLI::CallForHelp&) {
+        parsed.helpRequested = true;
+        parsed.helpText = app.help();
+        return parsed;
+    } catch (const CLI::ParseError& e) {
+        return Error(e.what());
+    }
+    if (!size.empty()) {
+        auto s = parseWindowSize(size, "--size");
+        if (!s) return s.error();
+        o.windowWidth = s->first;
+        o.windowHeight = s->second;
+    }
+    if (!internalSize.empty()) {
+        auto s = parseWindowSize(internalSize, "--internal-size");
+        if (!s) return s.error();
+        o.internalWidth = s->first;
+        o.internalHeight = s->second;
+    }
+    return parsed;
+}
+
+}  // namespace luxel::viewer

@@ -1,0 +1,42 @@
+// Command-line options of luxel-view, parsed without touching SDL so they can be unit-tested.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "luxel/core/error.h"
+
+namespace luxel::viewer {
+
+struct ViewerOptions {
+    std::string scene;    // a 2D scene or a voxel scene (type "voxel")
+    int windowWidth = 0;  // 0: chosen from the scene
+    int windowHeight = 0;
+    int internalWidth = 0;  // 0: from internalScale
+    int internalHeight = 0;
+    float internalScale = 0.0f;  // 0: the mode's default (2D: of the canvas; voxel: of the window)
+    std::string backend = "auto";  // auto | cpu | gpu
+    std::string device;            // Vulkan device index or name part
+    std::string solver = "hrc";    // 2D: hrc | rc | rc-fix | reference
+    float exposure = 0.0f;         // stops
+    std::string script;            // timed input events (docs/viewer.md)
+    int recordFrames = 0;          // --record N
+    std::string recordDir = "frames";
+    std::string savePath;  // paint mode saves here (default: SCENE stem + ".painted.json")
+    int threads = 0;       // solver threads (0: all)
+    bool hideOverlay = false;
+};
+
+// Parses argv. Returns the options, or an Error whose message is the problem (or, for --help,
+// the usage text with `helpRequested` set).
+struct ParsedOptions {
+    ViewerOptions options;
+    bool helpRequested = false;
+    std::string helpText;
+};
+Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args);
+
+// "640x480" -> {640, 480}; fails for anything else or sides outside 1..16384.
+Result<std::pair<int, int>> parseWindowSize(const std::string& text, const std::string& option);
+
+}  // namespace luxel::viewer

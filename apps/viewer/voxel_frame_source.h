@@ -1,0 +1,35 @@
+// The backend seam of voxel mode: something that turns a world and a camera into a picture. The
+// CPU ray caster implements it today; a GPU renderer plugs in by implementing the same three
+// calls (upload edited regions in worldEdited, render with per-pass timings).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "frame.h"
+#include "luxel/core/error.h"
+#include "luxel/core/image.h"
+#include "luxel/voxel/camera.h"
+#include "luxel/voxel/shading.h"
+#include "luxel/voxel/voxel_world.h"
+
+namespace luxel::viewer {
+
+class VoxelFrameSource {
+  public:
+    virtual ~VoxelFrameSource() = default;
+    virtual std::string backend() const = 0;  // "cpu" or "gpu"
+    virtual std::string device() const = 0;   // shown in the overlay
+    // The world changed inside [min, maxExclusive) (voxel coordinates).
+    virtual void worldEdited(const voxel::VoxelWorld& world, Int3 min, Int3 maxExclusive) = 0;
+    // Linear radiance, camera.width() x camera.height(); appends its passes to `passes`.
+    virtual Result<Image> render(const voxel::VoxelWorld& world, const voxel::Camera& camera,
+                                 const voxel::ShadeOptions& shading,
+                                 std::vector<PassTime>& passes) = 0;
+};
+
+// The CPU DDA ray caster (luxel::voxel::render), rows in parallel.
+std::unique_ptr<VoxelFrameSource> makeCpuVoxelFrameSource();
+
+}  // namespace luxel::viewer

@@ -1,0 +1,33 @@
+// VoxelFrameSource on the CPU: the library's ray caster reads the world directly, so edits need
+// no upload.
+#include "luxel/core/parallel.h"
+#include "luxel/core/timer.h"
+#include "voxel_frame_source.h"
+
+namespace luxel::viewer {
+namespace {
+
+class CpuVoxelFrameSource final : public VoxelFrameSource {
+  public:
+    std::string backend() const override { return "cpu"; }
+    std::string device() const override {
+        return "CPU, " + std::to_string(hardwareThreads()) + " threads";
+    }
+    void worldEdited(const voxel::VoxelWorld&, Int3, Int3) override {}
+    Result<Image> render(const voxel::VoxelWorld& world, const voxel::Camera& camera,
+                         const voxel::ShadeOptions& shading,
+                         std::vector<PassTime>& passes) override {
+        Stopwatch clock;
+        Image image = voxel::render(world, camera, shading);
+        passes.push_back({"ray cast + shade", clock.milliseconds()});
+        return image;
+    }
+};
+
+}  // namespace
+
+std::unique_ptr<VoxelFrameSource> makeCpuVoxelFrameSource() {
+    return std::make_unique<CpuVoxelFrameSource>();
+}
+
+}  // namespace luxel::viewer

@@ -1,0 +1,170 @@
+// The render-thread side of the viewer without a window: the 2D renderer (GI toggle, caching,
+// progressive reference), the render worker, and voxel edits.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+#include "luxel/gi2d/rasterize.h"
+#include "luxel/gi2d/reference_solver.h"
+#include "luxel/voxel/voxel_world.h"
+#include "progressive_reference.h"
+#include "render_worker.h"
+#include "renderer_2d.h"
+#include "renderer_voxel.h"
+
+namespace luxel::viewer {
+namespace {
+
+std::shared_ptr<const gi2d::Scene2D> lampScene() {
+    auto scene = std::make_shared<gi2d::Scene2D>();
+    scene->width = scene->height = 64;
+    gi2d::Shape lamp{
+        "lamp", gi2d::Circle{{20, 32}, 5}, {Rgb(1, 1, 1), Rgb(gi2d::kOpaqueAbsorption), 4}};
+    scene->shapes.push_back(lamp);
+    return scene;
+}
+
+State2D stateFor(Solver2D solver, bool gi = true) {
+    State2D s;
+    s.scene = lampScene();
+    s.sceneVersion = 1;
+    s.view.solver = solver;
+    s.view.backend = "cpu";
+    s.view.gi = gi;
+    s.view.width = s.view.height = 64;
+    return s;
+}
+
+double meanOf(const Image& image) {
+    double sum = 0;
+    for (std::size_t i = 0; i < image.size(); ++i) sum += image.data()[i];
+    return sum / static_cast<double>(image.size());
+}
+
+TEST(Renderer2D, GiToggleChangesThePictureAndTheWorkSettles) {
+    Renderer2D renderer;
+    renderer.setState(stateFor(Solver2D::Hrc));
+    ASSERT_TRUE(renderer.hasMoreWork());
+    const Frame lit = renderer.step();
+    EXPECT_FALSE(renderer.hasMoreWork());
+    ASSERT_EQ(lit.picture.width(), 64);
+    EXPECT_EQ(lit.backend, "cpu");
+    EXPECT_TRUE(lit.note.empty()) << lit.note;
+    renderer.setState(stateFor(Solver2D::Hrc, /*gi=*/false));
+    const Frame dark = renderer.step();
+    // Away from the lamp only the fluence lights the picture.
+    EXPECT_GT(lit.picture.at(45, 32, 0), 0.05f);
+    EXPECT_LT(dark.picture.at(45, 32, 0), 1e-4f);
+    EXPECT_GT(meanOf(lit.picture), 2 * meanOf(dark.picture));
+}
+
+TEST(Renderer2D, ReferenceAccumulatesProgressively) {
+    Renderer2D renderer;
+    renderer.setState(stateFor(Solver2D::Reference));
+    const Frame first = renderer.step();
+    EXPECT_FALSE(first.converged);
+    EXPECT_EQ(first.samples, 4);
+    EXPECT_TRUE(renderer.hasMoreWork());
+    const Frame second = renderer.step();
+    EXPECT_EQ(second.samples, 8);
+    // An edited scene starts over; the same state again does not.
+    renderer.setState(stateFor(Solver2D::Reference));
+    EXPECT_EQ(renderer.step().samples, 12);
+    State2D edited = stateFor(Solver2D::Reference);
+    edited.sceneVersion = 2;
+    renderer.setState(std::move(edited));
+    EXPECT_EQ(renderer.step().samples, 4);
+}
+
+double relativeL1(const Image& a, const Image& b) {
+    double diff = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) diff += std::fabs(a.data()[i] - b.data()[i]);
+    return diff / (meanOf(b) * static_cast<double>(a.size()));
+}
+
+TEST(ProgressiveReference, PassesAreReferenceSolvesAndTheMeanConverges) {
+    gi2d::Scene2D scene = *lampScene();
+    auto medium = gi2d::rasterize(scene);
+    ASSERT_TRUE(medium);
+    ProgressiveReference progressive(8);
+    ASSERT_TRUE(progressive.addPass(*medium));
+    gi2d::ReferenceOptions options;
+    options.rays = 8;
+    options.seed = 1;
+    auto firstPass = gi2d::solveReference(*medium, options);
+    ASSERT_TRUE(firstPass);
+    EXPECT_EQ(progressive.mean(), *firstPass);  // pass k is the solver with seed k
+
+    options.rays = 2048;
+    auto truth = gi2d::solveReference(*medium, options);
+    ASSERT_TRUE(truth);
+    ASSERT_TRUE(progressive.addPass(*medium));
+    const double early = relativeL1(progressive.mean(), *truth);
+    while (progressive.passes() < 32) ASSERT_TRUE(progressive.addPass(*medium));
+    const double late = relativeL1(progressive.mean(), *truth);
+    EXPECT_EQ(progressive.raysPerPixel(), 256);
+    EXPECT_LT(late, 0.5 * early) << "relative L1 against 2048 rays: 2 passes " << early
+                                 << ", 32 passes " << late;
+    progressive.reset();
+    EXPECT_EQ(progressive.passes(), 0);
+    EXPECT_TRUE(progressive.mean().empty());
+}
+
+// A renderer that counts its steps, for the worker.
+struct CountingRenderer {
+    using State = int;
+    std::vector<int> seen;
+    bool more = false;
+    void setState(int&& s) {
+        seen.push_back(s);
+        more = true;
+    }
+    bool hasMoreWork() const { return more; }
+    Frame step() {
+        more = false;
+        Frame f;
+        f.samples = static_cast<int>(seen.size());
+        return f;
+    }
+};
+
+TEST(RenderWorker, HandsOverEveryStateInOrderAndReportsTheNewestGeneration) {
+    auto renderer = std::make_unique<CountingRenderer>();
+    CountingRenderer* r = renderer.get();
+    RenderWorker<CountingRenderer> worker(std::move(renderer));
+    for (int i = 1; i <= 5; ++i) worker.post(i, static_cast<std::uint64_t>(i));
+    std::shared_ptr<const Frame> frame;
+    for (int tries = 0; tries < 500; ++tries) {
+        frame = worker.latest();
+        if (frame && frame->generation == 5) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    ASSERT_TRUE(frame);
+    EXPECT_EQ(frame->generation, 5u);
+    EXPECT_EQ(frame->samples, 5);  // all five states were set before the last step
+    EXPECT_EQ(r->seen, (std::vector<int>{1, 2, 3, 4, 5}));
+}
+
+TEST(VoxelEdit, ClickRemovesTheHitVoxelAndShiftClickAddsOnItsFace) {
+    auto world = voxel::VoxelWorld::create({8, 8, 8}, 4);
+    ASSERT_TRUE(world);
+    world->set(4, 2, 4, {100, 100, 100, 255});
+    VoxelEdit edit;
+    edit.ray = {{4.5, 7.5, 4.5}, {0, -1, 0}};  // straight down onto the voxel's top face
+    edit.add = true;
+    Int3 changed;
+    ASSERT_TRUE(applyVoxelEdit(*world, edit, &changed));
+    EXPECT_EQ(changed, (Int3{4, 3, 4}));
+    EXPECT_TRUE(world->solid(4, 3, 4));
+    edit.add = false;
+    ASSERT_TRUE(applyVoxelEdit(*world, edit, &changed));  // removes the new top voxel
+    EXPECT_EQ(changed, (Int3{4, 3, 4}));
+    EXPECT_FALSE(world->solid(4, 3, 4));
+    EXPECT_TRUE(world->solid(4, 2, 4));
+    edit.ray = {{0.5, 7.5, 0.5}, {0, -1, 0}};  // misses everything
+    EXPECT_FALSE(applyVoxelEdit(*world, edit));
+}
+
+}  // namespace
+}  // namespace luxel::viewer

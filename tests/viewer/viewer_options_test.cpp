@@ -1,0 +1,53 @@
+// luxel-view's command line.
+#include <gtest/gtest.h>
+
+#include "viewer_options.h"
+
+namespace luxel::viewer {
+namespace {
+
+TEST(ViewerOptions, ParsesSizesAndChoices) {
+    auto parsed = parseViewerOptions({"scene.json", "--size", "640x480", "--internal-size",
+                                      "160x120", "--backend", "cpu", "--solver", "rc-fix",
+                                      "--record", "5", "--record-dir", "out", "--script", "s.txt"});
+    ASSERT_TRUE(parsed) << parsed.error().message();
+    const ViewerOptions& o = parsed->options;
+    EXPECT_EQ(o.scene, "scene.json");
+    EXPECT_EQ(o.windowWidth, 640);
+    EXPECT_EQ(o.windowHeight, 480);
+    EXPECT_EQ(o.internalWidth, 160);
+    EXPECT_EQ(o.internalHeight, 120);
+    EXPECT_EQ(o.backend, "cpu");
+    EXPECT_EQ(o.solver, "rc-fix");
+    EXPECT_EQ(o.recordFrames, 5);
+    EXPECT_EQ(o.recordDir, "out");
+    EXPECT_EQ(o.script, "s.txt");
+}
+
+TEST(ViewerOptions, RejectsBadValuesWithTheOptionName) {
+    struct Case {
+        std::vector<std::string> args;
+        const char* needle;
+    };
+    const Case cases[] = {
+        {{}, "scene"},
+        {{"s.json", "--size", "640"}, "--size '640' is not WIDTHxHEIGHT"},
+        {{"s.json", "--internal-size", "0x10"}, "--internal-size 0x10"},
+        {{"s.json", "--backend", "metal"}, "--backend"},
+        {{"s.json", "--solver", "pt"}, "--solver"},
+        {{"s.json", "--internal-scale", "0"}, "--internal-scale"},
+    };
+    for (const Case& c : cases) {
+        auto parsed = parseViewerOptions(c.args);
+        ASSERT_FALSE(parsed) << c.needle;
+        EXPECT_NE(parsed.error().message().find(c.needle), std::string::npos)
+            << parsed.error().message();
+    }
+    auto help = parseViewerOptions({"--help"});
+    ASSERT_TRUE(help);
+    EXPECT_TRUE(help->helpRequested);
+    EXPECT_NE(help->helpText.find("--script"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace luxel::viewer
