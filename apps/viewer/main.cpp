@@ -85,15 +85,28 @@ int main(int argc, char** argv) {
             std::tie(windowW, windowH) =
                 fitWithin(scene->camera.width(), scene->camera.height(), 1280, 720);
         }
-        // A quarter of the window side keeps the CPU ray caster near 10 frames per second on
-        // two cores (240x135 for the 960x540 terrain view).
-        const auto internal =
-            internalSize(o, windowW, windowH, {std::max(1, windowW / 4), std::max(1, windowH / 4)});
-        if (o.backend == "gpu") {
-            std::fprintf(stderr, "luxel-view: note: voxel scenes render on the CPU for now\n");
+        std::unique_ptr<VoxelFrameSource> source;
+        if (o.backend != "cpu") {
+            // auto takes hardware GPUs only, like the CLI; gpu also accepts lavapipe.
+            auto gpuSource = makeGpuVoxelFrameSource(o.device, o.backend == "auto", scene->world,
+                                                     scene->textures);
+            if (gpuSource) {
+                source = std::move(*gpuSource);
+            } else if (o.backend == "gpu") {
+                std::fprintf(stderr, "luxel-view: note: using the CPU backend (%s)\n",
+                             gpuSource.error().message().c_str());
+            }
         }
+        const bool onGpu = source != nullptr;
+        if (!source) source = makeCpuVoxelFrameSource(scene->textures);
+        // On the CPU a quarter of the window side keeps the ray caster near 10 frames per second
+        // on two cores (240x135 for the 960x540 terrain view); a GPU renders the full window.
+        const std::pair<int, int> fallback =
+            onGpu ? std::pair{windowW, windowH}
+                  : std::pair{std::max(1, windowW / 4), std::max(1, windowH / 4)};
+        const auto internal = internalSize(o, windowW, windowH, fallback);
         mode = std::make_unique<ModeVoxel>(std::move(*scene), internal.first, internal.second,
-                                           o.exposure, makeCpuVoxelFrameSource());
+                                           o.exposure, std::move(source));
     } else {
         auto scene = gi2d::loadScene2D(o.scene);
         if (!scene) return fail(scene.error().message());

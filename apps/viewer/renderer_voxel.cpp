@@ -27,10 +27,17 @@ RendererVoxel::RendererVoxel(voxel::VoxelWorld world, std::unique_ptr<VoxelFrame
     : world_(std::move(world)), source_(std::move(source)) {}
 
 void RendererVoxel::setState(VoxelState&& state) {
+    bool edited = false;
     for (const VoxelEdit& edit : state.edits) {
         Int3 v;
-        if (applyVoxelEdit(world_, edit, &v)) source_->worldEdited(world_, v, v + Int3{1, 1, 1});
+        if (applyVoxelEdit(world_, edit, &v)) {
+            source_->worldEdited(world_, v, v + Int3{1, 1, 1});
+            edited = true;
+        }
     }
+    // A voxel added to an empty brick makes the empty-space distances stale; the ray caster is
+    // still exact without them but slower, so bring them up to date before the next frame.
+    if (edited) world_.refreshEmptySpace();
     state.edits.clear();
     state_ = std::move(state);
     dirty_ = true;

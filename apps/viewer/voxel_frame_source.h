@@ -1,6 +1,6 @@
-// The backend seam of voxel mode: something that turns a world and a camera into a picture. The
-// CPU ray caster implements it today; a GPU renderer plugs in by implementing the same three
-// calls (upload edited regions in worldEdited, render with per-pass timings).
+// The backend seam of voxel mode: something that turns a world and a camera into a picture, on
+// the CPU (the library's ray caster) or the GPU (VoxelGpuRenderer, which re-uploads edited
+// chunks in worldEdited).
 #pragma once
 
 #include <memory>
@@ -12,6 +12,7 @@
 #include "luxel/core/image.h"
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/shading.h"
+#include "luxel/voxel/texture_set.h"
 #include "luxel/voxel/voxel_world.h"
 
 namespace luxel::viewer {
@@ -30,6 +31,14 @@ class VoxelFrameSource {
 };
 
 // The CPU DDA ray caster (luxel::voxel::render), rows in parallel.
-std::unique_ptr<VoxelFrameSource> makeCpuVoxelFrameSource();
+std::unique_ptr<VoxelFrameSource> makeCpuVoxelFrameSource(voxel::TextureSet textures = {});
+
+// The GPU ray caster on `device` (index or part of a name; empty: the best device). With
+// `hardwareOnly`, software devices (lavapipe: slower than the CPU path) are refused. Fails with
+// the reason when there is no usable device or the world does not fit in its memory.
+Result<std::unique_ptr<VoxelFrameSource>> makeGpuVoxelFrameSource(const std::string& device,
+                                                                  bool hardwareOnly,
+                                                                  const voxel::VoxelWorld& world,
+                                                                  voxel::TextureSet textures);
 
 }  // namespace luxel::viewer

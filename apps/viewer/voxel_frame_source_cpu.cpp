@@ -9,6 +9,7 @@ namespace {
 
 class CpuVoxelFrameSource final : public VoxelFrameSource {
   public:
+    explicit CpuVoxelFrameSource(voxel::TextureSet textures) : textures_(std::move(textures)) {}
     std::string backend() const override { return "cpu"; }
     std::string device() const override {
         return "CPU, " + std::to_string(hardwareThreads()) + " threads";
@@ -18,16 +19,19 @@ class CpuVoxelFrameSource final : public VoxelFrameSource {
                          const voxel::ShadeOptions& shading,
                          std::vector<PassTime>& passes) override {
         Stopwatch clock;
-        Image image = voxel::render(world, camera, shading);
+        Image image = voxel::render(world, camera, shading, &textures_);
         passes.push_back({"ray cast + shade", clock.milliseconds()});
         return image;
     }
+
+  private:
+    voxel::TextureSet textures_;
 };
 
 }  // namespace
 
-std::unique_ptr<VoxelFrameSource> makeCpuVoxelFrameSource() {
-    return std::make_unique<CpuVoxelFrameSource>();
+std::unique_ptr<VoxelFrameSource> makeCpuVoxelFrameSource(voxel::TextureSet textures) {
+    return std::make_unique<CpuVoxelFrameSource>(std::move(textures));
 }
 
 }  // namespace luxel::viewer

@@ -322,4 +322,32 @@ TEST_F(ViewerXvfb, GpuBackendMatchesTheCpuPicture) {
     EXPECT_LT(meanAbsDiff(png("gpu.png"), png("shot.png")), 0.01);
 }
 
+TEST_F(ViewerXvfb, VoxelGpuBackendMatchesTheCpuAndShowsEdits) {
+    auto devices = luxel::gpu::listDevices();
+    if (!devices || devices->empty()) GTEST_SKIP() << "no Vulkan device";
+    const std::string scene = write("terrain.json", kVoxelScene);
+    write("edit.txt",
+          "wait_render\n"
+          "screenshot before.png\n"
+          "click 160 120\n"
+          "wait_render\n"
+          "screenshot after.png\n"
+          "quit\n");
+    const std::string size = " --size 320x180 --internal-size 320x180 --script edit.txt";
+    RunResult r = view(scene + size + " --backend gpu");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("backend gpu"), std::string::npos) << r.output;
+    fs::rename(path("before.png"), path("gpu-before.png"));
+    fs::rename(path("after.png"), path("gpu-after.png"));
+    r = view(scene + size + " --backend cpu");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("backend cpu"), std::string::npos) << r.output;
+    // The same pictures before and after the edit (re-uploaded chunk on the GPU).
+    const Image gpuBefore = png("gpu-before.png"), gpuAfter = png("gpu-after.png");
+    EXPECT_LT(meanAbsDiff(gpuBefore, png("before.png")), 0.002);
+    EXPECT_LT(meanAbsDiff(gpuAfter, png("after.png")), 0.002);
+    EXPECT_GT(std::fabs(regionMean(gpuBefore, 160, 120, 6) - regionMean(gpuAfter, 160, 120, 6)),
+              1e-4);
+}
+
 }  // namespace
