@@ -5,12 +5,14 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "luxel/core/error.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/gi2d/medium2d.h"
 #include "luxel/gi2d/scene2d.h"
+#include "luxel/gpu/fwd.h"
 
 namespace luxel::cli {
 
@@ -51,6 +53,13 @@ Result<gi2d::Medium2D> loadMedium(const std::string& scenePath, const std::strin
                                   int supersample);
 
 inline constexpr int kExitBadInput = 1;
+
+// The GPU for `--backend` ("auto", "cpu" or "gpu") on `--device`: nullptr means the CPU path.
+// gpu fails when no device can be opened; auto skips software devices (lavapipe is slower than
+// the CPU path) and, unless quiet, notes on stderr why it uses the CPU. Debug builds turn on the
+// validation layers.
+Result<std::unique_ptr<gpu::Context>> chooseGpuBackend(const std::string& backend,
+                                                       const std::string& device, bool quiet);
 
 // A voxel scene render (`luxel render` on a file with "type": "voxel").
 struct VoxelRenderRequest {

@@ -5,6 +5,7 @@
 #include "commands/command.h"
 #include "luxel/gi2d/rasterize.h"
 #include "luxel/gi2d/scene2d_json.h"
+#include "luxel/gpu/context.h"
 
 namespace luxel::cli {
 
@@ -57,6 +58,33 @@ Result<gi2d::Medium2D> loadMedium(const std::string& scenePath, const std::strin
     auto sized = loadSizedScene(scenePath, size);
     if (!sized) return sized.error();
     return rasterizeSized(*sized, scenePath, supersample);
+}
+
+Result<std::unique_ptr<gpu::Context>> chooseGpuBackend(const std::string& backend,
+                                                       const std::string& device, bool quiet) {
+    if (backend != "auto" && backend != "cpu" && backend != "gpu") {
+        return Error("--backend '" + backend + "' is not auto, cpu or gpu");
+    }
+    if (backend == "cpu") return std::unique_ptr<gpu::Context>();
+#ifdef NDEBUG
+    constexpr bool kValidation = false;
+#else
+    constexpr bool kValidation = true;  // debug builds run with the validation layers
+#endif
+    auto context = gpu::Context::create({device, kValidation});
+    if (!context) {
+        if (backend == "gpu") return Error("--backend gpu: " + context.error().message());
+        if (!quiet) {
+            std::fprintf(stderr, "luxel: note: using the CPU backend (%s)\n",
+                         context.error().message().c_str());
+        }
+        return std::unique_ptr<gpu::Context>();
+    }
+    // A software Vulkan device (lavapipe) is slower than the CPU path: auto skips it.
+    if (backend == "auto" && (*context)->device().type == "cpu") {
+        return std::unique_ptr<gpu::Context>();
+    }
+    return std::move(*context);
 }
 
 }  // namespace luxel::cli

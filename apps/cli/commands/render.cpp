@@ -75,32 +75,12 @@ Result<gi2d::RcOptions> rcOptions(const RenderArgs& args) {
 // The GPU context for --backend gpu, or for auto when a hardware device exists and the solver
 // can use it; nullptr means the CPU path. auto falls back with a one-line note.
 Result<std::unique_ptr<gpu::Context>> chooseGpu(const RenderArgs& args, bool gpuCapable) {
-    if (args.backend != "auto" && args.backend != "cpu" && args.backend != "gpu") {
-        return Error("--backend '" + args.backend + "' is not auto, cpu or gpu");
+    if (args.backend == "gpu" && !gpuCapable) {
+        return Error("--backend gpu: this view runs on the CPU only");
     }
-    if (args.backend == "cpu" || !gpuCapable) {
-        if (args.backend == "gpu") return Error("--backend gpu: this view runs on the CPU only");
-        return std::unique_ptr<gpu::Context>();
-    }
-#ifdef NDEBUG
-    constexpr bool kValidation = false;
-#else
-    constexpr bool kValidation = true;  // debug builds run with the validation layers
-#endif
-    auto context = gpu::Context::create({args.device, kValidation});
-    if (!context) {
-        if (args.backend == "gpu") return Error("--backend gpu: " + context.error().message());
-        if (!args.quiet) {
-            std::fprintf(stderr, "luxel: note: using the CPU backend (%s)\n",
-                         context.error().message().c_str());
-        }
-        return std::unique_ptr<gpu::Context>();
-    }
-    // A software Vulkan device (lavapipe) is slower than the CPU path: auto skips it.
-    if (args.backend == "auto" && (*context)->device().type == "cpu") {
-        return std::unique_ptr<gpu::Context>();
-    }
-    return std::move(*context);
+    if (!gpuCapable)
+        return chooseGpuBackend(args.backend == "auto" ? "cpu" : args.backend, "", true);
+    return chooseGpuBackend(args.backend, args.device, args.quiet);
 }
 
 // RC: sphere tracing when the scene allows it (--march auto) or is told to, else the DDA through

@@ -14,33 +14,6 @@
 namespace luxel::cli {
 namespace {
 
-// The GPU for --backend gpu, or for auto when a hardware device exists; nullptr means the CPU.
-// auto skips software devices (lavapipe is slower than the CPU path) and falls back with a note.
-Result<std::unique_ptr<gpu::Context>> chooseVoxelGpu(const VoxelRenderRequest& request) {
-    if (request.backend != "auto" && request.backend != "cpu" && request.backend != "gpu") {
-        return Error("--backend '" + request.backend + "' is not auto, cpu or gpu");
-    }
-    if (request.backend == "cpu") return std::unique_ptr<gpu::Context>();
-#ifdef NDEBUG
-    constexpr bool kValidation = false;
-#else
-    constexpr bool kValidation = true;  // debug builds run with the validation layers
-#endif
-    auto context = gpu::Context::create({request.device, kValidation});
-    if (!context) {
-        if (request.backend == "gpu") return Error("--backend gpu: " + context.error().message());
-        if (!request.quiet) {
-            std::fprintf(stderr, "luxel: note: using the CPU backend (%s)\n",
-                         context.error().message().c_str());
-        }
-        return std::unique_ptr<gpu::Context>();
-    }
-    if (request.backend == "auto" && (*context)->device().type == "cpu") {
-        return std::unique_ptr<gpu::Context>();
-    }
-    return std::move(*context);
-}
-
 Result<Image> renderOnGpu(gpu::Context& context, const voxel::VoxelScene& scene) {
     auto renderer = voxel::VoxelGpuRenderer::create(context, scene.world, &scene.textures);
     if (!renderer) return renderer.error();
@@ -56,7 +29,7 @@ int renderVoxelScene(const VoxelRenderRequest& request) {
     auto scene = voxel::loadVoxelScene(request.scene, size->first, size->second);
     if (!scene) return reportError(scene.error());
     const double loadSeconds = loadTime.seconds();
-    auto context = chooseVoxelGpu(request);
+    auto context = chooseGpuBackend(request.backend, request.device, request.quiet);
     if (!context) return reportError(context.error());
     Stopwatch renderTime;
     Image radiance;
