@@ -2,8 +2,6 @@
 // stderr and a non-zero exit, never a crash.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -13,26 +11,17 @@
 #include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/gi2d/medium2d.h"
+#include "support/run_command.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct RunResult {
-    int exitCode;
-    std::string output;  // stdout and stderr together
-};
+using luxel::test::RunResult;
 
 RunResult runLuxel(const std::string& args, const std::string& environment = "") {
-    const std::string command =
-        environment + (environment.empty() ? "" : " ") + LUXEL_CLI_PATH + " " + args + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return {-1, "popen failed"};
-    std::string output;
-    std::array<char, 4096> buffer;
-    while (std::fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), output};
+    return luxel::test::runCommand(environment + (environment.empty() ? "" : " ") + LUXEL_CLI_PATH +
+                                   " " + args);
 }
 
 class Cli : public testing::Test {

@@ -1,7 +1,6 @@
 // luxel-view end to end under a virtual X display (Debian xvfb): scripted input, screenshots, and
 // what the pictures must show. xvfb-run is a listed dependency, so its absence fails loudly.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <array>
@@ -15,25 +14,17 @@
 #include "luxel/core/image_io.h"
 #include "luxel/gi2d/scene2d_json.h"
 #include "luxel/gpu/context.h"
+#include "support/run_command.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using luxel::Image;
 
-struct RunResult {
-    int exitCode;
-    std::string output;
-};
+using luxel::test::RunResult;
 
 RunResult run(const std::string& command) {
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe) return {-1, "popen failed"};
-    std::string output;
-    std::array<char, 4096> buffer;
-    while (std::fgets(buffer.data(), buffer.size(), pipe)) output += buffer.data();
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), output};
+    return luxel::test::runCommand(command);
 }
 
 // Mean of the first three channels over the square of half-side r around (cx, cy).
