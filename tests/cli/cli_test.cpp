@@ -299,6 +299,16 @@ TEST_F(Cli, RendersVoxelScenes) {
     expectError("render " + bad + " --out " + path("x.png"), "camera.pitch");
 }
 
+TEST_F(Cli, InfoDescribesVoxelScenes) {
+    const std::string scene = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/garden.json";
+    const RunResult r = runLuxel("info " + scene + " --size 320x180");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("40x28x40 voxels in chunks of 8"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("textures           3"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("image              320x180"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("memory (gpu)"), std::string::npos) << r.output;
+}
+
 TEST_F(Cli, BenchesVoxelScenes) {
     const std::string scene = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/garden.json";
     RunResult r = runLuxel("bench " + scene + " --sizes 64x36,80x45 --repeat 1");

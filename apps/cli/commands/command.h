@@ -78,4 +78,7 @@ struct VoxelBenchRequest {
 };
 int benchVoxelScene(const VoxelBenchRequest& request);
 
+// `luxel info` on a voxel scene (`size`: WxH overriding the camera's image size, or empty).
+int infoVoxelScene(const std::string& path, const std::string& size);
+
 }  // namespace luxel::cli

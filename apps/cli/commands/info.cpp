@@ -1,4 +1,5 @@
-// `luxel info`: what a scene holds and the memory rendering it needs.
+// `luxel info`: what a scene holds and the memory rendering it needs (voxel scenes:
+// info_voxel.cpp).
 #include <cstdio>
 #include <memory>
 
@@ -8,6 +9,7 @@
 #include "luxel/gi2d/ray_march.h"
 #include "luxel/gi2d/reference_solver.h"
 #include "luxel/gi2d/scene2d_json.h"
+#include "luxel/voxel/voxel_scene.h"
 
 namespace luxel::cli {
 namespace {
@@ -22,6 +24,7 @@ void printRgb(const char* label, Rgb v) {
 }
 
 int runInfo(const InfoArgs& args) {
+    if (voxel::isVoxelSceneFile(args.scene)) return infoVoxelScene(args.scene, args.size);
     auto dims = parseSize(args.size);
     if (!dims) return reportError(dims.error());
     auto scene = gi2d::loadScene2D(args.scene);

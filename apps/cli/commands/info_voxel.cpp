@@ -1,0 +1,50 @@
+// `luxel info` on a voxel scene: the world, camera and render options it holds, and the memory
+// rendering it needs on the CPU and on the GPU.
+#include <cstdio>
+
+#include "commands/command.h"
+#include "luxel/core/memory.h"
+#include "luxel/voxel/voxel_gpu.h"
+#include "luxel/voxel/voxel_scene.h"
+
+namespace luxel::cli {
+
+int infoVoxelScene(const std::string& path, const std::string& size) {
+    auto dims = parseSize(size);
+    if (!dims) return reportError(dims.error());
+    auto scene = voxel::loadVoxelScene(path, dims->first, dims->second);
+    if (!scene) return reportError(scene.error());
+    const voxel::VoxelWorld& world = scene->world;
+    const voxel::Camera& camera = scene->camera;
+    const voxel::ShadeOptions& shading = scene->shading;
+    const Int3 s = world.size();
+    std::printf("%s\n", path.c_str());
+    std::printf("  world              %dx%dx%d voxels in chunks of %d, %llu solid\n", s.x, s.y, s.z,
+                world.chunkSize(), static_cast<unsigned long long>(world.solidCount()));
+    std::printf("  textures           %d\n", scene->textures.size());
+    const Vec3d p = camera.position(), f = camera.forward();
+    std::printf("  camera             at (%g, %g, %g) looking along (%.3f, %.3f, %.3f), fov %g\n",
+                p.x, p.y, p.z, f.x, f.y, f.z, camera.fovYDegrees());
+    std::printf("  image              %dx%d\n", camera.width(), camera.height());
+    const Vec3 sun = shading.sunDirection;
+    std::printf("  sun                (%g, %g, %g)\n", sun.x, sun.y, sun.z);
+    std::printf("  reflections        %d (%s)\n", shading.maxReflections,
+                shading.reflectionMode == voxel::ShadeOptions::ReflectionMode::EnergyConserving
+                    ? "energy"
+                    : "seed");
+    std::printf("  shadows, textures  %s, %s\n", shading.shadows ? "on" : "off",
+                shading.textures ? "on" : "off");
+    const std::uint64_t image =
+        static_cast<std::uint64_t>(camera.width()) * camera.height() * 3 * sizeof(float);
+    std::printf("  memory (cpu)       %s (world %s, image %s)\n",
+                formatBytes(voxel::VoxelWorld::bytesFor(s, world.chunkSize()) + image).c_str(),
+                formatBytes(voxel::VoxelWorld::bytesFor(s, world.chunkSize())).c_str(),
+                formatBytes(image).c_str());
+    std::printf("  memory (gpu)       %s\n",
+                formatBytes(voxel::estimateVoxelGpuMemory(s, world.chunkSize(), &scene->textures,
+                                                          camera.width(), camera.height()))
+                    .c_str());
+    return 0;
+}
+
+}  // namespace luxel::cli
