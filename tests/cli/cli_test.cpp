@@ -307,6 +307,9 @@ TEST_F(Cli, InfoDescribesVoxelScenes) {
     EXPECT_NE(r.output.find("textures           3"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("image              320x180"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("memory (gpu)"), std::string::npos) << r.output;
+    // 2D-only commands say what the file is instead of a 2D field error.
+    expectError("raster " + scene + " --emission " + path("x.exr"), "a voxel scene");
+    expectError("compare-solvers " + scene, "a voxel scene");
 }
 
 TEST_F(Cli, BenchesVoxelScenes) {

@@ -6,6 +6,7 @@
 #include "luxel/gi2d/rasterize.h"
 #include "luxel/gi2d/scene2d_json.h"
 #include "luxel/gpu/context.h"
+#include "luxel/voxel/voxel_scene.h"
 
 namespace luxel::cli {
 
@@ -36,6 +37,9 @@ Result<std::pair<int, int>> parseSize(const std::string& text) {
 Result<SizedScene> loadSizedScene(const std::string& scenePath, const std::string& size) {
     auto dims = parseSize(size);
     if (!dims) return dims.error();
+    if (voxel::isVoxelSceneFile(scenePath)) {
+        return Error(scenePath + ": a voxel scene; this command works on 2D scenes");
+    }
     auto scene = gi2d::loadScene2D(scenePath);
     if (!scene) return scene.error();
     SizedScene sized{std::move(*scene), dims->first, dims->second};

@@ -18,6 +18,7 @@
 #include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/metrics.h"
+#include "luxel/voxel/voxel_scene.h"
 
 extern char** environ;
 
@@ -110,6 +111,10 @@ int runCompareSolvers(const CompareSolversArgs& args) {
         return reportError(Error("cannot open scene '" + args.scene + "'"));
     }
     if (auto size = parseSize(args.size); !size) return reportError(size.error());
+    if (voxel::isVoxelSceneFile(args.scene)) {
+        return reportError(Error(args.scene + ": a voxel scene; compare-solvers compares the 2D "
+                                              "solvers"));
+    }
     const std::vector<SolverRun> solvers = {
         {"reference", {"--solver", "reference", "--rays", std::to_string(args.rays)}},
         // The CPU paths, so peak memory is the solver's own (no Vulkan driver loaded).
