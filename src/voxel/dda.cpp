@@ -206,8 +206,7 @@ Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap, C
         if (!(best >= 0.0)) axis = -1;  // -0.0 >= 0: an origin on the face counts
     }
 
-    Walk w{o,  d,   {1.0 / d.x, 1.0 / d.y, 1.0 / d.z}, size, {step[0], step[1], step[2]}, cell, {},
-           t0, axis};
+    Walk w{o, d, inv, size, {step[0], step[1], step[2]}, cell, {}, t0, axis};
     for (int a = 0; a < 3; ++a) w.next[a] = step[a] != 0 ? w.exitAt(cell[a], a) : kInfinity;
 
     const auto missAfter = [&miss](int n) {
