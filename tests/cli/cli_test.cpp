@@ -297,6 +297,8 @@ TEST_F(Cli, RendersVoxelScenes) {
     const std::string bad = write("bad.json", R"({"type": "voxel", "world": {"source": "empty",
         "size": [8, 8, 8]}, "camera": {"position": [0, 0, 0], "pitch": 120}})");
     expectError("render " + bad + " --out " + path("x.png"), "camera.pitch");
+    expectError("render " + scene + " --solver hrc --out " + path("x.png"),
+                "--solver applies to 2D scenes");
 }
 
 TEST_F(Cli, InfoDescribesVoxelScenes) {

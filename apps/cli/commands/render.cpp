@@ -1,6 +1,7 @@
 // `luxel render`: scene -> fluence image (EXR linear or PNG tonemapped) and display PNG.
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include "commands/command.h"
 #include "luxel/core/image_io.h"
@@ -22,6 +23,7 @@ namespace {
 
 struct RenderArgs {
     std::string scene, solver = "reference", size, out, png, tonemap = "aces";
+    std::vector<std::string> options2DGiven;  // 2D-only options on the command line
     int rays = gi2d::ReferenceOptions{}.rays;
     int threads = 0;
     int supersample = 16;
@@ -188,6 +190,10 @@ int runRender(const RenderArgs& args) {
     const ToneMapSettings tone{args.exposure, *curve};
     ThreadLimit threadLimit(args.threads);
     if (voxel::isVoxelSceneFile(args.scene)) {
+        if (!args.options2DGiven.empty()) {
+            return reportError(Error(args.options2DGiven.front() + " applies to 2D scenes; " +
+                                     args.scene + " is a voxel scene"));
+        }
         return renderVoxelScene({args.scene, args.size, args.out, args.png, tone, args.quiet,
                                  args.stats, args.backend, args.device});
     }
@@ -299,7 +305,16 @@ Runner addRenderCommand(CLI::App& app) {
                    "auto (a hardware GPU when there is one, else CPU), cpu or gpu (HRC, RC, voxel)")
         ->capture_default_str();
     app.add_option("--device", args->device, "GPU: device index or part of its name");
-    return [args] { return runRender(*args); };
+    CLI::App* command = &app;
+    return [args, command] {
+        for (const char* name :
+             {"--solver", "--rays", "--seed", "--supersample", "--traced-levels", "--no-blur",
+              "--frustum", "--cascade", "--merge", "--march", "--probe-spacing", "--base-rays",
+              "--base-interval", "--max-cascades", "--view"}) {
+            if (command->count(name) > 0) args->options2DGiven.push_back(name);
+        }
+        return runRender(*args);
+    };
 }
 
 }  // namespace luxel::cli
