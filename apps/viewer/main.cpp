@@ -100,11 +100,10 @@ int main(int argc, char** argv) {
         // A hardware GPU renders the full window. On the CPU (and on a software device such as
         // lavapipe, which is slower) a quarter of the window side keeps the ray caster near 10
         // frames per second on two cores (240x135 for the 960x540 terrain view).
-        const bool fullSize = source != nullptr && hasHardwareGpu();
         if (!source) source = makeCpuVoxelFrameSource(scene->textures);
         const std::pair<int, int> fallback =
-            fullSize ? std::pair{windowW, windowH}
-                     : std::pair{std::max(1, windowW / 4), std::max(1, windowH / 4)};
+            source->hardwareGpu() ? std::pair{windowW, windowH}
+                                  : std::pair{std::max(1, windowW / 4), std::max(1, windowH / 4)};
         const auto internal = internalSize(o, windowW, windowH, fallback);
         mode = std::make_unique<ModeVoxel>(std::move(*scene), internal.first, internal.second,
                                            o.exposure, std::move(source));

@@ -14,6 +14,7 @@ class CpuVoxelFrameSource final : public VoxelFrameSource {
     std::string device() const override {
         return "CPU, " + std::to_string(hardwareThreads()) + " threads";
     }
+    bool hardwareGpu() const override { return false; }
     void worldEdited(const voxel::VoxelWorld&, Int3, Int3) override {}
     Result<Image> render(const voxel::VoxelWorld& world, const voxel::Camera& camera,
                          const voxel::ShadeOptions& shading,

@@ -56,11 +56,9 @@ int runBench(const BenchArgs& args) {
     if (!sized) return reportError(sized.error());
     std::unique_ptr<gpu::Context> context;
     if (args.backend == "gpu") {
-        auto created = gpu::Context::create({args.device, false});
-        if (!created) return reportError(Error("--backend gpu: " + created.error().message()));
-        context = std::move(*created);
-        std::printf("device: %s (%s)\n", context->device().name.c_str(),
-                    context->device().type.c_str());
+        auto opened = openBenchGpu(args.device);
+        if (!opened) return reportError(opened.error());
+        context = std::move(*opened);
     }
     std::printf("%s, hrc on the %s, best of %d\n", args.scene.c_str(), args.backend.c_str(),
                 args.repeat);

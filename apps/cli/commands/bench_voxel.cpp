@@ -53,11 +53,9 @@ int benchVoxelScene(const VoxelBenchRequest& request) {
     std::unique_ptr<gpu::Context> context;
     std::unique_ptr<voxel::VoxelGpuRenderer> renderer;
     if (request.backend == "gpu") {
-        auto created = gpu::Context::create({request.device, false});
-        if (!created) return reportError(Error("--backend gpu: " + created.error().message()));
-        context = std::move(*created);
-        std::printf("device: %s (%s)\n", context->device().name.c_str(),
-                    context->device().type.c_str());
+        auto opened = openBenchGpu(request.device);
+        if (!opened) return reportError(opened.error());
+        context = std::move(*opened);
         auto uploaded = voxel::VoxelGpuRenderer::create(*context, scene->world, &scene->textures);
         if (!uploaded) return reportError(uploaded.error());
         renderer = std::make_unique<voxel::VoxelGpuRenderer>(std::move(*uploaded));

@@ -61,6 +61,10 @@ inline constexpr int kExitBadInput = 1;
 Result<std::unique_ptr<gpu::Context>> chooseGpuBackend(const std::string& backend,
                                                        const std::string& device, bool quiet);
 
+// The GPU for `luxel bench --backend gpu` (no validation layers, which would skew timings), with
+// its name printed; fails with "--backend gpu: <reason>".
+Result<std::unique_ptr<gpu::Context>> openBenchGpu(const std::string& device);
+
 // A voxel scene render (`luxel render` on a file with "type": "voxel").
 struct VoxelRenderRequest {
     std::string scene, size, out, png;

@@ -91,4 +91,12 @@ Result<std::unique_ptr<gpu::Context>> chooseGpuBackend(const std::string& backen
     return std::move(*context);
 }
 
+Result<std::unique_ptr<gpu::Context>> openBenchGpu(const std::string& device) {
+    auto context = gpu::Context::create({device, false});
+    if (!context) return Error("--backend gpu: " + context.error().message());
+    std::printf("device: %s (%s)\n", (*context)->device().name.c_str(),
+                (*context)->device().type.c_str());
+    return std::move(*context);
+}
+
 }  // namespace luxel::cli

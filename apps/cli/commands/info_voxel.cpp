@@ -36,9 +36,9 @@ int infoVoxelScene(const std::string& path, const std::string& size) {
                 shading.textures ? "on" : "off");
     const std::uint64_t image =
         static_cast<std::uint64_t>(camera.width()) * camera.height() * 3 * sizeof(float);
+    const std::uint64_t worldBytes = voxel::VoxelWorld::bytesFor(s, world.chunkSize());
     std::printf("  memory (cpu)       %s (world %s, image %s)\n",
-                formatBytes(voxel::VoxelWorld::bytesFor(s, world.chunkSize()) + image).c_str(),
-                formatBytes(voxel::VoxelWorld::bytesFor(s, world.chunkSize())).c_str(),
+                formatBytes(worldBytes + image).c_str(), formatBytes(worldBytes).c_str(),
                 formatBytes(image).c_str());
     std::printf("  memory (gpu)       %s\n",
                 formatBytes(voxel::estimateVoxelGpuMemory(s, world.chunkSize(), &scene->textures,
