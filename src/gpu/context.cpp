@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "gpu/embedded_shaders.h"
+#include "gpu/spirv_reflect.h"
 #include "luxel/core/memory.h"
 
 namespace luxel::gpu {
@@ -30,6 +31,7 @@ class Program {
     vk::raii::Pipeline pipeline{nullptr};
     int storageBuffers = 0;
     int pushBytes = 0;
+    std::array<std::uint32_t, 3> workgroupSize{1, 1, 1};
 };
 
 struct Context::Impl {
@@ -354,10 +356,16 @@ Result<Program*> Context::program(const std::string& shader, int storageBuffers,
     }
     const std::span<const std::uint32_t> words = detail::embeddedShader(shader);
     if (words.empty()) return Error("no embedded shader named '" + shader + "'");
+    auto reflection = reflectSpirv(words);
+    if (!reflection) return Error("shader '" + shader + "': " + reflection.error().message());
+    for (std::uint32_t size : reflection->workgroupSize) {
+        if (size == 0) return Error("shader '" + shader + "' declares no workgroup size");
+    }
     return guarded([&]() -> Result<Program*> {
         auto p = std::make_unique<Program>();
         p->storageBuffers = storageBuffers;
         p->pushBytes = pushBytes;
+        p->workgroupSize = reflection->workgroupSize;
         p->module = vk::raii::ShaderModule(
             impl_->device, vk::ShaderModuleCreateInfo({}, words.size() * 4, words.data()));
         std::vector<vk::DescriptorSetLayoutBinding> bindings;
@@ -386,9 +394,25 @@ Result<Program*> Context::program(const std::string& shader, int storageBuffers,
     });
 }
 
+std::array<std::uint32_t, 3> Context::workgroupSize(const Program& program) {
+    return program.workgroupSize;
+}
+
 Result<std::vector<PassTiming>> Context::run(std::span<const Dispatch> dispatches) {
     for (const Dispatch& d : dispatches) {
         LUXEL_CHECK(d.program != nullptr);
+        for (int a = 0; a < 3; ++a) {
+            LUXEL_CHECK_GT(d.threads[a], 0u);
+            // Vulkan guarantees 65535 workgroups per axis (maxComputeWorkGroupCount minimum).
+            const std::uint64_t groups =
+                (std::uint64_t{d.threads[a]} + d.program->workgroupSize[a] - 1) /
+                d.program->workgroupSize[a];
+            if (groups > 65535) {
+                return Error("pass '" + d.name + "' needs " + std::to_string(groups) +
+                             " workgroups on axis " + std::to_string(a) +
+                             "; Vulkan guarantees 65535");
+            }
+        }
         LUXEL_CHECK_EQ(static_cast<int>(d.buffers.size()), d.program->storageBuffers);
         LUXEL_CHECK_EQ(static_cast<int>(d.pushConstants.size()), d.program->pushBytes);
     }
@@ -445,7 +469,10 @@ Result<std::vector<PassTiming>> Context::run(std::span<const Dispatch> dispatche
                     cmd.pushConstants<std::byte>(
                         *d.program->layout, vk::ShaderStageFlagBits::eCompute, 0, d.pushConstants);
                 }
-                cmd.dispatch(d.groups[0], d.groups[1], d.groups[2]);
+                const auto& local = d.program->workgroupSize;
+                cmd.dispatch((d.threads[0] + local[0] - 1) / local[0],
+                             (d.threads[1] + local[1] - 1) / local[1],
+                             (d.threads[2] + local[2] - 1) / local[2]);
                 if (*queries) {
                     cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries,
                                        2 * i + 1);

@@ -279,10 +279,7 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
         const int rows = std::min(kBandRows, h - row);
         d.setPush(shared::VoxelBandPush{static_cast<std::uint32_t>(row),
                                         static_cast<std::uint32_t>(rows)});
-        d.groups[0] =
-            static_cast<std::uint32_t>((w + LUXEL_VOXEL_GROUP_X - 1) / LUXEL_VOXEL_GROUP_X);
-        d.groups[1] =
-            static_cast<std::uint32_t>((rows + LUXEL_VOXEL_GROUP_Y - 1) / LUXEL_VOXEL_GROUP_Y);
+        d.setThreads(static_cast<std::uint64_t>(w), static_cast<std::uint64_t>(rows));
         dispatches.push_back(std::move(d));
     }
     auto passes = s.context->run(dispatches);

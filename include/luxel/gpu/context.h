@@ -3,6 +3,7 @@
 // machine without a loader or device gets an Error (and the caller its CPU path), never a crash.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <memory>
@@ -65,6 +66,8 @@ class Context {
     // The compute program of an embedded shader (cached by name). `storageBuffers` bindings
     // 0..n-1 in set 0 and a push-constant block of `pushBytes` (both checked at dispatch).
     Result<Program*> program(const std::string& shader, int storageBuffers, int pushBytes);
+    // The workgroup size the program's shader declares.
+    static std::array<std::uint32_t, 3> workgroupSize(const Program& program);
 
     // Records and runs dispatches in one submission; returns their GPU times.
     Result<std::vector<PassTiming>> run(std::span<const Dispatch> dispatches);
@@ -76,13 +79,22 @@ class Context {
     std::unique_ptr<Impl> impl_;
 };
 
-// One compute dispatch: `groups` workgroups of the program, with its buffers and push constants.
+// One compute dispatch of a program over `threads` invocations, with its buffers and push
+// constants. The workgroup size is the shader's own (read from its SPIR-V when the program is
+// made), so it is declared once, in the shared header the shader's local_size uses; the runtime
+// launches ceil(threads / workgroup size) groups on each axis and the shader discards the excess.
 struct Dispatch {
-    std::string name;
+    std::string name;  // the pass's name in timings
     Program* program = nullptr;
     std::vector<Buffer*> buffers;
     std::vector<std::byte> pushConstants;
-    std::uint32_t groups[3] = {1, 1, 1};
+    std::uint32_t threads[3] = {0, 0, 0};
+
+    void setThreads(std::uint64_t x, std::uint64_t y = 1, std::uint64_t z = 1) {
+        threads[0] = static_cast<std::uint32_t>(x);
+        threads[1] = static_cast<std::uint32_t>(y);
+        threads[2] = static_cast<std::uint32_t>(z);
+    }
 
     template <typename T>
     void setPush(const T& value) {

@@ -21,10 +21,6 @@ namespace shared = gpu::shared;
 
 namespace {
 
-std::uint32_t groupsFor(int count, int size) {
-    return static_cast<std::uint32_t>((count + size - 1) / size);
-}
-
 // Entries of T_n and R_n for the larger of the two frame orientations.
 std::uint64_t tableEntries(int width, int height, int n) {
     std::uint64_t most = 0;
@@ -156,9 +152,7 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
         for (int n = 0; n < levels; ++n) {
             const auto planes = static_cast<std::uint32_t>(planeCount(frame.length, n));
             gpu::Dispatch d;
-            d.groups[0] = groupsFor(frame.rows, LUXEL_HRC_GROUP_SIZE);
-            d.groups[1] = static_cast<std::uint32_t>(pow2(n) + 1);
-            d.groups[2] = planes;
+            d.setThreads(rows, pow2(n) + 1, planes);
             if (n < options.tracedLevels) {
                 d.name = "trace T" + std::to_string(n) + tag;
                 d.program = *trace;
@@ -189,9 +183,7 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
                 static_cast<std::uint32_t>(n), rows, planes,
                 top ? 0u : static_cast<std::uint32_t>(planeCount(frame.length, n + 1)),
                 top ? 0u : 1u, sky.r, sky.g, sky.b});
-            d.groups[0] = groupsFor(frame.rows, LUXEL_HRC_GROUP_SIZE);
-            d.groups[1] = static_cast<std::uint32_t>(pow2(n));
-            d.groups[2] = planes;
+            d.setThreads(rows, pow2(n), planes);
             passes.push_back(std::move(d));
             current ^= 1;
         }
@@ -202,8 +194,7 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
         out.setPush(HrcReadoutParams{
             static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(frame.length), rows,
             static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h), sky.r, sky.g, sky.b});
-        out.groups[0] = groupsFor(frame.length, LUXEL_HRC_GROUP_SIZE);
-        out.groups[1] = rows;
+        out.setThreads(static_cast<std::uint64_t>(frame.length), rows);
         passes.push_back(std::move(out));
         auto ran = context.run(passes);
         if (!ran) return ran.error();
@@ -219,8 +210,7 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
     last.setPush(HrcFinishParams{static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h),
                                  static_cast<std::uint32_t>(frustums),
                                  options.crossBlur ? 1u : 0u});
-    last.groups[0] = groupsFor(w, 8);
-    last.groups[1] = groupsFor(h, 8);
+    last.setThreads(static_cast<std::uint64_t>(w), static_cast<std::uint64_t>(h));
     auto ran = context.run(std::span<const gpu::Dispatch>(&last, 1));
     if (!ran) return ran.error();
     if (timings) timings->insert(timings->end(), ran->begin(), ran->end());

@@ -29,10 +29,8 @@ Result<double> extendLevelOnGpu(gpu::Context& context, RayTables& tables, int n)
     dispatch.program = *program;
     dispatch.buffers = {belowBuffer->get(), aboveBuffer->get()};
     dispatch.setPush(params);
-    dispatch.groups[0] = static_cast<std::uint32_t>((tables.rows() + LUXEL_HRC_GROUP_SIZE - 1) /
-                                                    LUXEL_HRC_GROUP_SIZE);
-    dispatch.groups[1] = static_cast<std::uint32_t>(pow2(n) + 1);
-    dispatch.groups[2] = static_cast<std::uint32_t>(tables.planes(n));
+    dispatch.setThreads(static_cast<std::uint64_t>(tables.rows()), pow2(n) + 1,
+                        static_cast<std::uint64_t>(tables.planes(n)));
     auto timings = context.run(std::span<const gpu::Dispatch>(&dispatch, 1));
     if (!timings) return timings.error();
     if (Status s = context.download(**aboveBuffer, std::as_writable_bytes(above)); !s) {

@@ -95,8 +95,8 @@ Result<Image> solveRcOnGpu(gpu::Context& context, const Medium2D& medium, const 
             static_cast<std::uint64_t>(c.probesX) * c.probesY * stored;
         // Vulkan guarantees only 65535 groups per dimension: fold large cascades into y.
         const std::uint64_t groups = (invocations + LUXEL_RC_GROUP_SIZE - 1) / LUXEL_RC_GROUP_SIZE;
-        d.groups[0] = static_cast<std::uint32_t>(std::min<std::uint64_t>(groups, 65535));
-        d.groups[1] = static_cast<std::uint32_t>((groups + 65534) / 65535);
+        d.setThreads(std::min<std::uint64_t>(groups, 65535) * LUXEL_RC_GROUP_SIZE,
+                     (groups + 65534) / 65535);
         passes.push_back(std::move(d));
         current ^= 1;
     }
