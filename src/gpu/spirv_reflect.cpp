@@ -203,7 +203,12 @@ Result<SpirvStruct> SpirvReflection::bufferElement(std::uint32_t binding) const 
         const auto array = members.empty() ? tables->runtimeArrayElement.end()
                                            : tables->runtimeArrayElement.find(members.back());
         if (array == tables->runtimeArrayElement.end()) {
-            return Error("binding " + std::to_string(binding) + " does not end in a runtime array");
+            // `buffer B { Params params; }`: one struct, no array.
+            if (members.size() == 1 && tables->structMembers.count(members[0])) {
+                return tables->layoutOf(members[0]);
+            }
+            return Error("binding " + std::to_string(binding) +
+                         " holds neither a runtime array nor a single struct");
         }
         if (!tables->structMembers.count(array->second)) {
             return Error("binding " + std::to_string(binding) +

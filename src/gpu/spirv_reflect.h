@@ -27,9 +27,9 @@ struct SpirvReflection {
     SpirvStruct pushConstants;
     bool hasPushConstants = false;
 
-    // The element struct of the runtime array in the storage buffer at (set 0, binding):
-    // `buffer B { Element e[]; }`. An error when the binding does not exist or its array's
-    // element is not a struct.
+    // The struct in the storage buffer at (set 0, binding): the element of its runtime array,
+    // `buffer B { Element e[]; }` (arrayStride set), or its one member, `buffer B { Params p; }`.
+    // An error when the binding does not exist or holds an array of scalars or vectors.
     Result<SpirvStruct> bufferElement(std::uint32_t binding) const;
 
     // Every storage-buffer binding of set 0, ascending.

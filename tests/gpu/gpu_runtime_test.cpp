@@ -27,35 +27,6 @@ std::unique_ptr<Context> makeContext() {
     auto context = makeContext();  \
     if (!context) GTEST_SKIP() << "no Vulkan device: " << Context::create().error().message()
 
-TEST(GpuSharedLayout, OffsetsMatchTheShaderSide) {
-    // std430 push-constant block of four uints: 0, 4, 8, 12 (the shader reads them in order).
-    EXPECT_EQ(sizeof(shared::HrcExtendParams), 16u);
-    EXPECT_EQ(offsetof(shared::HrcExtendParams, level), 0u);
-    EXPECT_EQ(offsetof(shared::HrcExtendParams, rows), 4u);
-    EXPECT_EQ(offsetof(shared::HrcExtendParams, planesBelow), 8u);
-    EXPECT_EQ(offsetof(shared::HrcExtendParams, planes), 12u);
-    EXPECT_EQ(LUXEL_HRC_ENTRY_WORDS * 4, 12);  // = sizeof(RayTables entry): six binary16
-}
-
-TEST(GpuSharedLayout, AllPushConstantBlocks) {
-    // std430 rules for scalars: each field at the next multiple of 4, in declaration order.
-    EXPECT_EQ(sizeof(shared::HrcTraceParams), 16u);
-    EXPECT_EQ(offsetof(shared::HrcTraceParams, frameLength), 12u);
-    EXPECT_EQ(sizeof(shared::HrcMergeParams), 32u);
-    EXPECT_EQ(offsetof(shared::HrcMergeParams, hasUpper), 16u);
-    EXPECT_EQ(offsetof(shared::HrcMergeParams, skyB), 28u);
-    EXPECT_EQ(sizeof(shared::HrcReadoutParams), 32u);
-    EXPECT_EQ(offsetof(shared::HrcReadoutParams, canvasHeight), 16u);
-    EXPECT_EQ(sizeof(shared::HrcFinishParams), 16u);
-    EXPECT_EQ(offsetof(shared::HrcFinishParams, blur), 12u);
-    EXPECT_EQ(sizeof(shared::RcCascadeParams), 80u);
-    EXPECT_EQ(offsetof(shared::RcCascadeParams, bilinearFix), 40u);
-    EXPECT_EQ(offsetof(shared::RcCascadeParams, upperIntervalStart), 60u);
-    EXPECT_EQ(offsetof(shared::RcCascadeParams, skyB), 72u);
-    // Every field is 4 bytes, so a struct's size is 4 x its field count: no hidden padding.
-    static_assert(alignof(shared::RcCascadeParams) == 4);
-}
-
 TEST(GpuRuntime, EmbedsEveryShader) {
     const std::vector<std::string> names = embeddedShaders();
     for (const char* shader :
