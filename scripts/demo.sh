@@ -51,7 +51,7 @@ ms=$(( ($(date +%s%N) - start) / 1000000 ))
 printf '%-14s %-10s %4d.%02d    %s\n' "garden" "960x540" $((ms / 1000)) $((ms % 1000 / 10)) \
   "out/garden.png (textures with cutouts)"
 
-# Reference renders double as the benchmark's error yardstick (bench/bench_hrc.cpp).
+# Reference renders double as the benchmark's error yardstick (bench/bench_cascades2d.cpp).
 mkdir -p out/reference-cache
 cp "out/$default_scene.exr" "out/reference-cache/${default_scene}_$size.exr"
 

@@ -13,7 +13,7 @@
 namespace luxel::viewer {
 namespace {
 
-// The seed's 1-5 keys: red, green, blue, yellow, white.
+// The raylib radiance-cascades demo's 1-5 keys: red, green, blue, yellow, white.
 constexpr Rgb kLightColours[5] = {
     {1.0f, 0.15f, 0.1f}, {0.15f, 1.0f, 0.2f}, {0.15f, 0.3f, 1.0f}, {1.0f, 0.9f, 0.2f}, {1, 1, 1}};
 
@@ -125,7 +125,7 @@ void Mode2D::handleEvent(const SDL_Event& event, const ViewRect& view) {
             }
             dragIndex_ = gi2d::pickShape(scene_, p, /*tolerance=*/2.0);
             if (dragIndex_ < 0 && light()) {
-                // Empty space: the light jumps to the pointer, as in the seed.
+                // Empty space: the light jumps to the pointer, as in the raylib demo.
                 dragIndex_ = lightIndex_;
                 gi2d::translateShape(*light(), p - gi2d::shapeCenter(*light()));
                 sceneChanged();

@@ -1,5 +1,6 @@
-// 2D mode: the seed's controls (drag the light, SPACE probes, R GI, C cascade, Up/Down intensity,
-// 1-5 colour), solver/backend/exposure switches, and paint mode with save to JSON.
+// 2D mode: the raylib radiance-cascades demo's controls (drag the light, SPACE probes, R GI, C
+// cascade, Up/Down intensity, 1-5 colour), solver/backend/exposure switches, and paint mode with
+// save to JSON.
 #pragma once
 
 #include <memory>

@@ -21,12 +21,12 @@ Solver2D parseSolver(const std::string& name);  // names from solverName; unknow
 
 struct View2D {
     Solver2D solver = Solver2D::Hrc;
-    std::string backend = "auto";   // auto | cpu | gpu
-    std::string device;             // Vulkan device choice (ContextOptions::device)
-    bool gi = true;                 // false: emission only (the seed's R)
-    bool probes = false;            // mark probe centres (the seed's SPACE)
-    int cascade = -1;               // >= 0: show that cascade instead of the fluence (the seed's C)
-    float exposure = 0.0f;          // stops
+    std::string backend = "auto";  // auto | cpu | gpu
+    std::string device;            // Vulkan device choice (ContextOptions::device)
+    bool gi = true;                // false: emission only (the raylib demo's R)
+    bool probes = false;           // mark probe centres (the raylib demo's SPACE)
+    int cascade = -1;       // >= 0: show that cascade instead of the fluence (the raylib demo's C)
+    float exposure = 0.0f;  // stops
     int width = 256, height = 256;  // internal resolution
 };
 

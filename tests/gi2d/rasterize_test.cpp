@@ -1,4 +1,5 @@
-// Rasterisation: coverage-as-opacity compositing (medium2d.md §1), draw order, scaling, sizes.
+// Rasterisation: coverage-as-opacity compositing (docs/algorithms/medium2d.md §1), draw order,
+// scaling, sizes.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,5 +1,5 @@
 // The reference solver against closed-form answers that do not depend on its own output
-// (medium2d.md §2). Shapes are rasterised with the production rasteriser.
+// (docs/algorithms/medium2d.md §2). Shapes are rasterised with the production rasteriser.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -45,7 +45,8 @@ TEST(ReferenceAnalytic, DiskInVacuumMatchesArcsineLaw) {
         const double r = std::hypot(x + 0.5 - c.x, y + 0.5 - c.y);
         const double got = referenceFluenceAt(marcher, x, y, manyRays()).r;
         const double exact = E * std::asin(R / r) / kPi;
-        // The anti-aliased edge acts like a disk about half a pixel larger (medium2d.md §2).
+        // The anti-aliased edge acts like a disk about half a pixel larger
+        // (docs/algorithms/medium2d.md §2).
         const double exactHalfPixel = E * std::asin((R + 0.5) / r) / kPi;
         std::printf("disk r/R %.2f: got %.6f exact %.6f (%+.2f%%) R+0.5 %.6f (%+.2f%%)\n", r / R,
                     got, exact, 100 * (got / exact - 1), exactHalfPixel,

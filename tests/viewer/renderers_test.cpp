@@ -94,7 +94,7 @@ TEST(ProgressiveReference, PassesAreReferenceSolvesAndTheMeanConverges) {
     options.seed = 1;
     auto firstPass = gi2d::solveReference(*medium, options);
     ASSERT_TRUE(firstPass);
-    EXPECT_EQ(progressive.mean(), *firstPass);  // pass k is the solver with seed k
+    EXPECT_EQ(progressive.mean(), *firstPass);  // pass k: one solver run, seeded with k
 
     options.rays = 2048;
     auto truth = gi2d::solveReference(*medium, options);

@@ -1,4 +1,5 @@
-// The 2D participating medium every 2D solver works on (docs/conventions.md, medium2d.md).
+// The 2D participating medium every 2D solver works on (docs/conventions.md,
+// docs/algorithms/medium2d.md).
 //
 // Per pixel: emission E (RGB radiance) and absorption sigma (RGB, per pixel length). A ray crossing
 // a pixel over length l gets transmittance t = exp(-sigma * l) and radiance E * (1 - t); segments

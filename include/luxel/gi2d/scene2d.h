@@ -1,6 +1,6 @@
 // The 2D scene model: a canvas, a background medium and an ordered list of shapes, each with a
 // material (emission radiance + absorption coefficient). Later shapes are drawn over earlier ones
-// where they cover (the depth order of the HRC seed: far first, near last).
+// where they cover (the depth order of the GameMaker HRC demo: far first, near last).
 //
 // Units: lengths in scene pixels (the canvas size given in the scene), y pointing down, pixel (i,
 // j) covering [i, i+1] x [j, j+1]. Absorption sigma is per scene pixel of length. Emission is
@@ -17,7 +17,8 @@
 
 namespace luxel::gi2d {
 
-// Absorption used for "opaque": true. Over one pixel it transmits exp(-50) ~ 2e-22 (medium2d.md).
+// Absorption used for "opaque": true. Over one pixel it transmits exp(-50) ~ 2e-22
+// (docs/algorithms/medium2d.md).
 inline constexpr float kOpaqueAbsorption = 50.0f;
 
 // What a shape is made of.

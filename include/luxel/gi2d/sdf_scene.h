@@ -1,7 +1,7 @@
 // Sphere tracing through a scene of opaque analytic shapes (circle, box, capsule, polygon) in empty
-// space, as in the vanilla RC seed (SDF union = min). Only valid for such scenes; the pixel medium
-// and its exact DDA (RayMarcher) work for everything, and give the same answer there up to the
-// anti-aliased edge pixels.
+// space, as in the raylib radiance-cascades demo (SDF union = min). Only valid for such scenes; the
+// pixel medium and its exact DDA (RayMarcher) work for everything, and give the same answer there
+// up to the anti-aliased edge pixels.
 #pragma once
 
 #include <vector>
