@@ -1,4 +1,4 @@
-// Scene rasterisation with coverage-as-opacity compositing (docs/algorithms/medium2d.md §1).
+// Scene rasterisation with coverage-as-opacity compositing (docs/algorithms/pixel-medium.md §1).
 //
 // While shapes are drawn, the absorption image holds the per-pixel opacity A = 1 - T over one pixel
 // length and the emission image holds the emitted radiance L = E * A. A shape with coverage c

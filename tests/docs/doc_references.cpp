@@ -110,8 +110,8 @@ std::vector<ReferenceProblem> findDanglingReferences(const fs::path& root) {
         const std::vector<std::string> lines = readLines(file);
         for (std::size_t i = 0; i < lines.size(); ++i) {
             if (lines[i].starts_with("#include")) continue;  // include paths, checked by the build
-            // Markdown links read as their targets ("[hrc.md](algorithms/hrc.md) §4" cites
-            // algorithms/hrc.md §4); the link text is not a reference of its own.
+            // Markdown links read as their targets ("[cones](algorithms/cones.md) §4" cites
+            // algorithms/cones.md §4); the link text is not a reference of its own.
             const std::string line = file.extension() == ".md"
                                          ? std::regex_replace(lines[i], kLinkWithText, "($1)")
                                          : lines[i];

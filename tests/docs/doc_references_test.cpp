@@ -50,14 +50,14 @@ TEST(DocReferences, NumberedHeadingsAreSections) {
 
 TEST(DocReferences, CheckerFindsMissingFilesAndSections) {
     ScratchTree tree;
-    tree.write("docs/algorithms/hrc.md", "# HRC\n## 1. Model\n## 5. Merge\n### 6.2 Read-out\n");
-    tree.write("docs/guide.md", "See [the model](algorithms/hrc.md) and [gone](missing.md).\n");
+    tree.write("docs/algorithms/cones.md", "# Cones\n## 1. Model\n## 5. Merge\n### 6.2 Read-out\n");
+    tree.write("docs/guide.md", "See [the model](algorithms/cones.md) and [gone](missing.md).\n");
     tree.write("src/a.cpp",
-               "// docs/algorithms/hrc.md §5 and §6.2 are fine\n"
-               "// docs/algorithms/hrc.md §7 is not\n"
-               "// hrc.md §1 names no folder\n"
+               "// docs/algorithms/cones.md §5 and §6.2 are fine\n"
+               "// docs/algorithms/cones.md §7 is not\n"
+               "// cones.md §1 names no folder\n"
                "// see src/b.cpp and tests/gone_test.cpp\n");
-    tree.write("src/b.cpp", "// docs/algorithms/hrc.md §1-5, §6.2\n");
+    tree.write("src/b.cpp", "// docs/algorithms/cones.md §1-5, §6.2\n");
     const auto problems = findDanglingReferences(tree.root());
     ASSERT_EQ(problems.size(), 4u) << describe(problems);
     EXPECT_EQ(problems[0].file, "docs/guide.md");
@@ -65,7 +65,7 @@ TEST(DocReferences, CheckerFindsMissingFilesAndSections) {
     EXPECT_EQ(problems[1].line, 2);
     EXPECT_NE(problems[1].message.find("no section 7"), std::string::npos);
     EXPECT_EQ(problems[2].line, 3);
-    EXPECT_NE(problems[2].message.find("hrc.md does not exist"), std::string::npos);
+    EXPECT_NE(problems[2].message.find("cones.md does not exist"), std::string::npos);
     EXPECT_EQ(problems[3].line, 4);
     EXPECT_NE(problems[3].message.find("tests/gone_test.cpp"), std::string::npos);
 }

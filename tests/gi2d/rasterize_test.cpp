@@ -1,4 +1,4 @@
-// Rasterisation: coverage-as-opacity compositing (docs/algorithms/medium2d.md §1), draw order,
+// Rasterisation: coverage-as-opacity compositing (docs/algorithms/pixel-medium.md §1), draw order,
 // scaling, sizes.
 #include <gtest/gtest.h>
 

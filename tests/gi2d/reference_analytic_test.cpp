@@ -1,5 +1,5 @@
 // The reference solver against closed-form answers that do not depend on its own output
-// (docs/algorithms/medium2d.md §2). Shapes are rasterised with the production rasteriser.
+// (docs/algorithms/pixel-medium.md §2). Shapes are rasterised with the production rasteriser.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -46,7 +46,7 @@ TEST(ReferenceAnalytic, DiskInVacuumMatchesArcsineLaw) {
         const double got = referenceFluenceAt(marcher, x, y, manyRays()).r;
         const double exact = E * std::asin(R / r) / kPi;
         // The anti-aliased edge acts like a disk about half a pixel larger
-        // (docs/algorithms/medium2d.md §2).
+        // (docs/algorithms/pixel-medium.md §2).
         const double exactHalfPixel = E * std::asin((R + 0.5) / r) / kPi;
         std::printf("disk r/R %.2f: got %.6f exact %.6f (%+.2f%%) R+0.5 %.6f (%+.2f%%)\n", r / R,
                     got, exact, 100 * (got / exact - 1), exactHalfPixel,

@@ -1,5 +1,5 @@
 // The 2D participating medium every 2D solver works on (docs/conventions.md,
-// docs/algorithms/medium2d.md).
+// docs/algorithms/pixel-medium.md).
 //
 // Per pixel: emission E (RGB radiance) and absorption sigma (RGB, per pixel length). A ray crossing
 // a pixel over length l gets transmittance t = exp(-sigma * l) and radiance E * (1 - t); segments

@@ -18,7 +18,7 @@
 namespace luxel::gi2d {
 
 // Absorption used for "opaque": true. Over one pixel it transmits exp(-50) ~ 2e-22
-// (docs/algorithms/medium2d.md).
+// (docs/algorithms/pixel-medium.md).
 inline constexpr float kOpaqueAbsorption = 50.0f;
 
 // What a shape is made of.
