@@ -1,6 +1,6 @@
 // Scene -> medium: shapes rasterised with anti-aliased coverage using the coverage-as-opacity rule
-// of docs/algorithms/pixel-medium.md §1, so partially covered edge pixels of opaque emitters keep their
-// full radiance.
+// of docs/algorithms/pixel-medium.md §1, so partially covered edge pixels of opaque emitters keep
+// their full radiance.
 #pragma once
 
 #include <cstdint>

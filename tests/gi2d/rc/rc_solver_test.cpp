@@ -59,8 +59,8 @@ TEST(RcSolver, DiskInVacuumFollowsTheArcsineLaw) {
             std::printf("rc %s disk r/R %.2f: %.5f vs %.5f (%+.2f%%)\n",
                         merge == RcMerge::Vanilla ? "vanilla" : "fix", probe.distanceOverRadius,
                         got, probe.exact, 100 * (got / probe.exact - 1));
-            // Vanilla RC rings where an interval ends (docs/algorithms/radiance-cascades-2d.md §5); the fix removes
-            // them.
+            // Vanilla RC rings where an interval ends (docs/algorithms/radiance-cascades-2d.md §5);
+            // the fix removes them.
             EXPECT_NEAR(got / probe.exact, 1.0, merge == RcMerge::Vanilla ? 0.07 : 0.015)
                 << probe.distanceOverRadius;
         }
