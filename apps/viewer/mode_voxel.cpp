@@ -53,7 +53,7 @@ void ModeVoxel::setSun(double azimuthDegrees, double elevationDegrees) {
     sunAzimuth_ = std::fmod(azimuthDegrees + 540.0, 360.0) - 180.0;
     sunElevation_ = std::clamp(elevationDegrees, -10.0, 90.0);
     const double a = sunAzimuth_ * kDegrees, e = sunElevation_ * kDegrees;
-    // Same length as the scene's vector: the seed's face term uses it unnormalised.
+    // Same length as the scene's vector: the Unity tracer's face term uses it unnormalised.
     state_.shading.sunDirection = Vec3{static_cast<float>(sunLength_ * std::sin(a) * std::cos(e)),
                                        static_cast<float>(sunLength_ * std::sin(e)),
                                        static_cast<float>(sunLength_ * std::cos(a) * std::cos(e))};
@@ -122,9 +122,9 @@ void ModeVoxel::handleKey(SDL_Keycode key, bool shift) {
             break;
         case SDLK_m:
             s.reflectionMode =
-                s.reflectionMode == voxel::ShadeOptions::ReflectionMode::SeedRunningAverage
+                s.reflectionMode == voxel::ShadeOptions::ReflectionMode::RunningAverage
                     ? voxel::ShadeOptions::ReflectionMode::EnergyConserving
-                    : voxel::ShadeOptions::ReflectionMode::SeedRunningAverage;
+                    : voxel::ShadeOptions::ReflectionMode::RunningAverage;
             break;
         case SDLK_j:
             setSun(sunAzimuth_ - 15.0, sunElevation_);
@@ -235,10 +235,10 @@ void ModeVoxel::drawPanel() {
     if (ImGui::Checkbox("shadows (H)", &s.shadows)) dirty_ = true;
     ImGui::SameLine();
     if (ImGui::Checkbox("textures (T)", &s.textures)) dirty_ = true;
-    int mode = s.reflectionMode == voxel::ShadeOptions::ReflectionMode::SeedRunningAverage ? 0 : 1;
-    const char* modes[] = {"seed running average", "energy conserving"};
+    int mode = s.reflectionMode == voxel::ShadeOptions::ReflectionMode::RunningAverage ? 0 : 1;
+    const char* modes[] = {"running average", "energy conserving"};
     if (ImGui::Combo("reflection mode (M)", &mode, modes, 2)) {
-        s.reflectionMode = mode == 0 ? voxel::ShadeOptions::ReflectionMode::SeedRunningAverage
+        s.reflectionMode = mode == 0 ? voxel::ShadeOptions::ReflectionMode::RunningAverage
                                      : voxel::ShadeOptions::ReflectionMode::EnergyConserving;
         dirty_ = true;
     }

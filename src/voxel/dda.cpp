@@ -49,8 +49,8 @@ Hit makeHit(const Ray& ray, Int3 cell, double t, int axis, const int step[3], in
         // Snap onto the entry plane so secondary rays start exactly on the face.
         hit.point[axis] = static_cast<double>(cell[axis] + (step[axis] > 0 ? 0 : 1));
     }
-    // Face UVs as in the seed (ChunkTracer4 RayMarch): x faces (z, y), z faces (x, y), y faces and
-    // origins inside a voxel (x, z).
+    // Face UVs as in the Unity voxel ray tracer (its ChunkTracer4 RayMarch): x faces (z, y), z
+    // faces (x, y), y faces and origins inside a voxel (x, z).
     int uAxis = 0, vAxis = 2;
     if (axis == 0) uAxis = 2, vAxis = 1;
     if (axis == 2) uAxis = 0, vAxis = 1;

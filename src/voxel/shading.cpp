@@ -1,4 +1,5 @@
-// Voxel shading after the seed (ChunkTracer4): face term, sky, reflections; plus shadows/texture.
+// Voxel shading after the Unity voxel ray tracer (ChunkTracer4): face term, sky, reflections; plus
+// shadows/texture.
 #include "luxel/voxel/shading.h"
 
 #include <algorithm>
@@ -44,7 +45,8 @@ Sample sample(const VoxelWorld& world, const TextureSet* textures, const Ray& ra
               const ShadeOptions& options) {
     Sample s;
     s.surface = castToSurface(world, textures, ray, options.stepCap);
-    // A capped ray (world larger than the cap allows) reads as sky rather than the seed's yellow.
+    // A capped ray (world larger than the cap allows) reads as sky rather than the Unity tracer's
+    // yellow.
     if (!s.surface.hit.hit) {
         s.colour = skyColor(ray.direction, options);
         return s;
@@ -127,8 +129,9 @@ Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& option
     const int bounces = std::max(options.maxReflections, 0);
     Ray current = ray;
     Rgb sum;
-    if (options.reflectionMode == ShadeOptions::ReflectionMode::SeedRunningAverage) {
-        // The seed's loop: hit k (1-based) adds colour / k, then the sum is scaled by k / (k + 1).
+    if (options.reflectionMode == ShadeOptions::ReflectionMode::RunningAverage) {
+        // The Unity tracer's loop: hit k (1-based) adds colour / k, then the sum is scaled by k /
+        // (k + 1).
         for (int k = 1; k <= bounces + 1; ++k) {
             const Sample s = sample(world, textures, current, options);
             if (k == 1) {

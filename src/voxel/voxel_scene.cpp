@@ -359,12 +359,13 @@ ShadeOptions buildShading(const Reader& r, const Json& root) {
         }
         if (auto* v = r.find(*render, "reflection_mode")) {
             const std::string m = v->is_string() ? v->get<std::string>() : "";
-            if (m == "seed") {
-                o.reflectionMode = ShadeOptions::ReflectionMode::SeedRunningAverage;
+            if (m == "running-average") {
+                o.reflectionMode = ShadeOptions::ReflectionMode::RunningAverage;
             } else if (m == "energy") {
                 o.reflectionMode = ShadeOptions::ReflectionMode::EnergyConserving;
             } else {
-                throw Invalid{"render.reflection_mode", "must be \"seed\" or \"energy\""};
+                throw Invalid{"render.reflection_mode",
+                              "must be \"running-average\" or \"energy\""};
             }
         }
         for (const char* key : {"shadows", "textures"}) {

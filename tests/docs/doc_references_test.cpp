@@ -85,5 +85,15 @@ TEST(DocReferences, CheckerTellsPrototypeWordingFromRandomSeeds) {
     EXPECT_EQ(problems[2].line, 4);
 }
 
+TEST(DocReferences, EveryReferenceInTheRepositoryResolves) {
+    const auto problems = findDanglingReferences(LUXEL_SOURCE_DIR);
+    EXPECT_TRUE(problems.empty()) << describe(problems);
+}
+
+TEST(DocReferences, PrototypesAreNamedByWhatTheyAre) {
+    const auto problems = findUndefinedSeedWording(LUXEL_SOURCE_DIR);
+    EXPECT_TRUE(problems.empty()) << describe(problems);
+}
+
 }  // namespace
 }  // namespace luxel::docs

@@ -164,7 +164,7 @@ TEST(VoxelGpu, TexturedTerrainMatchesTheCpu) {
     const Camera camera = Camera::lookAt({48, 44, -10}, {48, 20, 50}, 60, 160, 96).value();
     auto gpu = VoxelGpuRenderer::create(*context, world, &textures);
     ASSERT_TRUE(gpu.ok()) << gpu.error().message();
-    for (auto mode : {ShadeOptions::ReflectionMode::SeedRunningAverage,
+    for (auto mode : {ShadeOptions::ReflectionMode::RunningAverage,
                       ShadeOptions::ReflectionMode::EnergyConserving}) {
         const ShadeOptions options = terrainShading(mode);
         auto image = gpu->render(camera, options);

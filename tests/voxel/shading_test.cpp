@@ -26,9 +26,9 @@ void expectNear(Rgb a, Rgb b, float eps = 1e-5f) {
     EXPECT_NEAR(a.b, b.b, eps);
 }
 
-TEST(VoxelShadingTest, SeedFaceFactor) {
-    // The seed's factors for its light (0, 1, 0.5): top 1 (clamped), +z .85, sides .6, -z .35,
-    // bottom .1.
+TEST(VoxelShadingTest, UnityTracerFaceFactor) {
+    // The Unity tracer's factors for its light (0, 1, 0.5): top 1 (clamped), +z .85, sides .6, -z
+    // .35, bottom .1.
     const Vec3 sun{0.0f, 1.0f, 0.5f};
     EXPECT_FLOAT_EQ(faceFactor({0, 1, 0}, sun, 0.1f, false), 1.0f);
     EXPECT_FLOAT_EQ(faceFactor({0, 0, 1}, sun, 0.1f, false), 0.85f);
@@ -82,7 +82,7 @@ TEST(VoxelShadingTest, ReflectionModesWeightAsDocumented) {
     expectNear(shadeRay(world, down, options), local * 0.7f + sky * 0.3f);
     options.materialReflectivity = [](const Voxel&) { return 0.5f; };
     expectNear(shadeRay(world, down, options), local * 0.5f + sky * 0.5f);
-    options.reflectionMode = ShadeOptions::ReflectionMode::SeedRunningAverage;
+    options.reflectionMode = ShadeOptions::ReflectionMode::RunningAverage;
     expectNear(shadeRay(world, down, options), local * (2.0f / 3.0f) + sky * (1.0f / 3.0f));
     options.maxReflections = 5;  // the sky ends the chain: same result
     expectNear(shadeRay(world, down, options), local * (2.0f / 3.0f) + sky * (1.0f / 3.0f));

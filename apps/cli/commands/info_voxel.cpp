@@ -31,7 +31,7 @@ int infoVoxelScene(const std::string& path, const std::string& size) {
     std::printf("  reflections        %d (%s)\n", shading.maxReflections,
                 shading.reflectionMode == voxel::ShadeOptions::ReflectionMode::EnergyConserving
                     ? "energy"
-                    : "seed");
+                    : "running-average");
     std::printf("  shadows, textures  %s, %s\n", shading.shadows ? "on" : "off",
                 shading.textures ? "on" : "off");
     const std::uint64_t image =

@@ -1,6 +1,7 @@
 // Holographic Radiance Cascades (Freeman, Sannikov, Margel 2025, arXiv:2505.02041): per-pixel 2D
 // fluence in O(N^2 log N), in the same normalisation as the reference solver (mean radiance over
-// directions), so the two compare pixel for pixel. Design notes: docs/algorithms/hrc.md.
+// directions), so the two compare pixel for pixel. Design notes:
+// docs/algorithms/holographic-radiance-cascades.md.
 #pragma once
 
 #include <cstdint>
@@ -16,7 +17,8 @@ namespace luxel::gi2d {
 
 struct HrcOptions {
     // Cascades whose rays are marched exactly; the rest are built by ray extension. The paper
-    // traces 3; 1 is the seed's "extend from c0" variant (here with exact optical depth).
+    // traces 3; 1 is the GameMaker HRC demo's "extend from c0" variant (here with exact optical
+    // depth).
     int tracedLevels = 3;
     // Opacity-gated cross blur against the row-parity checkerboard (paper Eq 21).
     bool crossBlur = true;

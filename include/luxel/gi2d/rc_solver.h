@@ -1,6 +1,7 @@
-// Vanilla 2D Radiance Cascades (Sannikov, "Radiance Cascades", WIP paper; the seed's raylib
-// version; design notes docs/algorithms/rc2d.md) with the bilinear fix (Osborne & Sannikov 2024,
-// arXiv:2408.14425). Same fluence convention as the reference solver.
+// Vanilla 2D Radiance Cascades (Sannikov, "Radiance Cascades", WIP paper; the raylib
+// radiance-cascades demo's version; design notes docs/algorithms/radiance-cascades-2d.md) with the
+// bilinear fix (Osborne & Sannikov 2024, arXiv:2408.14425). Same fluence convention as the
+// reference solver.
 #pragma once
 
 #include <cstdint>
@@ -30,9 +31,9 @@ struct RcOptions {
     int debugCascade = -1;
 };
 
-// Cascade geometry for a canvas (seed formulas): cascade i has probes every spacing * 2^i px,
-// baseRays * 4^i directions at angles 2 pi (k + 0.5) / rays, and covers distances
-// [base (4^i - 1) / 3, base (4^i - 1) / 3 + base 4^i).
+// Cascade geometry for a canvas (the raylib demo's formulas): cascade i has probes every spacing *
+// 2^i px, baseRays * 4^i directions at angles 2 pi (k + 0.5) / rays, and covers distances [base
+// (4^i - 1) / 3, base (4^i - 1) / 3 + base 4^i).
 struct RcCascade {
     double spacing;
     int probesX, probesY;

@@ -1,7 +1,7 @@
 // Exact Amanatides & Woo (1987) voxel traversal over a VoxelWorld, with jumps over empty chunks
 // and empty 4^3 bricks.
 //
-// Conventions and edge-case decisions (see docs voxel.md §2.2):
+// Conventions and edge-case decisions (see docs/algorithms/voxel-traversal.md §2.2):
 // - The ray is P(t) = origin + t * direction; the direction need not be unit length, and t is in
 //   units of its length. Rays with a NaN/inf component or a zero direction never hit.
 // - The ray is first clipped to the world box [0, size] with a slab test. A direction component
@@ -48,8 +48,9 @@ struct Hit {
     Int3 normal;           // axis-aligned face normal towards the ray's origin side; see above
     double t = kInfinity;  // entry t of the hit voxel; +inf on a miss
     Vec3d point;           // origin + t * direction, snapped onto the hit face's plane
-    float u = 0, v = 0;    // position on the hit face in [0, 1) (the seed's mapping, see dda.cpp)
-    int steps = 0;         // loop iterations: voxel visits plus block jumps
+    float u = 0,
+          v = 0;    // position on the hit face in [0, 1) (the Unity tracer's mapping, see dda.cpp)
+    int steps = 0;  // loop iterations: voxel visits plus block jumps
 };
 
 // Whether castRay jumps over empty space: with the world's brick distances current

@@ -1,5 +1,6 @@
-// Shading for the voxel ray caster: the seed's face shading, hard sun shadows, a procedural face
-// texture, a sky gradient and recursive mirror reflections (two weighting modes).
+// Shading for the voxel ray caster: the face shading of the Unity voxel ray tracer, hard sun
+// shadows, a procedural face texture, a sky gradient and recursive mirror reflections (two
+// weighting modes).
 //
 // Output is linear radiance (voxel RGBA8 colours are sRGB-encoded and decoded here); the caller
 // tonemaps. Every pixel is computed independently, so images do not depend on the thread count.
@@ -19,27 +20,28 @@ namespace luxel::voxel {
 struct ShadeOptions {
     // How reflected colours are combined.
     enum class ReflectionMode {
-        // The seed's running sum: hit k contributes 1/k, then the sum is scaled by k/(k+1), so the
+        // The Unity tracer's running sum: hit k contributes 1/k, then the sum is scaled by k/(k+1),
+        // so the
         // weights of hits 1..n sum to 1 (n = 2: 2/3, 1/3; n = 3: 1/2, 1/4, 1/4).
-        SeedRunningAverage,
+        RunningAverage,
         // colour = (1 - r) * local + r * reflected, r = reflectivity of the hit voxel; the last
         // bounce (or a miss) contributes its full colour.
         EnergyConserving,
     };
 
-    // Towards the sun. The face term uses it as given, like the seed's unnormalised (0, 1, 0.5);
-    // shadow rays use its direction.
+    // Towards the sun. The face term uses it as given, like the Unity tracer's unnormalised (0, 1,
+    // 0.5); shadow rays use its direction.
     Vec3 sunDirection{0.0f, 1.0f, 0.5f};
     Rgb skyTop{0.20f, 0.40f, 0.85f};      // linear, straight up
     Rgb skyHorizon{0.75f, 0.85f, 1.00f};  // linear, at and below the horizon
     int maxReflections = 2;               // 0: no reflection rays
-    ReflectionMode reflectionMode = ReflectionMode::SeedRunningAverage;
+    ReflectionMode reflectionMode = ReflectionMode::RunningAverage;
     float reflectivity = 0.3f;  // EnergyConserving, for every voxel unless overridden below
     // EnergyConserving: per-voxel reflectivity in [0, 1] (empty: `reflectivity` everywhere). A
     // texture's own reflectivity (texture_set.h) takes precedence. CPU only.
     std::function<float(const Voxel&)> materialReflectivity;
-    bool faceShading = true;  // the seed's dot-product face term
-    float ambient = 0.1f;     // the seed's +0.1 in that term
+    bool faceShading = true;  // the Unity tracer's dot-product face term
+    float ambient = 0.1f;     // the Unity tracer's +0.1 in that term
     bool shadows = true;      // hard shadows from a shadow ray towards the sun
     bool textures = true;     // procedural per-texel modulation of plain blocks (not PNG textures)
     int textureTexels = 8;    // texels per face side
@@ -47,8 +49,8 @@ struct ShadeOptions {
     int stepCap = 0;                // castRay step cap (0: its default)
 };
 
-// The seed's face factor min((dot(n, L) + 1) / 2 + ambient, 1); in shadow dot(n, L) is clamped to
-// at most 0 (the direct part is removed). A zero normal reads as dot 0.
+// The Unity tracer's face factor min((dot(n, L) + 1) / 2 + ambient, 1); in shadow dot(n, L) is
+// clamped to at most 0 (the direct part is removed). A zero normal reads as dot 0.
 float faceFactor(Int3 normal, Vec3 sunDirection, float ambient, bool inShadow);
 
 // The sky seen along a direction: horizon colour blended to the top colour by the direction's

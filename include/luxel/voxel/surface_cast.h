@@ -1,6 +1,6 @@
 // Ray casting that honours cutout texels: a textured voxel whose texel at the hit has alpha < 0.5
-// lets the ray through (the seed's ChunkTracer4: "if we hit a transparent pixel, loop to the next
-// block as if we hit air"), for primary, reflection and shadow rays alike.
+// lets the ray through (the Unity voxel ray tracer's ChunkTracer4: "if we hit a transparent pixel,
+// loop to the next block as if we hit air"), for primary, reflection and shadow rays alike.
 //
 // The ray continues by restarting castRay at the point where it leaves the cutout voxel: the
 // exit axis (lowest axis on ties, as the DDA steps) is snapped exactly onto the voxel boundary

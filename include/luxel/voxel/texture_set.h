@@ -3,7 +3,7 @@
 // Voxel alpha is a material byte: 0 = empty, 255 = plain block (procedural texture), 1..254 =
 // texture slot a - 1. A textured face takes the nearest texel at the hit's (u, v): its colour
 // multiplies the voxel colour (a tint), and a texel with alpha < 0.5 is a cutout that the ray
-// passes through (the seed's "transparent pixel: loop to the next block").
+// passes through (the Unity tracer's "transparent pixel: loop to the next block").
 #pragma once
 
 #include <cstdint>

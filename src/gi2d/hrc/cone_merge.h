@@ -1,6 +1,7 @@
-// HRC cone merging, top-down (hrc.md §5; paper Eq 13-17). R_n(p, y, i) is the angular fluence of
-// cone i at probe (plane p, row y) of cascade n: radiance integrated over the cone's angle,
-// everything beyond included. Stored as float RGB, rows innermost: ((p * 2^n + i) * rows + y).
+// HRC cone merging, top-down (docs/algorithms/holographic-radiance-cascades.md §5; paper Eq 13-17).
+// R_n(p, y, i) is the angular fluence of cone i at probe (plane p, row y) of cascade n: radiance
+// integrated over the cone's angle, everything beyond included. Stored as float RGB, rows
+// innermost: ((p * 2^n + i) * rows + y).
 #pragma once
 
 #include <vector>
@@ -30,7 +31,8 @@ class ConeBuffer {
     std::vector<Rgb> data_;
 };
 
-// Angular weights of cascade n+1's cones (hrc.md §5, Eq 13): w[j] = width of cone j at level n+1.
+// Angular weights of cascade n+1's cones (docs/algorithms/holographic-radiance-cascades.md §5, Eq
+// 13): w[j] = width of cone j at level n+1.
 std::vector<float> coneWeights(int level);
 
 // R_n from R_{n+1} (`upper`; nullptr for the top level, where every probe sees only the sky).

@@ -1,6 +1,7 @@
 // The four HRC frustums (+x, +y, -x, -y) as frames in which the frustum looks along +x
-// (hrc.md §6.1). The +-y frames are reflections across the diagonal rather than rotations; the
-// per-frustum algorithm is symmetric under y -> -y, so this changes nothing.
+// (docs/algorithms/holographic-radiance-cascades.md §6.1). The +-y frames are reflections across
+// the diagonal rather than rotations; the per-frustum algorithm is symmetric under y -> -y, so this
+// changes nothing.
 #pragma once
 
 #include "luxel/gi2d/medium2d.h"

@@ -1,5 +1,6 @@
-// Geometry of one HRC frustum in its canonical +x frame (hrc.md §2; Freeman, Sannikov, Margel,
-// "Holographic Radiance Cascades for 2D Global Illumination", arXiv:2505.02041).
+// Geometry of one HRC frustum in its canonical +x frame
+// (docs/algorithms/holographic-radiance-cascades.md §2; Freeman, Sannikov, Margel, "Holographic
+// Radiance Cascades for 2D Global Illumination", arXiv:2505.02041).
 //
 // Cascade n: probe planes x = p * 2^n (pixel borders), one probe per row y (at y + 0.5), rays
 // k = 0 .. 2^n with end-point offsets v_n(k) = (2^n, 2k - 2^n), cones i = 0 .. 2^n - 1 between rays

@@ -1,5 +1,5 @@
 // HRC driver: per frustum, trace + extend the ray tables, merge cones top-down, read out; then
-// the opacity-gated cross blur (hrc.md §7).
+// the opacity-gated cross blur (docs/algorithms/holographic-radiance-cascades.md §7).
 #include "luxel/gi2d/hrc_solver.h"
 
 #include <algorithm>
@@ -23,8 +23,9 @@ namespace {
 
 constexpr float kQuarterTurn = static_cast<float>(std::numbers::pi / 2.0);
 
-// The pixel's own half-pixel segment towards the frustum (hrc.md §6.2, as in amitabha): the
-// read-out plane is one pixel ahead, so this is what lies between the pixel centre and it.
+// The pixel's own half-pixel segment towards the frustum
+// (docs/algorithms/holographic-radiance-cascades.md §6.2, as in amitabha): the read-out plane is
+// one pixel ahead, so this is what lies between the pixel centre and it.
 Interval ownHalfPixel(const Medium2D& medium, int x, int y) {
     Interval own;
     const Rgb sigma = medium.absorption.rgb(x, y), emission = medium.emission.rgb(x, y);

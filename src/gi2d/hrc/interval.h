@@ -1,5 +1,5 @@
-// A radiance interval (hrc.md §1): radiance L delivered towards the start and transmittance T,
-// composited front to back ("over", paper Eq 8).
+// A radiance interval (docs/algorithms/holographic-radiance-cascades.md §1): radiance L delivered
+// towards the start and transmittance T, composited front to back ("over", paper Eq 8).
 #pragma once
 
 #include "luxel/core/vec.h"

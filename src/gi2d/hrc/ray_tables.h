@@ -1,6 +1,7 @@
-// HRC ray tables T_n (hrc.md §3-4): for every cascade n, probe plane p, row y and ray k, the
-// interval from (p 2^n, y + 0.5) to that point plus v_n(k). Stored as binary16 (12 bytes per
-// entry), rows innermost: index = ((p * (2^n + 1) + k) * rows + y).
+// HRC ray tables T_n (docs/algorithms/holographic-radiance-cascades.md §3-4): for every cascade n,
+// probe plane p, row y and ray k, the interval from (p 2^n, y + 0.5) to that point plus v_n(k).
+// Stored as binary16 (12 bytes per entry), rows innermost: index = ((p * (2^n + 1) + k) * rows +
+// y).
 //
 // Levels below `tracedLevels` are marched exactly through the medium; the rest are built by ray
 // extension (paper Eq 18-20): T_n(k) averages the two bent paths

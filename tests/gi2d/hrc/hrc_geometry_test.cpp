@@ -1,4 +1,5 @@
-// HRC geometry: ray offsets, extension identities, angular weights (hrc.md §2-5).
+// HRC geometry: ray offsets, extension identities, angular weights
+// (docs/algorithms/holographic-radiance-cascades.md §2-5).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -163,7 +164,8 @@ TEST(HrcRayTables, ExtendedOddRaysAverageTwoBentPathsAroundTheStraightRay) {
 }
 
 TEST(HrcRayTables, MemoryEstimateMatchesAllocation) {
-    // (N_c + 3) D^2 entries per frustum, 12 bytes each (hrc.md §8.1).
+    // (N_c + 3) D^2 entries per frustum, 12 bytes each
+    // (docs/algorithms/holographic-radiance-cascades.md §8.1).
     const std::uint64_t bytes = RayTables::bytesFor(1024, 1024, 10);
     EXPECT_NEAR(static_cast<double>(bytes) / (1024.0 * 1024 * 12), 12.0, 0.05);
 }

@@ -1,4 +1,5 @@
-// HRC against the reference solver and analytic answers (hrc.md §10, §13).
+// HRC against the reference solver and analytic answers
+// (docs/algorithms/holographic-radiance-cascades.md §10).
 #include <gtest/gtest.h>
 
 #include <cmath>

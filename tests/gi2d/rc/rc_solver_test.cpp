@@ -17,7 +17,7 @@
 namespace luxel::gi2d {
 namespace {
 
-TEST(RcCascades, SeedFormulas) {
+TEST(RcCascades, RaylibDemoFormulas) {
     RcOptions o;  // spacing 1, 4 rays, base 1
     const auto c = rcCascades(512, 512, o);
     // ceil(log4(724.08 / 1)) + 1 = ceil(4.75) + 1 = 6

@@ -1,4 +1,4 @@
-// HRC cone merge (hrc.md §5, paper Eq 13-17; CPU reference: mergeCascade in
+// HRC cone merge (docs/algorithms/holographic-radiance-cascades.md §5, paper Eq 13-17; CPU reference: mergeCascade in
 // src/gi2d/hrc/cone_merge.cpp). One invocation per (row, cone, plane).
 #version 450
 #extension GL_GOOGLE_include_directive : require

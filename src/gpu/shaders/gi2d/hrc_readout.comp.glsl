@@ -1,4 +1,4 @@
-// HRC read-out (hrc.md §6.2; CPU reference: readOut in src/gi2d/hrc/hrc_solver.cpp): each pixel
+// HRC read-out (docs/algorithms/holographic-radiance-cascades.md §6.2; CPU reference: readOut in src/gi2d/hrc/hrc_solver.cpp): each pixel
 // adds the cones of R_0 at the plane one pixel ahead along this frustum's axis (or the sky beyond
 // the frame) to its canvas-space accumulator.
 #version 450

@@ -1,4 +1,4 @@
-// HRC base intervals (hrc.md §3; CPU reference: traceBaseLevels in src/gi2d/hrc/ray_tables.cpp):
+// HRC base intervals (docs/algorithms/holographic-radiance-cascades.md §3; CPU reference: traceBaseLevels in src/gi2d/hrc/ray_tables.cpp):
 // T_n(p, y, k) marched from (p 2^n, y + 0.5) over v_n(k) with an exact DDA, one cell at a time:
 // L += T E (1 - exp(-sigma l)), T *= exp(-sigma l) for the exact length l inside each cell.
 #version 450
