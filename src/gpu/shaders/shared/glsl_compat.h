@@ -12,7 +12,8 @@
 //
 // Rules for shared code (GLSL has no references, templates, overloading on return type or
 // swizzle-free member functions, and C++ has no swizzles):
-// - functions are `LUXEL_FUNC` (inline in C++); out-parameters are `LUXEL_INOUT(T) name`;
+// - functions are `LUXEL_FUNC` (inline in C++; `LUXEL_FUNC_HOT` forces inlining); out-parameters
+//   are `LUXEL_INOUT(T) name`, large read-only ones `LUXEL_IN(T) name` (a const reference in C++);
 // - vectors are vec2/vec3/vec4, ivec2/ivec3, uvec2/uvec3 (dvec3 in C++ only); components by
 //   .x/.y/.z/.w or [i], never swizzles (.xy); construct with vec3(s) or vec3(x, y, z);
 // - float literals carry the f suffix (1.0f): unsuffixed literals are double in C++;
@@ -33,7 +34,13 @@
 #define LUXEL_SHARED_BEGIN namespace luxel::gpu::shared {
 #define LUXEL_SHARED_END }
 #define LUXEL_FUNC inline
+// For the small functions of hot loops: always inlined in C++, so a state struct passed by
+// reference stays in registers instead of memory.
+#define LUXEL_FUNC_HOT inline __attribute__((always_inline))
 #define LUXEL_INOUT(T) T&
+#define LUXEL_IN(T) const T&
+// Before a loop over the 3 axes in a hot path: unrolled, so each axis index is a constant.
+#define LUXEL_UNROLL_AXES _Pragma("GCC unroll 3")
 #define LUXEL_INFINITY (std::numeric_limits<float>::infinity())
 
 namespace luxel::gpu::shared {
@@ -203,7 +210,10 @@ T length(tvec3<T> v) {
 #define LUXEL_SHARED_BEGIN
 #define LUXEL_SHARED_END
 #define LUXEL_FUNC
+#define LUXEL_FUNC_HOT
 #define LUXEL_INOUT(T) inout T
+#define LUXEL_IN(T) in T
+#define LUXEL_UNROLL_AXES
 #define LUXEL_INFINITY (uintBitsToFloat(0x7f800000u))
 
 #endif
