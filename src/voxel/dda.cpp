@@ -5,6 +5,7 @@
 #include <bit>
 #include <cmath>
 
+#include "luxel/core/parallel.h"
 #include "voxel/voxel_world_access.h"
 
 namespace luxel::voxel {
@@ -48,6 +49,15 @@ Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap, C
     hit.u = surface.u;
     hit.v = surface.v;
     return hit;
+}
+
+std::vector<Hit> castRays(const VoxelWorld& world, std::span<const Ray> rays, double tMax,
+                          int stepCap, ChunkSkip skip) {
+    std::vector<Hit> hits(rays.size());
+    parallelForRange(static_cast<int>(rays.size()), 1024, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) hits[i] = castRay(world, rays[i], tMax, stepCap, skip);
+    });
+    return hits;
 }
 
 }  // namespace luxel::voxel

@@ -73,7 +73,8 @@ std::uint64_t estimateVoxelGpuMemory(Int3 size, int chunkSize, const TextureSet*
     const std::uint64_t chunks = chunkTotal(chunkCounts(size, chunkSize));
     const std::uint64_t perChunk = static_cast<std::uint64_t>(chunkSize) * chunkSize * chunkSize;
     const int slots = textures ? textures->size() : 0;
-    return chunks * perChunk * 4 + chunks * 4 + std::max(slots, 1) * 16 +
+    const Int3 bricks{(size.x + 3) / 4, (size.y + 3) / 4, (size.z + 3) / 4};
+    return chunks * perChunk * 4 + chunks * 4 + chunkTotal(bricks) * 12 + std::max(slots, 1) * 16 +
            std::max<std::uint64_t>(texelCount(textures), 1) * 16 + 256 * 4 +
            sizeof(shared::VoxelRenderParams) + static_cast<std::uint64_t>(width) * height * 16;
 }
@@ -85,9 +86,45 @@ struct VoxelGpuRenderer::State {
     Int3 chunks;
     int textureCount = 0;
     std::uint64_t bytes = 0;
-    std::shared_ptr<gpu::Buffer> params, voxels, chunkSolid, textureInfo, texels, srgb, output;
+    std::shared_ptr<gpu::Buffer> params, voxels, chunkSolid, brickMasks, brickDistances,
+        textureInfo, texels, srgb, output;
     std::uint64_t outputBytes = 0;
     gpu::Program* program = nullptr;
+    gpu::Program* castProgram = nullptr;
+    bool distancesCurrent = false;
+
+    // Brick masks and distances of the whole world (a fraction of the voxel data: 12 bytes per
+    // 64 voxels), re-sent after every edit.
+    Status uploadBricks(const VoxelWorld& world) {
+        const Int3 n = world.brickCount();
+        std::vector<std::uint32_t> masks, distances;
+        masks.reserve(chunkTotal(n) * 2);
+        distances.reserve(chunkTotal(n));
+        for (int bz = 0; bz < n.z; ++bz) {
+            for (int by = 0; by < n.y; ++by) {
+                for (int bx = 0; bx < n.x; ++bx) {
+                    const std::uint64_t m = world.brickMask(bx, by, bz);
+                    masks.push_back(static_cast<std::uint32_t>(m));
+                    masks.push_back(static_cast<std::uint32_t>(m >> 32));
+                    distances.push_back(world.brickDistance(bx, by, bz));
+                }
+            }
+        }
+        distancesCurrent = world.emptySpaceCurrent();
+        if (Status st = context->upload(*brickMasks, bytesOf(masks)); !st) return st;
+        return context->upload(*brickDistances, bytesOf(distances));
+    }
+
+    // The world part of the parameters (the rest is filled per render).
+    void fillWorld(shared::VoxelRenderParams& p, int stepCap) const {
+        p.sizeX = size.x, p.sizeY = size.y, p.sizeZ = size.z;
+        p.chunkShift =
+            static_cast<std::uint32_t>(std::countr_zero(static_cast<unsigned>(chunkSize)));
+        p.chunksX = chunks.x, p.chunksY = chunks.y, p.chunksZ = chunks.z;
+        p.bricksX = (size.x + 3) / 4, p.bricksY = (size.y + 3) / 4, p.bricksZ = (size.z + 3) / 4;
+        p.stepCap = stepCap > 0 ? stepCap : 3 * (size.x + size.y + size.z);
+        p.flags = distancesCurrent ? LUXEL_VOXEL_DISTANCES_CURRENT : 0u;
+    }
 
     Status uploadChunkSolid(const VoxelWorld& world) {
         std::vector<std::uint32_t> counts(chunkTotal(chunks));
@@ -150,6 +187,10 @@ Result<VoxelGpuRenderer> VoxelGpuRenderer::create(gpu::Context& context, const V
         context.program("voxel_render", LUXEL_VOXEL_BUFFERS, sizeof(shared::VoxelBandPush));
     if (!program) return program.error();
     s.program = *program;
+    auto castProgram = context.program("voxel_cast", 7, sizeof(shared::VoxelCastPush));
+    if (!castProgram) return castProgram.error();
+    s.castProgram = *castProgram;
+    const std::uint64_t bricks = chunkTotal(world.brickCount());
 
     const std::uint64_t perChunk =
         static_cast<std::uint64_t>(s.chunkSize) * s.chunkSize * s.chunkSize;
@@ -174,6 +215,7 @@ Result<VoxelGpuRenderer> VoxelGpuRenderer::create(gpu::Context& context, const V
     for (const Allocation& a :
          {Allocation{&s.params, sizeof(shared::VoxelRenderParams)},
           Allocation{&s.voxels, chunks * perChunk * 4}, Allocation{&s.chunkSolid, chunks * 4},
+          Allocation{&s.brickMasks, bricks * 8}, Allocation{&s.brickDistances, bricks * 4},
           Allocation{&s.textureInfo, infos.size() * 16}, Allocation{&s.texels, texels.size() * 16},
           Allocation{&s.srgb, srgb.size() * 4}}) {
         auto b = context.createBuffer(a.bytes);
@@ -187,6 +229,7 @@ Result<VoxelGpuRenderer> VoxelGpuRenderer::create(gpu::Context& context, const V
         }
     }
     if (Status st = s.uploadChunkSolid(world); !st) return st.error();
+    if (Status st = s.uploadBricks(world); !st) return st.error();
     if (Status st = context.upload(*s.textureInfo, bytesOf(infos)); !st) return st.error();
     if (Status st = context.upload(*s.texels, bytesOf(texels)); !st) return st.error();
     if (Status st = context.upload(*s.srgb, bytesOf(srgb)); !st) return st.error();
@@ -211,7 +254,8 @@ Status VoxelGpuRenderer::updateRegion(const VoxelWorld& world, Int3 min, Int3 ma
             if (Status st = s.uploadChunkRow(world, lo.x, hi.x, cy, cz); !st) return st;
         }
     }
-    return s.uploadChunkSolid(world);
+    if (Status st = s.uploadChunkSolid(world); !st) return st;
+    return s.uploadBricks(world);
 }
 
 Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions& options,
@@ -234,18 +278,15 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
     }
 
     shared::VoxelRenderParams p{};
-    p.sizeX = s.size.x, p.sizeY = s.size.y, p.sizeZ = s.size.z;
-    p.chunkShift = static_cast<std::uint32_t>(std::countr_zero(static_cast<unsigned>(s.chunkSize)));
-    p.chunksX = s.chunks.x, p.chunksY = s.chunks.y, p.chunksZ = s.chunks.z;
-    p.stepCap = options.stepCap > 0 ? options.stepCap : 3 * (s.size.x + s.size.y + s.size.z);
+    s.fillWorld(p, options.stepCap);
     p.width = w, p.height = h;
     p.textureCount = s.textureCount;
-    p.flags = (options.faceShading ? LUXEL_VOXEL_FACE_SHADING : 0u) |
-              (options.shadows ? LUXEL_VOXEL_SHADOWS : 0u) |
-              (options.textures ? LUXEL_VOXEL_PROCEDURAL_TEXTURE : 0u) |
-              (options.reflectionMode == ShadeOptions::ReflectionMode::EnergyConserving
-                   ? LUXEL_VOXEL_ENERGY_CONSERVING
-                   : 0u);
+    p.flags |= (options.faceShading ? LUXEL_VOXEL_FACE_SHADING : 0u) |
+               (options.shadows ? LUXEL_VOXEL_SHADOWS : 0u) |
+               (options.textures ? LUXEL_VOXEL_PROCEDURAL_TEXTURE : 0u) |
+               (options.reflectionMode == ShadeOptions::ReflectionMode::EnergyConserving
+                    ? LUXEL_VOXEL_ENERGY_CONSERVING
+                    : 0u);
     const Vec3d pos = camera.position(), f = camera.forward(), r = camera.right(), u = camera.up();
     p.positionX = float(pos.x), p.positionY = float(pos.y), p.positionZ = float(pos.z);
     // Camera::create's tanHalf_ and rayAt's aspect, rounded to float.
@@ -274,8 +315,9 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
         gpu::Dispatch d;
         d.name = "voxel render rows " + std::to_string(row);
         d.program = s.program;
-        d.buffers = {s.params.get(), s.voxels.get(), s.chunkSolid.get(), s.textureInfo.get(),
-                     s.texels.get(), s.srgb.get(),   s.output.get()};
+        d.buffers = {s.params.get(),      s.voxels.get(),     s.chunkSolid.get(),
+                     s.textureInfo.get(), s.texels.get(),     s.srgb.get(),
+                     s.output.get(),      s.brickMasks.get(), s.brickDistances.get()};
         const int rows = std::min(kBandRows, h - row);
         d.setPush(shared::VoxelBandPush{static_cast<std::uint32_t>(row),
                                         static_cast<std::uint32_t>(rows)});
@@ -304,6 +346,66 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
     }
     if (timings) timings->push_back({"download image (CPU)", download.milliseconds()});
     return image;
+}
+
+Result<std::vector<Hit>> VoxelGpuRenderer::castRays(std::span<const Ray> rays, double tMax,
+                                                    int stepCap, ChunkSkip skip,
+                                                    std::vector<gpu::PassTiming>* timings) {
+    State& s = *state_;
+    std::vector<Hit> hits(rays.size());
+    if (rays.empty()) return hits;
+    const float limit = static_cast<float>(tMax);
+    std::vector<shared::VoxelCastRay> in(rays.size());
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const Ray& r = rays[i];
+        in[i] = {float(r.origin.x),    float(r.origin.y),
+                 float(r.origin.z),    limit,
+                 float(r.direction.x), float(r.direction.y),
+                 float(r.direction.z), skip == ChunkSkip::Enabled ? 1u : 0u};
+    }
+    const std::uint64_t outBytes = rays.size() * sizeof(shared::VoxelCastHit);
+    auto rayBuffer = s.context->createBuffer(in.size() * sizeof(shared::VoxelCastRay));
+    if (!rayBuffer) return rayBuffer.error();
+    auto hitBuffer = s.context->createBuffer(outBytes);
+    if (!hitBuffer) return hitBuffer.error();
+    shared::VoxelRenderParams p{};
+    s.fillWorld(p, stepCap);
+    if (Status st = s.context->upload(*s.params, std::as_bytes(std::span(&p, 1))); !st) {
+        return st.error();
+    }
+    if (Status st = s.context->upload(**rayBuffer, bytesOf(in)); !st) return st.error();
+
+    gpu::Dispatch d;
+    d.name = "voxel cast rays";
+    d.program = s.castProgram;
+    d.buffers = {s.params.get(),   s.voxels.get(),     s.chunkSolid.get(),    rayBuffer->get(),
+                 hitBuffer->get(), s.brickMasks.get(), s.brickDistances.get()};
+    const std::uint32_t cap = p.stepCap;
+    d.setPush(shared::VoxelCastPush{static_cast<std::uint32_t>(rays.size()), cap});
+    d.setThreads(rays.size());
+    auto passes = s.context->run(std::span(&d, 1));
+    if (!passes) return passes.error();
+    if (timings) timings->insert(timings->end(), passes->begin(), passes->end());
+
+    std::vector<shared::VoxelCastHit> out(rays.size());
+    if (Status st = s.context->download(**hitBuffer, std::as_writable_bytes(std::span(out))); !st) {
+        return st.error();
+    }
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        const shared::VoxelCastHit& o = out[i];
+        Hit& h = hits[i];
+        h.hit = (o.flags & 1u) != 0;
+        h.capped = (o.flags & 2u) != 0;
+        h.steps = o.steps;
+        if (!h.hit) continue;
+        h.voxel = {o.voxelX, o.voxelY, o.voxelZ};
+        h.normal = {o.normalX, o.normalY, o.normalZ};
+        h.t = o.t;
+        h.point = {o.pointX, o.pointY, o.pointZ};
+        h.u = o.u;
+        h.v = o.v;
+    }
+    return hits;
 }
 
 }  // namespace luxel::voxel

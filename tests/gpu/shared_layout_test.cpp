@@ -45,6 +45,8 @@ TEST(GpuSharedLayout, WorkgroupSizesComeFromTheSharedConstants) {
               (std::array<std::uint32_t, 3>{LUXEL_RC_GROUP_SIZE, 1, 1}));
     EXPECT_EQ(reflect("voxel_render").workgroupSize,
               (std::array<std::uint32_t, 3>{LUXEL_VOXEL_GROUP_X, LUXEL_VOXEL_GROUP_Y, 1}));
+    EXPECT_EQ(reflect("voxel_cast").workgroupSize,
+              (std::array<std::uint32_t, 3>{LUXEL_VOXEL_CAST_GROUP, 1, 1}));
 }
 
 TEST(GpuSharedLayout, HrcPushConstants) {
@@ -97,28 +99,32 @@ TEST(GpuSharedLayout, RcPushConstants) {
 
 TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
     using P = VoxelRenderParams;
-    expectBuffer("voxel_render", 0,
-                 {sizeof(P), {LUXEL_MEMBER(P, sizeX),        LUXEL_MEMBER(P, sizeY),
-                              LUXEL_MEMBER(P, sizeZ),        LUXEL_MEMBER(P, chunkShift),
-                              LUXEL_MEMBER(P, chunksX),      LUXEL_MEMBER(P, chunksY),
-                              LUXEL_MEMBER(P, chunksZ),      LUXEL_MEMBER(P, stepCap),
-                              LUXEL_MEMBER(P, width),        LUXEL_MEMBER(P, height),
-                              LUXEL_MEMBER(P, textureCount), LUXEL_MEMBER(P, flags),
-                              LUXEL_MEMBER(P, positionX),    LUXEL_MEMBER(P, positionY),
-                              LUXEL_MEMBER(P, positionZ),    LUXEL_MEMBER(P, tanHalf),
-                              LUXEL_MEMBER(P, forwardX),     LUXEL_MEMBER(P, forwardY),
-                              LUXEL_MEMBER(P, forwardZ),     LUXEL_MEMBER(P, aspect),
-                              LUXEL_MEMBER(P, rightX),       LUXEL_MEMBER(P, rightY),
-                              LUXEL_MEMBER(P, rightZ),       LUXEL_MEMBER(P, maxReflections),
-                              LUXEL_MEMBER(P, upX),          LUXEL_MEMBER(P, upY),
-                              LUXEL_MEMBER(P, upZ),          LUXEL_MEMBER(P, ambient),
-                              LUXEL_MEMBER(P, sunX),         LUXEL_MEMBER(P, sunY),
-                              LUXEL_MEMBER(P, sunZ),         LUXEL_MEMBER(P, reflectivity),
-                              LUXEL_MEMBER(P, skyTopR),      LUXEL_MEMBER(P, skyTopG),
-                              LUXEL_MEMBER(P, skyTopB),      LUXEL_MEMBER(P, textureStrength),
-                              LUXEL_MEMBER(P, skyHorizonR),  LUXEL_MEMBER(P, skyHorizonG),
-                              LUXEL_MEMBER(P, skyHorizonB),  LUXEL_MEMBER(P, textureTexels)}},
-                 /* element= */ false);
+    const CppLayout params{sizeof(P),
+                           {LUXEL_MEMBER(P, sizeX),        LUXEL_MEMBER(P, sizeY),
+                            LUXEL_MEMBER(P, sizeZ),        LUXEL_MEMBER(P, chunkShift),
+                            LUXEL_MEMBER(P, chunksX),      LUXEL_MEMBER(P, chunksY),
+                            LUXEL_MEMBER(P, chunksZ),      LUXEL_MEMBER(P, stepCap),
+                            LUXEL_MEMBER(P, width),        LUXEL_MEMBER(P, height),
+                            LUXEL_MEMBER(P, textureCount), LUXEL_MEMBER(P, flags),
+                            LUXEL_MEMBER(P, positionX),    LUXEL_MEMBER(P, positionY),
+                            LUXEL_MEMBER(P, positionZ),    LUXEL_MEMBER(P, tanHalf),
+                            LUXEL_MEMBER(P, forwardX),     LUXEL_MEMBER(P, forwardY),
+                            LUXEL_MEMBER(P, forwardZ),     LUXEL_MEMBER(P, aspect),
+                            LUXEL_MEMBER(P, rightX),       LUXEL_MEMBER(P, rightY),
+                            LUXEL_MEMBER(P, rightZ),       LUXEL_MEMBER(P, maxReflections),
+                            LUXEL_MEMBER(P, upX),          LUXEL_MEMBER(P, upY),
+                            LUXEL_MEMBER(P, upZ),          LUXEL_MEMBER(P, ambient),
+                            LUXEL_MEMBER(P, sunX),         LUXEL_MEMBER(P, sunY),
+                            LUXEL_MEMBER(P, sunZ),         LUXEL_MEMBER(P, reflectivity),
+                            LUXEL_MEMBER(P, skyTopR),      LUXEL_MEMBER(P, skyTopG),
+                            LUXEL_MEMBER(P, skyTopB),      LUXEL_MEMBER(P, textureStrength),
+                            LUXEL_MEMBER(P, skyHorizonR),  LUXEL_MEMBER(P, skyHorizonG),
+                            LUXEL_MEMBER(P, skyHorizonB),  LUXEL_MEMBER(P, textureTexels),
+                            LUXEL_MEMBER(P, bricksX),      LUXEL_MEMBER(P, bricksY),
+                            LUXEL_MEMBER(P, bricksZ),      LUXEL_MEMBER(P, pad0)}};
+    for (const char* shader : {"voxel_render", "voxel_cast"}) {
+        expectBuffer(shader, 0, params, /* element= */ false);
+    }
     expectBuffer(
         "voxel_render", 3,
         {sizeof(VoxelTextureInfo),
@@ -127,6 +133,24 @@ TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
     expectPushConstants("voxel_render", {sizeof(VoxelBandPush),
                                          {LUXEL_MEMBER(VoxelBandPush, rowOffset),
                                           LUXEL_MEMBER(VoxelBandPush, rows)}});
+    using R = VoxelCastRay;
+    expectBuffer("voxel_cast", 3,
+                 {sizeof(R),
+                  {LUXEL_MEMBER(R, originX), LUXEL_MEMBER(R, originY), LUXEL_MEMBER(R, originZ),
+                   LUXEL_MEMBER(R, tMax), LUXEL_MEMBER(R, directionX), LUXEL_MEMBER(R, directionY),
+                   LUXEL_MEMBER(R, directionZ), LUXEL_MEMBER(R, jumps)}});
+    using H = VoxelCastHit;
+    expectBuffer(
+        "voxel_cast", 4,
+        {sizeof(H),
+         {LUXEL_MEMBER(H, flags), LUXEL_MEMBER(H, steps), LUXEL_MEMBER(H, voxelX),
+          LUXEL_MEMBER(H, voxelY), LUXEL_MEMBER(H, voxelZ), LUXEL_MEMBER(H, normalX),
+          LUXEL_MEMBER(H, normalY), LUXEL_MEMBER(H, normalZ), LUXEL_MEMBER(H, t),
+          LUXEL_MEMBER(H, pointX), LUXEL_MEMBER(H, pointY), LUXEL_MEMBER(H, pointZ),
+          LUXEL_MEMBER(H, u), LUXEL_MEMBER(H, v), LUXEL_MEMBER(H, pad0), LUXEL_MEMBER(H, pad1)}});
+    expectPushConstants(
+        "voxel_cast", {sizeof(VoxelCastPush),
+                       {LUXEL_MEMBER(VoxelCastPush, rays), LUXEL_MEMBER(VoxelCastPush, stepCap)}});
 }
 
 }  // namespace

@@ -28,6 +28,8 @@
 #pragma once
 
 #include <limits>
+#include <span>
+#include <vector>
 
 #include "luxel/core/vec.h"
 #include "luxel/voxel/voxel_world.h"
@@ -64,5 +66,10 @@ enum class ChunkSkip { Enabled, Disabled };
 // more than any traversal of the world needs (at most sx + sy + sz - 2 cells).
 Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax = kInfinity, int stepCap = 0,
             ChunkSkip skip = ChunkSkip::Enabled);
+
+// castRay for every ray (in parallel): the CPU twin of VoxelGpuRenderer::castRays.
+std::vector<Hit> castRays(const VoxelWorld& world, std::span<const Ray> rays,
+                          double tMax = kInfinity, int stepCap = 0,
+                          ChunkSkip skip = ChunkSkip::Enabled);
 
 }  // namespace luxel::voxel

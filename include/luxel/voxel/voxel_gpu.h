@@ -1,19 +1,23 @@
-// The voxel ray caster on the GPU (Vulkan compute, src/gpu/shaders/voxel/): the same DDA,
-// cutout textures and shading as render() in shading.h, in float instead of double, so images
-// agree with the CPU except at rare pixels where a ray passes within float rounding of a voxel
-// edge (tests/gpu/voxel_gpu_test.cpp bounds them).
+// The voxel ray caster on the GPU (Vulkan compute, src/gpu/shaders/voxel/): the same traversal
+// (the shared header src/gpu/shaders/shared/voxel_dda.h), cutout textures and shading as
+// render() in shading.h, in float instead of double, so images agree with the CPU except at rare
+// pixels where a ray passes within float rounding of a voxel edge (tests/gpu/voxel_gpu_test.cpp
+// bounds them).
 //
-// The world is uploaded once in VoxelWorld's chunked layout with per-chunk solid counts (for
-// chunk skipping); edits are re-uploaded chunk by chunk with updateRegion.
+// The world is uploaded once in VoxelWorld's chunked layout with per-chunk solid counts, brick
+// occupancy masks and brick empty-space distances (the CPU's jumps); edits are re-uploaded chunk by
+// chunk with updateRegion.
 #pragma once
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "luxel/core/error.h"
 #include "luxel/core/image.h"
 #include "luxel/voxel/camera.h"
+#include "luxel/voxel/dda.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/texture_set.h"
 #include "luxel/voxel/voxel_world.h"
@@ -50,6 +54,12 @@ class VoxelGpuRenderer {
     // dispatch (GPU timestamps) and download times.
     Result<Image> render(const Camera& camera, const ShadeOptions& options,
                          std::vector<gpu::PassTiming>* timings = nullptr);
+
+    // The GPU twin of castRays (dda.h): the same traversal, in float, one invocation per ray.
+    // Rays are rounded to float; t, point and the face coordinates come back in float.
+    Result<std::vector<Hit>> castRays(std::span<const Ray> rays, double tMax = kInfinity,
+                                      int stepCap = 0, ChunkSkip skip = ChunkSkip::Enabled,
+                                      std::vector<gpu::PassTiming>* timings = nullptr);
 
     // Bytes of device memory held now.
     std::uint64_t deviceBytes() const;

@@ -11,6 +11,12 @@
 //   4 texels: vec4 (linear RGB, linear alpha), rows top to bottom, slot after slot
 //   5 float[256]: srgbToLinear(i / 255), the CPU's own values
 //   6 output: vec4 per pixel (linear RGB, 1), rows top to bottom
+//   7 brick occupancy masks: uvec2 per 4^3 brick (low, high 32 bits of VoxelWorld::brickMask),
+//     bricks ((bz * bricksY + by) * bricksX + bx)
+//   8 brick empty-space distances: one uint per brick, same order (VoxelWorld::brickDistance)
+//
+// voxel_cast (a batch of rays; the CPU twin is castRays in dda.h) binds 0-2 as above, then
+// 3 VoxelCastRay per ray, 4 VoxelCastHit per ray, 5 brick masks, 6 brick distances.
 #ifndef LUXEL_GPU_SHARED_VOXEL_LAYOUT_H
 #define LUXEL_GPU_SHARED_VOXEL_LAYOUT_H
 
@@ -23,13 +29,16 @@ using uint = std::uint32_t;
 
 #define LUXEL_VOXEL_GROUP_X 8
 #define LUXEL_VOXEL_GROUP_Y 8
-#define LUXEL_VOXEL_BUFFERS 7
+#define LUXEL_VOXEL_BUFFERS 9
+#define LUXEL_VOXEL_CAST_GROUP 64
 
 // VoxelRenderParams.flags
 #define LUXEL_VOXEL_FACE_SHADING 1u
 #define LUXEL_VOXEL_SHADOWS 2u
 #define LUXEL_VOXEL_PROCEDURAL_TEXTURE 4u
 #define LUXEL_VOXEL_ENERGY_CONSERVING 8u
+// The brick distances are current (VoxelWorld::emptySpaceCurrent); else chunk and brick jumps.
+#define LUXEL_VOXEL_DISTANCES_CURRENT 16u
 
 // Must equal kMaxCutoutContinuations (surface_cast.h).
 #define LUXEL_VOXEL_MAX_CUTOUTS 64
@@ -60,6 +69,9 @@ struct VoxelRenderParams {
     float textureStrength;
     float skyHorizonR, skyHorizonG, skyHorizonB;
     uint textureTexels;
+    // Bricks (4^3 voxels) per axis.
+    uint bricksX, bricksY, bricksZ;
+    uint pad0;
 };
 
 // Push constants: the band of rows one dispatch renders (images are split into bands so no
@@ -67,6 +79,30 @@ struct VoxelRenderParams {
 struct VoxelBandPush {
     uint rowOffset;
     uint rows;
+};
+
+// voxel_cast: one ray in, one hit out (dda.h's Ray and Hit in float).
+struct VoxelCastRay {
+    float originX, originY, originZ;
+    float tMax;
+    float directionX, directionY, directionZ;
+    uint jumps;  // 0: visit every voxel (ChunkSkip::Disabled)
+};
+
+struct VoxelCastHit {
+    uint flags;  // 1: hit, 2: capped
+    int steps;
+    int voxelX, voxelY, voxelZ;
+    int normalX, normalY, normalZ;
+    float t;
+    float pointX, pointY, pointZ;
+    float u, v;
+    uint pad0, pad1;
+};
+
+struct VoxelCastPush {
+    uint rays;
+    uint stepCap;  // resolved: never 0
 };
 
 struct VoxelTextureInfo {
@@ -77,7 +113,9 @@ struct VoxelTextureInfo {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(VoxelRenderParams) == 160);
+static_assert(sizeof(VoxelRenderParams) == 176);
+static_assert(sizeof(VoxelCastRay) == 32);
+static_assert(sizeof(VoxelCastHit) == 64);
 static_assert(offsetof(VoxelRenderParams, width) == 32);
 static_assert(offsetof(VoxelRenderParams, positionX) == 48);
 static_assert(offsetof(VoxelRenderParams, maxReflections) == 92);

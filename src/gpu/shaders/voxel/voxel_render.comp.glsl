@@ -12,9 +12,11 @@ layout(std430, set = 0, binding = 3) readonly buffer TextureInfos { VoxelTexture
 layout(std430, set = 0, binding = 4) readonly buffer Texels { vec4 texels[]; };
 layout(std430, set = 0, binding = 5) readonly buffer SrgbTable { float srgbTable[]; };
 layout(std430, set = 0, binding = 6) writeonly buffer Output { vec4 pixels[]; };
+layout(std430, set = 0, binding = 7) readonly buffer BrickMasks { uvec2 brickMasks[]; };
+layout(std430, set = 0, binding = 8) readonly buffer BrickDistances { uint brickDistances[]; };
 layout(push_constant) uniform Push { VoxelBandPush band; };
 
-#include "voxel/voxel_dda.glsl"
+#include "voxel/voxel_world_access.glsl"
 #include "voxel/voxel_shading.glsl"
 
 void main() {

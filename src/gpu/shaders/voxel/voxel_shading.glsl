@@ -79,7 +79,7 @@ float boundaryOf(ivec3 cell, vec3 d, int a) {
 // continueThroughVoxel (surface_cast.cpp): the origin of the ray `o + t d` restarted where it
 // leaves `cell`, with edge and corner ties kept in the DDA's axis order.
 vec3 continueThroughVoxel(vec3 o, vec3 d, ivec3 cell) {
-    vec3 exitOf = vec3(kInfinity);
+    vec3 exitOf = vec3(LUXEL_INFINITY);
     int exitAxis = -1;
     for (int a = 0; a < 3; ++a) {
         if (d[a] == 0.0) continue;
