@@ -8,6 +8,7 @@
 #include "app.h"
 #include "luxel/core/parallel.h"
 #include "luxel/gi2d/scene2d_json.h"
+#include "luxel/gpu/backend_policy.h"
 #include "luxel/gpu/context.h"
 #include "luxel/voxel/voxel_scene.h"
 #include "mode_2d.h"
@@ -48,7 +49,7 @@ bool hasHardwareGpu() {
     auto devices = gpu::listDevices();
     if (!devices) return false;
     for (const gpu::DeviceInfo& d : *devices) {
-        if (d.type != "cpu") return true;
+        if (gpu::autoUsesDevice(d)) return true;
     }
     return false;
 }

@@ -13,6 +13,7 @@
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rasterize.h"
 #include "luxel/gi2d/rc_solver.h"
+#include "luxel/gpu/backend_policy.h"
 #include "luxel/gpu/context.h"
 
 namespace luxel::viewer {
@@ -173,8 +174,8 @@ gpu::Context* Renderer2D::gpuFor(const View2D& view) {
         note_ = "no Vulkan device (" + gpuError_ + "); using the CPU";
         return nullptr;
     }
-    // A software Vulkan device (lavapipe) is slower than the CPU path: auto skips it.
-    if (view.backend == "auto" && gpu_->device().type == "cpu") {
+    // The backend policy (luxel/gpu/backend_policy.h): auto skips software devices.
+    if (view.backend == "auto" && !gpu::autoUsesDevice(gpu_->device())) {
         note_ = "auto: skipped the software Vulkan device " + gpu_->device().name;
         return nullptr;
     }

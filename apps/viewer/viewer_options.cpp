@@ -5,18 +5,14 @@
 
 #include <cstdio>
 
+#include "luxel/core/image_size.h"
+
 namespace luxel::viewer {
 
 Result<std::pair<int, int>> parseWindowSize(const std::string& text, const std::string& option) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X')) {
-        return Error(option + " '" + text + "' is not WIDTHxHEIGHT (e.g. 640x480)");
-    }
-    if (w < 1 || h < 1 || w > 16384 || h > 16384) {
-        return Error(option + " " + text + ": each side must be in 1..16384");
-    }
-    return std::pair{w, h};
+    auto size = parseImageSize(text, option);
+    if (!size) return size.error();
+    return std::pair{size->width, size->height};
 }
 
 Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {

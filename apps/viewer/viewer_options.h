@@ -36,7 +36,8 @@ struct ParsedOptions {
 };
 Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args);
 
-// "640x480" -> {640, 480}; fails for anything else or sides outside 1..16384.
+// "640x480" -> {640, 480} (parseImageSize); fails for anything else or sides outside
+// 1..kMaxImageSide.
 Result<std::pair<int, int>> parseWindowSize(const std::string& text, const std::string& option);
 
 }  // namespace luxel::viewer

@@ -2,6 +2,7 @@
 // before the next frame, and the overlay gets the dispatch times from GPU timestamps.
 #include <utility>
 
+#include "luxel/gpu/backend_policy.h"
 #include "luxel/gpu/context.h"
 #include "luxel/voxel/voxel_gpu.h"
 #include "voxel_frame_source.h"
@@ -23,7 +24,7 @@ class GpuVoxelFrameSource final : public VoxelFrameSource {
 
     std::string backend() const override { return "gpu"; }
     std::string device() const override { return context_->device().name; }
-    bool hardwareGpu() const override { return context_->device().type != "cpu"; }
+    bool hardwareGpu() const override { return gpu::autoUsesDevice(context_->device()); }
     void worldEdited(const voxel::VoxelWorld& world, Int3 min, Int3 maxExclusive) override {
         // A failed upload leaves the old chunk on the GPU; the next render reports nothing wrong
         // but shows the edit late, so keep the message for the overlay.
@@ -56,7 +57,7 @@ Result<std::unique_ptr<VoxelFrameSource>> makeGpuVoxelFrameSource(const std::str
                                                                   voxel::TextureSet textures) {
     auto context = gpu::Context::create({device, false});
     if (!context) return context.error();
-    if (hardwareOnly && (*context)->device().type == "cpu") {
+    if (hardwareOnly && !gpu::autoUsesDevice((*context)->device())) {
         return Error("only a software Vulkan device (" + (*context)->device().name +
                      "), slower than the CPU path");
     }

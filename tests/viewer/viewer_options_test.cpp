@@ -32,7 +32,8 @@ TEST(ViewerOptions, RejectsBadValuesWithTheOptionName) {
     const Case cases[] = {
         {{}, "scene"},
         {{"s.json", "--size", "640"}, "--size '640' is not WIDTHxHEIGHT"},
-        {{"s.json", "--internal-size", "0x10"}, "--internal-size 0x10"},
+        {{"s.json", "--internal-size", "0x10"},
+         "--internal-size '0x10': each side must be in 1..65536"},
         {{"s.json", "--backend", "metal"}, "--backend"},
         {{"s.json", "--solver", "pt"}, "--solver"},
         {{"s.json", "--internal-scale", "0"}, "--internal-scale"},

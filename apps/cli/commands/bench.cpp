@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "commands/command.h"
+#include "luxel/core/image_size.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/timer.h"
 #include "luxel/gi2d/hrc_solver.h"
@@ -21,23 +22,6 @@ struct BenchArgs {
     int repeat = 3;
 };
 
-Result<std::vector<int>> parseSizes(const std::string& text) {
-    std::vector<int> sizes;
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-        try {
-            const int size = std::stoi(item);
-            if (Status s = gi2d::validateCanvasSize(size, size); !s) return s.error();
-            sizes.push_back(size);
-        } catch (...) {
-            return Error("--sizes '" + text + "' is not a comma-separated list of sizes");
-        }
-    }
-    if (sizes.empty()) return Error("--sizes is empty");
-    return sizes;
-}
-
 // "merge R3 f0" -> "merge"
 std::string passKind(const std::string& name) {
     return name.substr(0, name.find(' '));
@@ -47,7 +31,8 @@ int runBench(const BenchArgs& args) {
     if (voxel::isVoxelSceneFile(args.scene)) {
         return benchVoxelScene({args.scene, args.backend, args.device, args.sizes, args.repeat});
     }
-    auto sizes = parseSizes(args.sizes.empty() ? "256,512,1024,2048" : args.sizes);
+    auto sizes =
+        parseImageSizeList(args.sizes.empty() ? "256,512,1024,2048" : args.sizes, "--sizes");
     if (!sizes) return reportError(sizes.error());
     if (args.backend != "cpu" && args.backend != "gpu") {
         return reportError(Error("--backend '" + args.backend + "' is not cpu or gpu"));
@@ -62,19 +47,22 @@ int runBench(const BenchArgs& args) {
     }
     std::printf("%s, hrc on the %s, best of %d\n", args.scene.c_str(), args.backend.c_str(),
                 args.repeat);
-    std::printf("%7s %10s %9s", "size", "ms", "Mpix/s");
+    std::printf("%9s %10s %9s", "size", "ms", "Mpix/s");
     const char* kinds[] = {"trace", "extend", "merge", "readout", "finish", "upload", "download"};
     if (context) {
         for (const char* k : kinds) std::printf(" %9s", k);
     }
     std::printf("\n");
-    for (int size : *sizes) {
-        sized->width = sized->height = size;
+    for (const ImageSize& size : *sizes) {
+        const int w = size.width, h = size.height;
+        sized->width = w;
+        sized->height = h;
+        const std::string label = std::to_string(w) + "x" + std::to_string(h);
         const std::uint64_t needed =
-            gi2d::mediumBytes(size, size) +
-            (context ? gi2d::mediumBytes(size, size) : gi2d::estimateHrcMemory(size, size).total());
-        if (Status s = checkMemory(needed, std::to_string(size) + "^2"); !s) {
-            std::printf("%7d skipped: %s\n", size, s.error().message().c_str());
+            gi2d::mediumBytes(w, h) +
+            (context ? gi2d::mediumBytes(w, h) : gi2d::estimateHrcMemory(w, h).total());
+        if (Status s = checkMemory(needed, label); !s) {
+            std::printf("%9s skipped: %s\n", label.c_str(), s.error().message().c_str());
             continue;
         }
         auto medium = rasterizeSized(*sized, args.scene, 16);
@@ -88,7 +76,7 @@ int runBench(const BenchArgs& args) {
                                   : gi2d::solveHrc(*medium);
             const double ms = clock.milliseconds();
             if (!result) {
-                std::printf("%7d failed: %s\n", size, result.error().message().c_str());
+                std::printf("%9s failed: %s\n", label.c_str(), result.error().message().c_str());
                 break;
             }
             if (context && r == 0) continue;
@@ -100,7 +88,8 @@ int runBench(const BenchArgs& args) {
             }
         }
         if (best == 1e300) continue;
-        std::printf("%7d %10.2f %9.2f", size, best, static_cast<double>(size) * size / best * 1e-3);
+        std::printf("%9s %10.2f %9.2f", label.c_str(), best,
+                    static_cast<double>(w) * h / best * 1e-3);
         if (context) {
             for (const char* k : kinds) std::printf(" %9.2f", bestPasses[k]);
         }
@@ -123,8 +112,8 @@ Runner addBenchCommand(CLI::App& app) {
     app.add_option("--backend", args->backend, "cpu or gpu")->capture_default_str();
     app.add_option("--device", args->device, "GPU: device index or part of its name");
     app.add_option("--sizes", args->sizes,
-                   "2D: comma-separated square sizes (default 256,512,1024,2048); voxel: "
-                   "comma-separated WxH (default: the scene's camera size)");
+                   "comma-separated sizes, WxH or N for NxN (default: 2D 256,512,1024,2048; "
+                   "voxel the scene's camera size)");
     app.add_option("--repeat", args->repeat, "runs per size (the best is printed)")
         ->capture_default_str();
     return [args] { return runBench(*args); };

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "commands/command.h"
+#include "luxel/core/image_size.h"
 #include "luxel/core/timer.h"
 #include "luxel/gpu/context.h"
 #include "luxel/voxel/shading.h"
@@ -15,19 +16,6 @@
 
 namespace luxel::cli {
 namespace {
-
-Result<std::vector<std::pair<int, int>>> parseSizeList(const std::string& text) {
-    std::vector<std::pair<int, int>> sizes;
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-        auto size = parseSize(item);
-        if (!size) return Error("--sizes: " + size.error().message());
-        if (size->first <= 0) return Error("--sizes '" + text + "' has an empty entry");
-        sizes.push_back(*size);
-    }
-    return sizes;
-}
 
 // The scene's view at another image size.
 Result<voxel::Camera> resized(const voxel::Camera& camera, int width, int height) {
@@ -44,9 +32,9 @@ int benchVoxelScene(const VoxelBenchRequest& request) {
     if (request.repeat < 1) return reportError(Error("--repeat must be at least 1"));
     auto scene = voxel::loadVoxelScene(request.scene);
     if (!scene) return reportError(scene.error());
-    std::vector<std::pair<int, int>> sizes{{scene->camera.width(), scene->camera.height()}};
+    std::vector<ImageSize> sizes{{scene->camera.width(), scene->camera.height()}};
     if (!request.sizes.empty()) {
-        auto parsed = parseSizeList(request.sizes);
+        auto parsed = parseImageSizeList(request.sizes, "--sizes");
         if (!parsed) return reportError(parsed.error());
         sizes = *parsed;
     }

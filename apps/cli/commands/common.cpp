@@ -3,8 +3,10 @@
 #include <cstdio>
 
 #include "commands/command.h"
+#include "luxel/core/image_size.h"
 #include "luxel/gi2d/rasterize.h"
 #include "luxel/gi2d/scene2d_json.h"
+#include "luxel/gpu/backend_policy.h"
 #include "luxel/gpu/context.h"
 #include "luxel/voxel/voxel_scene.h"
 
@@ -24,14 +26,9 @@ bool hasExtension(const std::string& path, const std::string& ext) {
 
 Result<std::pair<int, int>> parseSize(const std::string& text) {
     if (text.empty()) return std::pair{0, 0};
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X')) {
-        return Error("--size '" + text + "' is not WIDTHxHEIGHT (e.g. 512x512)");
-    }
-    if (Status s = gi2d::validateCanvasSize(w, h); !s)
-        return Error("--size " + s.error().message());
-    return std::pair{w, h};
+    auto size = parseImageSize(text, "--size");
+    if (!size) return size.error();
+    return std::pair{size->width, size->height};
 }
 
 Result<SizedScene> loadSizedScene(const std::string& scenePath, const std::string& size) {
@@ -66,29 +63,19 @@ Result<gi2d::Medium2D> loadMedium(const std::string& scenePath, const std::strin
 
 Result<std::unique_ptr<gpu::Context>> chooseGpuBackend(const std::string& backend,
                                                        const std::string& device, bool quiet) {
-    if (backend != "auto" && backend != "cpu" && backend != "gpu") {
-        return Error("--backend '" + backend + "' is not auto, cpu or gpu");
-    }
-    if (backend == "cpu") return std::unique_ptr<gpu::Context>();
+    auto parsed = gpu::parseBackend(backend);
+    if (!parsed) return parsed.error();
 #ifdef NDEBUG
     constexpr bool kValidation = false;
 #else
     constexpr bool kValidation = true;  // debug builds run with the validation layers
 #endif
-    auto context = gpu::Context::create({device, kValidation});
-    if (!context) {
-        if (backend == "gpu") return Error("--backend gpu: " + context.error().message());
-        if (!quiet) {
-            std::fprintf(stderr, "luxel: note: using the CPU backend (%s)\n",
-                         context.error().message().c_str());
-        }
-        return std::unique_ptr<gpu::Context>();
+    auto choice = gpu::openBackend(*parsed, {device, kValidation});
+    if (!choice) return choice.error();
+    if (!choice->note.empty() && !quiet) {
+        std::fprintf(stderr, "luxel: note: %s\n", choice->note.c_str());
     }
-    // A software Vulkan device (lavapipe) is slower than the CPU path: auto skips it.
-    if (backend == "auto" && (*context)->device().type == "cpu") {
-        return std::unique_ptr<gpu::Context>();
-    }
-    return std::move(*context);
+    return std::move(choice->context);
 }
 
 Result<std::unique_ptr<gpu::Context>> openBenchGpu(const std::string& device) {
