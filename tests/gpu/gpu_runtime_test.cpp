@@ -63,44 +63,6 @@ TEST(GpuRuntime, BadRequestsAreErrors) {
     EXPECT_FALSE(huge.ok());
 }
 
-TEST(GpuHrc, ExtensionMatchesTheCpuPass) {
-    LUXEL_REQUIRE_GPU(context);
-    // A random volumetric frame, 3 traced levels, then level 3..5 by extension on both sides.
-    const int length = 96, rows = 80, levels = 6;
-    gi2d::Medium2D medium{Image(length, rows, 3), Image(length, rows, 3), Rgb()};
-    Pcg32 rng(11);
-    for (int y = 0; y < rows; ++y) {
-        for (int x = 0; x < length; ++x) {
-            medium.absorption.setRgb(x, y,
-                                     Rgb(rng.nextFloat() * 0.5f, rng.nextFloat() * 0.1f, 0.2f));
-            medium.emission.setRgb(x, y, Rgb(rng.nextFloat() * 3.0f, rng.nextFloat(), 0.5f));
-        }
-    }
-    const gi2d::RayMarcher marcher(medium);
-    gi2d::hrc::RayTables cpu, gpu;
-    cpu.reset(length, rows, levels);
-    gpu.reset(length, rows, levels);
-    gi2d::hrc::traceBaseLevels(cpu, marcher, 3);
-    gi2d::hrc::traceBaseLevels(gpu, marcher, 3);
-    gi2d::hrc::extendLevels(cpu, 3);
-    for (int n = 3; n < levels; ++n) {
-        auto ms = gi2d::hrc::extendLevelOnGpu(*context, gpu, n);
-        ASSERT_TRUE(ms.ok()) << ms.error().message();
-        const auto a = cpu.levelHalves(n), b = gpu.levelHalves(n);
-        ASSERT_EQ(a.size(), b.size());
-        int differing = 0;
-        for (std::size_t i = 0; i < a.size(); ++i) {
-            const float x = halfToFloat(a[i]), y = halfToFloat(b[i]);
-            // Same arithmetic in float; at most one binary16 rounding step apart.
-            ASSERT_NEAR(x, y, 1e-3f * std::max(1.0f, std::abs(x))) << "level " << n << " at " << i;
-            differing += a[i] != b[i];
-        }
-        std::printf("level %d: %zu values, %d differ by one rounding step, GPU %.3f ms\n", n,
-                    a.size(), differing, *ms);
-    }
-    EXPECT_EQ(context->validationMessages(), 0) << "[" << context->lastValidationMessage() << "]";
-}
-
 }  // namespace
 }  // namespace luxel::gpu
 

@@ -4,6 +4,7 @@
 // innermost: ((p * 2^n + i) * rows + y).
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "gi2d/hrc/ray_tables.h"
@@ -22,6 +23,9 @@ class ConeBuffer {
     bool inRange(int p, int y) const { return p >= 0 && p < planes_ && y >= 0 && y < rows_; }
     Rgb& at(int p, int i, int y) { return data_[index(p, i, y)]; }
     const Rgb& at(int p, int i, int y) const { return data_[index(p, i, y)]; }
+    // Every entry in memory order (GPU uploads and readbacks: the hrc_merge layout).
+    std::span<Rgb> data() { return data_; }
+    std::span<const Rgb> data() const { return data_; }
 
   private:
     std::size_t index(int p, int i, int y) const {

@@ -1,10 +1,11 @@
 // HRC on the GPU: the CPU pass structure (hrc_solver.cpp) as dispatches of the shaders in
-// src/gpu/shaders/gi2d/hrc_*.comp.glsl, one submission per frustum.
+// src/gpu/shaders/gi2d/hrc_*.comp.glsl (built by gpu_passes.h), one submission per frustum.
 #include <algorithm>
 #include <string>
 
 #include "gi2d/hrc/cone_merge.h"
 #include "gi2d/hrc/frustum_frame.h"
+#include "gi2d/hrc/gpu_passes.h"
 #include "gi2d/hrc/hrc_geometry.h"
 #include "gi2d/hrc/ray_tables.h"
 #include "gi2d/medium_gpu.h"
@@ -138,7 +139,6 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
         ++frustums;
         const FrustumFrame frame = makeFrame(static_cast<Frustum>(r), w, h);
         const int levels = cascadeCount(frame.length);
-        const auto rows = static_cast<std::uint32_t>(frame.rows);
         {
             Stopwatch upload;
             const std::vector<float> packed = packMediumForGpu(frameMedium(medium, frame));
@@ -150,52 +150,28 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
         std::vector<gpu::Dispatch> passes;
         const std::string tag = " f" + std::to_string(r);
         for (int n = 0; n < levels; ++n) {
-            const auto planes = static_cast<std::uint32_t>(planeCount(frame.length, n));
-            gpu::Dispatch d;
-            d.setThreads(rows, pow2(n) + 1, planes);
-            if (n < options.tracedLevels) {
-                d.name = "trace T" + std::to_string(n) + tag;
-                d.program = *trace;
-                d.buffers = {frameBuffer->get(), tables[n].get()};
-                d.setPush(HrcTraceParams{static_cast<std::uint32_t>(n), rows, planes,
-                                         static_cast<std::uint32_t>(frame.length)});
-            } else {
-                d.name = "extend T" + std::to_string(n) + tag;
-                d.program = *extend;
-                d.buffers = {tables[n - 1].get(), tables[n].get()};
-                d.setPush(HrcExtendParams{
-                    static_cast<std::uint32_t>(n), rows,
-                    static_cast<std::uint32_t>(planeCount(frame.length, n - 1)), planes});
-            }
-            passes.push_back(std::move(d));
+            const int planes = planeCount(frame.length, n);
+            passes.push_back(n < options.tracedLevels
+                                 ? makeTraceDispatch(*trace, frameBuffer->get(), tables[n].get(), n,
+                                                     frame.rows, planes, frame.length)
+                                 : makeExtendDispatch(*extend, tables[n - 1].get(), tables[n].get(),
+                                                      n, frame.rows,
+                                                      planeCount(frame.length, n - 1), planes));
+            passes.back().name += tag;
         }
         int current = 0;
         for (int n = levels - 1; n >= 0; --n) {
-            const auto planes = static_cast<std::uint32_t>(planeCount(frame.length, n));
             const bool top = n == levels - 1;
-            gpu::Dispatch d;
-            d.name = "merge R" + std::to_string(n) + tag;
-            d.program = *merge;
-            // The top cascade reads no upper buffer; bind the output twice then (never read).
-            d.buffers = {tables[n].get(), cones[top ? current : current ^ 1].get(),
-                         cones[current].get(), weights[n].get()};
-            d.setPush(HrcMergeParams{
-                static_cast<std::uint32_t>(n), rows, planes,
-                top ? 0u : static_cast<std::uint32_t>(planeCount(frame.length, n + 1)),
-                top ? 0u : 1u, sky.r, sky.g, sky.b});
-            d.setThreads(rows, pow2(n), planes);
-            passes.push_back(std::move(d));
+            passes.push_back(makeMergeDispatch(
+                *merge, tables[n].get(), top ? nullptr : cones[current ^ 1].get(),
+                cones[current].get(), weights[n].get(), n, frame.rows, planeCount(frame.length, n),
+                top ? 0 : planeCount(frame.length, n + 1), sky));
+            passes.back().name += tag;
             current ^= 1;
         }
-        gpu::Dispatch out;
-        out.name = "readout" + tag;
-        out.program = *readout;
-        out.buffers = {cones[current ^ 1].get(), beyond->get()};
-        out.setPush(HrcReadoutParams{
-            static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(frame.length), rows,
-            static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h), sky.r, sky.g, sky.b});
-        out.setThreads(static_cast<std::uint64_t>(frame.length), rows);
-        passes.push_back(std::move(out));
+        passes.push_back(
+            makeReadoutDispatch(*readout, cones[current ^ 1].get(), beyond->get(), frame, sky));
+        passes.back().name += tag;
         auto ran = context.run(passes);
         if (!ran) return ran.error();
         if (timings) timings->insert(timings->end(), ran->begin(), ran->end());
@@ -203,14 +179,9 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
             options.onProgress(frustums, std::popcount(options.frustumMask & 0xFu));
     }
 
-    gpu::Dispatch last;
-    last.name = "finish";
-    last.program = *finish;
-    last.buffers = {canvasMedium->get(), beyond->get(), fluence->get()};
-    last.setPush(HrcFinishParams{static_cast<std::uint32_t>(w), static_cast<std::uint32_t>(h),
-                                 static_cast<std::uint32_t>(frustums),
-                                 options.crossBlur ? 1u : 0u});
-    last.setThreads(static_cast<std::uint64_t>(w), static_cast<std::uint64_t>(h));
+    const gpu::Dispatch last =
+        makeFinishDispatch(*finish, canvasMedium->get(), beyond->get(), fluence->get(), w, h,
+                           frustums, options.crossBlur);
     auto ran = context.run(std::span<const gpu::Dispatch>(&last, 1));
     if (!ran) return ran.error();
     if (timings) timings->insert(timings->end(), ran->begin(), ran->end());

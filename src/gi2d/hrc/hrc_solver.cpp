@@ -1,18 +1,18 @@
-// HRC driver: per frustum, trace + extend the ray tables, merge cones top-down, read out; then
-// the opacity-gated cross blur (docs/algorithms/holographic-radiance-cascades.md §7).
+// HRC driver (docs/algorithms/holographic-radiance-cascades.md §7): per frustum, trace + extend
+// the ray tables, merge cones top-down, read out; then finish (cross blur, own segment).
 #include "luxel/gi2d/hrc_solver.h"
 
 #include <algorithm>
-#include <cmath>
-#include <numbers>
+#include <bit>
 #include <string>
 
 #include "gi2d/hrc/cone_merge.h"
+#include "gi2d/hrc/finish.h"
 #include "gi2d/hrc/frustum_frame.h"
 #include "gi2d/hrc/hrc_geometry.h"
 #include "gi2d/hrc/ray_tables.h"
+#include "gi2d/hrc/readout.h"
 #include "luxel/core/memory.h"
-#include "luxel/core/parallel.h"
 #include "luxel/gi2d/ray_march.h"
 
 namespace luxel::gi2d {
@@ -20,76 +20,6 @@ namespace luxel::gi2d {
 using namespace hrc;
 
 namespace {
-
-constexpr float kQuarterTurn = static_cast<float>(std::numbers::pi / 2.0);
-
-// The pixel's own half-pixel segment towards the frustum
-// (docs/algorithms/holographic-radiance-cascades.md §6.2, as in amitabha): the read-out plane is
-// one pixel ahead, so this is what lies between the pixel centre and it.
-Interval ownHalfPixel(const Medium2D& medium, int x, int y) {
-    Interval own;
-    const Rgb sigma = medium.absorption.rgb(x, y), emission = medium.emission.rgb(x, y);
-    for (int c = 0; c < 3; ++c) {
-        const float t = std::exp(-0.5f * sigma[c]);
-        own.radiance[c] = emission[c] * (1.0f - t);
-        own.transmittance[c] = t;
-    }
-    return own;
-}
-
-// Adds this frustum's angular fluence arriving at every pixel's read-out plane: the merged cones
-// of cascade `level` at the first plane beyond the pixel. The pixel's own half-pixel segment is
-// the same for every frustum and is applied once at the end.
-void readOut(const FrustumFrame& frame, const ConeBuffer& cones, int level, Rgb sky,
-             Image& beyondSum) {
-    const float coneWidthSum = kQuarterTurn;  // the cones of one probe cover 90 degrees
-    parallelForRange(frame.rows, 8, [&](int begin, int end) {
-        for (int v = begin; v < end; ++v) {
-            for (int u = 0; u < frame.length; ++u) {
-                int x, y;
-                frame.toCanvas(u, v, x, y);
-                const int plane = (u + 1 + pow2(level) - 1) >> level;  // first plane >= u + 1
-                Rgb beyond;
-                if (cones.inRange(plane, v)) {
-                    for (int i = 0; i < cones.cones(); ++i) beyond += cones.at(plane, i, v);
-                } else {
-                    beyond = sky * coneWidthSum;
-                }
-                beyondSum.setRgb(x, y, beyondSum.rgb(x, y) + beyond);
-            }
-        }
-    });
-}
-
-// Paper Eq 21: 1-px cross blur, centre weight 4, neighbours 1, a neighbour skipped when its
-// opacity differs from the centre's by more than 0.1 (weights renormalised). Applied to the light
-// arriving at the read-out planes, where the row-parity checkerboard lives, before the pixel's own
-// segment: blurring own emission would smear an emitter into the opaque wall next to it.
-Image crossBlur(const Medium2D& medium, const Image& fluence) {
-    const int w = fluence.width(), h = fluence.height();
-    auto opacity = [&](int x, int y) {
-        return 1.0f - std::exp(-medium.absorption.rgb(x, y).maxComponent());
-    };
-    Image out(w, h, 3);
-    parallelForRange(h, 8, [&](int begin, int end) {
-        for (int y = begin; y < end; ++y) {
-            for (int x = 0; x < w; ++x) {
-                const float centre = opacity(x, y);
-                Rgb sum = fluence.rgb(x, y) * 4.0f;
-                float weight = 4.0f;
-                const int nx[4] = {x - 1, x + 1, x, x}, ny[4] = {y, y, y - 1, y + 1};
-                for (int t = 0; t < 4; ++t) {
-                    if (!fluence.inside(nx[t], ny[t])) continue;
-                    if (std::abs(opacity(nx[t], ny[t]) - centre) > 0.1f) continue;
-                    sum += fluence.rgb(nx[t], ny[t]);
-                    weight += 1.0f;
-                }
-                out.setRgb(x, y, sum * (1.0f / weight));
-            }
-        }
-    });
-    return out;
-}
 
 FrustumFrame frameFor(int r, int w, int h) {
     return makeFrame(static_cast<Frustum>(r), w, h);
@@ -169,21 +99,7 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options) {
         if (options.onProgress) options.onProgress(++done, frustums);
     }
 
-    if (options.crossBlur && options.debugCascade < 0) fluence = crossBlur(medium, fluence);
-    // Through the pixel's own half-pixel segment, then angular fluence summed over frustums ->
-    // mean radiance over directions.
-    const float ownWidth = kQuarterTurn * static_cast<float>(frustums);
-    const float toMean = static_cast<float>(1.0 / (2.0 * std::numbers::pi));
-    parallelForRange(h, 16, [&](int begin, int end) {
-        for (int y = begin; y < end; ++y) {
-            for (int x = 0; x < w; ++x) {
-                const Interval own = ownHalfPixel(medium, x, y);
-                const Rgb total = own.radiance * ownWidth + own.transmittance * fluence.rgb(x, y);
-                fluence.setRgb(x, y, total * toMean);
-            }
-        }
-    });
-    return fluence;
+    return finishFluence(medium, fluence, frustums, options.crossBlur && options.debugCascade < 0);
 }
 
 }  // namespace luxel::gi2d

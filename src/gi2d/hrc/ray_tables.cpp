@@ -61,52 +61,56 @@ void forEachPlaneAndRay(const RayTables& tables, int n, Body&& body) {
 
 }  // namespace
 
+void traceLevel(RayTables& tables, const RayMarcher& marcher, int n) {
+    forEachPlaneAndRay(tables, n, [&](int p, int k) {
+        const double dx = pow2(n), dy = rayOffsetY(n, k);
+        const double len = std::hypot(dx, dy);
+        const Vec2d direction{dx / len, dy / len};
+        const double x = static_cast<double>(p) * pow2(n);
+        for (int y = 0; y < tables.rows(); ++y) {
+            const RaySegment s = marcher.march({x, y + 0.5}, direction, len, 0.0f);
+            tables.set(n, p, y, k, {s.radiance, s.transmittance});
+        }
+    });
+}
+
 void traceBaseLevels(RayTables& tables, const RayMarcher& marcher, int tracedLevels) {
     const int levels = std::min(tracedLevels, tables.levels());
-    for (int n = 0; n < levels; ++n) {
-        forEachPlaneAndRay(tables, n, [&](int p, int k) {
-            const double dx = pow2(n), dy = rayOffsetY(n, k);
-            const double len = std::hypot(dx, dy);
-            const Vec2d direction{dx / len, dy / len};
-            const double x = static_cast<double>(p) * pow2(n);
-            for (int y = 0; y < tables.rows(); ++y) {
-                const RaySegment s = marcher.march({x, y + 0.5}, direction, len, 0.0f);
-                tables.set(n, p, y, k, {s.radiance, s.transmittance});
-            }
-        });
-    }
+    for (int n = 0; n < levels; ++n) traceLevel(tables, marcher, n);
 }
 
 void extendLevels(RayTables& tables, int tracedLevels) {
+    for (int n = std::max(tracedLevels, 1); n < tables.levels(); ++n) extendLevel(tables, n);
+}
+
+void extendLevel(RayTables& tables, int n) {
     const int rows = tables.rows();
-    for (int n = std::max(tracedLevels, 1); n < tables.levels(); ++n) {
-        const int h = pow2(n - 1);
-        forEachPlaneAndRay(tables, n, [&](int p, int k) {
-            // Per-thread scratch rows, decoded once per (plane, ray) pair.
-            thread_local DecodedRow nearLo, farHi, nearHi, farLo;
-            thread_local std::vector<float> out;
-            out.resize(static_cast<std::size_t>(rows) * 6);
-            const int lo = k >> 1, hi = (k + 1) >> 1;
-            const int dyLo = 2 * lo - h, dyHi = 2 * hi - h;
-            nearLo.load(tables, n - 1, 2 * p, lo);
-            farHi.load(tables, n - 1, 2 * p + 1, hi);
-            if (lo != hi) {
-                nearHi.load(tables, n - 1, 2 * p, hi);
-                farLo.load(tables, n - 1, 2 * p + 1, lo);
+    const int h = pow2(n - 1);
+    forEachPlaneAndRay(tables, n, [&](int p, int k) {
+        // Per-thread scratch rows, decoded once per (plane, ray) pair.
+        thread_local DecodedRow nearLo, farHi, nearHi, farLo;
+        thread_local std::vector<float> out;
+        out.resize(static_cast<std::size_t>(rows) * 6);
+        const int lo = k >> 1, hi = (k + 1) >> 1;
+        const int dyLo = 2 * lo - h, dyHi = 2 * hi - h;
+        nearLo.load(tables, n - 1, 2 * p, lo);
+        farHi.load(tables, n - 1, 2 * p + 1, hi);
+        if (lo != hi) {
+            nearHi.load(tables, n - 1, 2 * p, hi);
+            farLo.load(tables, n - 1, 2 * p + 1, lo);
+        }
+        for (int y = 0; y < rows; ++y) {
+            Interval v = over(nearLo.at(y), farHi.at(y + dyLo));
+            // Even k: both paths are the straight ray. Odd k: average the two bent paths.
+            if (lo != hi) v = average(v, over(nearHi.at(y), farLo.at(y + dyHi)));
+            float* e = &out[static_cast<std::size_t>(y) * 6];
+            for (int c = 0; c < 3; ++c) {
+                e[c] = v.radiance[c];
+                e[3 + c] = v.transmittance[c];
             }
-            for (int y = 0; y < rows; ++y) {
-                Interval v = over(nearLo.at(y), farHi.at(y + dyLo));
-                // Even k: both paths are the straight ray. Odd k: average the two bent paths.
-                if (lo != hi) v = average(v, over(nearHi.at(y), farLo.at(y + dyHi)));
-                float* e = &out[static_cast<std::size_t>(y) * 6];
-                for (int c = 0; c < 3; ++c) {
-                    e[c] = v.radiance[c];
-                    e[3 + c] = v.transmittance[c];
-                }
-            }
-            tables.encodeRow(n, p, k, out);
-        });
-    }
+        }
+        tables.encodeRow(n, p, k, out);
+    });
 }
 
 }  // namespace luxel::gi2d::hrc

@@ -54,6 +54,9 @@ class RayTables {
     std::span<std::uint16_t> levelHalves(int n) {
         return {tables_[n][0].radiance, tables_[n].size() * 6};
     }
+    std::span<const std::uint16_t> levelHalves(int n) const {
+        return {tables_[n][0].radiance, tables_[n].size() * 6};
+    }
 
     // Bytes for the tables of a frame (entries x 12 bytes).
     static std::uint64_t bytesFor(int length, int rows, int levels);
@@ -106,22 +109,14 @@ struct DecodedRow {
     }
 };
 
-// Marches T_n for n < tracedLevels with the exact DDA (exact optical depth on diagonals).
+// Marches T_n with the exact DDA (exact optical depth on diagonals): the CPU twin of hrc_trace.
+void traceLevel(RayTables& tables, const RayMarcher& marcher, int n);
+// traceLevel for every n < tracedLevels.
 void traceBaseLevels(RayTables& tables, const RayMarcher& marcher, int tracedLevels);
 
-// Builds T_n for tracedLevels <= n < levels by extension.
+// Builds T_n (n >= 1) from T_{n-1} by extension (paper Eq 18-20): the CPU twin of hrc_extend.
+void extendLevel(RayTables& tables, int n);
+// extendLevel for every tracedLevels <= n < levels.
 void extendLevels(RayTables& tables, int tracedLevels);
-
-}  // namespace luxel::gi2d::hrc
-
-namespace luxel::gpu {
-class Context;
-}
-
-namespace luxel::gi2d::hrc {
-
-// The same as extendLevels for level n alone, on the GPU (shader hrc_extend): uploads T_{n-1},
-// dispatches, reads T_n back. Returns the pass's GPU time in milliseconds.
-Result<double> extendLevelOnGpu(gpu::Context& context, RayTables& tables, int n);
 
 }  // namespace luxel::gi2d::hrc

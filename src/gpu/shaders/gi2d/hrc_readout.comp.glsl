@@ -1,16 +1,15 @@
-// HRC read-out (docs/algorithms/holographic-radiance-cascades.md §6.2; CPU reference: readOut in src/gi2d/hrc/hrc_solver.cpp): each pixel
-// adds the cones of R_0 at the plane one pixel ahead along this frustum's axis (or the sky beyond
-// the frame) to its canvas-space accumulator.
+// HRC read-out (docs/algorithms/holographic-radiance-cascades.md §6.2; CPU twin: readOut in
+// src/gi2d/hrc/readout.cpp): each pixel adds the cones of R_0 at the plane one pixel ahead along
+// this frustum's axis (or the sky beyond the frame) to its canvas-space accumulator.
 #version 450
 #extension GL_GOOGLE_include_directive : require
+#include "shared/hrc_kernels.h"
 #include "shared/hrc_layout.h"
 
 layout(local_size_x = LUXEL_HRC_GROUP_SIZE) in;
 layout(std430, set = 0, binding = 0) readonly buffer Cones { float cones[]; };
 layout(std430, set = 0, binding = 1) buffer Beyond { float beyond[]; };
 layout(push_constant) uniform Push { HrcReadoutParams params; };
-
-const float kQuarterTurn = 1.57079632679489662;
 
 // Canvas pixel of frame pixel (u, v); matches FrustumFrame::toCanvas.
 uvec2 toCanvas(uint u, uint v) {
@@ -23,13 +22,13 @@ uvec2 toCanvas(uint u, uint v) {
 void main() {
     const uint u = gl_GlobalInvocationID.x, v = gl_GlobalInvocationID.y;
     if (u >= params.frameLength || v >= params.rows) return;
-    const uint plane = u + 1u;  // R_0 has one plane per pixel border and one cone
+    const uint plane = uint(hrcReadoutPlane(int(u), 0));  // R_0: one cone per plane
     vec3 arriving;
     if (plane < params.frameLength) {
         const uint base = (plane * params.rows + v) * 3u;
         arriving = vec3(cones[base], cones[base + 1u], cones[base + 2u]);
     } else {
-        arriving = vec3(params.skyR, params.skyG, params.skyB) * kQuarterTurn;
+        arriving = vec3(params.skyR, params.skyG, params.skyB) * LUXEL_HRC_QUARTER_TURN;
     }
     const uvec2 c = toCanvas(u, v);
     const uint target = (c.y * params.canvasWidth + c.x) * 3u;

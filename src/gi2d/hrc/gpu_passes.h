@@ -1,0 +1,54 @@
+// The five HRC GPU passes as units (shaders src/gpu/shaders/gi2d/hrc_*.comp.glsl): one dispatch
+// builder per pass, used by solveHrcOnGpu, and one single-pass entry per pass with the inputs and
+// outputs of its CPU twin, so tests compare the passes one by one:
+//   hrc_trace   traceLevelOnGpu     CPU twin traceLevel     (ray_tables.h)
+//   hrc_extend  extendLevelOnGpu    CPU twin extendLevel    (ray_tables.h)
+//   hrc_merge   mergeCascadeOnGpu   CPU twin mergeCascade   (cone_merge.h)
+//   hrc_readout readOutOnGpu        CPU twin readOut        (readout.h)
+//   hrc_finish  finishOnGpu         CPU twin finishFluence  (finish.h)
+// Every single-pass entry uploads its inputs, runs the pass, reads the output back and returns the
+// pass's GPU time in milliseconds.
+#pragma once
+
+#include <string>
+
+#include "gi2d/hrc/cone_merge.h"
+#include "gi2d/hrc/frustum_frame.h"
+#include "gi2d/hrc/ray_tables.h"
+#include "luxel/core/image.h"
+#include "luxel/gi2d/medium2d.h"
+#include "luxel/gpu/context.h"
+
+namespace luxel::gi2d::hrc {
+
+// Dispatch builders: buffers in the order the shader binds them.
+gpu::Dispatch makeTraceDispatch(gpu::Program* program, gpu::Buffer* frameMedium, gpu::Buffer* table,
+                                int n, int rows, int planes, int frameLength);
+gpu::Dispatch makeExtendDispatch(gpu::Program* program, gpu::Buffer* below, gpu::Buffer* table,
+                                 int n, int rows, int planesBelow, int planes);
+// `upper` null at the top cascade.
+gpu::Dispatch makeMergeDispatch(gpu::Program* program, gpu::Buffer* table, gpu::Buffer* upper,
+                                gpu::Buffer* out, gpu::Buffer* weights, int n, int rows, int planes,
+                                int upperPlanes, Rgb sky);
+gpu::Dispatch makeReadoutDispatch(gpu::Program* program, gpu::Buffer* cones, gpu::Buffer* beyond,
+                                  const FrustumFrame& frame, Rgb sky);
+gpu::Dispatch makeFinishDispatch(gpu::Program* program, gpu::Buffer* canvasMedium,
+                                 gpu::Buffer* beyond, gpu::Buffer* fluence, int width, int height,
+                                 int frustums, bool blur);
+
+// T_n of `tables` marched through `frameMedium` (the medium in the frustum's frame).
+Result<double> traceLevelOnGpu(gpu::Context& context, const Medium2D& frameMedium,
+                               RayTables& tables, int n);
+// T_n from T_{n-1}.
+Result<double> extendLevelOnGpu(gpu::Context& context, RayTables& tables, int n);
+// R_n into `out` from T_n, T_{n+1} weights and `upper` (null at the top).
+Result<double> mergeCascadeOnGpu(gpu::Context& context, const RayTables& tables, int n,
+                                 const ConeBuffer* upper, Rgb sky, ConeBuffer& out);
+// Adds R_0 (`cones`) at each pixel's read-out plane into `beyondSum`.
+Result<double> readOutOnGpu(gpu::Context& context, const FrustumFrame& frame,
+                            const ConeBuffer& cones, Rgb sky, Image& beyondSum);
+// The finished fluence from `beyond`.
+Result<double> finishOnGpu(gpu::Context& context, const Medium2D& medium, const Image& beyond,
+                           int frustums, bool blur, Image& fluence);
+
+}  // namespace luxel::gi2d::hrc

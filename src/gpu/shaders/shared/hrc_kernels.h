@@ -1,0 +1,43 @@
+// Per-pixel HRC arithmetic both backends run (docs/algorithms/holographic-radiance-cascades.md
+// §6.2, §7): which plane a pixel reads, the opacity gate of the cross blur (paper Eq 21), and the
+// pixel's own half-pixel segment in front of the light arriving at its read-out plane. Compiled
+// as C++ by src/gi2d/hrc/readout.cpp and finish.cpp, and as GLSL by hrc_readout and hrc_finish.
+#ifndef LUXEL_GPU_SHARED_HRC_KERNELS_H
+#define LUXEL_GPU_SHARED_HRC_KERNELS_H
+
+#include "glsl_compat.h"
+
+#define LUXEL_HRC_QUARTER_TURN 1.57079632679489662f
+#define LUXEL_HRC_INV_TWO_PI 0.159154943091895336f
+// Eq 21: a neighbour whose opacity differs from the centre's by more than this is not blurred in.
+#define LUXEL_HRC_BLUR_GATE 0.1f
+
+LUXEL_SHARED_BEGIN
+
+// The first plane of cascade `level` at or beyond u + 1: the read-out plane one pixel ahead.
+LUXEL_FUNC int hrcReadoutPlane(int u, int level) {
+    return (u + 1 + (1 << level) - 1) >> level;
+}
+
+// Opacity of a pixel over one pixel length, from its largest absorption channel.
+LUXEL_FUNC float hrcOpacity(vec3 sigma) {
+    return 1.0f - exp(-max(sigma.x, max(sigma.y, sigma.z)));
+}
+
+// Whether the cross blur takes a neighbour in (centre weight 4, neighbours 1, renormalised).
+LUXEL_FUNC bool hrcBlurTakes(float centreOpacity, float neighbourOpacity) {
+    return !(abs(neighbourOpacity - centreOpacity) > LUXEL_HRC_BLUR_GATE);
+}
+
+// Mean radiance over directions at a pixel: its own half-pixel segment (L = E(1 - e^{-sigma/2}),
+// T = e^{-sigma/2}) over the `frustums` quarter turns, in front of the angular fluence arriving at
+// its read-out planes, divided by 2 pi.
+LUXEL_FUNC vec3 hrcFinishPixel(vec3 sigma, vec3 emission, vec3 arriving, float frustums) {
+    const vec3 t = exp(sigma * -0.5f);
+    const vec3 own = emission * (vec3(1.0f) - t);
+    return (own * (LUXEL_HRC_QUARTER_TURN * frustums) + t * arriving) * LUXEL_HRC_INV_TWO_PI;
+}
+
+LUXEL_SHARED_END
+
+#endif

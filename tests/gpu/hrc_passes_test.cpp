@@ -1,0 +1,174 @@
+// Each HRC GPU pass against its CPU twin (src/gi2d/hrc/gpu_passes.h), on the same inputs: a random
+// volumetric medium, so every pass sees partial transmittance, emission and out-of-frame reads.
+// Runs on whatever Vulkan device is present (lavapipe on CPU-only machines; skipped, saying why,
+// without one). Validation layers are on and any message fails the test.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "gi2d/hrc/cone_merge.h"
+#include "gi2d/hrc/finish.h"
+#include "gi2d/hrc/frustum_frame.h"
+#include "gi2d/hrc/gpu_passes.h"
+#include "gi2d/hrc/hrc_geometry.h"
+#include "gi2d/hrc/ray_tables.h"
+#include "gi2d/hrc/readout.h"
+#include "luxel/core/half.h"
+#include "luxel/core/rng.h"
+#include "luxel/gi2d/ray_march.h"
+#include "luxel/gpu/context.h"
+
+namespace luxel::gi2d::hrc {
+namespace {
+
+class HrcPasses : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        auto c = gpu::Context::create({.device = "", .validation = true});
+        if (!c) GTEST_SKIP() << "no Vulkan device: " << c.error().message();
+        context_ = std::move(*c);
+    }
+    void TearDown() override {
+        if (context_) {
+            EXPECT_EQ(context_->validationMessages(), 0) << context_->lastValidationMessage();
+        }
+    }
+    std::unique_ptr<gpu::Context> context_;
+};
+
+// Non-square, not a power of two, with partly transparent emitting pixels everywhere and a sky.
+Medium2D randomMedium(int w, int h, std::uint64_t seed) {
+    Medium2D m{Image(w, h, 3), Image(w, h, 3), Rgb(0.2f, 0.3f, 0.4f)};
+    Pcg32 rng(seed);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const bool wall = rng.nextFloat() < 0.05f;
+            m.absorption.setRgb(
+                x, y,
+                wall ? Rgb(50.0f) : Rgb(rng.nextFloat() * 0.5f, rng.nextFloat() * 0.1f, 0.2f));
+            m.emission.setRgb(x, y, Rgb(rng.nextFloat() * 3.0f, rng.nextFloat(), 0.5f));
+        }
+    }
+    return m;
+}
+
+// Largest |a - b| relative to max(1, |a|) over two float arrays of the same size.
+float worstRelative(const float* a, const float* b, std::size_t n) {
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < n; ++i) {
+        worst = std::max(worst, std::abs(a[i] - b[i]) / std::max(1.0f, std::abs(a[i])));
+    }
+    return worst;
+}
+
+float worstRelativeHalves(std::span<const std::uint16_t> a, std::span<const std::uint16_t> b) {
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const float x = halfToFloat(a[i]), y = halfToFloat(b[i]);
+        worst = std::max(worst, std::abs(x - y) / std::max(1.0f, std::abs(x)));
+    }
+    return worst;
+}
+
+TEST_F(HrcPasses, TraceMatchesTraceLevel) {
+    // A frame medium carries no boundary radiance (frameMedium): the sky enters HRC in the merge,
+    // and hrc_trace, like the solver's marcher, treats the outside as empty space.
+    Medium2D medium = randomMedium(40, 28, 5);
+    medium.boundaryRadiance = Rgb();
+    const RayMarcher marcher(medium);
+    RayTables cpu, gpu;
+    cpu.reset(medium.width(), medium.height(), 4);
+    gpu.reset(medium.width(), medium.height(), 4);
+    for (int n = 0; n < 4; ++n) {
+        traceLevel(cpu, marcher, n);
+        auto ms = traceLevelOnGpu(*context_, medium, gpu, n);
+        ASSERT_TRUE(ms.ok()) << ms.error().message();
+        // The same exact DDA in float on both sides; the entries are binary16.
+        const float worst = worstRelativeHalves(cpu.levelHalves(n), gpu.levelHalves(n));
+        std::printf("trace T%d: worst relative difference %.2e\n", n, worst);
+        EXPECT_LT(worst, 2e-3f) << "level " << n;
+    }
+}
+
+TEST_F(HrcPasses, ExtendMatchesExtendLevel) {
+    const Medium2D medium = randomMedium(96, 80, 11);
+    const RayMarcher marcher(medium);
+    RayTables cpu, gpu;
+    cpu.reset(96, 80, 6);
+    gpu.reset(96, 80, 6);
+    traceBaseLevels(cpu, marcher, 3);
+    traceBaseLevels(gpu, marcher, 3);
+    for (int n = 3; n < 6; ++n) {
+        extendLevel(cpu, n);
+        auto ms = extendLevelOnGpu(*context_, gpu, n);
+        ASSERT_TRUE(ms.ok()) << ms.error().message();
+        // Same arithmetic in float; at most one binary16 rounding step apart.
+        EXPECT_LT(worstRelativeHalves(cpu.levelHalves(n), gpu.levelHalves(n)), 1e-3f)
+            << "level " << n;
+    }
+}
+
+TEST_F(HrcPasses, MergeMatchesMergeCascade) {
+    const Medium2D medium = randomMedium(48, 36, 7);
+    const RayMarcher marcher(medium);
+    RayTables tables;
+    const int levels = cascadeCount(48);
+    tables.reset(48, 36, levels);
+    traceBaseLevels(tables, marcher, 3);
+    extendLevels(tables, 3);
+    const Rgb sky = medium.boundaryRadiance;
+    // Every level top-down, each side fed the CPU's upper buffer, so each level is compared alone.
+    ConeBuffer upperCpu;
+    for (int n = levels - 1; n >= 0; --n) {
+        ConeBuffer cpu, gpu;
+        const ConeBuffer* upper = n == levels - 1 ? nullptr : &upperCpu;
+        mergeCascade(tables, n, upper, sky, cpu);
+        auto ms = mergeCascadeOnGpu(*context_, tables, n, upper, sky, gpu);
+        ASSERT_TRUE(ms.ok()) << ms.error().message();
+        ASSERT_EQ(cpu.data().size(), gpu.data().size());
+        const float worst =
+            worstRelative(&cpu.data()[0].r, &gpu.data()[0].r, cpu.data().size() * 3);
+        std::printf("merge R%d: worst relative difference %.2e\n", n, worst);
+        EXPECT_LT(worst, 1e-4f) << "level " << n;
+        upperCpu = std::move(cpu);
+    }
+}
+
+TEST_F(HrcPasses, ReadoutMatchesReadOut) {
+    const int w = 37, h = 23;
+    for (int r = 0; r < 4; ++r) {
+        const FrustumFrame frame = makeFrame(static_cast<Frustum>(r), w, h);
+        ConeBuffer cones;
+        cones.reset(frame.length, 1, frame.rows);  // R_0: one cone per plane
+        Pcg32 rng(r + 1);
+        for (Rgb& c : cones.data()) c = Rgb(rng.nextFloat(), rng.nextFloat(), rng.nextFloat());
+        Image cpu(w, h, 3), gpu(w, h, 3);
+        for (std::size_t i = 0; i < cpu.size(); ++i) cpu.data()[i] = gpu.data()[i] = 0.25f;
+        const Rgb sky(0.5f, 0.25f, 2.0f);
+        readOut(frame, cones, 0, sky, cpu);
+        auto ms = readOutOnGpu(*context_, frame, cones, sky, gpu);
+        ASSERT_TRUE(ms.ok()) << ms.error().message();
+        EXPECT_LT(worstRelative(cpu.data(), gpu.data(), cpu.size()), 1e-6f) << "frustum " << r;
+    }
+}
+
+TEST_F(HrcPasses, FinishMatchesFinishFluence) {
+    const Medium2D medium = randomMedium(45, 31, 13);
+    Image beyond(45, 31, 3);
+    Pcg32 rng(17);
+    for (std::size_t i = 0; i < beyond.size(); ++i) beyond.data()[i] = rng.nextFloat() * 4.0f;
+    for (bool blur : {false, true}) {
+        const Image cpu = finishFluence(medium, beyond, 4, blur);
+        Image gpu;
+        auto ms = finishOnGpu(*context_, medium, beyond, 4, blur, gpu);
+        ASSERT_TRUE(ms.ok()) << ms.error().message();
+        const float worst = worstRelative(cpu.data(), gpu.data(), cpu.size());
+        std::printf("finish (blur %d): worst relative difference %.2e\n", blur, worst);
+        EXPECT_LT(worst, 1e-5f) << "blur " << blur;
+    }
+}
+
+}  // namespace
+}  // namespace luxel::gi2d::hrc
