@@ -1,9 +1,11 @@
 // Vanilla RC on the GPU: the CPU cascade loop (rc_solver.cpp) as one dispatch per cascade of
-// src/gpu/shaders/gi2d/rc_cascade.comp.glsl; the read-out is shared with the CPU path.
+// src/gpu/shaders/gi2d/rc_cascade.comp.glsl (rc_cascade_pass.h); the read-out is shared with the
+// CPU path.
 #include <algorithm>
 #include <string>
 
 #include "gi2d/medium_gpu.h"
+#include "gi2d/rc/rc_cascade_pass.h"
 #include "gi2d/rc/rc_internal.h"
 #include "gpu/shaders/shared/rc_layout.h"
 #include "luxel/core/memory.h"
@@ -60,44 +62,10 @@ Result<Image> solveRcOnGpu(gpu::Context& context, const Medium2D& medium, const 
     std::vector<gpu::Dispatch> passes;
     int current = 0;
     for (int i = count - 1; i >= lowest; --i) {
-        const RcCascade& c = cascades[i];
         const bool top = i + 1 >= count;
-        const RcCascade& up = top ? c : cascades[i + 1];
-        const auto stored = static_cast<std::uint32_t>(rc::storedPerProbe(c, i));
-        RcCascadeParams p{};
-        p.width = static_cast<std::uint32_t>(w);
-        p.height = static_cast<std::uint32_t>(h);
-        p.probesX = static_cast<std::uint32_t>(c.probesX);
-        p.probesY = static_cast<std::uint32_t>(c.probesY);
-        p.rays = static_cast<std::uint32_t>(c.rays);
-        p.stored = stored;
-        p.upperProbesX = static_cast<std::uint32_t>(up.probesX);
-        p.upperProbesY = static_cast<std::uint32_t>(up.probesY);
-        p.upperStored = top ? 0u : static_cast<std::uint32_t>(rc::storedPerProbe(up, i + 1));
-        p.hasUpper = top ? 0u : 1u;
-        p.bilinearFix = options.merge == RcMerge::BilinearFix ? 1u : 0u;
-        p.spacing = static_cast<float>(c.spacing);
-        p.upperSpacing = static_cast<float>(up.spacing);
-        p.intervalStart = static_cast<float>(c.intervalStart);
-        p.intervalEnd = static_cast<float>(c.intervalEnd);
-        p.upperIntervalStart = static_cast<float>(up.intervalStart);
-        p.skyR = medium.boundaryRadiance.r;
-        p.skyG = medium.boundaryRadiance.g;
-        p.skyB = medium.boundaryRadiance.b;
-        gpu::Dispatch d;
-        d.name = "rc cascade " + std::to_string(i);
-        d.program = *program;
-        // The top cascade reads no upper buffer; bind its output twice then (never read).
-        d.buffers = {mediumBuffer->get(), buffers[top ? current : current ^ 1].get(),
-                     buffers[current].get()};
-        d.setPush(p);
-        const std::uint64_t invocations =
-            static_cast<std::uint64_t>(c.probesX) * c.probesY * stored;
-        // Vulkan guarantees only 65535 groups per dimension: fold large cascades into y.
-        const std::uint64_t groups = (invocations + LUXEL_RC_GROUP_SIZE - 1) / LUXEL_RC_GROUP_SIZE;
-        d.setThreads(std::min<std::uint64_t>(groups, 65535) * LUXEL_RC_GROUP_SIZE,
-                     (groups + 65534) / 65535);
-        passes.push_back(std::move(d));
+        passes.push_back(rc::makeCascadeDispatch(
+            *program, mediumBuffer->get(), top ? nullptr : buffers[current ^ 1].get(),
+            buffers[current].get(), cascades, i, w, h, medium.boundaryRadiance, options.merge));
         current ^= 1;
     }
     auto ran = context.run(passes);

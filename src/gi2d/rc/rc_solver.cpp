@@ -4,9 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
 
+#include "gi2d/rc/rc_cascade_pass.h"
 #include "gi2d/rc/rc_internal.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
@@ -43,33 +43,6 @@ using rc::validate;
 
 namespace {
 
-// Bilinear footprint of a point on a probe grid: 2 indices and weights per axis, clamped.
-struct Bilinear {
-    int x[2], y[2];
-    float wx[2], wy[2];
-};
-
-Bilinear bilinearAt(Vec2d p, const RcCascade& grid) {
-    Bilinear b;
-    const double u = p.x / grid.spacing - 0.5, v = p.y / grid.spacing - 0.5;
-    const double fu = std::floor(u), fv = std::floor(v);
-    const float tx = static_cast<float>(u - fu), ty = static_cast<float>(v - fv);
-    const int ix = static_cast<int>(fu), iy = static_cast<int>(fv);
-    b.x[0] = std::clamp(ix, 0, grid.probesX - 1);
-    b.x[1] = std::clamp(ix + 1, 0, grid.probesX - 1);
-    b.y[0] = std::clamp(iy, 0, grid.probesY - 1);
-    b.y[1] = std::clamp(iy + 1, 0, grid.probesY - 1);
-    b.wx[0] = 1.0f - tx;
-    b.wx[1] = tx;
-    b.wy[0] = 1.0f - ty;
-    b.wy[1] = ty;
-    return b;
-}
-
-Vec2d probeCentre(const RcCascade& c, int px, int py) {
-    return {(px + 0.5) * c.spacing, (py + 0.5) * c.spacing};
-}
-
 template <typename Tracer>
 Result<Image> solveWith(const Tracer& tracer, int w, int h, Rgb sky, const RcOptions& options) {
     if (Status s = validate(options); !s) return s.error();
@@ -85,74 +58,10 @@ Result<Image> solveWith(const Tracer& tracer, int w, int h, Rgb sky, const RcOpt
         return s.error();
     }
 
-    std::vector<Rgb> upper, current;
+    std::vector<Rgb> upper;
     const int lowest = std::max(options.debugCascade, 0);
     for (int i = count - 1; i >= lowest; --i) {
-        const RcCascade& c = cascades[i];
-        const RcCascade* up = i + 1 < count ? &cascades[i + 1] : nullptr;
-        const int stored = storedPerProbe(c, i);
-        const int upStored = up ? storedPerProbe(*up, i + 1) : 0;
-        const int group = c.rays / stored;  // directions averaged into one stored value
-        current.assign(static_cast<std::size_t>(c.probesX) * c.probesY * stored, Rgb());
-        const double step = 2.0 * std::numbers::pi / c.rays;
-
-        // Merged radiance of the upper cascade towards direction k of this cascade (the
-        // pre-averaged mean of k's 4 children) at upper probe (ux, uy).
-        auto upperValue = [&](int ux, int uy, int k) {
-            return upper[(static_cast<std::size_t>(uy) * up->probesX + ux) * upStored + k];
-        };
-        auto mergedRay = [&](Vec2d p, int k) -> Rgb {
-            const double angle = (k + 0.5) * step;
-            const Vec2d dir{std::cos(angle), std::sin(angle)};
-            const Vec2d start = p + dir * c.intervalStart;
-            if (up == nullptr) {  // top cascade: the sky lies beyond
-                const RaySegment seg = tracer.segment(start, p + dir * c.intervalEnd);
-                return seg.radiance + seg.transmittance * sky;
-            }
-            const Bilinear b = bilinearAt(p, *up);
-            if (options.merge == RcMerge::Vanilla) {
-                bool leaves = false;
-                const RaySegment seg = tracer.segment(start, p + dir * c.intervalEnd, &leaves);
-                Rgb beyond = sky;
-                if (!leaves) {
-                    beyond = Rgb();
-                    for (int a = 0; a < 2; ++a) {
-                        for (int bb = 0; bb < 2; ++bb) {
-                            beyond += upperValue(b.x[a], b.y[bb], k) * (b.wx[a] * b.wy[bb]);
-                        }
-                    }
-                }
-                return seg.radiance + seg.transmittance * beyond;
-            }
-            // Bilinear fix: trace to where each upper probe's interval starts, merge there,
-            // then blend the 4 merged results.
-            Rgb sum;
-            for (int a = 0; a < 2; ++a) {
-                for (int bb = 0; bb < 2; ++bb) {
-                    const Vec2d q = probeCentre(*up, b.x[a], b.y[bb]);
-                    bool leaves = false;
-                    const RaySegment seg =
-                        tracer.segment(start, q + dir * up->intervalStart, &leaves);
-                    const Rgb beyond = leaves ? sky : upperValue(b.x[a], b.y[bb], k);
-                    sum += (seg.radiance + seg.transmittance * beyond) * (b.wx[a] * b.wy[bb]);
-                }
-            }
-            return sum;
-        };
-
-        parallelForRange(c.probesX * c.probesY, 16, [&](int begin, int end) {
-            for (int index = begin; index < end; ++index) {
-                const int px = index % c.probesX, py = index / c.probesX;
-                const Vec2d p = probeCentre(c, px, py);
-                for (int s = 0; s < stored; ++s) {
-                    Rgb sum;
-                    for (int k = s * group; k < (s + 1) * group; ++k) sum += mergedRay(p, k);
-                    current[static_cast<std::size_t>(index) * stored + s] =
-                        sum * (1.0f / static_cast<float>(group));
-                }
-            }
-        });
-        upper.swap(current);
+        upper = rc::cascadePass(tracer, cascades, i, upper, sky, options.merge);
     }
 
     return rc::readOut(cascades[lowest], lowest, upper, w, h, options.debugCascade >= 0);
@@ -183,11 +92,14 @@ Image readOut(const RcCascade& c, int level, const std::vector<Rgb>& upper, int 
                     out.setRgb(x, y, probeMean(px, py));
                     continue;
                 }
-                const Bilinear b = bilinearAt(pixel, c);
+                const gpu::shared::RcBilinear b =
+                    gpu::shared::rcBilinearAt({pixel.x, pixel.y}, c.spacing, c.probesX, c.probesY);
                 Rgb value;
                 for (int a = 0; a < 2; ++a) {
                     for (int bb = 0; bb < 2; ++bb) {
-                        value += probeMean(b.x[a], b.y[bb]) * (b.wx[a] * b.wy[bb]);
+                        value += probeMean(gpu::shared::rcBilinearX(b, a),
+                                           gpu::shared::rcBilinearY(b, bb)) *
+                                 gpu::shared::rcBilinearWeight(b, a, bb);
                     }
                 }
                 out.setRgb(x, y, value);

@@ -1,18 +1,19 @@
-// Vanilla Radiance Cascades, one cascade (CPU reference: solveWith in src/gi2d/rc/rc_solver.cpp):
+// Vanilla Radiance Cascades, one cascade (CPU twin: cascadePass in src/gi2d/rc/rc_cascade_pass.h):
 // every probe traces its directions' intervals through the medium with an exact DDA, merges what
 // lies beyond (bilinear over the 4 upper probes, or the bilinear fix), and stores the mean of each
 // group of 4 directions (pre-averaging). One invocation per (probe, stored value).
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/rc_layout.h"
+#define LUXEL_REAL float
+#define LUXEL_REAL2 vec2
+#include "shared/rc_kernels.h"
 
 layout(local_size_x = LUXEL_RC_GROUP_SIZE) in;
 layout(std430, set = 0, binding = 0) readonly buffer Medium { float medium[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Upper { float upper[]; };
 layout(std430, set = 0, binding = 2) writeonly buffer Current { float current[]; };
 layout(push_constant) uniform Push { RcCascadeParams params; };
-
-const float kTwoPi = 6.28318530717958648;
 
 struct Segment {
     vec3 radiance;
@@ -81,39 +82,34 @@ vec3 upperValue(int ux, int uy, int k) {
 vec3 sky() { return vec3(params.skyR, params.skyG, params.skyB); }
 
 vec3 mergedRay(vec2 p, int k) {
-    const float angle = (float(k) + 0.5) * kTwoPi / float(params.rays);
-    const vec2 dir = vec2(cos(angle), sin(angle));
+    const vec2 dir = rcDirection(k, int(params.rays));
     const vec2 start = p + dir * params.intervalStart;
     if (params.hasUpper == 0u) {
         const Segment seg = traceSegment(start, p + dir * params.intervalEnd);
         return seg.radiance + seg.transmittance * sky();
     }
-    // Bilinear footprint on the upper grid (clamped).
-    const vec2 uv = p / params.upperSpacing - 0.5;
-    const vec2 f = floor(uv);
-    const vec2 w1 = uv - f;
-    const ivec2 i0 = ivec2(f);
-    const ivec2 lim = ivec2(params.upperProbesX - 1u, params.upperProbesY - 1u);
-    const ivec2 xs = ivec2(clamp(i0.x, 0, lim.x), clamp(i0.x + 1, 0, lim.x));
-    const ivec2 ys = ivec2(clamp(i0.y, 0, lim.y), clamp(i0.y + 1, 0, lim.y));
-    const vec2 wx = vec2(1.0 - w1.x, w1.x), wy = vec2(1.0 - w1.y, w1.y);
+    const RcBilinear f = rcBilinearAt(p, params.upperSpacing, int(params.upperProbesX),
+                                      int(params.upperProbesY));
     if (params.bilinearFix == 0u) {
         const Segment seg = traceSegment(start, p + dir * params.intervalEnd);
         vec3 beyond = sky();
         if (!seg.leaves) {
             beyond = vec3(0.0);
             for (int a = 0; a < 2; ++a)
-                for (int b = 0; b < 2; ++b) beyond += upperValue(xs[a], ys[b], k) * (wx[a] * wy[b]);
+                for (int b = 0; b < 2; ++b)
+                    beyond += upperValue(rcBilinearX(f, a), rcBilinearY(f, b), k) *
+                              rcBilinearWeight(f, a, b);
         }
         return seg.radiance + seg.transmittance * beyond;
     }
     vec3 sum = vec3(0.0);
     for (int a = 0; a < 2; ++a) {
         for (int b = 0; b < 2; ++b) {
-            const vec2 q = (vec2(xs[a], ys[b]) + 0.5) * params.upperSpacing;
+            const int ux = rcBilinearX(f, a), uy = rcBilinearY(f, b);
+            const vec2 q = rcProbeCentre(ux, uy, params.upperSpacing);
             const Segment seg = traceSegment(start, q + dir * params.upperIntervalStart);
-            const vec3 beyond = seg.leaves ? sky() : upperValue(xs[a], ys[b], k);
-            sum += (seg.radiance + seg.transmittance * beyond) * (wx[a] * wy[b]);
+            const vec3 beyond = seg.leaves ? sky() : upperValue(ux, uy, k);
+            sum += (seg.radiance + seg.transmittance * beyond) * rcBilinearWeight(f, a, b);
         }
     }
     return sum;
@@ -127,8 +123,8 @@ void main() {
     if (index >= total) return;
     const uint probe = index / params.stored, s = index % params.stored;
     const uint px = probe % params.probesX, py = probe / params.probesX;
-    const vec2 p = (vec2(px, py) + 0.5) * params.spacing;
-    const uint group = params.rays / params.stored;
+    const vec2 p = rcProbeCentre(int(px), int(py), params.spacing);
+    const uint group = uint(rcGroup(int(params.rays), int(params.stored)));
     vec3 sum = vec3(0.0);
     for (uint k = s * group; k < (s + 1u) * group; ++k) sum += mergedRay(p, int(k));
     sum /= float(group);

@@ -175,12 +175,15 @@ using ivec2 = tvec2<int>;
 using ivec3 = tvec3<int>;
 using uvec2 = tvec2<uint>;
 using uvec3 = tvec3<uint>;
-using dvec3 = tvec3<double>;  // C++ only: the CPU reference passes may run in double
+using dvec2 = tvec2<double>;  // C++ only: the CPU reference passes may run in double
+using dvec3 = tvec3<double>;
 
 // GLSL built-ins on scalars (the std:: ones, plus those std lacks under the GLSL name).
 using std::abs;
+using std::cos;
 using std::exp;
 using std::floor;
+using std::sin;
 using std::sqrt;
 template <typename T>
 constexpr T min(T a, T b) {
