@@ -18,113 +18,19 @@
 #include <utility>
 #include <vector>
 
-#include "core/json_source_map.h"
+#include "core/json_fields.h"
+#include "gi2d/scene2d_json_internal.h"
 #include "luxel/core/image_io.h"
 
 namespace luxel::gi2d {
 namespace {
 
-// ordered_json keeps members in file order, so the first problem in the file is the one reported
-// and written scenes read naturally ("type" first).
-using Json = nlohmann::ordered_json;
+// The one JSON toolkit (core/json_fields.h): typed reads, one wording, located errors.
+using namespace json;
 
 constexpr double kMaxCoordinate = 1e6;
 constexpr double kMaxMaterialValue = 1e30;  // well inside float range
 constexpr int kMaxCanvasSize = 65536;
-constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{64} << 20;
-
-// A validation failure. Thrown only inside this file: parseScene2D turns it into an Error, and
-// only then builds the source map that gives it a line and column.
-struct Invalid {
-    std::string field;
-    std::string message;
-    bool atKey = false;  // point at the member's key (unknown fields) rather than its value
-};
-
-[[noreturn]] void fail(std::string field, std::string message, bool atKey = false) {
-    throw Invalid{std::move(field), std::move(message), atKey};
-}
-
-// Text that reads back as the same double: whole numbers in full ("-4", "100000"), others in the
-// shortest form ("0.25", "1e+30").
-std::string formatNumber(double v) {
-    char buffer[64];
-    const bool whole = std::abs(v) < 1e15 && v == std::floor(v);
-    const auto [end, ec] =
-        whole ? std::to_chars(buffer, buffer + sizeof(buffer), v, std::chars_format::fixed)
-              : std::to_chars(buffer, buffer + sizeof(buffer), v);
-    return ec == std::errc() ? std::string(buffer, end) : std::string("?");
-}
-
-std::string member(const std::string& parent, const std::string& key) {
-    return parent.empty() ? key : parent + "." + key;
-}
-
-std::string element(const std::string& parent, std::size_t index) {
-    return parent + "[" + std::to_string(index) + "]";
-}
-
-// "string", "an array of 3 elements", ... for "got ..." in messages.
-std::string describe(const Json& v) {
-    if (v.is_array()) {
-        return "an array of " + std::to_string(v.size()) +
-               (v.size() == 1 ? " element" : " elements");
-    }
-    return v.type_name();
-}
-
-const Json* find(const Json& object, const char* key) {
-    const auto it = object.find(key);
-    return it == object.end() ? nullptr : &*it;
-}
-
-const Json& require(const Json& object, const std::string& path, const char* key) {
-    const Json* v = find(object, key);
-    if (!v) fail(member(path, key), "required field is missing");
-    return *v;
-}
-
-std::string joinNames(const std::vector<const char*>& names) {
-    std::string out;
-    for (const char* name : names) out += (out.empty() ? "" : ", ") + std::string(name);
-    return out;
-}
-
-void checkFields(const Json& object, const std::string& path,
-                 const std::vector<const char*>& allowed, const std::string& context) {
-    for (auto it = object.begin(); it != object.end(); ++it) {
-        const bool known = std::any_of(allowed.begin(), allowed.end(),
-                                       [&](const char* name) { return it.key() == name; });
-        if (!known) {
-            fail(member(path, it.key()),
-                 "unknown field '" + it.key() + "' (allowed " + context + ": " +
-                     joinNames(allowed) + ")",
-                 true);
-        }
-    }
-}
-
-void requireObject(const Json& v, const std::string& path) {
-    if (!v.is_object()) fail(path, "must be an object, got " + describe(v));
-}
-
-std::string readString(const Json& v, const std::string& path) {
-    if (!v.is_string()) fail(path, "must be a string, got " + describe(v));
-    return v.get<std::string>();
-}
-
-bool readBool(const Json& v, const std::string& path) {
-    if (!v.is_boolean()) fail(path, "must be true or false, got " + describe(v));
-    return v.get<bool>();
-}
-
-double readNumber(const Json& v, const std::string& path) {
-    if (!v.is_number()) fail(path, "must be a number, got " + describe(v));
-    const double x = v.get<double>();
-    // The parser rejects NaN and overflow, but a Json built in code may hold them.
-    if (!std::isfinite(x)) fail(path, "must be finite, got " + formatNumber(x));
-    return x;
-}
 
 double readCoordinate(const Json& v, const std::string& path) {
     const double x = readNumber(v, path);
@@ -176,7 +82,7 @@ Rgb readRgb(const Json& v, const std::string& path) {
 
 int readCanvasSize(const Json& v, const std::string& path) {
     const double x = readNumber(v, path);
-    if (x != std::floor(x)) fail(path, "must be an integer, got " + formatNumber(x));
+    if (x != std::floor(x)) fail(path, "must be a whole number, got " + formatNumber(x));
     if (x < 1) fail(path, "must be >= 1, got " + formatNumber(x));
     if (x > kMaxCanvasSize) {
         fail(path, "absurd canvas size " + formatNumber(x) + " (at most " +
@@ -421,37 +327,6 @@ class SceneReader {
     std::map<std::pair<std::string, PngEncoding>, std::shared_ptr<const Image>> cache_;
 };
 
-// nlohmann's message without "[json.exception.parse_error.101] parse error at line 2, column 8: ",
-// since the location is given in our own form.
-std::string stripJsonExceptionPrefix(std::string message) {
-    if (!message.empty() && message[0] == '[') {
-        const std::size_t end = message.find("] ");
-        if (end != std::string::npos) message.erase(0, end + 2);
-    }
-    if (message.rfind("parse error", 0) == 0) {
-        const std::size_t colon = message.find(": ");
-        if (colon != std::string::npos) message.erase(0, colon + 2);
-    }
-    return message;
-}
-
-Error numberOverflowError(std::string_view text, const std::string& sourceName) {
-    SourceLocation where;
-    where.file = sourceName;
-    const std::optional<std::size_t> offset = findNonFiniteJsonNumber(text);
-    if (!offset) return Error(where, "invalid JSON: a number is too large (must be finite)");
-    const TextPosition pos = textPositionAt(text, *offset);
-    where.line = pos.line;
-    where.column = pos.column;
-    std::size_t end = *offset;
-    while (end < text.size() &&
-           std::string_view("+-.0123456789eE").find(text[end]) != std::string_view::npos) {
-        ++end;
-    }
-    return Error(where, "invalid JSON: number " + std::string(text.substr(*offset, end - *offset)) +
-                            " is too large (must be finite)");
-}
-
 // Whole numbers as integers ("256", not "256.0"); they read back as the same double.
 Json numberJson(double v) {
     if (std::abs(v) < 1e15 && v == std::floor(v) && !(v == 0 && std::signbit(v))) {
@@ -558,36 +433,24 @@ void writeJson(const Json& j, int indent, std::string& out) {
 
 Result<Scene2D> parseScene2D(std::string_view text, const std::string& sourceName,
                              const std::string& baseDir) {
+    auto root = json::parse(text, sourceName);
+    if (!root) return root.error();
+    return scene2DFromJson(*root, text, sourceName, baseDir);
+}
+
+Result<Scene2D> scene2DFromJson(const json::Json& root, std::string_view text,
+                                const std::string& sourceName, const std::string& baseDir) {
     SourceLocation file;
     file.file = sourceName;
     try {
-        Json root;
-        try {
-            root = Json::parse(text.begin(), text.end());
-        } catch (const Json::parse_error& e) {
-            const TextPosition pos = jsonParseErrorPosition(text, e.byte);
-            SourceLocation where = file;
-            where.line = pos.line;
-            where.column = pos.column;
-            return Error(where, "invalid JSON: " + stripJsonExceptionPrefix(e.what()));
-        } catch (const Json::out_of_range& e) {
-            if (e.id == 406) return numberOverflowError(text, sourceName);  // e.g. 1e999
-            return Error(file, "invalid JSON: " + stripJsonExceptionPrefix(e.what()));
-        }
-        try {
-            SceneReader reader(baseDir);
-            Scene2D scene = reader.read(root);
-            scene.sourcePath = sourceName;
-            return scene;
-        } catch (const Invalid& invalid) {
-            const JsonSourceMap map = JsonSourceMap::build(text);
-            SourceLocation where =
-                invalid.atKey ? map.locateKey(invalid.field) : map.locate(invalid.field);
-            where.file = sourceName;
-            return Error(where, invalid.message);
-        }
+        SceneReader reader(baseDir);
+        Scene2D scene = reader.read(root);
+        scene.sourcePath = sourceName;
+        return scene;
+    } catch (const Invalid& invalid) {
+        return json::locate(invalid, text, sourceName);
     } catch (const Json::exception& e) {
-        return Error(file, "invalid JSON: " + stripJsonExceptionPrefix(e.what()));
+        return Error(file, std::string("invalid JSON: ") + e.what());
     } catch (const std::bad_alloc&) {
         return Error(file, "out of memory while reading the scene");
     } catch (const std::exception& e) {
@@ -596,29 +459,9 @@ Result<Scene2D> parseScene2D(std::string_view text, const std::string& sourceNam
 }
 
 Result<Scene2D> loadScene2D(const std::string& path) {
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                         &std::fclose);
-    if (!file) {
-        return Error("cannot open scene '" + path + "': " + std::generic_category().message(errno));
-    }
-    std::error_code ec;
-    const std::uintmax_t size = std::filesystem::file_size(path, ec);
-    const std::string tooLarge = "scene file '" + path + "' is too large (at most 64 MiB)";
-    if (!ec && size > kMaxSceneFileBytes) return Error(tooLarge);
-
-    // Read in chunks up to the limit: file_size is unknown for pipes and may be stale.
-    std::string text;
-    char buffer[1 << 16];
-    for (;;) {
-        const std::size_t n = std::fread(buffer, 1, sizeof(buffer), file.get());
-        text.append(buffer, n);
-        if (text.size() > kMaxSceneFileBytes) return Error(tooLarge);
-        if (n < sizeof(buffer)) break;
-    }
-    if (std::ferror(file.get())) {
-        return Error("cannot read scene '" + path + "': " + std::generic_category().message(errno));
-    }
-    return parseScene2D(text, path, std::filesystem::path(path).parent_path().string());
+    auto text = json::readTextFile(path, "scene");
+    if (!text) return text.error();
+    return parseScene2D(*text, path, std::filesystem::path(path).parent_path().string());
 }
 
 std::string sceneToJson(const Scene2D& scene) {

@@ -1,8 +1,6 @@
 // Voxel scene files: JSON -> world + camera + shading options, with located errors.
 #include "luxel/voxel/voxel_scene.h"
 
-#include <nlohmann/json.hpp>
-
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -10,89 +8,29 @@
 #include <set>
 #include <sstream>
 
-#include "core/json_source_map.h"
+#include "core/json_fields.h"
 #include "luxel/voxel/generators.h"
 #include "luxel/voxel/vox_import.h"
+#include "voxel/voxel_scene_internal.h"
 
 namespace luxel::voxel {
 namespace {
 
-using Json = nlohmann::json;
+// The one JSON toolkit (core/json_fields.h): typed reads, one wording, located errors.
+using namespace json;
 
-// A field that failed validation; turned into a located Error at the top.
-struct Invalid {
-    std::string field, message;
-    bool atKey = false;
-};
+int wholeNumber(const Json& v, const std::string& path, int lo, int hi) {
+    return static_cast<int>(readWholeNumber(v, path, lo, hi));
+}
 
-class Reader {
-  public:
-    explicit Reader(const Json& root) : root_(root) {}
-
-    const Json* find(const Json& object, const char* key) const {
-        auto it = object.find(key);
-        return it == object.end() ? nullptr : &*it;
-    }
-
-    void allowOnly(const Json& object, const std::string& path, std::set<std::string> keys) const {
-        if (!object.is_object()) throw Invalid{path, "must be an object"};
-        for (auto it = object.begin(); it != object.end(); ++it) {
-            if (!keys.count(it.key())) {
-                std::string list;
-                for (const std::string& k : keys) list += (list.empty() ? "" : ", ") + k;
-                throw Invalid{join(path, it.key()),
-                              "unknown field '" + it.key() + "' (allowed: " + list + ")", true};
-            }
-        }
-    }
-
-    double number(const Json& v, const std::string& path, double lo, double hi) const {
-        if (!v.is_number()) throw Invalid{path, "must be a number"};
-        const double d = v.get<double>();
-        if (!std::isfinite(d)) throw Invalid{path, "must be finite"};
-        if (d < lo || d > hi) {
-            std::ostringstream m;
-            m << "must be in " << lo << ".." << hi << ", got " << d;
-            throw Invalid{path, m.str()};
-        }
-        return d;
-    }
-
-    int integer(const Json& v, const std::string& path, int lo, int hi) const {
-        const double d = number(v, path, lo, hi);
-        if (d != std::floor(d)) throw Invalid{path, "must be a whole number"};
-        return static_cast<int>(d);
-    }
-
-    template <int N>
-    std::array<double, N> vector(const Json& v, const std::string& path, double lo,
-                                 double hi) const {
-        if (!v.is_array() || v.size() != N) {
-            throw Invalid{path, "must be an array of " + std::to_string(N) + " numbers"};
-        }
-        std::array<double, N> out{};
-        for (int i = 0; i < N; ++i) {
-            out[i] = number(v[i], path + "[" + std::to_string(i) + "]", lo, hi);
-        }
-        return out;
-    }
-
-    static std::string join(const std::string& path, const std::string& key) {
-        return path.empty() ? key : path + "." + key;
-    }
-
-  private:
-    const Json& root_;
-};
-
-Voxel colourOf(const Reader& r, const Json& v, const std::string& path) {
-    const auto c = r.vector<3>(v, path, 0, 255);
+Voxel colourOf(const Json& v, const std::string& path) {
+    const auto c = readNumbers(v, path, 3, 0, 255);
     return {static_cast<std::uint8_t>(c[0]), static_cast<std::uint8_t>(c[1]),
             static_cast<std::uint8_t>(c[2]), 255};
 }
 
 // Reads "textures": PNG files relative to the scene, each with a name shapes refer to.
-TextureSet buildTextures(const Reader& r, const Json* list, const std::filesystem::path& baseDir) {
+TextureSet buildTextures(const Json* list, const std::filesystem::path& baseDir) {
     TextureSet set;
     if (!list) return set;
     if (!list->is_array()) throw Invalid{"textures", "must be an array"};
@@ -104,19 +42,20 @@ TextureSet buildTextures(const Reader& r, const Json* list, const std::filesyste
     for (std::size_t i = 0; i < list->size(); ++i) {
         const Json& t = (*list)[i];
         const std::string path = "textures[" + std::to_string(i) + "]";
-        r.allowOnly(t, path, {"name", "file", "reflectivity"});
-        const Json* name = r.find(t, "name");
+        checkObject(t, path, {"name", "file", "reflectivity"});
+        const Json* name = find(t, "name");
         if (!name || !name->is_string() || name->get<std::string>().empty()) {
             throw Invalid{path + ".name", "must be a non-empty string"};
         }
-        const Json* file = r.find(t, "file");
+        const Json* file = find(t, "file");
         if (!file || !file->is_string()) throw Invalid{path + ".file", "must be a PNG path"};
         std::filesystem::path p = file->get<std::string>();
         if (p.is_relative()) p = baseDir / p;
         Result<Texture> texture = TextureSet::load(name->get<std::string>(), p.string());
         if (!texture) throw Invalid{path + ".file", texture.error().message()};
-        if (const Json* v = r.find(t, "reflectivity")) {
-            texture->reflectivity = static_cast<float>(r.number(*v, path + ".reflectivity", 0, 1));
+        if (const Json* v = find(t, "reflectivity")) {
+            texture->reflectivity =
+                static_cast<float>(readNumberIn(*v, path + ".reflectivity", 0, 1));
         }
         Result<int> slot = set.add(std::move(*texture));
         if (!slot) throw Invalid{path + ".name", slot.error().message()};
@@ -125,9 +64,9 @@ TextureSet buildTextures(const Reader& r, const Json* list, const std::filesyste
 }
 
 // The alpha byte of a texture named at `path` (a plain block when there is no such field).
-std::uint8_t materialAlpha(const Reader& r, const Json& object, const std::string& path,
+std::uint8_t materialAlpha(const Json& object, const std::string& path,
                            const TextureSet& textures) {
-    const Json* name = r.find(object, "texture");
+    const Json* name = find(object, "texture");
     if (!name) return kPlainBlockAlpha;
     if (!name->is_string()) throw Invalid{path + ".texture", "must be a texture name"};
     const std::optional<int> slot = textures.find(name->get<std::string>());
@@ -145,8 +84,7 @@ std::uint8_t materialAlpha(const Reader& r, const Json& object, const std::strin
 
 // "texture_by_color": plain blocks within `tolerance` (per channel) of a colour get a texture.
 // Terrain band colours are jittered by up to 8 per channel, hence the tolerance.
-void textureByColour(const Reader& r, const Json& list, VoxelWorld& world,
-                     const TextureSet& textures) {
+void textureByColour(const Json& list, VoxelWorld& world, const TextureSet& textures) {
     if (!list.is_array()) throw Invalid{"world.texture_by_color", "must be an array"};
     struct Rule {
         Voxel colour;
@@ -156,14 +94,14 @@ void textureByColour(const Reader& r, const Json& list, VoxelWorld& world,
     std::vector<Rule> rules;
     for (std::size_t i = 0; i < list.size(); ++i) {
         const std::string path = "world.texture_by_color[" + std::to_string(i) + "]";
-        r.allowOnly(list[i], path, {"color", "tolerance", "texture"});
-        const Json* colour = r.find(list[i], "color");
+        checkObject(list[i], path, {"color", "tolerance", "texture"});
+        const Json* colour = find(list[i], "color");
         if (!colour) throw Invalid{path, "needs \"color\": [r, g, b]"};
-        if (!r.find(list[i], "texture")) throw Invalid{path, "needs \"texture\": name"};
-        const Json* tolerance = r.find(list[i], "tolerance");
-        rules.push_back({colourOf(r, *colour, path + ".color"),
-                         tolerance ? r.integer(*tolerance, path + ".tolerance", 0, 255) : 0,
-                         materialAlpha(r, list[i], path, textures)});
+        if (!find(list[i], "texture")) throw Invalid{path, "needs \"texture\": name"};
+        const Json* tolerance = find(list[i], "tolerance");
+        rules.push_back({colourOf(*colour, path + ".color"),
+                         tolerance ? wholeNumber(*tolerance, path + ".tolerance", 0, 255) : 0,
+                         materialAlpha(list[i], path, textures)});
     }
     const Int3 size = world.size();
     for (int z = 0; z < size.z; ++z) {
@@ -188,30 +126,29 @@ void textureByColour(const Reader& r, const Json& list, VoxelWorld& world,
 }
 
 // Builds the world described by "world".
-VoxelWorld buildWorld(const Reader& r, const Json& w, const std::filesystem::path& baseDir,
+VoxelWorld buildWorld(const Json& w, const std::filesystem::path& baseDir,
                       const TextureSet& textures) {
-    r.allowOnly(w, "world",
+    checkObject(w, "world",
                 {"source", "size", "chunk", "seed", "height", "amplitude", "frequency", "octaves",
                  "water", "caves", "density", "color", "file", "shapes", "texture_by_color"});
-    const Json* sourceJson = r.find(w, "source");
+    const Json* sourceJson = find(w, "source");
     if (!sourceJson || !sourceJson->is_string()) {
         throw Invalid{"world.source", "must be \"terrain\", \"random\", \"empty\" or \"vox\""};
     }
     const std::string source = sourceJson->get<std::string>();
-    const int chunk =
-        r.find(w, "chunk") ? r.integer(*r.find(w, "chunk"), "world.chunk", 4, 128) : 32;
+    const int chunk = find(w, "chunk") ? wholeNumber(*find(w, "chunk"), "world.chunk", 4, 128) : 32;
 
     auto result = [&]() -> Result<VoxelWorld> {
         if (source == "vox") {
-            const Json* file = r.find(w, "file");
+            const Json* file = find(w, "file");
             if (!file || !file->is_string()) throw Invalid{"world.file", "must be a .vox path"};
             std::filesystem::path p = file->get<std::string>();
             if (p.is_relative()) p = baseDir / p;
             return loadVox(p.string(), chunk);
         }
-        const Json* sizeJson = r.find(w, "size");
+        const Json* sizeJson = find(w, "size");
         if (!sizeJson) throw Invalid{"world", "needs \"size\": [x, y, z]"};
-        const auto s = r.vector<3>(*sizeJson, "world.size", 1, kMaxWorldSide);
+        const auto s = readNumbers(*sizeJson, "world.size", 3, 1, kMaxWorldSide);
         for (int a = 0; a < 3; ++a) {
             if (s[a] != std::floor(s[a])) throw Invalid{"world.size", "must be whole numbers"};
         }
@@ -223,69 +160,69 @@ VoxelWorld buildWorld(const Reader& r, const Json& w, const std::filesystem::pat
     VoxelWorld world = std::move(*result);
 
     const std::uint64_t seed =
-        r.find(w, "seed")
-            ? static_cast<std::uint64_t>(r.integer(*r.find(w, "seed"), "world.seed", 0, 2147483647))
+        find(w, "seed")
+            ? static_cast<std::uint64_t>(wholeNumber(*find(w, "seed"), "world.seed", 0, 2147483647))
             : 1;
     Status status = Ok{};
     if (source == "terrain") {
         TerrainOptions t;
         t.seed = seed;
-        if (auto* v = r.find(w, "height")) t.baseHeight = r.number(*v, "world.height", 0, 1);
-        if (auto* v = r.find(w, "amplitude")) t.amplitude = r.number(*v, "world.amplitude", 0, 1);
-        if (auto* v = r.find(w, "frequency")) t.frequency = r.number(*v, "world.frequency", 0, 1);
-        if (auto* v = r.find(w, "octaves")) t.octaves = r.integer(*v, "world.octaves", 1, 16);
-        if (auto* v = r.find(w, "water")) t.waterLevel = r.number(*v, "world.water", 0, 1);
-        if (auto* v = r.find(w, "caves")) {
+        if (auto* v = find(w, "height")) t.baseHeight = readNumberIn(*v, "world.height", 0, 1);
+        if (auto* v = find(w, "amplitude")) t.amplitude = readNumberIn(*v, "world.amplitude", 0, 1);
+        if (auto* v = find(w, "frequency")) t.frequency = readNumberIn(*v, "world.frequency", 0, 1);
+        if (auto* v = find(w, "octaves")) t.octaves = wholeNumber(*v, "world.octaves", 1, 16);
+        if (auto* v = find(w, "water")) t.waterLevel = readNumberIn(*v, "world.water", 0, 1);
+        if (auto* v = find(w, "caves")) {
             if (!v->is_boolean()) throw Invalid{"world.caves", "must be true or false"};
             t.caves = v->get<bool>();
         }
         status = generateTerrain(world, t);
     } else if (source == "random") {
-        const Json* d = r.find(w, "density");
-        const double density = d ? r.number(*d, "world.density", 0, 1) : 0.1;
+        const Json* d = find(w, "density");
+        const double density = d ? readNumberIn(*d, "world.density", 0, 1) : 0.1;
         std::optional<Voxel> colour;
-        if (auto* c = r.find(w, "color")) colour = colourOf(r, *c, "world.color");
+        if (auto* c = find(w, "color")) colour = colourOf(*c, "world.color");
         status = fillRandom(world, density, seed, colour);
     } else if (source != "empty" && source != "vox") {
         throw Invalid{"world.source",
                       "unknown world source '" + source + "' (known: terrain, random, empty, vox)"};
     }
     if (!status) throw Invalid{"world", status.error().message()};
-    if (const Json* rules = r.find(w, "texture_by_color")) {
-        textureByColour(r, *rules, world, textures);
+    if (const Json* rules = find(w, "texture_by_color")) {
+        textureByColour(*rules, world, textures);
     }
 
-    if (const Json* shapes = r.find(w, "shapes")) {
+    if (const Json* shapes = find(w, "shapes")) {
         if (!shapes->is_array()) throw Invalid{"world.shapes", "must be an array"};
         for (std::size_t i = 0; i < shapes->size(); ++i) {
             const Json& s = (*shapes)[i];
             const std::string path = "world.shapes[" + std::to_string(i) + "]";
-            r.allowOnly(s, path, {"type", "center", "radius", "min", "max", "color", "texture"});
-            const Json* type = r.find(s, "type");
-            const Json* colourJson = r.find(s, "color");
-            const std::uint8_t alpha = materialAlpha(r, s, path, textures);
+            checkObject(s, path, {"type", "center", "radius", "min", "max", "color", "texture"});
+            const Json* type = find(s, "type");
+            const Json* colourJson = find(s, "color");
+            const std::uint8_t alpha = materialAlpha(s, path, textures);
             // Textured shapes default to white, so the texture shows its own colours.
-            Voxel colour = colourJson                  ? colourOf(r, *colourJson, path + ".color")
+            Voxel colour = colourJson                  ? colourOf(*colourJson, path + ".color")
                            : alpha == kPlainBlockAlpha ? Voxel{200, 200, 200, 255}
                                                        : Voxel{255, 255, 255, 255};
             colour.a = alpha;
             const std::string t = type && type->is_string() ? type->get<std::string>() : "";
             if (t == "sphere") {
-                if (!r.find(s, "center") || !r.find(s, "radius")) {
+                if (!find(s, "center") || !find(s, "radius")) {
                     throw Invalid{path, "a sphere needs \"center\" and \"radius\""};
                 }
-                const auto c = r.vector<3>(*r.find(s, "center"), path + ".center", -1e6, 1e6);
-                const double radius = r.number(*r.find(s, "radius"), path + ".radius", 0, 1e5);
+                const auto c = readNumbers(*find(s, "center"), path + ".center", 3, -1e6, 1e6);
+                const double radius = readNumberIn(*find(s, "radius"), path + ".radius", 0, 1e5);
                 addSphere(
                     world,
                     {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2])},
                     static_cast<float>(radius), colour);
             } else if (t == "box") {
-                if (!r.find(s, "min") || !r.find(s, "max")) {
+                if (!find(s, "min") || !find(s, "max")) {
                     throw Invalid{path, "a box needs \"min\" and \"max\""};
                 }
-                const auto lo = r.vector<3>(*r.find(s, "min"), path + ".min", -1e6, 1e6);
-                const auto hi = r.vector<3>(*r.find(s, "max"), path + ".max", -1e6, 1e6);
+                const auto lo = readNumbers(*find(s, "min"), path + ".min", 3, -1e6, 1e6);
+                const auto hi = readNumbers(*find(s, "max"), path + ".max", 3, -1e6, 1e6);
                 addBox(world,
                        {static_cast<int>(lo[0]), static_cast<int>(lo[1]), static_cast<int>(lo[2])},
                        {static_cast<int>(hi[0]), static_cast<int>(hi[1]), static_cast<int>(hi[2])},
@@ -299,48 +236,48 @@ VoxelWorld buildWorld(const Reader& r, const Json& w, const std::filesystem::pat
     return world;
 }
 
-Camera buildCamera(const Reader& r, const Json& c, int width, int height) {
-    r.allowOnly(c, "camera", {"position", "yaw", "pitch", "look_at", "fov", "size"});
-    const Json* pos = r.find(c, "position");
+Camera buildCamera(const Json& c, int width, int height) {
+    checkObject(c, "camera", {"position", "yaw", "pitch", "look_at", "fov", "size"});
+    const Json* pos = find(c, "position");
     if (!pos) throw Invalid{"camera", "needs \"position\": [x, y, z]"};
-    const auto p = r.vector<3>(*pos, "camera.position", -1e6, 1e6);
-    const double fov = r.find(c, "fov") ? r.number(*r.find(c, "fov"), "camera.fov", 1, 179) : 60;
+    const auto p = readNumbers(*pos, "camera.position", 3, -1e6, 1e6);
+    const double fov = find(c, "fov") ? readNumberIn(*find(c, "fov"), "camera.fov", 1, 179) : 60;
     int w = 960, h = 540;
-    if (const Json* size = r.find(c, "size")) {
-        const auto s = r.vector<2>(*size, "camera.size", 1, kMaxCameraSide);
+    if (const Json* size = find(c, "size")) {
+        const auto s = readNumbers(*size, "camera.size", 2, 1, kMaxCameraSide);
         w = static_cast<int>(s[0]);
         h = static_cast<int>(s[1]);
     }
     if (width > 0) w = width;
     if (height > 0) h = height;
     Result<Camera> camera = Error("");
-    if (const Json* target = r.find(c, "look_at")) {
-        const auto t = r.vector<3>(*target, "camera.look_at", -1e6, 1e6);
+    if (const Json* target = find(c, "look_at")) {
+        const auto t = readNumbers(*target, "camera.look_at", 3, -1e6, 1e6);
         camera = Camera::lookAt({p[0], p[1], p[2]}, {t[0], t[1], t[2]}, fov, w, h);
     } else {
         const double yaw =
-            r.find(c, "yaw") ? r.number(*r.find(c, "yaw"), "camera.yaw", -360, 360) : 0;
+            find(c, "yaw") ? readNumberIn(*find(c, "yaw"), "camera.yaw", -360, 360) : 0;
         const double pitch =
-            r.find(c, "pitch") ? r.number(*r.find(c, "pitch"), "camera.pitch", -90, 90) : 0;
+            find(c, "pitch") ? readNumberIn(*find(c, "pitch"), "camera.pitch", -90, 90) : 0;
         camera = Camera::create({p[0], p[1], p[2]}, yaw, pitch, fov, w, h);
     }
     if (!camera) throw Invalid{"camera", camera.error().message()};
     return *camera;
 }
 
-ShadeOptions buildShading(const Reader& r, const Json& root) {
+ShadeOptions buildShading(const Json& root) {
     ShadeOptions o;
-    if (const Json* sun = r.find(root, "sun")) {
-        const auto s = r.vector<3>(*sun, "sun", -1e3, 1e3);
+    if (const Json* sun = find(root, "sun")) {
+        const auto s = readNumbers(*sun, "sun", 3, -1e3, 1e3);
         if (s[0] == 0 && s[1] == 0 && s[2] == 0) throw Invalid{"sun", "must not be zero"};
         o.sunDirection = {static_cast<float>(s[0]), static_cast<float>(s[1]),
                           static_cast<float>(s[2])};
     }
-    if (const Json* sky = r.find(root, "sky")) {
-        r.allowOnly(*sky, "sky", {"top", "horizon"});
+    if (const Json* sky = find(root, "sky")) {
+        checkObject(*sky, "sky", {"top", "horizon"});
         auto rgb = [&](const char* key, Rgb& out) {
-            if (const Json* v = r.find(*sky, key)) {
-                const auto c = r.vector<3>(*v, std::string("sky.") + key, 0, 1e4);
+            if (const Json* v = find(*sky, key)) {
+                const auto c = readNumbers(*v, std::string("sky.") + key, 3, 0, 1e4);
                 out = {static_cast<float>(c[0]), static_cast<float>(c[1]),
                        static_cast<float>(c[2])};
             }
@@ -348,16 +285,16 @@ ShadeOptions buildShading(const Reader& r, const Json& root) {
         rgb("top", o.skyTop);
         rgb("horizon", o.skyHorizon);
     }
-    if (const Json* render = r.find(root, "render")) {
-        r.allowOnly(*render, "render",
+    if (const Json* render = find(root, "render")) {
+        checkObject(*render, "render",
                     {"reflections", "reflection_mode", "reflectivity", "shadows", "textures"});
-        if (auto* v = r.find(*render, "reflections")) {
-            o.maxReflections = r.integer(*v, "render.reflections", 0, 16);
+        if (auto* v = find(*render, "reflections")) {
+            o.maxReflections = wholeNumber(*v, "render.reflections", 0, 16);
         }
-        if (auto* v = r.find(*render, "reflectivity")) {
-            o.reflectivity = static_cast<float>(r.number(*v, "render.reflectivity", 0, 1));
+        if (auto* v = find(*render, "reflectivity")) {
+            o.reflectivity = static_cast<float>(readNumberIn(*v, "render.reflectivity", 0, 1));
         }
-        if (auto* v = r.find(*render, "reflection_mode")) {
+        if (auto* v = find(*render, "reflection_mode")) {
             const std::string m = v->is_string() ? v->get<std::string>() : "";
             if (m == "running-average") {
                 o.reflectionMode = ShadeOptions::ReflectionMode::RunningAverage;
@@ -369,7 +306,7 @@ ShadeOptions buildShading(const Reader& r, const Json& root) {
             }
         }
         for (const char* key : {"shadows", "textures"}) {
-            if (const Json* v = r.find(*render, key)) {
+            if (const Json* v = find(*render, key)) {
                 if (!v->is_boolean())
                     throw Invalid{std::string("render.") + key, "must be true or false"};
                 (std::string(key) == "shadows" ? o.shadows : o.textures) = v->get<bool>();
@@ -379,60 +316,46 @@ ShadeOptions buildShading(const Reader& r, const Json& root) {
     return o;
 }
 
-Result<std::string> readText(const std::string& path) {
-    std::error_code ec;
-    const auto bytes = std::filesystem::file_size(path, ec);
-    if (ec) return Error("cannot open scene '" + path + "': " + ec.message());
-    if (bytes > (64u << 20)) return Error("scene '" + path + "' is larger than 64 MiB");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error("cannot open scene '" + path + "'");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
 }  // namespace
 
 bool isVoxelSceneFile(const std::string& path) {
-    auto text = readText(path);
+    auto text = json::readTextFile(path, "scene");
     if (!text) return false;
-    const Json root = Json::parse(*text, nullptr, /*allow_exceptions=*/false);
+    auto root = json::parse(*text, path);
+    return root && isVoxelScene(*root);
+}
+
+bool isVoxelScene(const json::Json& root) {
     if (!root.is_object()) return false;
-    auto it = root.find("type");
-    return it != root.end() && it->is_string() && it->get<std::string>() == "voxel";
+    const Json* type = find(root, "type");
+    return type && type->is_string() && type->get<std::string>() == "voxel";
 }
 
 Result<VoxelScene> loadVoxelScene(const std::string& path, int width, int height) {
-    auto text = readText(path);
+    auto text = json::readTextFile(path, "scene");
     if (!text) return text.error();
-    Json root;
+    auto root = json::parse(*text, path);
+    if (!root) return root.error();
+    return voxelSceneFromJson(*root, *text, path, width, height);
+}
+
+Result<VoxelScene> voxelSceneFromJson(const json::Json& root, std::string_view text,
+                                      const std::string& path, int width, int height) {
     try {
-        root = Json::parse(*text);
-    } catch (const Json::parse_error& e) {
-        const TextPosition pos = jsonParseErrorPosition(*text, e.byte);
-        return Error(SourceLocation{path, pos.line, pos.column, ""},
-                     std::string("invalid JSON: ") + e.what());
-    }
-    const Reader r(root);
-    try {
-        r.allowOnly(root, "",
+        checkObject(root, "",
                     {"type", "description", "textures", "world", "camera", "sun", "sky", "render"});
-        const Json* world = r.find(root, "world");
-        const Json* camera = r.find(root, "camera");
+        const Json* world = find(root, "world");
+        const Json* camera = find(root, "camera");
         if (!world) throw Invalid{"", "a voxel scene needs \"world\""};
         if (!camera) throw Invalid{"", "a voxel scene needs \"camera\""};
         const std::filesystem::path baseDir = std::filesystem::path(path).parent_path();
-        TextureSet textures = buildTextures(r, r.find(root, "textures"), baseDir);
-        VoxelWorld built = buildWorld(r, *world, baseDir, textures);
-        VoxelScene scene{std::move(built), buildCamera(r, *camera, width, height),
-                         buildShading(r, root), path, std::move(textures)};
+        TextureSet textures = buildTextures(find(root, "textures"), baseDir);
+        VoxelWorld built = buildWorld(*world, baseDir, textures);
+        VoxelScene scene{std::move(built), buildCamera(*camera, width, height), buildShading(root),
+                         path, std::move(textures)};
         return scene;
     } catch (const Invalid& invalid) {
-        const JsonSourceMap map = JsonSourceMap::build(*text);
-        SourceLocation where =
-            invalid.atKey ? map.locateKey(invalid.field) : map.locate(invalid.field);
-        where.file = path;
-        return Error(where, invalid.message);
+        return json::locate(invalid, text, path);
     } catch (const std::exception& e) {
         return Error(path + ": " + e.what());
     }

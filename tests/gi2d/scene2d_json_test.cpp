@@ -389,7 +389,7 @@ TEST(Scene2DJsonErrors, CanvasSize) {
                 "canvas[1]: absurd canvas size 100000 (at most 65536)");
     expectError("{\"canvas\": [\n0, 10]}", 2, "canvas[0]: must be >= 1, got 0");
     expectError("{\"canvas\": [\n-5, 10]}", 2, "canvas[0]: must be >= 1, got -5");
-    expectError("{\"canvas\": [10,\n 10.5]}", 2, "canvas[1]: must be an integer, got 10.5");
+    expectError("{\"canvas\": [10,\n 10.5]}", 2, "canvas[1]: must be a whole number, got 10.5");
     expectError("{\"canvas\": [10,\n \"10\"]}", 2, "canvas[1]: must be a number, got string");
 }
 

@@ -1,0 +1,220 @@
+#include "core/json_fields.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <system_error>
+
+#include "core/json_source_map.h"
+
+namespace luxel::json {
+
+void fail(std::string field, std::string message, bool atKey) {
+    throw Invalid{std::move(field), std::move(message), atKey};
+}
+
+std::string member(const std::string& parent, const std::string& key) {
+    return parent.empty() ? key : parent + "." + key;
+}
+
+std::string element(const std::string& parent, std::size_t index) {
+    return parent + "[" + std::to_string(index) + "]";
+}
+
+std::string describe(const Json& v) {
+    if (v.is_array()) {
+        return "an array of " + std::to_string(v.size()) +
+               (v.size() == 1 ? " element" : " elements");
+    }
+    return v.type_name();
+}
+
+std::string formatNumber(double v) {
+    char buffer[64];
+    const bool whole = std::abs(v) < 1e15 && v == std::floor(v);
+    const auto [end, ec] =
+        whole ? std::to_chars(buffer, buffer + sizeof(buffer), v, std::chars_format::fixed)
+              : std::to_chars(buffer, buffer + sizeof(buffer), v);
+    return ec == std::errc() ? std::string(buffer, end) : std::string("?");
+}
+
+const Json* find(const Json& object, const char* key) {
+    const auto it = object.find(key);
+    return it == object.end() ? nullptr : &*it;
+}
+
+const Json& require(const Json& object, const std::string& path, const char* key) {
+    const Json* v = find(object, key);
+    if (!v) fail(member(path, key), "required field is missing");
+    return *v;
+}
+
+void checkFields(const Json& object, const std::string& path,
+                 const std::vector<const char*>& allowed, const std::string& context) {
+    for (auto it = object.begin(); it != object.end(); ++it) {
+        const bool known = std::any_of(allowed.begin(), allowed.end(),
+                                       [&](const char* name) { return it.key() == name; });
+        if (!known) {
+            std::string names;
+            for (const char* name : allowed)
+                names += (names.empty() ? "" : ", ") + std::string(name);
+            fail(member(path, it.key()),
+                 "unknown field '" + it.key() + "' (allowed " + context + ": " + names + ")", true);
+        }
+    }
+}
+
+void checkObject(const Json& v, const std::string& path, const std::vector<const char*>& allowed) {
+    requireObject(v, path);
+    checkFields(v, path, allowed, path.empty() ? "at the top level" : "in " + path);
+}
+
+void requireObject(const Json& v, const std::string& path) {
+    if (!v.is_object()) fail(path, "must be an object, got " + describe(v));
+}
+
+void requireArray(const Json& v, const std::string& path) {
+    if (!v.is_array()) fail(path, "must be an array, got " + describe(v));
+}
+
+std::string readString(const Json& v, const std::string& path) {
+    if (!v.is_string()) fail(path, "must be a string, got " + describe(v));
+    return v.get<std::string>();
+}
+
+bool readBool(const Json& v, const std::string& path) {
+    if (!v.is_boolean()) fail(path, "must be true or false, got " + describe(v));
+    return v.get<bool>();
+}
+
+double readNumber(const Json& v, const std::string& path) {
+    if (!v.is_number()) fail(path, "must be a number, got " + describe(v));
+    const double x = v.get<double>();
+    // The parser rejects NaN and overflow, but a Json built in code may hold them.
+    if (!std::isfinite(x)) fail(path, "must be finite, got " + formatNumber(x));
+    return x;
+}
+
+double readNumberIn(const Json& v, const std::string& path, double lo, double hi) {
+    const double x = readNumber(v, path);
+    if (x < lo || x > hi) {
+        fail(path, "must be in " + formatNumber(lo) + ".." + formatNumber(hi) + ", got " +
+                       formatNumber(x));
+    }
+    return x;
+}
+
+std::int64_t readWholeNumber(const Json& v, const std::string& path, std::int64_t lo,
+                             std::int64_t hi) {
+    const double x = readNumber(v, path);
+    if (x != std::floor(x)) fail(path, "must be a whole number, got " + formatNumber(x));
+    return static_cast<std::int64_t>(
+        readNumberIn(v, path, static_cast<double>(lo), static_cast<double>(hi)));
+}
+
+std::vector<double> readNumbers(const Json& v, const std::string& path, std::size_t n, double lo,
+                                double hi) {
+    if (!v.is_array() || v.size() != n) {
+        fail(path, "must be an array of " + std::to_string(n) + " numbers, got " + describe(v));
+    }
+    std::vector<double> out;
+    for (std::size_t i = 0; i < n; ++i) out.push_back(readNumberIn(v[i], element(path, i), lo, hi));
+    return out;
+}
+
+Result<std::string> readTextFile(const std::string& path, const std::string& what,
+                                 std::uintmax_t maxBytes) {
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
+                                                         &std::fclose);
+    if (!file) {
+        return Error("cannot open " + what + " '" + path +
+                     "': " + std::generic_category().message(errno));
+    }
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(path, ec);
+    const std::string tooLarge = what + " file '" + path + "' is too large (at most " +
+                                 std::to_string(maxBytes >> 20) + " MiB)";
+    if (!ec && size > maxBytes) return Error(tooLarge);
+    // Read in chunks up to the limit: file_size is unknown for pipes and may be stale.
+    std::string text;
+    char buffer[1 << 16];
+    for (;;) {
+        const std::size_t n = std::fread(buffer, 1, sizeof(buffer), file.get());
+        text.append(buffer, n);
+        if (text.size() > maxBytes) return Error(tooLarge);
+        if (n < sizeof(buffer)) break;
+    }
+    if (std::ferror(file.get())) {
+        return Error("cannot read " + what + " '" + path +
+                     "': " + std::generic_category().message(errno));
+    }
+    return text;
+}
+
+namespace {
+
+// nlohmann's message without "[json.exception.parse_error.101] parse error at line 2, column 8: ",
+// since the location is given in our own form.
+std::string stripJsonExceptionPrefix(std::string message) {
+    if (!message.empty() && message[0] == '[') {
+        const std::size_t end = message.find("] ");
+        if (end != std::string::npos) message.erase(0, end + 2);
+    }
+    if (message.rfind("parse error", 0) == 0) {
+        const std::size_t colon = message.find(": ");
+        if (colon != std::string::npos) message.erase(0, colon + 2);
+    }
+    return message;
+}
+
+Error numberOverflowError(std::string_view text, const std::string& sourceName) {
+    SourceLocation where;
+    where.file = sourceName;
+    const std::optional<std::size_t> offset = findNonFiniteJsonNumber(text);
+    if (!offset) return Error(where, "invalid JSON: a number is too large (must be finite)");
+    const TextPosition pos = textPositionAt(text, *offset);
+    where.line = pos.line;
+    where.column = pos.column;
+    std::size_t end = *offset;
+    while (end < text.size() &&
+           std::string_view("+-.0123456789eE").find(text[end]) != std::string_view::npos) {
+        ++end;
+    }
+    return Error(where, "invalid JSON: number " + std::string(text.substr(*offset, end - *offset)) +
+                            " is too large (must be finite)");
+}
+
+}  // namespace
+
+Result<Json> parse(std::string_view text, const std::string& sourceName) {
+    SourceLocation file;
+    file.file = sourceName;
+    try {
+        return Json::parse(text.begin(), text.end());
+    } catch (const Json::parse_error& e) {
+        const TextPosition pos = jsonParseErrorPosition(text, e.byte);
+        SourceLocation where = file;
+        where.line = pos.line;
+        where.column = pos.column;
+        return Error(where, "invalid JSON: " + stripJsonExceptionPrefix(e.what()));
+    } catch (const Json::out_of_range& e) {
+        if (e.id == 406) return numberOverflowError(text, sourceName);  // e.g. 1e999
+        return Error(file, "invalid JSON: " + stripJsonExceptionPrefix(e.what()));
+    } catch (const Json::exception& e) {
+        return Error(file, "invalid JSON: " + stripJsonExceptionPrefix(e.what()));
+    }
+}
+
+Error locate(const Invalid& invalid, std::string_view text, const std::string& sourceName) {
+    const JsonSourceMap map = JsonSourceMap::build(text);
+    SourceLocation where = invalid.atKey ? map.locateKey(invalid.field) : map.locate(invalid.field);
+    where.file = sourceName;
+    return Error(where, invalid.message);
+}
+
+}  // namespace luxel::json

@@ -1,0 +1,20 @@
+// The voxel scene reader on an already parsed document, for the one scene-file loader
+// (luxel/scene/scene_file.h), which reads and parses a file once whatever its type.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "core/json_fields.h"
+#include "luxel/voxel/voxel_scene.h"
+
+namespace luxel::voxel {
+
+// Whether a parsed scene document declares "type": "voxel".
+bool isVoxelScene(const json::Json& root);
+
+// `text` is the document's source (errors are located in it); `path` resolves relative files.
+Result<VoxelScene> voxelSceneFromJson(const json::Json& root, std::string_view text,
+                                      const std::string& path, int width = 0, int height = 0);
+
+}  // namespace luxel::voxel
