@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "bench_scenes.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/metrics.h"
 #include "luxel/gi2d/hrc_solver.h"
@@ -42,10 +43,8 @@ std::uint64_t memoryEstimate(Solver solver, int size) {
 
 void defaultScene(benchmark::State& state, Solver solver) {
     const int size = static_cast<int>(state.range(0));
-    const char* scenePath = LUXEL_SOURCE_DIR "/scenes/2d/room.json";
-    auto scene = luxel::gi2d::loadScene2D(scenePath);
-    if (!scene) throw std::runtime_error(scene.error().message());
-    auto medium = luxel::gi2d::rasterize(*scene, {size, size, 16});
+    const luxel::gi2d::Scene2D scene = luxel::bench::loadShipped2D("room.json");
+    auto medium = luxel::gi2d::rasterize(scene, {size, size, 16});
     if (!medium) throw std::runtime_error(medium.error().message());
     luxel::Image fluence;
     for (auto _ : state) {

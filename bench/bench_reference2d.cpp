@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "bench_scenes.h"
 #include "luxel/gi2d/rasterize.h"
 #include "luxel/gi2d/reference_solver.h"
 #include "luxel/gi2d/scene2d_json.h"
@@ -11,9 +12,8 @@
 namespace {
 
 luxel::gi2d::Medium2D loadMedium(const std::string& name, int size) {
-    auto scene = luxel::gi2d::loadScene2D(std::string(LUXEL_SOURCE_DIR) + "/scenes/2d/" + name);
-    if (!scene) throw std::runtime_error(scene.error().message());
-    auto medium = luxel::gi2d::rasterize(*scene, {size, size, 16});
+    const luxel::gi2d::Scene2D scene = luxel::bench::loadShipped2D(name);
+    auto medium = luxel::gi2d::rasterize(scene, {size, size, 16});
     if (!medium) throw std::runtime_error(medium.error().message());
     return std::move(*medium);
 }
@@ -35,10 +35,9 @@ void referenceSolve(benchmark::State& state, const std::string& scene) {
 
 void rasterize(benchmark::State& state, const std::string& scene) {
     const int size = static_cast<int>(state.range(0));
-    auto loaded = luxel::gi2d::loadScene2D(std::string(LUXEL_SOURCE_DIR) + "/scenes/2d/" + scene);
-    if (!loaded) throw std::runtime_error(loaded.error().message());
+    const luxel::gi2d::Scene2D loaded = luxel::bench::loadShipped2D(scene);
     for (auto _ : state) {
-        auto medium = luxel::gi2d::rasterize(*loaded, {size, size, 16});
+        auto medium = luxel::gi2d::rasterize(loaded, {size, size, 16});
         benchmark::DoNotOptimize(medium);
     }
 }

@@ -10,6 +10,7 @@
 #include "luxel/gi2d/scene2d_json.h"
 #include "luxel/gpu/backend_policy.h"
 #include "luxel/gpu/context.h"
+#include "luxel/scene/scene_file.h"
 #include "luxel/voxel/voxel_scene.h"
 #include "mode_2d.h"
 #include "mode_voxel.h"
@@ -79,9 +80,15 @@ int main(int argc, char** argv) {
 
     std::unique_ptr<ViewerMode> mode;
     int windowW = o.windowWidth, windowH = o.windowHeight;
-    if (voxel::isVoxelSceneFile(o.scene)) {
-        auto scene = voxel::loadVoxelScene(o.scene);
-        if (!scene) return fail(scene.error().message());
+    // The backend policy of the CLI (luxel/gpu/backend_policy.h): --backend gpu needs a device.
+    if (o.backend == "gpu") {
+        auto opened = gpu::openBackend(gpu::Backend::Gpu, {o.device, false});
+        if (!opened) return fail(opened.error().message());
+    }
+    auto file = scene::loadSceneFile(o.scene);
+    if (!file) return fail(file.error().message());
+    if (file->kind() == scene::SceneKind::Voxel) {
+        voxel::VoxelScene* scene = &file->voxel();
         if (windowW == 0) {
             std::tie(windowW, windowH) =
                 fitWithin(scene->camera.width(), scene->camera.height(), 1280, 720);
@@ -109,8 +116,7 @@ int main(int argc, char** argv) {
         mode = std::make_unique<ModeVoxel>(std::move(*scene), internal.first, internal.second,
                                            o.exposure, std::move(source));
     } else {
-        auto scene = gi2d::loadScene2D(o.scene);
-        if (!scene) return fail(scene.error().message());
+        gi2d::Scene2D* scene = &file->twoD();
         if (windowW == 0)
             std::tie(windowW, windowH) = fitWithin(scene->width, scene->height, 1280, 900);
         // With a hardware GPU the canvas (up to 512 px) renders interactively; HRC on a 2-core

@@ -102,8 +102,8 @@ float readOptionalNonNegative(const Json& object, const std::string& path, const
     return v ? readNonNegative(*v, member(path, key)) : fallback;
 }
 
-const std::vector<const char*> kTopLevelFields = {"description", "canvas", "background",
-                                                  "boundary_radiance", "shapes"};
+const std::vector<const char*> kTopLevelFields = {"type",       "description",       "canvas",
+                                                  "background", "boundary_radiance", "shapes"};
 const std::vector<const char*> kBackgroundFields = {"emission", "absorption"};
 const std::vector<const char*> kMaterialFields = {"emission", "absorption", "opaque", "intensity"};
 const std::vector<const char*> kImageFields = {
@@ -127,6 +127,11 @@ class SceneReader {
     Scene2D read(const Json& root) {
         if (!root.is_object()) fail("", "a scene must be a JSON object, got " + describe(root));
         checkFields(root, "", kTopLevelFields, "at the top level");
+        if (const Json* v = find(root, "type")) {
+            // The scene-file reader sends "voxel" documents elsewhere; anything else is a mistake.
+            const std::string type = readString(*v, "type");
+            if (type != "2d") fail("type", "unknown scene type '" + type + "' (known: 2d, voxel)");
+        }
         if (const Json* v = find(root, "description")) readString(*v, "description");
 
         const Json& canvas = require(root, "", "canvas");

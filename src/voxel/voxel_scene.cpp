@@ -318,13 +318,6 @@ ShadeOptions buildShading(const Json& root) {
 
 }  // namespace
 
-bool isVoxelSceneFile(const std::string& path) {
-    auto text = json::readTextFile(path, "scene");
-    if (!text) return false;
-    auto root = json::parse(*text, path);
-    return root && isVoxelScene(*root);
-}
-
 bool isVoxelScene(const json::Json& root) {
     if (!root.is_object()) return false;
     const Json* type = find(root, "type");

@@ -258,8 +258,8 @@ TEST(Scene2DJsonErrors, NumberOverflowIsNotFinite) {
 
 TEST(Scene2DJsonErrors, UnknownFields) {
     expectError("{\"canvas\": [10, 10],\n \"shape\": []}", 2,
-                "shape: unknown field 'shape' (allowed at the top level: description, canvas, "
-                "background, boundary_radiance, shapes)");
+                "shape: unknown field 'shape' (allowed at the top level: type, description, "
+                "canvas, background, boundary_radiance, shapes)");
     expectError(R"({"canvas": [10, 10], "shapes": [
         {"type": "circle", "center": [1, 1],
          "radiuss": 2}]})",

@@ -28,8 +28,11 @@ std::string passKind(const std::string& name) {
 }
 
 int runBench(const BenchArgs& args) {
-    if (voxel::isVoxelSceneFile(args.scene)) {
-        return benchVoxelScene({args.scene, args.backend, args.device, args.sizes, args.repeat});
+    auto file = loadScene(args.scene, "");
+    if (!file) return reportError(file.error());
+    if (file->kind() == scene::SceneKind::Voxel) {
+        return benchVoxelScene({args.scene, args.backend, args.device, args.sizes, args.repeat},
+                               std::move(file->voxel()));
     }
     auto sizes =
         parseImageSizeList(args.sizes.empty() ? "256,512,1024,2048" : args.sizes, "--sizes");
@@ -37,7 +40,7 @@ int runBench(const BenchArgs& args) {
     if (args.backend != "cpu" && args.backend != "gpu") {
         return reportError(Error("--backend '" + args.backend + "' is not cpu or gpu"));
     }
-    auto sized = loadSizedScene(args.scene, "");
+    auto sized = sizeScene(std::move(file->twoD()), "");
     if (!sized) return reportError(sized.error());
     std::unique_ptr<gpu::Context> context;
     if (args.backend == "gpu") {

@@ -25,13 +25,12 @@ Result<voxel::Camera> resized(const voxel::Camera& camera, int width, int height
 
 }  // namespace
 
-int benchVoxelScene(const VoxelBenchRequest& request) {
+int benchVoxelScene(const VoxelBenchRequest& request, voxel::VoxelScene loaded) {
     if (request.backend != "cpu" && request.backend != "gpu") {
         return reportError(Error("--backend '" + request.backend + "' is not cpu or gpu"));
     }
     if (request.repeat < 1) return reportError(Error("--repeat must be at least 1"));
-    auto scene = voxel::loadVoxelScene(request.scene);
-    if (!scene) return reportError(scene.error());
+    voxel::VoxelScene* scene = &loaded;
     std::vector<ImageSize> sizes{{scene->camera.width(), scene->camera.height()}};
     if (!request.sizes.empty()) {
         auto parsed = parseImageSizeList(request.sizes, "--sizes");

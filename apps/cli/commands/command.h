@@ -13,6 +13,7 @@
 #include "luxel/gi2d/medium2d.h"
 #include "luxel/gi2d/scene2d.h"
 #include "luxel/gpu/fwd.h"
+#include "luxel/scene/scene_file.h"
 
 namespace luxel::cli {
 
@@ -41,7 +42,14 @@ struct SizedScene {
     int width = 0, height = 0;
 };
 
-// Loads a scene; `size` overrides its canvas ("" = the scene's own).
+// Reads a scene file once, whatever its type (luxel/scene/scene_file.h); `size` ("" or WxH)
+// overrides a voxel scene's camera size.
+Result<scene::SceneFile> loadScene(const std::string& scenePath, const std::string& size);
+
+// A 2D scene at the size it will be rendered at: `size` overrides its canvas ("" = its own).
+Result<SizedScene> sizeScene(gi2d::Scene2D scene, const std::string& size);
+
+// Loads a 2D scene (a voxel scene is an error naming the file) at a size, as sizeScene.
 Result<SizedScene> loadSizedScene(const std::string& scenePath, const std::string& size);
 
 // Rasterises a loaded scene at its render size.
@@ -71,8 +79,9 @@ struct VoxelRenderRequest {
     ToneMapSettings tone;
     bool quiet = false, stats = false;
     std::string backend = "auto", device;  // --backend auto|cpu|gpu, --device
+    double loadSeconds = 0;                // reading the scene (generators included)
 };
-int renderVoxelScene(const VoxelRenderRequest& request);
+int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene scene);
 
 // `luxel bench` on a voxel scene: frame times at each of `sizes` (comma-separated WxH; empty = the
 // scene's camera size) on the CPU or the GPU.
@@ -80,9 +89,9 @@ struct VoxelBenchRequest {
     std::string scene, backend = "cpu", device, sizes;
     int repeat = 3;
 };
-int benchVoxelScene(const VoxelBenchRequest& request);
+int benchVoxelScene(const VoxelBenchRequest& request, voxel::VoxelScene scene);
 
 // `luxel info` on a voxel scene (`size`: WxH overriding the camera's image size, or empty).
-int infoVoxelScene(const std::string& path, const std::string& size);
+int infoVoxelScene(const voxel::VoxelScene& scene);
 
 }  // namespace luxel::cli

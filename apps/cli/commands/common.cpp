@@ -31,15 +31,25 @@ Result<std::pair<int, int>> parseSize(const std::string& text) {
     return std::pair{size->width, size->height};
 }
 
-Result<SizedScene> loadSizedScene(const std::string& scenePath, const std::string& size) {
+Result<scene::SceneFile> loadScene(const std::string& scenePath, const std::string& size) {
     auto dims = parseSize(size);
     if (!dims) return dims.error();
-    if (voxel::isVoxelSceneFile(scenePath)) {
+    return scene::loadSceneFile(scenePath, {{dims->first, dims->second}});
+}
+
+Result<SizedScene> loadSizedScene(const std::string& scenePath, const std::string& size) {
+    auto file = loadScene(scenePath, "");
+    if (!file) return file.error();
+    if (file->kind() == scene::SceneKind::Voxel) {
         return Error(scenePath + ": a voxel scene; this command works on 2D scenes");
     }
-    auto scene = gi2d::loadScene2D(scenePath);
-    if (!scene) return scene.error();
-    SizedScene sized{std::move(*scene), dims->first, dims->second};
+    return sizeScene(std::move(file->twoD()), size);
+}
+
+Result<SizedScene> sizeScene(gi2d::Scene2D scene, const std::string& size) {
+    auto dims = parseSize(size);
+    if (!dims) return dims.error();
+    SizedScene sized{std::move(scene), dims->first, dims->second};
     if (sized.width == 0) {
         sized.width = sized.scene.width;
         sized.height = sized.scene.height;

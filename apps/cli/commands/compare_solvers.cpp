@@ -111,7 +111,9 @@ int runCompareSolvers(const CompareSolversArgs& args) {
         return reportError(Error("cannot open scene '" + args.scene + "'"));
     }
     if (auto size = parseSize(args.size); !size) return reportError(size.error());
-    if (voxel::isVoxelSceneFile(args.scene)) {
+    auto file = loadScene(args.scene, "");
+    if (!file) return reportError(file.error());
+    if (file->kind() == scene::SceneKind::Voxel) {
         return reportError(Error(args.scene + ": a voxel scene; compare-solvers compares the 2D "
                                               "solvers"));
     }

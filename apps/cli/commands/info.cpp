@@ -24,11 +24,12 @@ void printRgb(const char* label, Rgb v) {
 }
 
 int runInfo(const InfoArgs& args) {
-    if (voxel::isVoxelSceneFile(args.scene)) return infoVoxelScene(args.scene, args.size);
+    auto file = loadScene(args.scene, args.size);
+    if (!file) return reportError(file.error());
+    if (file->kind() == scene::SceneKind::Voxel) return infoVoxelScene(file->voxel());
     auto dims = parseSize(args.size);
     if (!dims) return reportError(dims.error());
-    auto scene = gi2d::loadScene2D(args.scene);
-    if (!scene) return reportError(scene.error());
+    gi2d::Scene2D* scene = &file->twoD();
     const int w = dims->first > 0 ? dims->first : scene->width;
     const int h = dims->first > 0 ? dims->second : scene->height;
 

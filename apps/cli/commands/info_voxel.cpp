@@ -9,16 +9,13 @@
 
 namespace luxel::cli {
 
-int infoVoxelScene(const std::string& path, const std::string& size) {
-    auto dims = parseSize(size);
-    if (!dims) return reportError(dims.error());
-    auto scene = voxel::loadVoxelScene(path, dims->first, dims->second);
-    if (!scene) return reportError(scene.error());
+int infoVoxelScene(const voxel::VoxelScene& loaded) {
+    const voxel::VoxelScene* scene = &loaded;
     const voxel::VoxelWorld& world = scene->world;
     const voxel::Camera& camera = scene->camera;
     const voxel::ShadeOptions& shading = scene->shading;
     const Int3 s = world.size();
-    std::printf("%s\n", path.c_str());
+    std::printf("%s\n", scene->sourcePath.c_str());
     std::printf("  world              %dx%dx%d voxels in chunks of %d, %llu solid\n", s.x, s.y, s.z,
                 world.chunkSize(), static_cast<unsigned long long>(world.solidCount()));
     std::printf("  textures           %d\n", scene->textures.size());

@@ -189,16 +189,20 @@ int runRender(const RenderArgs& args) {
     }
     const ToneMapSettings tone{args.exposure, *curve};
     ThreadLimit threadLimit(args.threads);
-    if (voxel::isVoxelSceneFile(args.scene)) {
+    Stopwatch loadTime;
+    auto file = loadScene(args.scene, args.size);
+    if (!file) return reportError(file.error());
+    if (file->kind() == scene::SceneKind::Voxel) {
         if (!args.options2DGiven.empty()) {
             return reportError(Error(args.options2DGiven.front() + " applies to 2D scenes; " +
                                      args.scene + " is a voxel scene"));
         }
         return renderVoxelScene({args.scene, args.size, args.out, args.png, tone, args.quiet,
-                                 args.stats, args.backend, args.device});
+                                 args.stats, args.backend, args.device, loadTime.seconds()},
+                                std::move(file->voxel()));
     }
 
-    auto sized = loadSizedScene(args.scene, args.size);
+    auto sized = sizeScene(std::move(file->twoD()), args.size);
     if (!sized) return reportError(sized.error());
     // Refuse before allocating anything when the medium plus the solver cannot fit.
     if (args.solver == "hrc") {

@@ -22,13 +22,9 @@ Result<Image> renderOnGpu(gpu::Context& context, const voxel::VoxelScene& scene)
 
 }  // namespace
 
-int renderVoxelScene(const VoxelRenderRequest& request) {
-    auto size = parseSize(request.size);
-    if (!size) return reportError(size.error());
-    Stopwatch loadTime;
-    auto scene = voxel::loadVoxelScene(request.scene, size->first, size->second);
-    if (!scene) return reportError(scene.error());
-    const double loadSeconds = loadTime.seconds();
+int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded) {
+    voxel::VoxelScene* scene = &loaded;
+    const double loadSeconds = request.loadSeconds;
     auto context = chooseGpuBackend(request.backend, request.device, request.quiet);
     if (!context) return reportError(context.error());
     Stopwatch renderTime;

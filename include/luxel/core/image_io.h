@@ -6,6 +6,7 @@
 
 #include "luxel/core/error.h"
 #include "luxel/core/image.h"
+#include "luxel/core/image_size.h"
 
 namespace luxel {
 
@@ -15,8 +16,8 @@ enum class PngEncoding {
     Linear,  // data (masks, absorption maps): value / 255, no curve
 };
 
-// Readers refuse images larger than this (per side, and in total) before allocating anything.
-constexpr int kMaxImageSide = 65536;
+// Readers refuse images larger than kMaxImageSide (image_size.h) per side, and than this in total,
+// before allocating anything.
 constexpr std::uint64_t kMaxImagePixels = std::uint64_t{1} << 28;
 
 // Reads any PNG (grey, grey+alpha, palette, RGB, RGBA; 8 or 16 bit). The result has 1 (grey),

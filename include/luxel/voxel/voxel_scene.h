@@ -23,9 +23,6 @@ struct VoxelScene {
 // Reads a scene, builds its world (generators run here) and validates everything. Errors name the
 // file, line:column and field. `width`/`height` > 0 override the camera's image size.
 Result<VoxelScene> loadVoxelScene(const std::string& path, int width = 0, int height = 0);
-
-// Whether a JSON file declares itself a voxel scene ("type": "voxel"); false for anything else,
-// including unreadable files (the 2D loader then reports the problem).
-bool isVoxelSceneFile(const std::string& path);
+// (A file of either kind: luxel/scene/scene_file.h reads it once and picks the reader.)
 
 }  // namespace luxel::voxel

@@ -1,0 +1,28 @@
+#include "luxel/scene/scene_file.h"
+
+#include <filesystem>
+
+#include "core/json_fields.h"
+#include "gi2d/scene2d_json_internal.h"
+#include "voxel/voxel_scene_internal.h"
+
+namespace luxel::scene {
+
+Result<SceneFile> loadSceneFile(const std::string& path, const SceneFileOptions& options) {
+    auto text = json::readTextFile(path, "scene");
+    if (!text) return text.error();
+    auto root = json::parse(*text, path);
+    if (!root) return root.error();
+    if (voxel::isVoxelScene(*root)) {
+        auto scene = voxel::voxelSceneFromJson(*root, *text, path, options.voxelImageSize.width,
+                                               options.voxelImageSize.height);
+        if (!scene) return scene.error();
+        return SceneFile{path, std::move(*scene)};
+    }
+    auto scene = gi2d::scene2DFromJson(*root, *text, path,
+                                       std::filesystem::path(path).parent_path().string());
+    if (!scene) return scene.error();
+    return SceneFile{path, std::move(*scene)};
+}
+
+}  // namespace luxel::scene
