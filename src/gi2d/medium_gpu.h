@@ -1,20 +1,21 @@
-// The 2D medium as GPU shaders read it: six floats per pixel, sigma rgb then emission rgb
-// (src/gpu/shaders/shared/hrc_layout.h, rc_layout.h).
+// The 2D medium as the GPU passes read it: one MediumTexel per pixel, rows top to bottom
+// (src/gpu/shaders/shared/medium_layout.h).
 #pragma once
 
 #include <vector>
 
+#include "gpu/shaders/shared/medium_layout.h"
 #include "luxel/gi2d/medium2d.h"
 
 namespace luxel::gi2d {
 
-inline std::vector<float> packMediumForGpu(const Medium2D& medium) {
-    std::vector<float> out(static_cast<std::size_t>(medium.width()) * medium.height() * 6);
+inline std::vector<gpu::shared::MediumTexel> packMediumForGpu(const Medium2D& medium) {
+    std::vector<gpu::shared::MediumTexel> out(static_cast<std::size_t>(medium.width()) *
+                                              medium.height());
     for (int y = 0; y < medium.height(); ++y) {
         for (int x = 0; x < medium.width(); ++x) {
-            float* e = &out[(static_cast<std::size_t>(y) * medium.width() + x) * 6];
-            const Rgb s = medium.absorption.rgb(x, y), em = medium.emission.rgb(x, y);
-            e[0] = s.r, e[1] = s.g, e[2] = s.b, e[3] = em.r, e[4] = em.g, e[5] = em.b;
+            const Rgb s = medium.absorption.rgb(x, y), e = medium.emission.rgb(x, y);
+            out[static_cast<std::size_t>(y) * medium.width() + x] = {s.r, s.g, s.b, e.r, e.g, e.b};
         }
     }
     return out;

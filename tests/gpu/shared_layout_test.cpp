@@ -153,5 +153,40 @@ TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
                        {LUXEL_MEMBER(VoxelCastPush, rays), LUXEL_MEMBER(VoxelCastPush, stepCap)}});
 }
 
+// The element structs of the buffers that used to be bare float/uint arrays: the 2D medium, the
+// RGB buffers (cones, accumulators, cascades, fluence), the HRC table entries, the voxel output.
+TEST(GpuSharedLayout, BufferElementStructs) {
+    const CppLayout medium{
+        sizeof(MediumTexel),
+        {LUXEL_MEMBER(MediumTexel, sigmaR), LUXEL_MEMBER(MediumTexel, sigmaG),
+         LUXEL_MEMBER(MediumTexel, sigmaB), LUXEL_MEMBER(MediumTexel, emissionR),
+         LUXEL_MEMBER(MediumTexel, emissionG), LUXEL_MEMBER(MediumTexel, emissionB)}};
+    for (const char* shader : {"hrc_trace", "hrc_finish", "rc_cascade"}) {
+        expectBuffer(shader, 0, medium);
+    }
+    const CppLayout rgb{
+        sizeof(RgbTexel),
+        {LUXEL_MEMBER(RgbTexel, r), LUXEL_MEMBER(RgbTexel, g), LUXEL_MEMBER(RgbTexel, b)}};
+    for (const auto& [shader, binding] :
+         {std::pair{"hrc_merge", 1u}, std::pair{"hrc_merge", 2u}, std::pair{"hrc_readout", 0u},
+          std::pair{"hrc_readout", 1u}, std::pair{"hrc_finish", 1u}, std::pair{"hrc_finish", 2u},
+          std::pair{"rc_cascade", 1u}, std::pair{"rc_cascade", 2u}}) {
+        expectBuffer(shader, binding, rgb);
+    }
+    const CppLayout entry{sizeof(HrcTableEntry),
+                          {LUXEL_MEMBER(HrcTableEntry, radianceRG),
+                           LUXEL_MEMBER(HrcTableEntry, radianceBTransmittanceR),
+                           LUXEL_MEMBER(HrcTableEntry, transmittanceGB)}};
+    for (const auto& [shader, binding] :
+         {std::pair{"hrc_trace", 1u}, std::pair{"hrc_extend", 0u}, std::pair{"hrc_extend", 1u},
+          std::pair{"hrc_merge", 0u}}) {
+        expectBuffer(shader, binding, entry);
+    }
+    expectBuffer("voxel_render", 6,
+                 {sizeof(VoxelPixel),
+                  {LUXEL_MEMBER(VoxelPixel, r), LUXEL_MEMBER(VoxelPixel, g),
+                   LUXEL_MEMBER(VoxelPixel, b), LUXEL_MEMBER(VoxelPixel, a)}});
+}
+
 }  // namespace
 }  // namespace luxel::gpu

@@ -121,7 +121,7 @@ Result<double> traceLevelOnGpu(gpu::Context& context, const Medium2D& frameMediu
     auto program = context.program("hrc_trace", 2, sizeof(shared::HrcTraceParams));
     if (!program) return program.error();
     Scratch scratch{context, {}};
-    const std::vector<float> packed = packMediumForGpu(frameMedium);
+    const auto packed = packMediumForGpu(frameMedium);
     auto medium = scratch.upload(std::as_bytes(std::span(packed)));
     if (!medium) return medium.error();
     const std::span<std::uint16_t> table = tables.levelHalves(n);
@@ -206,7 +206,7 @@ Result<double> finishOnGpu(gpu::Context& context, const Medium2D& medium, const 
     auto program = context.program("hrc_finish", 3, sizeof(shared::HrcFinishParams));
     if (!program) return program.error();
     Scratch scratch{context, {}};
-    const std::vector<float> packed = packMediumForGpu(medium);
+    const auto packed = packMediumForGpu(medium);
     auto mediumBuffer = scratch.upload(std::as_bytes(std::span(packed)));
     if (!mediumBuffer) return mediumBuffer.error();
     auto beyondBuffer = scratch.upload(std::as_bytes(std::span(beyond.data(), beyond.size())));

@@ -121,7 +121,7 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
     }
     {
         Stopwatch upload;
-        const std::vector<float> packed = packMediumForGpu(medium);
+        const auto packed = packMediumForGpu(medium);
         if (Status s = context.upload(**canvasMedium, std::as_bytes(std::span(packed))); !s) {
             return s.error();
         }
@@ -141,7 +141,7 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
         const int levels = cascadeCount(frame.length);
         {
             Stopwatch upload;
-            const std::vector<float> packed = packMediumForGpu(frameMedium(medium, frame));
+            const auto packed = packMediumForGpu(frameMedium(medium, frame));
             if (Status s = context.upload(**frameBuffer, std::as_bytes(std::span(packed))); !s) {
                 return s.error();
             }

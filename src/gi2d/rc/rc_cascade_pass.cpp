@@ -54,8 +54,8 @@ Result<double> cascadePassOnGpu(gpu::Context& context, const Medium2D& medium,
     static_assert(sizeof(Rgb) == 12);
     auto program = context.program("rc_cascade", 3, sizeof(gpu::shared::RcCascadeParams));
     if (!program) return program.error();
-    const std::vector<float> packed = packMediumForGpu(medium);
-    auto mediumBuffer = context.createBuffer(packed.size() * 4);
+    const auto packed = packMediumForGpu(medium);
+    auto mediumBuffer = context.createBuffer(packed.size() * sizeof(packed[0]));
     if (!mediumBuffer) return mediumBuffer.error();
     if (Status s = context.upload(**mediumBuffer, std::as_bytes(std::span(packed))); !s) {
         return s.error();

@@ -51,7 +51,7 @@ Result<Image> solveRcOnGpu(gpu::Context& context, const Medium2D& medium, const 
     }
     {
         Stopwatch upload;
-        const std::vector<float> packed = packMediumForGpu(medium);
+        const auto packed = packMediumForGpu(medium);
         if (Status s = context.upload(**mediumBuffer, std::as_bytes(std::span(packed))); !s) {
             return s.error();
         }

@@ -14,20 +14,22 @@ Interval over(Interval near, Interval far) {
                     near.transmittance * far.transmittance);
 }
 
-// Entry layout: src/gpu/shaders/shared/hrc_layout.h.
-Interval unpackEntry(uint w0, uint w1, uint w2) {
-    const vec2 a = unpackHalf2x16(w0), b = unpackHalf2x16(w1), c = unpackHalf2x16(w2);
+// Entry layout: HrcTableEntry in src/gpu/shaders/shared/hrc_layout.h.
+Interval unpackEntry(HrcTableEntry e) {
+    const vec2 a = unpackHalf2x16(e.radianceRG), b = unpackHalf2x16(e.radianceBTransmittanceR),
+               c = unpackHalf2x16(e.transmittanceGB);
     return Interval(vec3(a.x, a.y, b.x), vec3(b.y, c.x, c.y));
 }
 
-uvec3 packEntry(Interval v) {
-    return uvec3(packHalf2x16(v.radiance.xy),
-                 packHalf2x16(vec2(v.radiance.z, v.transmittance.x)),
-                 packHalf2x16(v.transmittance.yz));
+HrcTableEntry packEntry(Interval v) {
+    return HrcTableEntry(packHalf2x16(v.radiance.xy),
+                         packHalf2x16(vec2(v.radiance.z, v.transmittance.x)),
+                         packHalf2x16(v.transmittance.yz));
 }
 
-uint tableWord(uint level, uint p, uint k, uint y, uint rows) {
-    return ((p * ((1u << level) + 1u) + k) * rows + y) * LUXEL_HRC_ENTRY_WORDS;
+// Entry (p, k, y) of T_level.
+uint tableIndex(uint level, uint p, uint k, uint y, uint rows) {
+    return (p * ((1u << level) + 1u) + k) * rows + y;
 }
 
 #endif

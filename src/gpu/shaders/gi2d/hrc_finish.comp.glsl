@@ -5,16 +5,16 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/hrc_kernels.h"
 #include "shared/hrc_layout.h"
+#include "shared/medium_layout.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(std430, set = 0, binding = 0) readonly buffer Medium { float medium[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Beyond { float beyond[]; };
-layout(std430, set = 0, binding = 2) writeonly buffer Fluence { float fluence[]; };
+layout(std430, set = 0, binding = 0) readonly buffer Medium { MediumTexel medium[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Beyond { RgbTexel beyond[]; };
+layout(std430, set = 0, binding = 2) writeonly buffer Fluence { RgbTexel fluence[]; };
 layout(push_constant) uniform Push { HrcFinishParams params; };
 
 vec3 sigmaAt(int x, int y) {
-    const uint b = (uint(y) * params.width + uint(x)) * 6u;
-    return vec3(medium[b], medium[b + 1u], medium[b + 2u]);
+    return mediumSigma(medium[uint(y) * params.width + uint(x)]);
 }
 
 float opacityAt(int x, int y) {
@@ -22,8 +22,7 @@ float opacityAt(int x, int y) {
 }
 
 vec3 beyondAt(int x, int y) {
-    const uint b = (uint(y) * params.width + uint(x)) * 3u;
-    return vec3(beyond[b], beyond[b + 1u], beyond[b + 2u]);
+    return texelRgb(beyond[uint(y) * params.width + uint(x)]);
 }
 
 void main() {
@@ -44,12 +43,8 @@ void main() {
         }
         arriving = sum / total;
     }
-    const uint b = (uint(c.y) * params.width + uint(c.x)) * 6u;
-    const vec3 sigma = vec3(medium[b], medium[b + 1u], medium[b + 2u]);
-    const vec3 emission = vec3(medium[b + 3u], medium[b + 4u], medium[b + 5u]);
-    const vec3 total = hrcFinishPixel(sigma, emission, arriving, float(params.frustums));
-    const uint o = (uint(c.y) * params.width + uint(c.x)) * 3u;
-    fluence[o] = total.x;
-    fluence[o + 1u] = total.y;
-    fluence[o + 2u] = total.z;
+    const uint pixel = uint(c.y) * params.width + uint(c.x);
+    const MediumTexel m = medium[pixel];
+    fluence[pixel] = rgbTexel(
+        hrcFinishPixel(mediumSigma(m), mediumEmission(m), arriving, float(params.frustums)));
 }

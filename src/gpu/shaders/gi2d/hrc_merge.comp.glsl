@@ -3,12 +3,13 @@
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/hrc_layout.h"
+#include "shared/medium_layout.h"
 #include "gi2d/hrc_common.glsl"
 
 layout(local_size_x = LUXEL_HRC_GROUP_SIZE) in;
-layout(std430, set = 0, binding = 0) readonly buffer Table { uint table[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Upper { float upper[]; };
-layout(std430, set = 0, binding = 2) writeonly buffer Cones { float cones[]; };
+layout(std430, set = 0, binding = 0) readonly buffer Table { HrcTableEntry table[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Upper { RgbTexel upper[]; };
+layout(std430, set = 0, binding = 2) writeonly buffer Cones { RgbTexel cones[]; };
 layout(std430, set = 0, binding = 3) readonly buffer Weights { float weight[]; };
 layout(push_constant) uniform Push { HrcMergeParams params; };
 
@@ -16,8 +17,7 @@ Interval tableAt(int p, int y, int k) {
     if (p < 0 || p >= int(params.planes) || y < 0 || y >= int(params.rows)) {
         return emptyInterval();
     }
-    const uint word = tableWord(params.level, uint(p), uint(k), uint(y), params.rows);
-    return unpackEntry(table[word], table[word + 1u], table[word + 2u]);
+    return unpackEntry(table[tableIndex(params.level, uint(p), uint(k), uint(y), params.rows)]);
 }
 
 // Cone j of the upper cascade at (p, y); outside the frame (or above the top) the sky.
@@ -27,8 +27,7 @@ vec3 upperAt(int p, int y, int j) {
         return vec3(params.skyR, params.skyG, params.skyB) * weight[j];
     }
     const uint upperCones = 1u << (params.level + 1u);
-    const uint base = ((uint(p) * upperCones + uint(j)) * params.rows + uint(y)) * 3u;
-    return vec3(upper[base], upper[base + 1u], upper[base + 2u]);
+    return texelRgb(upper[(uint(p) * upperCones + uint(j)) * params.rows + uint(y)]);
 }
 
 void main() {
@@ -51,8 +50,5 @@ void main() {
             sum += (near + far) * 0.5;
         }
     }
-    const uint base = ((p * (1u << params.level) + i) * params.rows + y) * 3u;
-    cones[base] = sum.x;
-    cones[base + 1u] = sum.y;
-    cones[base + 2u] = sum.z;
+    cones[(p * (1u << params.level) + i) * params.rows + y] = rgbTexel(sum);
 }

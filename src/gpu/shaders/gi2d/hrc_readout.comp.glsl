@@ -5,10 +5,11 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/hrc_kernels.h"
 #include "shared/hrc_layout.h"
+#include "shared/medium_layout.h"
 
 layout(local_size_x = LUXEL_HRC_GROUP_SIZE) in;
-layout(std430, set = 0, binding = 0) readonly buffer Cones { float cones[]; };
-layout(std430, set = 0, binding = 1) buffer Beyond { float beyond[]; };
+layout(std430, set = 0, binding = 0) readonly buffer Cones { RgbTexel cones[]; };
+layout(std430, set = 0, binding = 1) buffer Beyond { RgbTexel beyond[]; };
 layout(push_constant) uniform Push { HrcReadoutParams params; };
 
 // Canvas pixel of frame pixel (u, v); matches FrustumFrame::toCanvas.
@@ -25,14 +26,11 @@ void main() {
     const uint plane = uint(hrcReadoutPlane(int(u), 0));  // R_0: one cone per plane
     vec3 arriving;
     if (plane < params.frameLength) {
-        const uint base = (plane * params.rows + v) * 3u;
-        arriving = vec3(cones[base], cones[base + 1u], cones[base + 2u]);
+        arriving = texelRgb(cones[plane * params.rows + v]);
     } else {
         arriving = vec3(params.skyR, params.skyG, params.skyB) * LUXEL_HRC_QUARTER_TURN;
     }
     const uvec2 c = toCanvas(u, v);
-    const uint target = (c.y * params.canvasWidth + c.x) * 3u;
-    beyond[target] += arriving.x;
-    beyond[target + 1u] += arriving.y;
-    beyond[target + 2u] += arriving.z;
+    const uint target = c.y * params.canvasWidth + c.x;
+    beyond[target] = rgbTexel(texelRgb(beyond[target]) + arriving);
 }

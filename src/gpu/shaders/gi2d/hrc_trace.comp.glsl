@@ -1,14 +1,15 @@
-// HRC base intervals (docs/algorithms/holographic-radiance-cascades.md §3; CPU reference: traceBaseLevels in src/gi2d/hrc/ray_tables.cpp):
+// HRC base intervals (docs/algorithms/holographic-radiance-cascades.md §3; CPU twin: traceLevel in src/gi2d/hrc/ray_tables.cpp):
 // T_n(p, y, k) marched from (p 2^n, y + 0.5) over v_n(k) with an exact DDA, one cell at a time:
 // L += T E (1 - exp(-sigma l)), T *= exp(-sigma l) for the exact length l inside each cell.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/hrc_layout.h"
+#include "shared/medium_layout.h"
 #include "gi2d/hrc_common.glsl"
 
 layout(local_size_x = LUXEL_HRC_GROUP_SIZE) in;
-layout(std430, set = 0, binding = 0) readonly buffer Medium { float medium[]; };
-layout(std430, set = 0, binding = 1) writeonly buffer Table { uint table[]; };
+layout(std430, set = 0, binding = 0) readonly buffer Medium { MediumTexel medium[]; };
+layout(std430, set = 0, binding = 1) writeonly buffer Table { HrcTableEntry table[]; };
 layout(push_constant) uniform Push { HrcTraceParams params; };
 
 void main() {
@@ -38,9 +39,9 @@ void main() {
         }
         const float exit = min(min(nextX, nextY), len);
         const float l = exit - t;
-        const uint base = (uint(cell.y) * params.frameLength + uint(cell.x)) * 6u;
-        const vec3 sigma = vec3(medium[base], medium[base + 1u], medium[base + 2u]);
-        const vec3 emission = vec3(medium[base + 3u], medium[base + 4u], medium[base + 5u]);
+        const MediumTexel m = medium[uint(cell.y) * params.frameLength + uint(cell.x)];
+        const vec3 sigma = mediumSigma(m);
+        const vec3 emission = mediumEmission(m);
         const vec3 tr = exp(-sigma * l);
         v.radiance += v.transmittance * emission * (vec3(1.0) - tr);
         v.transmittance *= tr;
@@ -53,9 +54,5 @@ void main() {
             nextY += invY;
         }
     }
-    const uvec3 words = packEntry(v);
-    const uint word = tableWord(params.level, p, k, y, params.rows);
-    table[word] = words.x;
-    table[word + 1u] = words.y;
-    table[word + 2u] = words.z;
+    table[tableIndex(params.level, p, k, y, params.rows)] = packEntry(v);
 }

@@ -4,15 +4,16 @@
 // group of 4 directions (pre-averaging). One invocation per (probe, stored value).
 #version 450
 #extension GL_GOOGLE_include_directive : require
+#include "shared/medium_layout.h"
 #include "shared/rc_layout.h"
 #define LUXEL_REAL float
 #define LUXEL_REAL2 vec2
 #include "shared/rc_kernels.h"
 
 layout(local_size_x = LUXEL_RC_GROUP_SIZE) in;
-layout(std430, set = 0, binding = 0) readonly buffer Medium { float medium[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Upper { float upper[]; };
-layout(std430, set = 0, binding = 2) writeonly buffer Current { float current[]; };
+layout(std430, set = 0, binding = 0) readonly buffer Medium { MediumTexel medium[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Upper { RgbTexel upper[]; };
+layout(std430, set = 0, binding = 2) writeonly buffer Current { RgbTexel current[]; };
 layout(push_constant) uniform Push { RcCascadeParams params; };
 
 struct Segment {
@@ -61,9 +62,9 @@ Segment traceSegment(vec2 from, vec2 to) {
         if (cell.x < 0 || cell.y < 0 || cell.x >= int(params.width) || cell.y >= int(params.height)) break;
         if (max(s.transmittance.x, max(s.transmittance.y, s.transmittance.z)) < 1e-6) break;
         const float exit = min(min(next.x, next.y), span);
-        const uint b = (uint(cell.y) * params.width + uint(cell.x)) * 6u;
-        const vec3 sigma = vec3(medium[b], medium[b + 1u], medium[b + 2u]);
-        const vec3 emission = vec3(medium[b + 3u], medium[b + 4u], medium[b + 5u]);
+        const MediumTexel m = medium[uint(cell.y) * params.width + uint(cell.x)];
+        const vec3 sigma = mediumSigma(m);
+        const vec3 emission = mediumEmission(m);
         const vec3 tr = exp(-sigma * (exit - t));
         s.radiance += s.transmittance * emission * (vec3(1.0) - tr);
         s.transmittance *= tr;
@@ -75,8 +76,7 @@ Segment traceSegment(vec2 from, vec2 to) {
 }
 
 vec3 upperValue(int ux, int uy, int k) {
-    const uint b = ((uint(uy) * params.upperProbesX + uint(ux)) * params.upperStored + uint(k)) * 3u;
-    return vec3(upper[b], upper[b + 1u], upper[b + 2u]);
+    return texelRgb(upper[(uint(uy) * params.upperProbesX + uint(ux)) * params.upperStored + uint(k)]);
 }
 
 vec3 sky() { return vec3(params.skyR, params.skyG, params.skyB); }
@@ -128,7 +128,5 @@ void main() {
     vec3 sum = vec3(0.0);
     for (uint k = s * group; k < (s + 1u) * group; ++k) sum += mergedRay(p, int(k));
     sum /= float(group);
-    current[index * 3u] = sum.x;
-    current[index * 3u + 1u] = sum.y;
-    current[index * 3u + 2u] = sum.z;
+    current[index] = rgbTexel(sum);
 }

@@ -19,6 +19,13 @@ using uint = std::uint32_t;
 // 32-bit words per ray-table entry (six binary16 values).
 #define LUXEL_HRC_ENTRY_WORDS 3
 
+// One ray-table entry (the layout above); LUXEL_HRC_ENTRY_WORDS words.
+struct HrcTableEntry {
+    uint radianceRG;               // L.r | L.g << 16 (binary16)
+    uint radianceBTransmittanceR;  // L.b | T.r << 16
+    uint transmittanceGB;          // T.g | T.b << 16
+};
+
 // Push constants of hrc_extend: builds T_level from T_{level-1}.
 struct HrcExtendParams {
     uint level;        // n >= 1
@@ -68,6 +75,7 @@ struct HrcFinishParams {
 };
 
 #ifdef __cplusplus
+static_assert(sizeof(HrcTableEntry) == LUXEL_HRC_ENTRY_WORDS * 4);
 static_assert(sizeof(HrcTraceParams) == 16);
 static_assert(sizeof(HrcMergeParams) == 32);
 static_assert(offsetof(HrcMergeParams, skyR) == 20);

@@ -14,11 +14,31 @@ struct MediumTexel {
     float emissionR, emissionG, emissionB;  // emitted radiance per pixel length
 };
 
+// One RGB value of the 2D passes' float buffers (HRC cones and accumulators, RC cascades, the
+// fluence): three floats, 12 bytes, no padding in std430.
+struct RgbTexel {
+    float r, g, b;
+};
+
+LUXEL_FUNC vec3 mediumSigma(MediumTexel m) {
+    return vec3(m.sigmaR, m.sigmaG, m.sigmaB);
+}
+LUXEL_FUNC vec3 mediumEmission(MediumTexel m) {
+    return vec3(m.emissionR, m.emissionG, m.emissionB);
+}
+LUXEL_FUNC vec3 texelRgb(RgbTexel t) {
+    return vec3(t.r, t.g, t.b);
+}
+LUXEL_FUNC RgbTexel rgbTexel(vec3 v) {
+    return RgbTexel(v.x, v.y, v.z);
+}
+
 LUXEL_SHARED_END
 
 #ifdef __cplusplus
 static_assert(sizeof(luxel::gpu::shared::MediumTexel) == 24);
 static_assert(offsetof(luxel::gpu::shared::MediumTexel, emissionR) == 12);
+static_assert(sizeof(luxel::gpu::shared::RgbTexel) == 12);
 #endif
 
 #endif

@@ -1,5 +1,5 @@
-// Vanilla RC structures shared by C++ and GLSL (offsets checked below and in
-// tests/gpu/gpu_runtime_test.cpp).
+// Vanilla RC structures shared by C++ and GLSL (offsets checked below and, against the compiled
+// shader, in tests/gpu/shared_layout_test.cpp).
 //
 // Cascade buffers hold pre-averaged float RGB: probe-major, `stored` values per probe,
 // index ((py * probesX + px) * stored + s) * 3. Medium buffer: six floats per canvas pixel

@@ -1,5 +1,6 @@
-// Voxel renderer structures shared by C++ and GLSL (offsets checked below and in
-// tests/gpu/voxel_gpu_test.cpp). Every field is a 4-byte scalar, so std430 adds no padding.
+// Voxel renderer structures shared by C++ and GLSL (offsets checked below and, against the
+// compiled shaders, in tests/gpu/shared_layout_test.cpp). Every field is a 4-byte scalar, so std430
+// adds no padding.
 //
 // Buffers of voxel_render (set 0):
 //   0 VoxelRenderParams
@@ -103,6 +104,11 @@ struct VoxelCastHit {
 struct VoxelCastPush {
     uint rays;
     uint stepCap;  // resolved: never 0
+};
+
+// Output of voxel_render: linear RGB and 1, per pixel.
+struct VoxelPixel {
+    float r, g, b, a;
 };
 
 struct VoxelTextureInfo {

@@ -11,7 +11,7 @@ layout(std430, set = 0, binding = 2) readonly buffer ChunkSolid { uint chunkSoli
 layout(std430, set = 0, binding = 3) readonly buffer TextureInfos { VoxelTextureInfo textureInfo[]; };
 layout(std430, set = 0, binding = 4) readonly buffer Texels { vec4 texels[]; };
 layout(std430, set = 0, binding = 5) readonly buffer SrgbTable { float srgbTable[]; };
-layout(std430, set = 0, binding = 6) writeonly buffer Output { vec4 pixels[]; };
+layout(std430, set = 0, binding = 6) writeonly buffer Output { VoxelPixel pixels[]; };
 layout(std430, set = 0, binding = 7) readonly buffer BrickMasks { uvec2 brickMasks[]; };
 layout(std430, set = 0, binding = 8) readonly buffer BrickDistances { uint brickDistances[]; };
 layout(push_constant) uniform Push { VoxelBandPush band; };
@@ -32,5 +32,6 @@ void main() {
     const vec3 up = vec3(params.upX, params.upY, params.upZ);
     const vec3 origin = vec3(params.positionX, params.positionY, params.positionZ);
     const vec3 direction = normalize(forward + right * sx + up * sy);
-    pixels[y * params.width + x] = vec4(shadeRay(origin, direction), 1.0);
+    const vec3 rgb = shadeRay(origin, direction);
+    pixels[y * params.width + x] = VoxelPixel(rgb.x, rgb.y, rgb.z, 1.0);
 }
