@@ -25,9 +25,9 @@ void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb s
     out.reset(tables.planes(n), cones, rows);
     const std::vector<float> weight = coneWeights(n);
     // Fluence of cone j at an upper probe; outside the frame (or above the top cascade) the sky.
-    auto upperFluence = [&](int p, int y, int j) -> Rgb {
-        if (upper != nullptr && upper->inRange(p, y)) return upper->at(p, j, y);
-        return sky * weight[j];
+    auto upperFluence = [&](int p, int y, int j) -> gpu::shared::vec3 {
+        if (upper != nullptr && upper->inRange(p, y)) return toVec3(upper->at(p, j, y));
+        return toVec3(sky * weight[j]);
     };
     parallelForRange(out.planes() * cones, 1, [&](int begin, int end) {
         // Per-thread scratch: the two rays' table rows here and on the next plane.
@@ -40,26 +40,23 @@ void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb s
                 if (!odd) next[s].load(tables, n, p + 1, i + s);
             }
             for (int y = 0; y < rows; ++y) {
-                Rgb sum;
+                gpu::shared::vec3 sum(0.0f);
                 for (int s = 0; s < 2; ++s) {
-                    const int k = i + s, j = 2 * i + s, dy = rayOffsetY(n, k);
+                    const int k = i + s, j = 2 * i + s, dy = gpu::shared::hrcRayOffsetY(n, k);
                     const float w = weight[j];
                     if (odd) {
                         // The ray ends exactly on upper plane (p + 1) / 2 (Eq 14).
-                        const Interval seg = here[s].at(y);
-                        sum += seg.radiance * w +
-                               seg.transmittance * upperFluence((p + 1) / 2, y + dy, j);
+                        sum += gpu::shared::hrcMergeOdd(here[s].at(y), w,
+                                                        upperFluence((p + 1) / 2, y + dy, j));
                     } else {
                         // Upper plane p / 2 is here: merge near, and far with a double-length
                         // ray to upper plane p / 2 + 1, then average (Eq 15-17).
-                        const Rgb near = upperFluence(p / 2, y, j);
-                        const Interval seg = over(here[s].at(y), next[s].at(y + dy));
-                        const Rgb far = seg.radiance * w +
-                                        seg.transmittance * upperFluence(p / 2 + 1, y + 2 * dy, j);
-                        sum += (near + far) * 0.5f;
+                        sum += gpu::shared::hrcMergeEven(upperFluence(p / 2, y, j),
+                                                         over(here[s].at(y), next[s].at(y + dy)), w,
+                                                         upperFluence(p / 2 + 1, y + 2 * dy, j));
                     }
                 }
-                out.at(p, i, y) = sum;
+                out.at(p, i, y) = toRgb(sum);
             }
         }
     });

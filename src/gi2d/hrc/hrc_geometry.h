@@ -16,7 +16,8 @@ inline constexpr int pow2(int n) {
     return 1 << n;
 }
 
-// Offset of ray k of cascade n along the rows (the x offset is 2^n).
+// Offset of ray k of cascade n along the rows (the x offset is 2^n); hrcRayOffsetY in the shared
+// kernels, constexpr here for the tables built at compile time.
 inline constexpr int rayOffsetY(int n, int k) {
     return 2 * k - pow2(n);
 }

@@ -69,7 +69,7 @@ void traceLevel(RayTables& tables, const RayMarcher& marcher, int n) {
         const double x = static_cast<double>(p) * pow2(n);
         for (int y = 0; y < tables.rows(); ++y) {
             const RaySegment s = marcher.march({x, y + 0.5}, direction, len, 0.0f);
-            tables.set(n, p, y, k, {s.radiance, s.transmittance});
+            tables.set(n, p, y, k, {toVec3(s.radiance), toVec3(s.transmittance)});
         }
     });
 }
@@ -85,14 +85,14 @@ void extendLevels(RayTables& tables, int tracedLevels) {
 
 void extendLevel(RayTables& tables, int n) {
     const int rows = tables.rows();
-    const int h = pow2(n - 1);
     forEachPlaneAndRay(tables, n, [&](int p, int k) {
         // Per-thread scratch rows, decoded once per (plane, ray) pair.
         thread_local DecodedRow nearLo, farHi, nearHi, farLo;
         thread_local std::vector<float> out;
         out.resize(static_cast<std::size_t>(rows) * 6);
         const int lo = k >> 1, hi = (k + 1) >> 1;
-        const int dyLo = 2 * lo - h, dyHi = 2 * hi - h;
+        const int dyLo = gpu::shared::hrcRayOffsetY(n - 1, lo),
+                  dyHi = gpu::shared::hrcRayOffsetY(n - 1, hi);
         nearLo.load(tables, n - 1, 2 * p, lo);
         farHi.load(tables, n - 1, 2 * p + 1, hi);
         if (lo != hi) {

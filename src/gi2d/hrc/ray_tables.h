@@ -36,7 +36,7 @@ class RayTables {
 
     // Out of range (plane or row outside the frame) reads as empty space: L = 0, T = 1.
     Interval get(int n, int p, int y, int k) const {
-        if (p < 0 || p >= planes_[n] || y < 0 || y >= rows_) return {};
+        if (p < 0 || p >= planes_[n] || y < 0 || y >= rows_) return emptyInterval();
         return decode(tables_[n][index(n, p, k, y)]);
     }
     void set(int n, int p, int y, int k, const Interval& value) {
@@ -99,7 +99,7 @@ struct DecodedRow {
     int rows = 0;
 
     Interval at(int y) const {
-        if (y < 0 || y >= rows) return {};
+        if (y < 0 || y >= rows) return emptyInterval();
         const float* e = &values[static_cast<std::size_t>(y) * 6];
         return {{e[0], e[1], e[2]}, {e[3], e[4], e[5]}};
     }

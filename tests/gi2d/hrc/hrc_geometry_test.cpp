@@ -154,7 +154,7 @@ TEST(HrcRayTables, ExtendedOddRaysAverageTwoBentPathsAroundTheStraightRay) {
         for (int n = traced; n < 7; ++n) {
             for (int k = 1; k < pow2(n); k += 2) {
                 const double straight = std::hypot(pow2(n), rayOffsetY(n, k));
-                const double depth = -std::log(tables.get(n, 0, 64, k).transmittance.r) / sigma;
+                const double depth = -std::log(tables.get(n, 0, 64, k).transmittance.x) / sigma;
                 EXPECT_GE(depth, straight * 0.995) << traced << ": " << n << "," << k;
                 const double longest = traced == 1 ? pow2(n) * std::sqrt(2.0) : straight * 1.05;
                 EXPECT_LE(depth, longest * 1.005) << traced << ": " << n << "," << k;

@@ -1,27 +1,18 @@
-// Shared GLSL for the HRC passes: intervals, binary16 table entries, frame medium access.
+// GLSL glue of the HRC passes: binary16 table entries (the interval arithmetic is shared with the
+// CPU in shared/hrc_kernels.h).
 #ifndef LUXEL_HRC_COMMON_GLSL
 #define LUXEL_HRC_COMMON_GLSL
 
-struct Interval {
-    vec3 radiance;
-    vec3 transmittance;
-};
-
-Interval emptyInterval() { return Interval(vec3(0.0), vec3(1.0)); }
-
-Interval over(Interval near, Interval far) {
-    return Interval(near.radiance + near.transmittance * far.radiance,
-                    near.transmittance * far.transmittance);
-}
+#include "shared/hrc_kernels.h"
 
 // Entry layout: HrcTableEntry in src/gpu/shaders/shared/hrc_layout.h.
-Interval unpackEntry(HrcTableEntry e) {
+HrcInterval unpackEntry(HrcTableEntry e) {
     const vec2 a = unpackHalf2x16(e.radianceRG), b = unpackHalf2x16(e.radianceBTransmittanceR),
                c = unpackHalf2x16(e.transmittanceGB);
-    return Interval(vec3(a.x, a.y, b.x), vec3(b.y, c.x, c.y));
+    return HrcInterval(vec3(a.x, a.y, b.x), vec3(b.y, c.x, c.y));
 }
 
-HrcTableEntry packEntry(Interval v) {
+HrcTableEntry packEntry(HrcInterval v) {
     return HrcTableEntry(packHalf2x16(v.radiance.xy),
                          packHalf2x16(vec2(v.radiance.z, v.transmittance.x)),
                          packHalf2x16(v.transmittance.yz));

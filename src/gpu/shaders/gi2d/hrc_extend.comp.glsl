@@ -1,5 +1,5 @@
 // HRC ray extension (paper Eq 18-20; CPU twin: extendLevel in src/gi2d/hrc/ray_tables.cpp):
-// T_n(p, y, k) = average of over(T_{n-1}(2p, y, lo), T_{n-1}(2p+1, y + dy(lo), hi)) and the same with
+// T_n(p, y, k) = average of hrcOver(T_{n-1}(2p, y, lo), T_{n-1}(2p+1, y + dy(lo), hi)) and the same with
 // lo and hi swapped; lo = k >> 1, hi = (k + 1) >> 1. One invocation per (row, ray, plane).
 #version 450
 #extension GL_GOOGLE_include_directive : require
@@ -12,9 +12,9 @@ layout(std430, set = 0, binding = 1) writeonly buffer Above { HrcTableEntry abov
 layout(push_constant) uniform Push { HrcExtendParams params; };
 
 // Outside the frame: empty space.
-Interval loadBelow(int p, int y, int k) {
+HrcInterval loadBelow(int p, int y, int k) {
     if (p < 0 || p >= int(params.planesBelow) || y < 0 || y >= int(params.rows)) {
-        return Interval(vec3(0.0), vec3(1.0));
+        return hrcEmptyInterval();
     }
     return unpackEntry(below[tableIndex(params.level - 1u, uint(p), uint(k), uint(y), params.rows)]);
 }
@@ -23,15 +23,14 @@ void main() {
     const uint y = gl_GlobalInvocationID.x, k = gl_GlobalInvocationID.y;
     const uint p = gl_GlobalInvocationID.z;
     if (y >= params.rows || p >= params.planes) return;
-    const int h = 1 << (params.level - 1u);
+    const int below = int(params.level) - 1;
     const int lo = int(k) >> 1, hi = (int(k) + 1) >> 1;
     const int iy = int(y), ip = int(p);
-    Interval v = over(loadBelow(2 * ip, iy, lo), loadBelow(2 * ip + 1, iy + 2 * lo - h, hi));
+    HrcInterval v = hrcOver(loadBelow(2 * ip, iy, lo), loadBelow(2 * ip + 1, iy + hrcRayOffsetY(below, lo), hi));
     if (lo != hi) {  // odd k: average the two bent paths
-        const Interval b =
-            over(loadBelow(2 * ip, iy, hi), loadBelow(2 * ip + 1, iy + 2 * hi - h, lo));
-        v.radiance = (v.radiance + b.radiance) * 0.5;
-        v.transmittance = (v.transmittance + b.transmittance) * 0.5;
+        const HrcInterval b =
+            hrcOver(loadBelow(2 * ip, iy, hi), loadBelow(2 * ip + 1, iy + hrcRayOffsetY(below, hi), lo));
+        v = hrcAverage(v, b);
     }
     above[tableIndex(params.level, p, k, y, params.rows)] = packEntry(v);
 }

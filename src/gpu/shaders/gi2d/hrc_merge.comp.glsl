@@ -13,9 +13,9 @@ layout(std430, set = 0, binding = 2) writeonly buffer Cones { RgbTexel cones[]; 
 layout(std430, set = 0, binding = 3) readonly buffer Weights { float weight[]; };
 layout(push_constant) uniform Push { HrcMergeParams params; };
 
-Interval tableAt(int p, int y, int k) {
+HrcInterval tableAt(int p, int y, int k) {
     if (p < 0 || p >= int(params.planes) || y < 0 || y >= int(params.rows)) {
-        return emptyInterval();
+        return hrcEmptyInterval();
     }
     return unpackEntry(table[tableIndex(params.level, uint(p), uint(k), uint(y), params.rows)]);
 }
@@ -38,16 +38,14 @@ void main() {
     vec3 sum = vec3(0.0);
     for (int s = 0; s < 2; ++s) {
         const int k = int(i) + s, j = 2 * int(i) + s;
-        const int dy = 2 * k - int(1u << params.level);
+        const int dy = hrcRayOffsetY(int(params.level), k);
         const float w = weight[j];
         if ((p & 1u) == 1u) {  // the ray ends on upper plane (p + 1) / 2 (Eq 14)
-            const Interval seg = tableAt(ip, iy, k);
-            sum += seg.radiance * w + seg.transmittance * upperAt((ip + 1) / 2, iy + dy, j);
+            sum += hrcMergeOdd(tableAt(ip, iy, k), w, upperAt((ip + 1) / 2, iy + dy, j));
         } else {  // near and far merged, then averaged (Eq 15-17)
-            const vec3 near = upperAt(ip / 2, iy, j);
-            const Interval seg = over(tableAt(ip, iy, k), tableAt(ip + 1, iy + dy, k));
-            const vec3 far = seg.radiance * w + seg.transmittance * upperAt(ip / 2 + 1, iy + 2 * dy, j);
-            sum += (near + far) * 0.5;
+            sum += hrcMergeEven(upperAt(ip / 2, iy, j),
+                                hrcOver(tableAt(ip, iy, k), tableAt(ip + 1, iy + dy, k)), w,
+                                upperAt(ip / 2 + 1, iy + 2 * dy, j));
         }
     }
     cones[(p * (1u << params.level) + i) * params.rows + y] = rgbTexel(sum);

@@ -31,7 +31,7 @@ void main() {
     float nextY = dir.y > 0.0 ? (float(cell.y + 1) - origin.y) * invY
                 : dir.y < 0.0 ? (origin.y - float(cell.y)) * invY
                               : 1e30;
-    Interval v = emptyInterval();
+    HrcInterval v = hrcEmptyInterval();
     float t = 0.0;
     while (t < len) {
         if (cell.x < 0 || cell.y < 0 || cell.x >= int(params.frameLength) || cell.y >= int(params.rows)) {

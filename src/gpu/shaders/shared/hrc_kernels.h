@@ -14,6 +14,47 @@
 
 LUXEL_SHARED_BEGIN
 
+// A radiance interval (§1): the radiance L a ray segment delivers towards its start and its
+// transmittance T.
+struct HrcInterval {
+    vec3 radiance;
+    vec3 transmittance;
+};
+
+// Empty space: nothing emitted, everything transmitted.
+LUXEL_FUNC HrcInterval hrcEmptyInterval() {
+    return HrcInterval(vec3(0.0f), vec3(1.0f));
+}
+
+// Front-to-back compositing, the paper's Eq 8: `near` in front of `far`.
+LUXEL_FUNC HrcInterval hrcOver(HrcInterval near, HrcInterval far) {
+    return HrcInterval(near.radiance + near.transmittance * far.radiance,
+                       near.transmittance * far.transmittance);
+}
+
+// The mean of two intervals: ray extension averages the two bent paths of an odd ray (§4).
+LUXEL_FUNC HrcInterval hrcAverage(HrcInterval a, HrcInterval b) {
+    return HrcInterval((a.radiance + b.radiance) * 0.5f,
+                       (a.transmittance + b.transmittance) * 0.5f);
+}
+
+// y offset of ray k of cascade `level` across one plane spacing (§2): 2k - 2^level.
+LUXEL_FUNC int hrcRayOffsetY(int level, int k) {
+    return 2 * k - (1 << level);
+}
+
+// One side of a cone merge (§5): on an odd plane the ray ends on the upper plane (Eq 14) ...
+LUXEL_FUNC vec3 hrcMergeOdd(HrcInterval ray, float weight, vec3 upperBeyond) {
+    return ray.radiance * weight + ray.transmittance * upperBeyond;
+}
+
+// ... on an even plane the near upper probe and the far one, reached by the double-length ray,
+// are merged first and then averaged (Eq 15-17).
+LUXEL_FUNC vec3 hrcMergeEven(vec3 upperNear, HrcInterval doubleRay, float weight, vec3 upperFar) {
+    const vec3 far = doubleRay.radiance * weight + doubleRay.transmittance * upperFar;
+    return (upperNear + far) * 0.5f;
+}
+
 // The first plane of cascade `level` at or beyond u + 1: the read-out plane one pixel ahead.
 LUXEL_FUNC int hrcReadoutPlane(int u, int level) {
     return (u + 1 + (1 << level) - 1) >> level;
