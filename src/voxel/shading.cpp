@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/core/parallel.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/voxel/surface_cast.h"
@@ -13,13 +14,16 @@
 namespace luxel::voxel {
 namespace {
 
-// 32-bit integer hash (Wellons' "lowbias32"), so the GPU shader computes the same bits.
-std::uint32_t mix(std::uint32_t h) {
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    return h ^ (h >> 16);
+namespace shared = gpu::shared;
+
+shared::vec3 toVec3(Rgb c) {
+    return {c.r, c.g, c.b};
+}
+Rgb toRgb(shared::vec3 v) {
+    return {v.x, v.y, v.z};
+}
+shared::ivec3 toIvec3(Int3 v) {
+    return {v.x, v.y, v.z};
 }
 
 Vec3d toDouble(Vec3 v) {
@@ -99,29 +103,19 @@ float reflectivityOf(const VoxelWorld& world, const TextureSet* textures, const 
 }  // namespace
 
 float faceFactor(Int3 normal, Vec3 sunDirection, float ambient, bool inShadow) {
-    float d = normal.x * sunDirection.x + normal.y * sunDirection.y + normal.z * sunDirection.z;
-    if (inShadow) d = std::min(d, 0.0f);
-    return std::min((d + 1.0f) * 0.5f + ambient, 1.0f);
+    return shared::voxelFaceFactor(
+        toIvec3(normal), {sunDirection.x, sunDirection.y, sunDirection.z}, ambient, inShadow);
 }
 
 Rgb skyColor(Vec3d direction, const ShadeOptions& options) {
     const double len = length(direction);
     const float s = len > 0.0 ? static_cast<float>(std::clamp(direction.y / len, 0.0, 1.0)) : 0.0f;
-    return options.skyHorizon + (options.skyTop - options.skyHorizon) * s;
+    return toRgb(shared::voxelSkyColor(toVec3(options.skyHorizon), toVec3(options.skyTop), s));
 }
 
 float textureFactor(const Hit& hit, const ShadeOptions& options) {
-    const int n = std::max(options.textureTexels, 1);
-    const int tu = std::min(static_cast<int>(hit.u * n), n - 1);
-    const int tv = std::min(static_cast<int>(hit.v * n), n - 1);
-    std::uint32_t h = mix(static_cast<std::uint32_t>(hit.voxel.x) * 0x9e3779b9u);
-    h = mix(h ^ static_cast<std::uint32_t>(hit.voxel.y));
-    h = mix(h ^ static_cast<std::uint32_t>(hit.voxel.z));
-    h = mix(h ^ static_cast<std::uint32_t>((hit.normal.x + 1) * 9 + (hit.normal.y + 1) * 3 +
-                                           (hit.normal.z + 1)));
-    h = mix(h ^ (static_cast<std::uint32_t>(tu) << 16) ^ static_cast<std::uint32_t>(tv));
-    const float noise = static_cast<float>(h >> 8) / static_cast<float>(1 << 24);  // [0, 1)
-    return 1.0f - std::clamp(options.textureStrength, 0.0f, 1.0f) * noise;
+    return shared::voxelTextureFactor(toIvec3(hit.voxel), toIvec3(hit.normal), hit.u, hit.v,
+                                      options.textureTexels, options.textureStrength);
 }
 
 Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& options,
@@ -137,7 +131,7 @@ Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& option
             if (k == 1) {
                 sum = s.colour;
             } else {
-                sum = (sum + s.colour * (1.0f / k)) * (static_cast<float>(k) / (k + 1));
+                sum = toRgb(shared::voxelRunningAverage(toVec3(sum), toVec3(s.colour), k));
             }
             if (!s.reflects) break;
             current = s.next;

@@ -1,5 +1,6 @@
 // Face textures: validation, PNG loading (core image_io) and nearest-texel lookup.
 #include "luxel/voxel/texture_set.h"
+#include "gpu/shaders/shared/voxel_shading.h"
 
 #include <algorithm>
 #include <array>
@@ -108,8 +109,9 @@ std::optional<int> TextureSet::find(const std::string& name) const {
 
 Texel TextureSet::lookup(int slot, float u, float v) const {
     const Texture& t = textures_[slot];
-    const int column = texelColumn(u, t.width);
-    const int row = t.height - 1 - texelColumn(v, t.height);
+    // The texel addressing the GPU shader runs (shared/voxel_shading.h).
+    const int column = gpu::shared::voxelTexelIndex(u, t.width);
+    const int row = t.height - 1 - gpu::shared::voxelTexelIndex(v, t.height);
     return t.texels[static_cast<std::size_t>(row) * t.width + column];
 }
 

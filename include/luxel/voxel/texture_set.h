@@ -71,11 +71,4 @@ class TextureSet {
     std::vector<Texture> textures_;
 };
 
-// The texel index lookup() reads, shared with the GPU shader's arithmetic: float products,
-// truncation, clamping to the last texel.
-constexpr int texelColumn(float u, int width) {
-    const int i = static_cast<int>(u * static_cast<float>(width));
-    return i < 0 ? 0 : (i >= width ? width - 1 : i);
-}
-
 }  // namespace luxel::voxel

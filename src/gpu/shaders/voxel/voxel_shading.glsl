@@ -1,26 +1,12 @@
-// Shading: a port of src/voxel/shading.cpp and src/voxel/surface_cast.cpp in float (face term,
-// sun shadow rays, procedural texture with the same 32-bit hash, PNG texels with cutouts, sky,
-// both reflection modes). Needs voxel_dda.glsl and the texture buffers.
-
-// Wellons' lowbias32, as mix() in shading.cpp.
-uint mixHash(uint h) {
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    return h ^ (h >> 16);
-}
+// Shading, the GPU side of src/voxel/shading.cpp and surface_cast.cpp in float: the terms
+// (face factor, sky, procedural texture and its hash, texel addressing, running average) are the
+// shared header shared/voxel_shading.h; this file holds the buffer glue, cutout continuation and
+// the bounce loop. Needs voxel_world_access.glsl and the texture buffers.
+#include "shared/voxel_shading.h"
 
 vec3 albedo(uint packed) {
     return vec3(srgbTable[packed & 0xffu], srgbTable[(packed >> 8) & 0xffu],
                 srgbTable[(packed >> 16) & 0xffu]);
-}
-
-float faceFactor(ivec3 n, vec3 sun, float ambient, bool inShadow) {
-    float d = float(n.x) * sun.x + float(n.y) * sun.y + float(n.z) * sun.z;
-    if (inShadow) d = min(d, 0.0);
-    float f = min((d + 1.0) * 0.5 + ambient, 1.0);
-    return f;
 }
 
 vec3 skyColor(vec3 direction) {
@@ -28,34 +14,19 @@ vec3 skyColor(vec3 direction) {
     const vec3 horizon = vec3(params.skyHorizonR, params.skyHorizonG, params.skyHorizonB);
     const float len = length(direction);
     const float s = len > 0.0 ? clamp(direction.y / len, 0.0, 1.0) : 0.0;
-    vec3 c = horizon + (top - horizon) * s;
-    return c;
+    return voxelSkyColor(horizon, top, s);
 }
 
 float textureFactor(Hit h) {
-    const int n = max(int(params.textureTexels), 1);
-    const int tu = min(int(h.u * float(n)), n - 1);
-    const int tv = min(int(h.v * float(n)), n - 1);
-    uint x = mixHash(uint(h.voxel.x) * 0x9e3779b9u);
-    x = mixHash(x ^ uint(h.voxel.y));
-    x = mixHash(x ^ uint(h.voxel.z));
-    x = mixHash(x ^ uint((h.normal.x + 1) * 9 + (h.normal.y + 1) * 3 + (h.normal.z + 1)));
-    x = mixHash(x ^ (uint(tu) << 16) ^ uint(tv));
-    const float noise = float(x >> 8) / float(1 << 24);
-    float f = 1.0 - clamp(params.textureStrength, 0.0, 1.0) * noise;
-    return f;
-}
-
-// texelColumn (texture_set.h).
-int texelIndex(float u, int size) {
-    return clamp(int(u * float(size)), 0, size - 1);
+    return voxelTextureFactor(h.voxel, h.normal, h.u, h.v, int(params.textureTexels),
+                              params.textureStrength);
 }
 
 vec4 lookupTexel(int slot, float u, float v) {
     const VoxelTextureInfo info = textureInfo[slot];
     const int w = int(info.width), h = int(info.height);
-    const int column = texelIndex(u, w);
-    const int row = h - 1 - texelIndex(v, h);
+    const int column = voxelTexelIndex(u, w);
+    const int row = h - 1 - voxelTexelIndex(v, h);
     return texels[info.texelOffset + uint(row * w + column)];
 }
 
@@ -174,7 +145,7 @@ Sample shadeSample(vec3 o, vec3 d) {
         if ((params.flags & LUXEL_VOXEL_SHADOWS) != 0u && hasNormal && dot(n, sun) > 0.0) {
             inShadow = castToSurface(h.point, normalize(sun)).hit.hit;
         }
-        colour = colour * faceFactor(h.normal, sun, params.ambient, inShadow);
+        colour = colour * voxelFaceFactor(h.normal, sun, params.ambient, inShadow);
     }
     s.colour = colour;
     if (hasNormal) {
@@ -202,7 +173,7 @@ vec3 shadeRay(vec3 o, vec3 d) {
             if (k == 1) {
                 sum = s.colour;
             } else {
-                sum = (sum + s.colour * (1.0 / float(k))) * (float(k) / float(k + 1));
+                sum = voxelRunningAverage(sum, s.colour, k);
             }
             if (!s.reflects) break;
             o = s.nextOrigin;
