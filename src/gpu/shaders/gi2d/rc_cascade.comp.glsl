@@ -16,6 +16,8 @@ layout(std430, set = 0, binding = 1) readonly buffer Upper { RgbTexel upper[]; }
 layout(std430, set = 0, binding = 2) writeonly buffer Current { RgbTexel current[]; };
 layout(push_constant) uniform Push { RcCascadeParams params; };
 
+#include "gi2d/march2d.glsl"
+
 struct Segment {
     vec3 radiance;
     vec3 transmittance;
@@ -48,30 +50,9 @@ Segment traceSegment(vec2 from, vec2 to) {
     }
     if (t0 >= t1) return s;
     const vec2 start = clamp(from + dir * t0, vec2(0.0), hi);
-    ivec2 cell = min(ivec2(floor(start)), ivec2(params.width - 1u, params.height - 1u));
-    const ivec2 stepDir = ivec2(dir.x > 0.0 ? 1 : -1, dir.y > 0.0 ? 1 : -1);
-    const vec2 inv = vec2(dir.x != 0.0 ? 1.0 / abs(dir.x) : 1e30, dir.y != 0.0 ? 1.0 / abs(dir.y) : 1e30);
-    vec2 next;
-    next.x = dir.x > 0.0 ? (float(cell.x + 1) - start.x) * inv.x
-           : dir.x < 0.0 ? (start.x - float(cell.x)) * inv.x : 1e30;
-    next.y = dir.y > 0.0 ? (float(cell.y + 1) - start.y) * inv.y
-           : dir.y < 0.0 ? (start.y - float(cell.y)) * inv.y : 1e30;
-    const float span = t1 - t0;
-    float t = 0.0;
-    while (t < span) {
-        if (cell.x < 0 || cell.y < 0 || cell.x >= int(params.width) || cell.y >= int(params.height)) break;
-        if (max(s.transmittance.x, max(s.transmittance.y, s.transmittance.z)) < 1e-6) break;
-        const float exit = min(min(next.x, next.y), span);
-        const MediumTexel m = medium[uint(cell.y) * params.width + uint(cell.x)];
-        const vec3 sigma = mediumSigma(m);
-        const vec3 emission = mediumEmission(m);
-        const vec3 tr = exp(-sigma * (exit - t));
-        s.radiance += s.transmittance * emission * (vec3(1.0) - tr);
-        s.transmittance *= tr;
-        t = exit;
-        if (next.x <= next.y) { cell.x += stepDir.x; next.x += inv.x; }
-        else { cell.y += stepDir.y; next.y += inv.y; }
-    }
+    const Marched m = marchMedium(start, dir, t1 - t0, params.width, params.height, 1e-6);
+    s.radiance = m.radiance;
+    s.transmittance = m.transmittance;
     return s;
 }
 
