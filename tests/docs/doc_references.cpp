@@ -89,6 +89,21 @@ void checkSections(const fs::path& markdown, const std::string& rest, const std:
     }
 }
 
+// Calls body(file, path relative to root, 1-based line number, line) for every line of the
+// scanned files, except the checker's own (its patterns and fixtures name missing files on
+// purpose).
+template <typename Body>
+void forEachScannedLine(const fs::path& root, Body&& body) {
+    for (const fs::path& file : filesUnder(root)) {
+        const std::string rel = fs::relative(file, root).generic_string();
+        if (rel.starts_with("tests/docs/doc_references")) continue;
+        const std::vector<std::string> lines = readLines(file);
+        for (std::size_t i = 0; i < lines.size(); ++i) {
+            body(file, rel, static_cast<int>(i + 1), lines[i]);
+        }
+    }
+}
+
 }  // namespace
 
 std::vector<std::string> numberedSections(const std::string& markdown) {
@@ -104,53 +119,47 @@ std::vector<std::string> numberedSections(const std::string& markdown) {
 
 std::vector<ReferenceProblem> findDanglingReferences(const fs::path& root) {
     std::vector<ReferenceProblem> out;
-    for (const fs::path& file : filesUnder(root)) {
-        const std::string rel = fs::relative(file, root).generic_string();
-        if (rel.starts_with("tests/docs/doc_references")) continue;  // the checker and its fixtures
-        const std::vector<std::string> lines = readLines(file);
-        for (std::size_t i = 0; i < lines.size(); ++i) {
-            if (lines[i].starts_with("#include")) continue;  // include paths, checked by the build
-            // Markdown links read as their targets ("[cones](algorithms/cones.md) §4" cites
-            // algorithms/cones.md §4); the link text is not a reference of its own.
-            const std::string line = file.extension() == ".md"
-                                         ? std::regex_replace(lines[i], kLinkWithText, "($1)")
-                                         : lines[i];
-            std::vector<std::string> problems;
-            auto check = [&](const std::string& target, std::size_t end) {
-                if (target.find("://") != std::string::npos || target.empty()) return;
-                auto found = resolve(root, file, target);
-                if (!found) {
-                    problems.push_back(target + " does not exist in the repository");
-                } else if (found->extension() == ".md") {
-                    checkSections(*found, line.substr(end), target, problems);
-                }
-            };
-            for (auto it = std::sregex_iterator(line.begin(), line.end(), kMarkdownName);
-                 it != std::sregex_iterator(); ++it) {
-                const std::size_t end = static_cast<std::size_t>(it->position(1) + it->length(1));
-                check((*it)[1].str(), end);
+    forEachScannedLine(root, [&](const fs::path& file, const std::string& rel, int lineNumber,
+                                 const std::string& text) {
+        if (text.starts_with("#include")) return;  // include paths, checked by the build
+        // Markdown links read as their targets ("[cones](algorithms/cones.md) §4" cites
+        // algorithms/cones.md §4); the link text is not a reference of its own.
+        const std::string line =
+            file.extension() == ".md" ? std::regex_replace(text, kLinkWithText, "($1)") : text;
+        std::vector<std::string> problems;
+        auto check = [&](const std::string& target, std::size_t end) {
+            if (target.find("://") != std::string::npos || target.empty()) return;
+            auto found = resolve(root, file, target);
+            if (!found) {
+                problems.push_back(target + " does not exist in the repository");
+            } else if (found->extension() == ".md") {
+                checkSections(*found, line.substr(end), target, problems);
             }
-            for (auto it = std::sregex_iterator(line.begin(), line.end(), kRepoPath);
+        };
+        for (auto it = std::sregex_iterator(line.begin(), line.end(), kMarkdownName);
+             it != std::sregex_iterator(); ++it) {
+            const std::size_t end = static_cast<std::size_t>(it->position(1) + it->length(1));
+            check((*it)[1].str(), end);
+        }
+        for (auto it = std::sregex_iterator(line.begin(), line.end(), kRepoPath);
+             it != std::sregex_iterator(); ++it) {
+            const std::string target = (*it)[1].str();
+            const bool absolute = it->position(1) > 0 && line[it->position(1) - 1] == '/';
+            if (!target.ends_with(".md") && !absolute) check(target, line.size());
+        }
+        if (file.extension() == ".md") {
+            for (auto it = std::sregex_iterator(text.begin(), text.end(), kMarkdownLink);
                  it != std::sregex_iterator(); ++it) {
                 const std::string target = (*it)[1].str();
-                const bool absolute = it->position(1) > 0 && line[it->position(1) - 1] == '/';
-                if (!target.ends_with(".md") && !absolute) check(target, line.size());
-            }
-            if (file.extension() == ".md") {
-                for (auto it =
-                         std::sregex_iterator(lines[i].begin(), lines[i].end(), kMarkdownLink);
-                     it != std::sregex_iterator(); ++it) {
-                    const std::string target = (*it)[1].str();
-                    if (!target.ends_with(".md")) check(target, line.size());
-                }
-            }
-            std::sort(problems.begin(), problems.end());
-            problems.erase(std::unique(problems.begin(), problems.end()), problems.end());
-            for (const std::string& p : problems) {
-                out.push_back({rel, static_cast<int>(i + 1), p});
+                if (!target.ends_with(".md")) check(target, line.size());
             }
         }
-    }
+        std::sort(problems.begin(), problems.end());
+        problems.erase(std::unique(problems.begin(), problems.end()), problems.end());
+        for (const std::string& p : problems) {
+            out.push_back({rel, lineNumber, p});
+        }
+    });
     return out;
 }
 
@@ -162,20 +171,15 @@ std::vector<ReferenceProblem> findUndefinedSeedWording(const fs::path& root) {
         std::regex::icase);
     static const std::regex identifier(R"(\bSeed[A-Z]\w*)");
     std::vector<ReferenceProblem> out;
-    for (const fs::path& file : filesUnder(root)) {
-        const std::string rel = fs::relative(file, root).generic_string();
-        if (rel.starts_with("tests/docs/doc_references")) continue;  // the checker and its fixtures
-        const std::vector<std::string> lines = readLines(file);
-        for (std::size_t i = 0; i < lines.size(); ++i) {
-            std::smatch m;
-            if (std::regex_search(lines[i], m, prototype) ||
-                std::regex_search(lines[i], m, identifier)) {
-                std::string message = m.str();
-                message += " names a prototype without saying which";
-                out.push_back({rel, static_cast<int>(i + 1), message});
-            }
+    forEachScannedLine(root, [&](const fs::path&, const std::string& rel, int lineNumber,
+                                 const std::string& text) {
+        std::smatch m;
+        if (std::regex_search(text, m, prototype) || std::regex_search(text, m, identifier)) {
+            std::string message = m.str();
+            message += " names a prototype without saying which";
+            out.push_back({rel, lineNumber, message});
         }
-    }
+    });
     return out;
 }
 

@@ -15,6 +15,7 @@
 #include "gi2d/hrc/hrc_geometry.h"
 #include "gi2d/hrc/ray_tables.h"
 #include "gi2d/hrc/readout.h"
+#include "gpu/random_medium.h"
 #include "luxel/core/half.h"
 #include "luxel/core/rng.h"
 #include "luxel/gi2d/ray_march.h"
@@ -40,18 +41,7 @@ class HrcPasses : public ::testing::Test {
 
 // Non-square, not a power of two, with partly transparent emitting pixels everywhere and a sky.
 Medium2D randomMedium(int w, int h, std::uint64_t seed) {
-    Medium2D m{Image(w, h, 3), Image(w, h, 3), Rgb(0.2f, 0.3f, 0.4f)};
-    Pcg32 rng(seed);
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            const bool wall = rng.nextFloat() < 0.05f;
-            m.absorption.setRgb(
-                x, y,
-                wall ? Rgb(50.0f) : Rgb(rng.nextFloat() * 0.5f, rng.nextFloat() * 0.1f, 0.2f));
-            m.emission.setRgb(x, y, Rgb(rng.nextFloat() * 3.0f, rng.nextFloat(), 0.5f));
-        }
-    }
-    return m;
+    return testing::randomMedium(w, h, seed, Rgb(0.2f, 0.3f, 0.4f));
 }
 
 // Largest |a - b| relative to max(1, |a|) over two float arrays of the same size.

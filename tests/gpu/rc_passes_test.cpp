@@ -10,6 +10,7 @@
 
 #include "gi2d/rc/rc_cascade_pass.h"
 #include "gpu/layout_check.h"
+#include "gpu/random_medium.h"
 #include "gpu/shaders/shared/rc_layout.h"
 #include "luxel/core/rng.h"
 #include "luxel/gi2d/ray_march.h"
@@ -18,18 +19,7 @@ namespace luxel::gi2d::rc {
 namespace {
 
 Medium2D randomMedium(int w, int h, std::uint64_t seed) {
-    Medium2D m{Image(w, h, 3), Image(w, h, 3), Rgb(0.3f, 0.2f, 0.1f)};
-    Pcg32 rng(seed);
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            const bool wall = rng.nextFloat() < 0.05f;
-            m.absorption.setRgb(
-                x, y,
-                wall ? Rgb(50.0f) : Rgb(rng.nextFloat() * 0.4f, rng.nextFloat() * 0.1f, 0.2f));
-            m.emission.setRgb(x, y, Rgb(rng.nextFloat() * 3.0f, rng.nextFloat(), 0.5f));
-        }
-    }
-    return m;
+    return testing::randomMedium(w, h, seed, Rgb(0.3f, 0.2f, 0.1f));
 }
 
 TEST(RcPasses, CascadePassMatchesTheCpuTwinAtEveryLevel) {
