@@ -1,56 +1,17 @@
 // Cutout-aware ray casting: castRay, restarted past every cutout texel (see surface_cast.h).
 #include "luxel/voxel/surface_cast.h"
 
-#include <algorithm>
-#include <cmath>
+#include "voxel/voxel_world_access.h"
 
 namespace luxel::voxel {
 
 Ray continueThroughVoxel(const Ray& ray, const Hit& hit) {
-    const Vec3d& o = ray.origin;
-    const Vec3d& d = ray.direction;
-    const Int3 cell = hit.voxel;
-    const auto boundary = [&](int a) {
-        return static_cast<double>(cell[a] + (d[a] > 0.0 ? 1 : 0));
-    };
-    // The axis the DDA steps next: the smallest exit t, lowest axis on ties (dda.cpp's order).
-    double exitOf[3] = {kInfinity, kInfinity, kInfinity};
-    int exitAxis = -1;
-    for (int a = 0; a < 3; ++a) {
-        if (d[a] == 0.0) continue;
-        exitOf[a] = (boundary(a) - o[a]) / d[a];
-        if (exitAxis < 0 || exitOf[a] < exitOf[exitAxis]) exitAxis = a;
-    }
-    Ray next = ray;
-    if (exitAxis < 0) return next;  // zero direction: castRay misses it anyway
-    const double tExit = exitOf[exitAxis];
-    double previous = 0.0;
-    for (int a = 0; a < 3; ++a) {
-        const double lo = cell[a], hi = cell[a] + 1.0;
-        double p = d[a] == 0.0 ? o[a] : o[a] + tExit * d[a];
-        if (a == exitAxis) {
-            p = boundary(a);  // on the boundary: castRay starts in the neighbour
-        } else if (d[a] != 0.0 && exitOf[a] == tExit) {
-            // A tie (the ray leaves through an edge or a corner): the DDA steps this axis right
-            // after the exit axis, higher axes later. Start just inside the boundary, far enough
-            // that the restarted traversal crosses it after the previous tied axis.
-            const double inside = d[a] > 0.0 ? lo : hi;
-            // Start where the ray is at t = previous (ulp steps near 0 are too small to walk).
-            p = boundary(a) - previous * d[a];
-            double t = 0.0;
-            do {
-                p = std::nextafter(p, inside);
-                t = (boundary(a) - p) / d[a];
-            } while (!(t > previous));
-            previous = t;
-        } else if (d[a] > 0.0) {
-            p = std::clamp(p, lo, std::nextafter(hi, lo));  // hi would start one cell on
-        } else if (d[a] < 0.0) {
-            p = std::clamp(p, std::nextafter(lo, hi), hi);  // lo would start one cell lower
-        }
-        next.origin[a] = p;
-    }
-    return next;
+    // The shared kernel (src/gpu/shaders/shared/voxel_dda.h), as the GPU runs it.
+    const gpu::shared::dvec3 next =
+        gpu::shared::voxelContinueThrough({ray.origin.x, ray.origin.y, ray.origin.z},
+                                          {ray.direction.x, ray.direction.y, ray.direction.z},
+                                          {hit.voxel.x, hit.voxel.y, hit.voxel.z});
+    return {{next.x, next.y, next.z}, ray.direction};
 }
 
 SurfaceHit castToSurface(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,

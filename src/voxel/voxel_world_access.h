@@ -4,6 +4,7 @@
 #pragma once
 
 #include <bit>
+#include <cmath>
 #include <cstdint>
 
 #include "gpu/shaders/shared/glsl_compat.h"
@@ -39,6 +40,10 @@ inline bool voxelChunkEmpty(const voxel::VoxelWorld& w, ivec3 cell) {
 
 inline bool voxelSolidAt(const voxel::VoxelWorld& w, ivec3 cell) {
     return w.solid(cell.x, cell.y, cell.z);
+}
+
+inline double voxelNextToward(double x, double toward) {
+    return std::nextafter(x, toward);
 }
 
 }  // namespace luxel::gpu::shared

@@ -16,6 +16,8 @@
 //     int  voxelBrickDistance(LUXEL_VOXEL_WORLD w, ivec3 brick)        empty-space distance
 //     bool voxelChunkEmpty(LUXEL_VOXEL_WORLD w, ivec3 cell)            chunk holding `cell`
 //     bool voxelSolidAt(LUXEL_VOXEL_WORLD w, ivec3 cell)               alpha != 0
+// - LUXEL_REAL voxelNextToward(LUXEL_REAL x, LUXEL_REAL toward): the next representable value
+//   (std::nextafter in C++).
 #ifndef LUXEL_GPU_SHARED_VOXEL_DDA_H
 #define LUXEL_GPU_SHARED_VOXEL_DDA_H
 
@@ -315,6 +317,54 @@ LUXEL_FUNC VoxelSurface voxelSurface(LUXEL_REAL3 o, LUXEL_REAL3 d, VoxelTrace tr
     s.u = voxelFaceFraction(s.point[uAxis], trace.cell[uAxis]);
     s.v = voxelFaceFraction(s.point[vAxis], trace.cell[vAxis]);
     return s;
+}
+
+// Where a ray o + t d restarts after passing through `cell` (a cutout texel lets it through):
+// the point where it leaves the cell, placed so the traversal started there enters the neighbour
+// the per-voxel loop would, with edge and corner ties kept in its axis order (x, then y, then z).
+LUXEL_FUNC LUXEL_REAL3 voxelContinueThrough(LUXEL_REAL3 o, LUXEL_REAL3 d, ivec3 cell) {
+    LUXEL_REAL exitOf[3];
+    int exitAxis = -1;
+    for (int a = 0; a < 3; ++a) {
+        exitOf[a] = LUXEL_REAL(LUXEL_INFINITY);
+        if (d[a] == LUXEL_REAL(0)) continue;
+        exitOf[a] = (LUXEL_REAL(cell[a] + (d[a] > LUXEL_REAL(0) ? 1 : 0)) - o[a]) / d[a];
+        if (exitAxis < 0 || exitOf[a] < exitOf[exitAxis]) exitAxis = a;
+    }
+    if (exitAxis < 0) return o;  // zero direction: the traversal misses it anyway
+    const LUXEL_REAL tExit = exitOf[exitAxis];
+    LUXEL_REAL previous = LUXEL_REAL(0);
+    LUXEL_REAL3 next = o;
+    for (int a = 0; a < 3; ++a) {
+        const LUXEL_REAL lo = LUXEL_REAL(cell[a]);
+        const LUXEL_REAL hi = LUXEL_REAL(cell[a] + 1);
+        const LUXEL_REAL boundary = LUXEL_REAL(cell[a] + (d[a] > LUXEL_REAL(0) ? 1 : 0));
+        LUXEL_REAL p = d[a] == LUXEL_REAL(0) ? o[a] : o[a] + tExit * d[a];
+        if (a == exitAxis) {
+            p = boundary;  // on the boundary: the traversal starts in the neighbour
+        } else if (d[a] != LUXEL_REAL(0) && exitOf[a] == tExit) {
+            // A tie (the ray leaves through an edge or a corner): the traversal steps this axis
+            // right after the exit axis, higher axes later. Start just inside the boundary, far
+            // enough that the restarted traversal crosses it after the previous tied axis,
+            // beginning where the ray is at t = previous. Bounded: a flushed denormal on the GPU
+            // could otherwise stall the walk.
+            const LUXEL_REAL inside = d[a] > LUXEL_REAL(0) ? lo : hi;
+            p = boundary - previous * d[a];
+            LUXEL_REAL t = LUXEL_REAL(0);
+            for (int i = 0; i < 64; ++i) {
+                p = voxelNextToward(p, inside);
+                t = (boundary - p) / d[a];
+                if (t > previous) break;
+            }
+            previous = t;
+        } else if (d[a] > LUXEL_REAL(0)) {
+            p = clamp(p, lo, voxelNextToward(hi, lo));  // hi would start one cell on
+        } else if (d[a] < LUXEL_REAL(0)) {
+            p = clamp(p, voxelNextToward(lo, hi), hi);  // lo would start one cell lower
+        }
+        next[a] = p;
+    }
+    return next;
 }
 
 LUXEL_SHARED_END

@@ -36,57 +36,6 @@ struct SurfaceHit {
     vec4 texel;
 };
 
-float nextDown(float x) {
-    return x > 0.0 ? uintBitsToFloat(floatBitsToUint(x) - 1u) : x;
-}
-float nextUp(float x) {
-    return x >= 0.0 ? uintBitsToFloat(floatBitsToUint(x) + 1u) : x;
-}
-
-float boundaryOf(ivec3 cell, vec3 d, int a) {
-    return float(cell[a] + (d[a] > 0.0 ? 1 : 0));
-}
-
-// continueThroughVoxel (surface_cast.cpp): the origin of the ray `o + t d` restarted where it
-// leaves `cell`, with edge and corner ties kept in the DDA's axis order.
-vec3 continueThroughVoxel(vec3 o, vec3 d, ivec3 cell) {
-    vec3 exitOf = vec3(LUXEL_INFINITY);
-    int exitAxis = -1;
-    for (int a = 0; a < 3; ++a) {
-        if (d[a] == 0.0) continue;
-        exitOf[a] = (boundaryOf(cell, d, a) - o[a]) / d[a];
-        if (exitAxis < 0 || exitOf[a] < exitOf[exitAxis]) exitAxis = a;
-    }
-    if (exitAxis < 0) return o;
-    const float tExit = exitOf[exitAxis];
-    float previous = 0.0;
-    vec3 next;
-    for (int a = 0; a < 3; ++a) {
-        const float lo = float(cell[a]), hi = float(cell[a]) + 1.0;
-        float p = d[a] == 0.0 ? o[a] : o[a] + tExit * d[a];
-        if (a == exitAxis) {
-            p = boundaryOf(cell, d, a);
-        } else if (d[a] != 0.0 && exitOf[a] == tExit) {
-            const float boundary = boundaryOf(cell, d, a);
-            p = boundary - previous * d[a];
-            float t = 0.0;
-            // Bounded: a flushed denormal could otherwise stall the walk.
-            for (int i = 0; i < 64; ++i) {
-                p = d[a] > 0.0 ? nextDown(p) : nextUp(p);
-                t = (boundary - p) / d[a];
-                if (t > previous) break;
-            }
-            previous = t;
-        } else if (d[a] > 0.0) {
-            p = clamp(p, lo, nextDown(hi));
-        } else if (d[a] < 0.0) {
-            p = clamp(p, nextUp(lo), hi);
-        }
-        next[a] = p;
-    }
-    return next;
-}
-
 // castToSurface (surface_cast.cpp): past cutout texels, at most LUXEL_VOXEL_MAX_CUTOUTS times.
 SurfaceHit castToSurface(vec3 o, vec3 d) {
     SurfaceHit s = SurfaceHit(missHit(), -1, vec4(1.0));
@@ -108,7 +57,7 @@ SurfaceHit castToSurface(vec3 o, vec3 d) {
             s.slot = -1;
             return s;
         }
-        origin = continueThroughVoxel(o, d, s.hit.voxel);
+        origin = voxelContinueThrough(o, d, s.hit.voxel);
     }
     return s;
 }

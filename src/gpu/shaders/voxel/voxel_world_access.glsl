@@ -56,6 +56,13 @@ bool voxelSolidAt(uint world, ivec3 cell) {
     return (voxelValue(cell) >> 24) != 0u;
 }
 
+// Next float towards `toward` for the non-negative coordinates of the world box (a negative
+// value is returned unchanged; the walk that uses it is bounded).
+float voxelNextToward(float x, float toward) {
+    if (toward < x) return x > 0.0 ? uintBitsToFloat(floatBitsToUint(x) - 1u) : x;
+    return x >= 0.0 ? uintBitsToFloat(floatBitsToUint(x) + 1u) : x;
+}
+
 #include "shared/voxel_dda.h"
 
 // A hit as the shading code reads it (dda.h's Hit in float).
