@@ -1,7 +1,8 @@
 // Shading, the GPU side of src/voxel/shading.cpp and surface_cast.cpp in float: the terms
 // (face factor, sky, procedural texture and its hash, texel addressing, running average) are the
-// shared header shared/voxel_shading.h; this file holds the buffer glue, cutout continuation and
-// the bounce loop. Needs voxel_world_access.glsl and the texture buffers.
+// shared header shared/voxel_shading.h and the cutout restart point is voxelContinueThrough in
+// shared/voxel_dda.h; this file holds the buffer glue, the cutout loop and the bounce loop.
+// Needs voxel_world_access.glsl and the texture buffers.
 #include "shared/voxel_shading.h"
 
 vec3 albedo(uint packed) {
