@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
     std::unique_ptr<ViewerMode> mode;
     int windowW = o.windowWidth, windowH = o.windowHeight;
     // The backend policy of the CLI (luxel/gpu/backend_policy.h): --backend gpu needs a device.
-    if (o.backend == "gpu") {
+    if (o.backend == gpu::Backend::Gpu) {
         auto opened = gpu::openBackend(gpu::Backend::Gpu, {o.device, false});
         if (!opened) return fail(opened.error().message());
     }
@@ -94,13 +94,13 @@ int main(int argc, char** argv) {
                 fitWithin(scene->camera.width(), scene->camera.height(), 1280, 720);
         }
         std::unique_ptr<VoxelFrameSource> source;
-        if (o.backend != "cpu") {
+        if (o.backend != gpu::Backend::Cpu) {
             // auto takes hardware GPUs only, like the CLI; gpu also accepts lavapipe.
-            auto gpuSource = makeGpuVoxelFrameSource(o.device, o.backend == "auto", scene->world,
-                                                     scene->textures);
+            auto gpuSource = makeGpuVoxelFrameSource(o.device, o.backend == gpu::Backend::Auto,
+                                                     scene->world, scene->textures);
             if (gpuSource) {
                 source = std::move(*gpuSource);
-            } else if (o.backend == "gpu") {
+            } else if (o.backend == gpu::Backend::Gpu) {
                 std::fprintf(stderr, "luxel-view: note: using the CPU backend (%s)\n",
                              gpuSource.error().message().c_str());
             }
@@ -121,11 +121,12 @@ int main(int argc, char** argv) {
             std::tie(windowW, windowH) = fitWithin(scene->width, scene->height, 1280, 900);
         // With a hardware GPU the canvas (up to 512 px) renders interactively; HRC on a 2-core
         // CPU manages about 20 frames per second at 128 px on the long side.
-        const int side = o.backend != "cpu" && hasHardwareGpu() ? 512 : 128;
+        const int side = o.backend != gpu::Backend::Cpu && hasHardwareGpu() ? 512 : 128;
         const auto internal = internalSize(o, scene->width, scene->height,
                                            fitWithin(scene->width, scene->height, side, side));
         Mode2DSettings settings;
-        settings.view.solver = parseSolver(o.solver);
+        settings.view.solver = o.solver;
+        settings.view.merge = o.merge;
         settings.view.backend = o.backend;
         settings.view.device = o.device;
         settings.view.exposure = o.exposure;

@@ -17,9 +17,42 @@ namespace {
 constexpr Rgb kLightColours[5] = {
     {1.0f, 0.15f, 0.1f}, {0.15f, 1.0f, 0.2f}, {0.15f, 0.3f, 1.0f}, {1.0f, 0.9f, 0.2f}, {1, 1, 1}};
 
-constexpr Solver2D kSolvers[] = {Solver2D::Hrc, Solver2D::RcVanilla, Solver2D::RcFix,
-                                 Solver2D::Reference};
-constexpr const char* kBackends[] = {"auto", "cpu", "gpu"};
+// What the G key cycles through and the panel offers: each solver, RC with both merges.
+struct SolverSetting {
+    gi2d::Solver2D solver;
+    gi2d::RcMerge merge;
+    const char* label;
+};
+constexpr SolverSetting kSolvers[] = {
+    {gi2d::Solver2D::Hrc, gi2d::RcMerge::Vanilla, "HRC"},
+    {gi2d::Solver2D::Rc, gi2d::RcMerge::Vanilla, "RC vanilla"},
+    {gi2d::Solver2D::Rc, gi2d::RcMerge::BilinearFix, "RC bilinear fix"},
+    {gi2d::Solver2D::Reference, gi2d::RcMerge::Vanilla, "reference"},
+};
+constexpr int kSolverCount = static_cast<int>(std::size(kSolvers));
+
+int solverIndex(const View2D& view) {
+    for (int i = 0; i < kSolverCount; ++i) {
+        const SolverSetting& s = kSolvers[i];
+        if (s.solver == view.solver && (s.solver != gi2d::Solver2D::Rc || s.merge == view.merge))
+            return i;
+    }
+    return 0;
+}
+
+void chooseSolver(View2D& view, int index) {
+    view.solver = kSolvers[index].solver;
+    if (view.solver == gi2d::Solver2D::Rc) view.merge = kSolvers[index].merge;
+    view.cascade = -1;
+}
+
+constexpr gpu::Backend kBackends[] = {gpu::Backend::Auto, gpu::Backend::Cpu, gpu::Backend::Gpu};
+constexpr const char* kBackendLabels[] = {"auto", "cpu", "gpu"};
+
+int backendIndex(gpu::Backend backend) {
+    return static_cast<int>(std::find(std::begin(kBackends), std::end(kBackends), backend) -
+                            std::begin(kBackends));
+}
 
 }  // namespace
 
@@ -60,7 +93,7 @@ void Mode2D::handleKey(const SDL_KeyboardEvent& key) {
             view_.gi = !view_.gi;
             break;
         case SDLK_c: {
-            const int n = cascadeCount(view_.solver, view_.width, view_.height);
+            const int n = cascadeCount(view_);
             view_.cascade = view_.cascade + 1 >= n ? -1 : view_.cascade + 1;
             break;
         }
@@ -79,18 +112,12 @@ void Mode2D::handleKey(const SDL_KeyboardEvent& key) {
             lit->material.emission = kLightColours[k - SDLK_1];
             sceneChanged();
             return;
-        case SDLK_g: {
-            const auto* it = std::find(std::begin(kSolvers), std::end(kSolvers), view_.solver);
-            view_.solver = kSolvers[(it - std::begin(kSolvers) + 1) % std::size(kSolvers)];
-            view_.cascade = -1;
+        case SDLK_g:
+            chooseSolver(view_, (solverIndex(view_) + 1) % kSolverCount);
             break;
-        }
-        case SDLK_b: {
-            int i = 0;
-            while (i < 3 && view_.backend != kBackends[i]) ++i;
-            view_.backend = kBackends[(i + 1) % 3];
+        case SDLK_b:
+            view_.backend = kBackends[(backendIndex(view_.backend) + 1) % 3];
             break;
-        }
         case SDLK_LEFTBRACKET:
             view_.exposure -= 0.5f;
             break;
@@ -211,17 +238,15 @@ Status Mode2D::save() {
 }
 
 void Mode2D::drawPanel() {
-    int solver = static_cast<int>(
-        std::find(std::begin(kSolvers), std::end(kSolvers), view_.solver) - std::begin(kSolvers));
-    const char* solverLabels[] = {"HRC", "RC vanilla", "RC bilinear fix", "reference"};
-    if (ImGui::Combo("solver (G)", &solver, solverLabels, 4)) {
-        view_.solver = kSolvers[solver];
-        view_.cascade = -1;
+    int solver = solverIndex(view_);
+    const char* solverLabels[kSolverCount];
+    for (int i = 0; i < kSolverCount; ++i) solverLabels[i] = kSolvers[i].label;
+    if (ImGui::Combo("solver (G)", &solver, solverLabels, kSolverCount)) {
+        chooseSolver(view_, solver);
         viewChanged();
     }
-    int backend = 0;
-    while (backend < 3 && view_.backend != kBackends[backend]) ++backend;
-    if (ImGui::Combo("backend (B)", &backend, kBackends, 3)) {
+    int backend = backendIndex(view_.backend);
+    if (ImGui::Combo("backend (B)", &backend, kBackendLabels, 3)) {
         view_.backend = kBackends[backend];
         viewChanged();
     }
@@ -231,7 +256,7 @@ void Mode2D::drawPanel() {
     if (ImGui::Checkbox("GI (R)", &view_.gi)) viewChanged();
     ImGui::SameLine();
     if (ImGui::Checkbox("probes (SPACE)", &view_.probes)) viewChanged();
-    const int cascades = cascadeCount(view_.solver, view_.width, view_.height);
+    const int cascades = cascadeCount(view_);
     if (cascades > 0 && ImGui::SliderInt("cascade (C)", &view_.cascade, -1, cascades - 1,
                                          view_.cascade < 0 ? "fluence" : "cascade %d")) {
         viewChanged();

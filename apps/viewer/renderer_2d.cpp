@@ -25,8 +25,7 @@ constexpr int kSupersample = 4;
 
 gi2d::RcOptions rcOptionsFor(const View2D& view) {
     gi2d::RcOptions options;
-    options.merge =
-        view.solver == Solver2D::RcFix ? gi2d::RcMerge::BilinearFix : gi2d::RcMerge::Vanilla;
+    options.merge = view.merge;
     options.debugCascade = view.cascade;
     return options;
 }
@@ -87,38 +86,14 @@ std::vector<PassTime> groupTimings(const std::vector<gpu::PassTiming>& timings) 
 
 }  // namespace
 
-const char* solverName(Solver2D solver) {
-    switch (solver) {
-        case Solver2D::Hrc:
-            return "hrc";
-        case Solver2D::RcVanilla:
-            return "rc";
-        case Solver2D::RcFix:
-            return "rc-fix";
-        case Solver2D::Reference:
-            return "reference";
-    }
-    return "?";
-}
-
-Solver2D parseSolver(const std::string& name) {
-    for (Solver2D s : {Solver2D::Hrc, Solver2D::RcVanilla, Solver2D::RcFix, Solver2D::Reference}) {
-        if (name == solverName(s)) return s;
-    }
-    return Solver2D::Hrc;
-}
-
-int cascadeCount(Solver2D solver, int width, int height) {
-    switch (solver) {
-        case Solver2D::Hrc:
-            return gi2d::hrcCascadeCount(width, height);
-        case Solver2D::RcVanilla:
-        case Solver2D::RcFix: {
-            View2D view;
-            view.solver = solver;
-            return static_cast<int>(gi2d::rcCascades(width, height, rcOptionsFor(view)).size());
-        }
-        case Solver2D::Reference:
+int cascadeCount(const View2D& view) {
+    switch (view.solver) {
+        case gi2d::Solver2D::Hrc:
+            return gi2d::hrcCascadeCount(view.width, view.height);
+        case gi2d::Solver2D::Rc:
+            return static_cast<int>(
+                gi2d::rcCascades(view.width, view.height, rcOptionsFor(view)).size());
+        case gi2d::Solver2D::Reference:
             return 0;
     }
     return 0;
@@ -134,8 +109,8 @@ void Renderer2D::setState(State2D&& state) {
         a.height != b.height) {
         mediumDirty_ = true;
     }
-    if (mediumDirty_ || a.solver != b.solver || a.backend != b.backend || a.gi != b.gi ||
-        a.cascade != b.cascade || a.device != b.device) {
+    if (mediumDirty_ || a.solver != b.solver || a.merge != b.merge || a.backend != b.backend ||
+        a.gi != b.gi || a.cascade != b.cascade || a.device != b.device) {
         fluenceDirty_ = true;
     }
     displayDirty_ = true;
@@ -145,13 +120,13 @@ void Renderer2D::setState(State2D&& state) {
 bool Renderer2D::hasMoreWork() const {
     if (!state_.scene) return false;
     if (mediumDirty_ || fluenceDirty_ || displayDirty_) return true;
-    return state_.view.gi && state_.view.solver == Solver2D::Reference &&
+    return state_.view.gi && state_.view.solver == gi2d::Solver2D::Reference &&
            reference_.passes() < referenceTargetPasses_;
 }
 
 gpu::Context* Renderer2D::gpuFor(const View2D& view) {
-    if (view.backend == "cpu") return nullptr;
-    if (view.solver == Solver2D::Reference) {
+    if (view.backend == gpu::Backend::Cpu) return nullptr;
+    if (view.solver == gi2d::Solver2D::Reference) {
         note_ = "the reference solver runs on the CPU";
         return nullptr;
     }
@@ -175,7 +150,7 @@ gpu::Context* Renderer2D::gpuFor(const View2D& view) {
         return nullptr;
     }
     // The backend policy (luxel/gpu/backend_policy.h): auto skips software devices.
-    if (view.backend == "auto" && !gpu::autoUsesDevice(gpu_->device())) {
+    if (view.backend == gpu::Backend::Auto && !gpu::autoUsesDevice(gpu_->device())) {
         note_ = "auto: skipped the software Vulkan device " + gpu_->device().name;
         return nullptr;
     }
@@ -198,21 +173,20 @@ Status Renderer2D::solve(Frame& frame) {
     std::vector<gpu::PassTiming> timings;
     Result<Image> fluence = Image();
     switch (view.solver) {
-        case Solver2D::Hrc: {
+        case gi2d::Solver2D::Hrc: {
             gi2d::HrcOptions options;
             options.debugCascade = view.cascade;
             fluence = gpu ? gi2d::solveHrcOnGpu(*gpu, medium_, options, &timings)
                           : gi2d::solveHrc(medium_, options);
             break;
         }
-        case Solver2D::RcVanilla:
-        case Solver2D::RcFix: {
+        case gi2d::Solver2D::Rc: {
             const gi2d::RcOptions options = rcOptionsFor(view);
             fluence = gpu ? gi2d::solveRcOnGpu(*gpu, medium_, options, &timings)
                           : gi2d::solveRc(medium_, options);
             break;
         }
-        case Solver2D::Reference: {
+        case gi2d::Solver2D::Reference: {
             if (Status s = reference_.addPass(medium_); !s) return s;
             fluence = reference_.mean();
             frame.samples = reference_.raysPerPixel();
@@ -225,7 +199,7 @@ Status Renderer2D::solve(Frame& frame) {
     if (!timings.empty()) {
         frame.passes = groupTimings(timings);
     } else {
-        frame.passes.push_back({solverName(view.solver), clock.milliseconds()});
+        frame.passes.push_back({gi2d::solverName(view.solver), clock.milliseconds()});
     }
     return Ok{};
 }
@@ -249,18 +223,18 @@ Frame Renderer2D::step() {
         last_.passes.clear();
         last_.passes.push_back({"raster", clock.milliseconds()});
     }
-    const bool refining = view.gi && view.solver == Solver2D::Reference &&
+    const bool refining = view.gi && view.solver == gi2d::Solver2D::Reference &&
                           reference_.passes() < referenceTargetPasses_;
     if (fluenceDirty_ || refining) {
         if (fluenceDirty_) reference_.reset();
         fluenceDirty_ = false;
         Frame solved;
         if (Status s = solve(solved); !s) {
-            solved.note = std::string(solverName(view.solver)) + ": " + s.error().message();
+            solved.note = std::string(gi2d::solverName(view.solver)) + ": " + s.error().message();
             fluence_ = Image(medium_.width(), medium_.height(), 3);
             reference_ = ProgressiveReference();
             referenceTargetPasses_ = 0;  // stop refining a failing solve
-        } else if (view.solver == Solver2D::Reference) {
+        } else if (view.solver == gi2d::Solver2D::Reference) {
             referenceTargetPasses_ = 256;
         }
         if (solved.note.empty()) solved.note = note_;

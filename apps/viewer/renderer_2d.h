@@ -10,21 +10,20 @@
 #include "frame.h"
 #include "luxel/gi2d/medium2d.h"
 #include "luxel/gi2d/scene2d.h"
+#include "luxel/gi2d/solver_choice.h"
+#include "luxel/gpu/backend_policy.h"
 #include "luxel/gpu/fwd.h"
 #include "progressive_reference.h"
 
 namespace luxel::viewer {
 
-enum class Solver2D { Hrc, RcVanilla, RcFix, Reference };
-const char* solverName(Solver2D solver);        // "hrc", "rc", "rc-fix", "reference"
-Solver2D parseSolver(const std::string& name);  // names from solverName; unknown -> Hrc
-
 struct View2D {
-    Solver2D solver = Solver2D::Hrc;
-    std::string backend = "auto";  // auto | cpu | gpu
-    std::string device;            // Vulkan device choice (ContextOptions::device)
-    bool gi = true;                // false: emission only (the raylib demo's R)
-    bool probes = false;           // mark probe centres (the raylib demo's SPACE)
+    gi2d::Solver2D solver = gi2d::Solver2D::Hrc;
+    gi2d::RcMerge merge = gi2d::RcMerge::Vanilla;  // RC only
+    gpu::Backend backend = gpu::Backend::Auto;
+    std::string device;     // Vulkan device choice (ContextOptions::device)
+    bool gi = true;         // false: emission only (the raylib demo's R)
+    bool probes = false;    // mark probe centres (the raylib demo's SPACE)
     int cascade = -1;       // >= 0: show that cascade instead of the fluence (the raylib demo's C)
     float exposure = 0.0f;  // stops
     int width = 256, height = 256;  // internal resolution
@@ -36,8 +35,8 @@ struct State2D {
     View2D view;
 };
 
-// Cascades the C key cycles through for this solver and size (0 for the reference solver).
-int cascadeCount(Solver2D solver, int width, int height);
+// Cascades the C key cycles through for this view's solver and size (0 for the reference solver).
+int cascadeCount(const View2D& view);
 
 class Renderer2D {
   public:

@@ -18,7 +18,7 @@ Result<std::pair<int, int>> parseWindowSize(const std::string& text, const std::
 Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
     ParsedOptions parsed;
     ViewerOptions& o = parsed.options;
-    std::string size, internalSize;
+    std::string size, internalSize, backend = "auto", solver = "hrc", merge = "vanilla";
     CLI::App app{"luxel-view: interactive 2D radiance cascades and voxel viewer", "luxel-view"};
     app.add_option("scene", o.scene, "2D scene (.json) or voxel scene (\"type\": \"voxel\")")
         ->required();
@@ -27,11 +27,10 @@ Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
     app.add_option("--internal-scale", o.internalScale,
                    "render size as a fraction of the canvas (2D) or window (voxel)")
         ->check(CLI::Range(0.05f, 4.0f));
-    app.add_option("--backend", o.backend, "auto | cpu | gpu")
-        ->check(CLI::IsMember({"auto", "cpu", "gpu"}));
+    app.add_option("--backend", backend, "auto | cpu | gpu");
     app.add_option("--device", o.device, "Vulkan device index or name part");
-    app.add_option("--solver", o.solver, "2D solver: hrc | rc | rc-fix | reference")
-        ->check(CLI::IsMember({"hrc", "rc", "rc-fix", "reference"}));
+    app.add_option("--solver", solver, "2D solver: hrc | rc | reference");
+    app.add_option("--merge", merge, "2D RC merge: vanilla | bilinear-fix");
     app.add_option("--exposure", o.exposure, "exposure in stops");
     app.add_option("--script", o.script, "timed input events (docs/viewer.md)");
     app.add_option("--record", o.recordFrames, "write the next N rendered frames as PNG")
@@ -51,6 +50,17 @@ Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
     } catch (const CLI::ParseError& e) {
         return Error(e.what());
     }
+    // The names the CLI accepts, parsed by the same functions (luxel/gi2d/solver_choice.h,
+    // luxel/gpu/backend_policy.h).
+    auto parsedBackend = gpu::parseBackend(backend);
+    if (!parsedBackend) return parsedBackend.error();
+    auto parsedSolver = gi2d::parseSolver2D(solver);
+    if (!parsedSolver) return parsedSolver.error();
+    auto parsedMerge = gi2d::parseRcMerge(merge);
+    if (!parsedMerge) return parsedMerge.error();
+    o.backend = *parsedBackend;
+    o.solver = *parsedSolver;
+    o.merge = *parsedMerge;
     if (!size.empty()) {
         auto s = parseWindowSize(size, "--size");
         if (!s) return s.error();

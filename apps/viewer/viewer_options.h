@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "luxel/core/error.h"
+#include "luxel/gi2d/solver_choice.h"
+#include "luxel/gpu/backend_policy.h"
 
 namespace luxel::viewer {
 
@@ -15,12 +17,13 @@ struct ViewerOptions {
     int internalWidth = 0;  // 0: from internalScale
     int internalHeight = 0;
     float internalScale = 0.0f;  // 0: the mode's default (2D: of the canvas; voxel: of the window)
-    std::string backend = "auto";  // auto | cpu | gpu
-    std::string device;            // Vulkan device index or name part
-    std::string solver = "hrc";    // 2D: hrc | rc | rc-fix | reference
-    float exposure = 0.0f;         // stops
-    std::string script;            // timed input events (docs/viewer.md)
-    int recordFrames = 0;          // --record N
+    gpu::Backend backend = gpu::Backend::Auto;     // --backend auto | cpu | gpu
+    std::string device;                            // Vulkan device index or name part
+    gi2d::Solver2D solver = gi2d::Solver2D::Hrc;   // 2D: --solver hrc | rc | reference
+    gi2d::RcMerge merge = gi2d::RcMerge::Vanilla;  // 2D RC: --merge vanilla | bilinear-fix
+    float exposure = 0.0f;                         // stops
+    std::string script;                            // timed input events (docs/viewer.md)
+    int recordFrames = 0;                          // --record N
     std::string recordDir = "frames";
     std::string savePath;  // paint mode saves here (default: SCENE stem + ".painted.json")
     int threads = 0;       // solver threads (0: all)

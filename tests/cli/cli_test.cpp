@@ -172,7 +172,12 @@ TEST_F(Cli, MissingFiles) {
 
 TEST_F(Cli, OtherBadArguments) {
     const std::string scene = write("small.json", kSmallScene);
-    expectError("render " + scene + " --solver magic --out " + path("x.exr"), "unknown solver");
+    expectError("render " + scene + " --solver magic --out " + path("x.exr"),
+                "--solver 'magic' is not one of: reference, hrc, rc");
+    expectError("render " + scene + " --solver rc --merge nearest --out " + path("x.exr"),
+                "--merge 'nearest' is not one of: vanilla, bilinear-fix");
+    expectError("info " + scene + " --solver magic", "--solver 'magic' is not one of");
+    expectError("bench " + scene + " --backend auto", "--backend 'auto' is not cpu or gpu");
     expectError("render " + scene + " --out " + path("x.tiff"), ".exr or .png");
     expectError("render " + scene + " --rays 0 --out " + path("x.exr"), "rays must be");
     const RunResult r = runLuxel("render");  // CLI11 usage error: non-zero, no crash

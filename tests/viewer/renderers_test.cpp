@@ -25,12 +25,12 @@ std::shared_ptr<const gi2d::Scene2D> lampScene() {
     return scene;
 }
 
-State2D stateFor(Solver2D solver, bool gi = true) {
+State2D stateFor(gi2d::Solver2D solver, bool gi = true) {
     State2D s;
     s.scene = lampScene();
     s.sceneVersion = 1;
     s.view.solver = solver;
-    s.view.backend = "cpu";
+    s.view.backend = gpu::Backend::Cpu;
     s.view.gi = gi;
     s.view.width = s.view.height = 64;
     return s;
@@ -44,14 +44,14 @@ double meanOf(const Image& image) {
 
 TEST(Renderer2D, GiToggleChangesThePictureAndTheWorkSettles) {
     Renderer2D renderer;
-    renderer.setState(stateFor(Solver2D::Hrc));
+    renderer.setState(stateFor(gi2d::Solver2D::Hrc));
     ASSERT_TRUE(renderer.hasMoreWork());
     const Frame lit = renderer.step();
     EXPECT_FALSE(renderer.hasMoreWork());
     ASSERT_EQ(lit.picture.width(), 64);
     EXPECT_EQ(lit.backend, "cpu");
     EXPECT_TRUE(lit.note.empty()) << lit.note;
-    renderer.setState(stateFor(Solver2D::Hrc, /*gi=*/false));
+    renderer.setState(stateFor(gi2d::Solver2D::Hrc, /*gi=*/false));
     const Frame dark = renderer.step();
     // Away from the lamp only the fluence lights the picture.
     EXPECT_GT(lit.picture.at(45, 32, 0), 0.05f);
@@ -61,7 +61,7 @@ TEST(Renderer2D, GiToggleChangesThePictureAndTheWorkSettles) {
 
 TEST(Renderer2D, ReferenceAccumulatesProgressively) {
     Renderer2D renderer;
-    renderer.setState(stateFor(Solver2D::Reference));
+    renderer.setState(stateFor(gi2d::Solver2D::Reference));
     const Frame first = renderer.step();
     EXPECT_FALSE(first.converged);
     EXPECT_EQ(first.samples, 4);
@@ -69,9 +69,9 @@ TEST(Renderer2D, ReferenceAccumulatesProgressively) {
     const Frame second = renderer.step();
     EXPECT_EQ(second.samples, 8);
     // An edited scene starts over; the same state again does not.
-    renderer.setState(stateFor(Solver2D::Reference));
+    renderer.setState(stateFor(gi2d::Solver2D::Reference));
     EXPECT_EQ(renderer.step().samples, 12);
-    State2D edited = stateFor(Solver2D::Reference);
+    State2D edited = stateFor(gi2d::Solver2D::Reference);
     edited.sceneVersion = 2;
     renderer.setState(std::move(edited));
     EXPECT_EQ(renderer.step().samples, 4);

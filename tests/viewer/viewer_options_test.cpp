@@ -7,9 +7,10 @@ namespace luxel::viewer {
 namespace {
 
 TEST(ViewerOptions, ParsesSizesAndChoices) {
-    auto parsed = parseViewerOptions({"scene.json", "--size", "640x480", "--internal-size",
-                                      "160x120", "--backend", "cpu", "--solver", "rc-fix",
-                                      "--record", "5", "--record-dir", "out", "--script", "s.txt"});
+    auto parsed =
+        parseViewerOptions({"scene.json", "--size", "640x480", "--internal-size", "160x120",
+                            "--backend", "cpu", "--solver", "rc", "--merge", "bilinear-fix",
+                            "--record", "5", "--record-dir", "out", "--script", "s.txt"});
     ASSERT_TRUE(parsed) << parsed.error().message();
     const ViewerOptions& o = parsed->options;
     EXPECT_EQ(o.scene, "scene.json");
@@ -17,8 +18,9 @@ TEST(ViewerOptions, ParsesSizesAndChoices) {
     EXPECT_EQ(o.windowHeight, 480);
     EXPECT_EQ(o.internalWidth, 160);
     EXPECT_EQ(o.internalHeight, 120);
-    EXPECT_EQ(o.backend, "cpu");
-    EXPECT_EQ(o.solver, "rc-fix");
+    EXPECT_EQ(o.backend, gpu::Backend::Cpu);
+    EXPECT_EQ(o.solver, gi2d::Solver2D::Rc);
+    EXPECT_EQ(o.merge, gi2d::RcMerge::BilinearFix);
     EXPECT_EQ(o.recordFrames, 5);
     EXPECT_EQ(o.recordDir, "out");
     EXPECT_EQ(o.script, "s.txt");
@@ -34,8 +36,9 @@ TEST(ViewerOptions, RejectsBadValuesWithTheOptionName) {
         {{"s.json", "--size", "640"}, "--size '640' is not WIDTHxHEIGHT"},
         {{"s.json", "--internal-size", "0x10"},
          "--internal-size '0x10': each side must be in 1..65536"},
-        {{"s.json", "--backend", "metal"}, "--backend"},
-        {{"s.json", "--solver", "pt"}, "--solver"},
+        {{"s.json", "--backend", "metal"}, "--backend 'metal' is not one of: auto, cpu, gpu"},
+        {{"s.json", "--solver", "pt"}, "--solver 'pt' is not one of: reference, hrc, rc"},
+        {{"s.json", "--merge", "nearest"}, "--merge 'nearest' is not one of"},
         {{"s.json", "--internal-scale", "0"}, "--internal-scale"},
     };
     for (const Case& c : cases) {

@@ -30,25 +30,24 @@ std::string passKind(const std::string& name) {
 int runBench(const BenchArgs& args) {
     auto file = loadScene(args.scene, "");
     if (!file) return reportError(file.error());
+    auto backend = parseBenchBackend(args.backend);
+    if (!backend) return reportError(backend.error());
     if (file->kind() == scene::SceneKind::Voxel) {
-        return benchVoxelScene({args.scene, args.backend, args.device, args.sizes, args.repeat},
+        return benchVoxelScene({args.scene, *backend, args.device, args.sizes, args.repeat},
                                std::move(file->voxel()));
     }
     auto sizes =
         parseImageSizeList(args.sizes.empty() ? "256,512,1024,2048" : args.sizes, "--sizes");
     if (!sizes) return reportError(sizes.error());
-    if (args.backend != "cpu" && args.backend != "gpu") {
-        return reportError(Error("--backend '" + args.backend + "' is not cpu or gpu"));
-    }
     auto sized = sizeScene(std::move(file->twoD()), "");
     if (!sized) return reportError(sized.error());
     std::unique_ptr<gpu::Context> context;
-    if (args.backend == "gpu") {
+    if (*backend == gpu::Backend::Gpu) {
         auto opened = openBenchGpu(args.device);
         if (!opened) return reportError(opened.error());
         context = std::move(*opened);
     }
-    std::printf("%s, hrc on the %s, best of %d\n", args.scene.c_str(), args.backend.c_str(),
+    std::printf("%s, hrc on the %s, best of %d\n", args.scene.c_str(), gpu::backendName(*backend),
                 args.repeat);
     std::printf("%9s %10s %9s", "size", "ms", "Mpix/s");
     const char* kinds[] = {"trace", "extend", "merge", "readout", "finish", "upload", "download"};

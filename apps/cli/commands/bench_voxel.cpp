@@ -26,9 +26,6 @@ Result<voxel::Camera> resized(const voxel::Camera& camera, int width, int height
 }  // namespace
 
 int benchVoxelScene(const VoxelBenchRequest& request, voxel::VoxelScene loaded) {
-    if (request.backend != "cpu" && request.backend != "gpu") {
-        return reportError(Error("--backend '" + request.backend + "' is not cpu or gpu"));
-    }
     if (request.repeat < 1) return reportError(Error("--repeat must be at least 1"));
     voxel::VoxelScene* scene = &loaded;
     std::vector<ImageSize> sizes{{scene->camera.width(), scene->camera.height()}};
@@ -39,7 +36,7 @@ int benchVoxelScene(const VoxelBenchRequest& request, voxel::VoxelScene loaded) 
     }
     std::unique_ptr<gpu::Context> context;
     std::unique_ptr<voxel::VoxelGpuRenderer> renderer;
-    if (request.backend == "gpu") {
+    if (request.backend == gpu::Backend::Gpu) {
         auto opened = openBenchGpu(request.device);
         if (!opened) return reportError(opened.error());
         context = std::move(*opened);
@@ -49,7 +46,7 @@ int benchVoxelScene(const VoxelBenchRequest& request, voxel::VoxelScene loaded) 
     }
     const voxel::ShadeOptions& shading = scene->shading;
     std::printf("%s, voxel ray casting on the %s (%d reflections, shadows %s), best of %d\n",
-                request.scene.c_str(), request.backend.c_str(), shading.maxReflections,
+                request.scene.c_str(), gpu::backendName(request.backend), shading.maxReflections,
                 shading.shadows ? "on" : "off", request.repeat);
     std::printf("%11s %10s %9s%s\n", "size", "ms", "Mpix/s", renderer ? "  dispatch ms" : "");
     for (const auto& [width, height] : sizes) {

@@ -12,6 +12,7 @@
 #include "luxel/core/tonemap.h"
 #include "luxel/gi2d/medium2d.h"
 #include "luxel/gi2d/scene2d.h"
+#include "luxel/gpu/backend_policy.h"
 #include "luxel/gpu/fwd.h"
 #include "luxel/scene/scene_file.h"
 
@@ -62,12 +63,15 @@ Result<gi2d::Medium2D> loadMedium(const std::string& scenePath, const std::strin
 
 inline constexpr int kExitBadInput = 1;
 
-// The GPU for `--backend` ("auto", "cpu" or "gpu") on `--device`: nullptr means the CPU path.
+// The GPU for `--backend` on `--device` (luxel/gpu/backend_policy.h): nullptr means the CPU path.
 // gpu fails when no device can be opened; auto skips software devices (lavapipe is slower than
 // the CPU path) and, unless quiet, notes on stderr why it uses the CPU. Debug builds turn on the
 // validation layers.
-Result<std::unique_ptr<gpu::Context>> chooseGpuBackend(const std::string& backend,
+Result<std::unique_ptr<gpu::Context>> chooseGpuBackend(gpu::Backend backend,
                                                        const std::string& device, bool quiet);
+
+// `luxel bench --backend`: cpu or gpu (a benchmark names what it measures, so no auto).
+Result<gpu::Backend> parseBenchBackend(const std::string& text);
 
 // The GPU for `luxel bench --backend gpu` (no validation layers, which would skew timings), with
 // its name printed; fails with "--backend gpu: <reason>".
@@ -78,15 +82,18 @@ struct VoxelRenderRequest {
     std::string scene, size, out, png;
     ToneMapSettings tone;
     bool quiet = false, stats = false;
-    std::string backend = "auto", device;  // --backend auto|cpu|gpu, --device
-    double loadSeconds = 0;                // reading the scene (generators included)
+    gpu::Backend backend = gpu::Backend::Auto;
+    std::string device;      // --device
+    double loadSeconds = 0;  // reading the scene (generators included)
 };
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene scene);
 
 // `luxel bench` on a voxel scene: frame times at each of `sizes` (comma-separated WxH; empty = the
 // scene's camera size) on the CPU or the GPU.
 struct VoxelBenchRequest {
-    std::string scene, backend = "cpu", device, sizes;
+    std::string scene;
+    gpu::Backend backend = gpu::Backend::Cpu;  // cpu or gpu
+    std::string device, sizes;
     int repeat = 3;
 };
 int benchVoxelScene(const VoxelBenchRequest& request, voxel::VoxelScene scene);

@@ -71,21 +71,27 @@ Result<gi2d::Medium2D> loadMedium(const std::string& scenePath, const std::strin
     return rasterizeSized(*sized, scenePath, supersample);
 }
 
-Result<std::unique_ptr<gpu::Context>> chooseGpuBackend(const std::string& backend,
+Result<std::unique_ptr<gpu::Context>> chooseGpuBackend(gpu::Backend backend,
                                                        const std::string& device, bool quiet) {
-    auto parsed = gpu::parseBackend(backend);
-    if (!parsed) return parsed.error();
 #ifdef NDEBUG
     constexpr bool kValidation = false;
 #else
     constexpr bool kValidation = true;  // debug builds run with the validation layers
 #endif
-    auto choice = gpu::openBackend(*parsed, {device, kValidation});
+    auto choice = gpu::openBackend(backend, {device, kValidation});
     if (!choice) return choice.error();
     if (!choice->note.empty() && !quiet) {
         std::fprintf(stderr, "luxel: note: %s\n", choice->note.c_str());
     }
     return std::move(choice->context);
+}
+
+Result<gpu::Backend> parseBenchBackend(const std::string& text) {
+    auto backend = gpu::parseBackend(text);
+    if (!backend || *backend == gpu::Backend::Auto) {
+        return Error("--backend '" + text + "' is not cpu or gpu");
+    }
+    return *backend;
 }
 
 Result<std::unique_ptr<gpu::Context>> openBenchGpu(const std::string& device) {

@@ -7,15 +7,17 @@
 #include "luxel/core/memory.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/ray_march.h"
+#include "luxel/gi2d/rc_solver.h"
 #include "luxel/gi2d/reference_solver.h"
 #include "luxel/gi2d/scene2d_json.h"
+#include "luxel/gi2d/solver_choice.h"
 #include "luxel/voxel/voxel_scene.h"
 
 namespace luxel::cli {
 namespace {
 
 struct InfoArgs {
-    std::string scene, size, solver = "reference";
+    std::string scene, size, solverName = "reference", mergeName = "vanilla";
     int rays = gi2d::ReferenceOptions{}.rays;
 };
 
@@ -24,6 +26,10 @@ void printRgb(const char* label, Rgb v) {
 }
 
 int runInfo(const InfoArgs& args) {
+    auto solver = gi2d::parseSolver2D(args.solverName);
+    if (!solver) return reportError(solver.error());
+    auto merge = gi2d::parseRcMerge(args.mergeName);
+    if (!merge) return reportError(merge.error());
     auto file = loadScene(args.scene, args.size);
     if (!file) return reportError(file.error());
     if (file->kind() == scene::SceneKind::Voxel) return infoVoxelScene(file->voxel());
@@ -49,26 +55,36 @@ int runInfo(const InfoArgs& args) {
     }
     const std::uint64_t medium = gi2d::mediumBytes(w, h);
     std::uint64_t needed = medium;
-    if (args.solver == "reference") {
-        needed += gi2d::RayMarcher::bytesFor(w, h) + imageBytes(w, h, 3) * 2;
-        std::printf("  reference solver: %.3g rays at %d rays/pixel\n",
-                    static_cast<double>(gi2d::referenceRayCount(w, h, args.rays)), args.rays);
-    } else if (args.solver == "hrc") {
-        const gi2d::HrcMemory m = gi2d::estimateHrcMemory(w, h);
-        needed += m.total();
-        std::printf("  hrc: %d cascades; ray tables %s, cone buffers %s, frame %s, output %s\n",
-                    gi2d::hrcCascadeCount(w, h), formatBytes(m.rayTables).c_str(),
-                    formatBytes(m.coneBuffers).c_str(), formatBytes(m.frame).c_str(),
-                    formatBytes(m.output).c_str());
-    } else {
-        return reportError(
-            Error("unknown solver '" + args.solver + "' (available: reference, hrc)"));
+    switch (*solver) {
+        case gi2d::Solver2D::Reference:
+            needed += gi2d::RayMarcher::bytesFor(w, h) + imageBytes(w, h, 3) * 2;
+            std::printf("  reference solver: %.3g rays at %d rays/pixel\n",
+                        static_cast<double>(gi2d::referenceRayCount(w, h, args.rays)), args.rays);
+            break;
+        case gi2d::Solver2D::Hrc: {
+            const gi2d::HrcMemory m = gi2d::estimateHrcMemory(w, h);
+            needed += m.total();
+            std::printf("  hrc: %d cascades; ray tables %s, cone buffers %s, frame %s, output %s\n",
+                        gi2d::hrcCascadeCount(w, h), formatBytes(m.rayTables).c_str(),
+                        formatBytes(m.coneBuffers).c_str(), formatBytes(m.frame).c_str(),
+                        formatBytes(m.output).c_str());
+            break;
+        }
+        case gi2d::Solver2D::Rc: {
+            gi2d::RcOptions options;
+            options.merge = *merge;
+            const std::uint64_t rc = gi2d::estimateRcMemory(w, h, options);
+            needed += rc;
+            std::printf("  rc (%s merge): %zu cascades, %s\n", gi2d::mergeName(*merge),
+                        gi2d::rcCascades(w, h, options).size(), formatBytes(rc).c_str());
+            break;
+        }
     }
     std::printf("  memory: medium %s, %s in all with the %s solver (available %s)\n",
-                formatBytes(medium).c_str(), formatBytes(needed).c_str(), args.solver.c_str(),
+                formatBytes(medium).c_str(), formatBytes(needed).c_str(), gi2d::solverName(*solver),
                 formatBytes(availableMemoryBytes()).c_str());
     if (Status s = checkMemory(needed, "rendering " + std::to_string(w) + "x" + std::to_string(h) +
-                                           " with " + args.solver);
+                                           " with " + gi2d::solverName(*solver));
         !s) {
         return reportError(s.error());
     }
@@ -81,7 +97,9 @@ Runner addInfoCommand(CLI::App& app) {
     auto args = std::make_shared<InfoArgs>();
     app.add_option("scene", args->scene, "scene file (.json)")->required();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
-    app.add_option("--solver", args->solver, "solver to estimate for: reference, hrc")
+    app.add_option("--solver", args->solverName, "solver to estimate for: reference, hrc, rc")
+        ->capture_default_str();
+    app.add_option("--merge", args->mergeName, "RC: vanilla or bilinear-fix")
         ->capture_default_str();
     app.add_option("--rays", args->rays, "directions per pixel")->capture_default_str();
     return [args] { return runInfo(*args); };

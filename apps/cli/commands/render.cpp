@@ -15,6 +15,8 @@
 #include "luxel/gi2d/rc_solver.h"
 #include "luxel/gi2d/reference_solver.h"
 #include "luxel/gi2d/sdf_scene.h"
+#include "luxel/gi2d/solver_choice.h"
+#include "luxel/gpu/backend_policy.h"
 #include "luxel/gpu/context.h"
 #include "luxel/voxel/voxel_scene.h"
 
@@ -22,8 +24,9 @@ namespace luxel::cli {
 namespace {
 
 struct RenderArgs {
-    std::string scene, solver = "reference", size, out, png, tonemap = "aces";
-    std::vector<std::string> options2DGiven;  // 2D-only options on the command line
+    std::string scene, solverName = "reference", size, out, png, tonemap = "aces";
+    gi2d::Solver2D solver = gi2d::Solver2D::Reference;  // parsed from solverName
+    std::vector<std::string> options2DGiven;            // 2D-only options on the command line
     int rays = gi2d::ReferenceOptions{}.rays;
     int threads = 0;
     int supersample = 16;
@@ -31,19 +34,36 @@ struct RenderArgs {
     float exposure = 0.0f;
     bool quiet = false;
     bool stats = false;  // print a machine-readable timing line (for compare-solvers)
-    std::string backend = "auto", device;
+    std::string backendName = "auto", device;
+    gpu::Backend backend = gpu::Backend::Auto;  // parsed from backendName
     // HRC
     int tracedLevels = gi2d::HrcOptions{}.tracedLevels;
     bool noBlur = false;
     std::string frustum;  // debug: one of +x, +y, -x, -y
     int cascade = 0;      // debug: the cascade --view cascade|probes shows (hrc, rc)
     // RC
-    std::string merge = "vanilla", march = "auto", view = "gi";
+    std::string mergeName = "vanilla", march = "auto", view = "gi";
+    gi2d::RcMerge merge = gi2d::RcMerge::Vanilla;  // parsed from mergeName
     int probeSpacing = gi2d::RcOptions{}.probeSpacing;
     int baseRays = gi2d::RcOptions{}.baseRays;
     double baseInterval = gi2d::RcOptions{}.baseInterval;
     int maxCascades = 0;
 };
+
+// The names given on the command line -> the library's enums (luxel/gi2d/solver_choice.h,
+// luxel/gpu/backend_policy.h), so the CLI and the viewer accept the same words.
+Status parseChoices(RenderArgs& args) {
+    auto solver = gi2d::parseSolver2D(args.solverName);
+    if (!solver) return solver.error();
+    auto merge = gi2d::parseRcMerge(args.mergeName);
+    if (!merge) return merge.error();
+    auto backend = gpu::parseBackend(args.backendName);
+    if (!backend) return backend.error();
+    args.solver = *solver;
+    args.merge = *merge;
+    args.backend = *backend;
+    return Ok{};
+}
 
 // Frustum name -> HRC frustum mask bit.
 Result<unsigned> frustumMask(const std::string& name) {
@@ -55,17 +75,9 @@ Result<unsigned> frustumMask(const std::string& name) {
     return Error("--frustum '" + name + "' is not one of +x, +y, -x, -y");
 }
 
-// Runs the chosen solver with a progress bar; returns the fluence and the number of rays (0 when
-// the solver does not cast rays per pixel).
-Result<gi2d::RcOptions> rcOptions(const RenderArgs& args) {
+gi2d::RcOptions rcOptions(const RenderArgs& args) {
     gi2d::RcOptions options;
-    if (args.merge == "vanilla") {
-        options.merge = gi2d::RcMerge::Vanilla;
-    } else if (args.merge == "fix" || args.merge == "bilinear-fix") {
-        options.merge = gi2d::RcMerge::BilinearFix;
-    } else {
-        return Error("--merge '" + args.merge + "' is not vanilla or bilinear-fix");
-    }
+    options.merge = args.merge;
     options.probeSpacing = args.probeSpacing;
     options.baseRays = args.baseRays;
     options.baseInterval = args.baseInterval;
@@ -77,11 +89,10 @@ Result<gi2d::RcOptions> rcOptions(const RenderArgs& args) {
 // The GPU context for --backend gpu, or for auto when a hardware device exists and the solver
 // can use it; nullptr means the CPU path. auto falls back with a one-line note.
 Result<std::unique_ptr<gpu::Context>> chooseGpu(const RenderArgs& args, bool gpuCapable) {
-    if (args.backend == "gpu" && !gpuCapable) {
+    if (args.backend == gpu::Backend::Gpu && !gpuCapable) {
         return Error("--backend gpu: this view runs on the CPU only");
     }
-    if (!gpuCapable)
-        return chooseGpuBackend(args.backend == "auto" ? "cpu" : args.backend, "", true);
+    if (!gpuCapable) return std::unique_ptr<gpu::Context>();
     return chooseGpuBackend(args.backend, args.device, args.quiet);
 }
 
@@ -89,83 +100,93 @@ Result<std::unique_ptr<gpu::Context>> chooseGpu(const RenderArgs& args, bool gpu
 // the medium, on the GPU when one is chosen.
 Result<Image> solveRcFor(const RenderArgs& args, const SizedScene& sized,
                          const gi2d::Medium2D& medium, std::string& detail) {
-    auto options = rcOptions(args);
-    if (!options) return options.error();
+    const gi2d::RcOptions options = rcOptions(args);
+    const std::string merge = gi2d::mergeName(args.merge);
     if (args.march != "auto" && args.march != "dda" && args.march != "sdf") {
         return Error("--march '" + args.march + "' is not auto, dda or sdf");
     }
-    if (args.backend == "gpu" && args.march == "sdf") {
+    if (args.backend == gpu::Backend::Gpu && args.march == "sdf") {
         return Error("--backend gpu traces RC intervals with the DDA; use --march dda or auto");
     }
-    if (args.backend != "gpu" && args.march != "dda") {
+    if (args.backend != gpu::Backend::Gpu && args.march != "dda") {
         auto sdf = gi2d::SdfScene::create(sized.scene, sized.width, sized.height);
         if (sdf) {
-            detail = "merge " + args.merge + ", march sdf, cpu";
-            return gi2d::solveRc(*sdf, sized.scene.boundaryRadiance, *options);
+            detail = "merge " + merge + ", march sdf, cpu";
+            return gi2d::solveRc(*sdf, sized.scene.boundaryRadiance, options);
         }
         if (args.march == "sdf") return Error("--march sdf: " + sdf.error().message());
     }
     auto context = chooseGpu(args, true);
     if (!context) return context.error();
     if (*context) {
-        detail = "merge " + args.merge + ", march dda, gpu: " + (*context)->device().name;
-        return gi2d::solveRcOnGpu(**context, medium, *options);
+        detail = "merge " + merge + ", march dda, gpu: " + (*context)->device().name;
+        return gi2d::solveRcOnGpu(**context, medium, options);
     }
-    detail = "merge " + args.merge + ", march dda, cpu";
-    return gi2d::solveRc(medium, *options);
+    detail = "merge " + merge + ", march dda, cpu";
+    return gi2d::solveRc(medium, options);
 }
 
+Result<Image> solveReferenceFor(const RenderArgs& args, const gi2d::Medium2D& medium,
+                                double& rays) {
+    if (args.backend == gpu::Backend::Gpu) {
+        return Error("--backend gpu: the reference solver is CPU-only");
+    }
+    const int w = medium.width(), h = medium.height();
+    ProgressBar progress("reference", static_cast<std::uint64_t>(h), !args.quiet);
+    gi2d::ReferenceOptions options;
+    options.rays = args.rays;
+    options.seed = args.seed;
+    options.onRowsDone = [&](int n) { progress.advance(static_cast<std::uint64_t>(n)); };
+    rays = static_cast<double>(gi2d::referenceRayCount(w, h, args.rays));
+    return gi2d::solveReference(medium, options);
+}
+
+Result<Image> solveHrcFor(const RenderArgs& args, const gi2d::Medium2D& medium,
+                          std::string& detail) {
+    auto mask = frustumMask(args.frustum);
+    if (!mask) return mask.error();
+    auto context = chooseGpu(args, args.view != "cascade");
+    if (!context) return context.error();
+    ProgressBar progress("hrc", 4, !args.quiet);
+    gi2d::HrcOptions options;
+    options.tracedLevels = args.tracedLevels;
+    options.crossBlur = !args.noBlur;
+    options.frustumMask = *mask;
+    options.debugCascade = args.view == "cascade" ? std::max(args.cascade, 0) : -1;
+    options.onProgress = [&](int, int) { progress.advance(); };
+    if (*context) {
+        detail = "gpu: " + (*context)->device().name;
+        std::vector<gpu::PassTiming> timings;
+        auto result = gi2d::solveHrcOnGpu(**context, medium, options, &timings);
+        double total = 0;
+        for (const gpu::PassTiming& t : timings) total += t.milliseconds;
+        detail += ", passes " + std::to_string(timings.size()) + ", " +
+                  std::to_string(static_cast<int>(total + 0.5)) + " ms summed";
+        return result;
+    }
+    detail = "cpu";
+    return gi2d::solveHrc(medium, options);
+}
+
+// Runs the chosen solver with a progress bar; sets `rays` to the number of rays cast (0 when the
+// solver does not cast rays per pixel) and `detail` to how it ran.
 Result<Image> solve(const RenderArgs& args, const SizedScene& sized, const gi2d::Medium2D& medium,
                     double& rays, std::string& detail) {
-    const int w = medium.width(), h = medium.height();
-    if (args.solver == "reference") {
-        if (args.backend == "gpu") return Error("--backend gpu: the reference solver is CPU-only");
-        ProgressBar progress("reference", static_cast<std::uint64_t>(h), !args.quiet);
-        gi2d::ReferenceOptions options;
-        options.rays = args.rays;
-        options.seed = args.seed;
-        options.onRowsDone = [&](int n) { progress.advance(static_cast<std::uint64_t>(n)); };
-        rays = static_cast<double>(gi2d::referenceRayCount(w, h, args.rays));
-        return gi2d::solveReference(medium, options);
+    rays = 0;
+    switch (args.solver) {
+        case gi2d::Solver2D::Reference:
+            return solveReferenceFor(args, medium, rays);
+        case gi2d::Solver2D::Hrc:
+            return solveHrcFor(args, medium, detail);
+        case gi2d::Solver2D::Rc:
+            return solveRcFor(args, sized, medium, detail);
     }
-    if (args.solver == "hrc") {
-        auto mask = frustumMask(args.frustum);
-        if (!mask) return mask.error();
-        auto context = chooseGpu(args, args.view != "cascade");
-        if (!context) return context.error();
-        ProgressBar progress("hrc", 4, !args.quiet);
-        gi2d::HrcOptions options;
-        options.tracedLevels = args.tracedLevels;
-        options.crossBlur = !args.noBlur;
-        options.frustumMask = *mask;
-        options.debugCascade = args.view == "cascade" ? std::max(args.cascade, 0) : -1;
-        options.onProgress = [&](int, int) { progress.advance(); };
-        rays = 0;
-        if (*context) {
-            detail = "gpu: " + (*context)->device().name;
-            std::vector<gpu::PassTiming> timings;
-            auto result = gi2d::solveHrcOnGpu(**context, medium, options, &timings);
-            double total = 0;
-            for (const gpu::PassTiming& t : timings) total += t.milliseconds;
-            detail += ", passes " + std::to_string(timings.size()) + ", " +
-                      std::to_string(static_cast<int>(total + 0.5)) + " ms summed";
-            return result;
-        }
-        detail = "cpu";
-        return gi2d::solveHrc(medium, options);
-    }
-    if (args.solver == "rc") {
-        rays = 0;
-        return solveRcFor(args, sized, medium, detail);
-    }
-    return Error("unknown solver '" + args.solver + "' (available: reference, hrc, rc)");
+    return Error("unknown solver");
 }
 
 // Marks the probe centres of cascade --cascade (RC layout) on the display image.
-Status drawProbes(const RenderArgs& args, Image& display) {
-    auto options = rcOptions(args);
-    if (!options) return options.error();
-    const auto cascades = gi2d::rcCascades(display.width(), display.height(), *options);
+void drawProbes(const RenderArgs& args, Image& display) {
+    const auto cascades = gi2d::rcCascades(display.width(), display.height(), rcOptions(args));
     const int c = std::clamp(args.cascade, 0, static_cast<int>(cascades.size()) - 1);
     const gi2d::RcCascade& cascade = cascades[c];
     for (int py = 0; py < cascade.probesY; ++py) {
@@ -175,7 +196,6 @@ Status drawProbes(const RenderArgs& args, Image& display) {
             if (display.inside(x, y)) display.setRgb(x, y, Rgb(1.0f, 0.2f, 0.1f));
         }
     }
-    return Ok{};
 }
 
 int runRender(const RenderArgs& args) {
@@ -205,7 +225,7 @@ int runRender(const RenderArgs& args) {
     auto sized = sizeScene(std::move(file->twoD()), args.size);
     if (!sized) return reportError(sized.error());
     // Refuse before allocating anything when the medium plus the solver cannot fit.
-    if (args.solver == "hrc") {
+    if (args.solver == gi2d::Solver2D::Hrc) {
         const std::uint64_t needed = gi2d::mediumBytes(sized->width, sized->height) +
                                      gi2d::estimateHrcMemory(sized->width, sized->height).total();
         const std::string what =
@@ -238,14 +258,14 @@ int runRender(const RenderArgs& args) {
         }
         Image display = gi2d::displayImage(*medium, *fluence, tone);
         if (args.view == "probes") {
-            if (Status s = drawProbes(args, display); !s) return reportError(s.error());
+            drawProbes(args, display);
         }
         if (Status s = writePng(args.png, display); !s) return reportError(s.error());
     }
     if (args.stats) std::printf("stats solve_seconds=%.6f\n", solveSeconds);
     if (!args.quiet) {
         std::printf("%s: %dx%d, solver %s%s%s%s, %d threads\n", args.scene.c_str(), w, h,
-                    args.solver.c_str(), detail.empty() ? "" : " (", detail.c_str(),
+                    gi2d::solverName(args.solver), detail.empty() ? "" : " (", detail.c_str(),
                     detail.empty() ? "" : ")", args.threads > 0 ? args.threads : hardwareThreads());
         std::printf("  raster %.3f s, solve %.3f s (%.2f Mpixel/s", rasterSeconds, solveSeconds,
                     static_cast<double>(w) * h / solveSeconds * 1e-6);
@@ -263,7 +283,7 @@ int runRender(const RenderArgs& args) {
 Runner addRenderCommand(CLI::App& app) {
     auto args = std::make_shared<RenderArgs>();
     app.add_option("scene", args->scene, "scene file (.json)")->required();
-    app.add_option("--solver", args->solver, "light transport solver: reference, hrc, rc")
+    app.add_option("--solver", args->solverName, "light transport solver: reference, hrc, rc")
         ->capture_default_str();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
     app.add_option("--rays", args->rays, "directions per pixel (reference solver)")
@@ -281,7 +301,8 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option("--cascade", args->cascade,
                    "debug: the cascade that --view cascade|probes shows")
         ->capture_default_str();
-    app.add_option("--merge", args->merge, "RC: vanilla or bilinear-fix")->capture_default_str();
+    app.add_option("--merge", args->mergeName, "RC: vanilla or bilinear-fix")
+        ->capture_default_str();
     app.add_option("--march", args->march, "RC: interval tracing: auto, dda (medium), sdf (shapes)")
         ->capture_default_str();
     app.add_option("--probe-spacing", args->probeSpacing, "RC: cascade-0 probe spacing (px)")
@@ -305,7 +326,7 @@ Runner addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     app.add_flag("--quiet,-q", args->quiet, "no progress bar or summary");
     app.add_flag("--stats", args->stats, "print 'stats solve_seconds=S' (for scripts)");
-    app.add_option("--backend", args->backend,
+    app.add_option("--backend", args->backendName,
                    "auto (a hardware GPU when there is one, else CPU), cpu or gpu (HRC, RC, voxel)")
         ->capture_default_str();
     app.add_option("--device", args->device, "GPU: device index or part of its name");
@@ -317,6 +338,7 @@ Runner addRenderCommand(CLI::App& app) {
               "--base-interval", "--max-cascades", "--view"}) {
             if (command->count(name) > 0) args->options2DGiven.push_back(name);
         }
+        if (Status s = parseChoices(*args); !s) return reportError(s.error());
         return runRender(*args);
     };
 }
