@@ -127,35 +127,6 @@ std::vector<double> readNumbers(const Json& v, const std::string& path, std::siz
     return out;
 }
 
-Result<std::string> readTextFile(const std::string& path, const std::string& what,
-                                 std::uintmax_t maxBytes) {
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                         &std::fclose);
-    if (!file) {
-        return Error("cannot open " + what + " '" + path +
-                     "': " + std::generic_category().message(errno));
-    }
-    std::error_code ec;
-    const std::uintmax_t size = std::filesystem::file_size(path, ec);
-    const std::string tooLarge = what + " file '" + path + "' is too large (at most " +
-                                 std::to_string(maxBytes >> 20) + " MiB)";
-    if (!ec && size > maxBytes) return Error(tooLarge);
-    // Read in chunks up to the limit: file_size is unknown for pipes and may be stale.
-    std::string text;
-    char buffer[1 << 16];
-    for (;;) {
-        const std::size_t n = std::fread(buffer, 1, sizeof(buffer), file.get());
-        text.append(buffer, n);
-        if (text.size() > maxBytes) return Error(tooLarge);
-        if (n < sizeof(buffer)) break;
-    }
-    if (std::ferror(file.get())) {
-        return Error("cannot read " + what + " '" + path +
-                     "': " + std::generic_category().message(errno));
-    }
-    return text;
-}
-
 namespace {
 
 // nlohmann's message without "[json.exception.parse_error.101] parse error at line 2, column 8: ",

@@ -60,11 +60,6 @@ std::int64_t readWholeNumber(const Json& v, const std::string& path, std::int64_
 std::vector<double> readNumbers(const Json& v, const std::string& path, std::size_t n, double lo,
                                 double hi);
 
-// The bytes of a file of at most `maxBytes` ("cannot open scene 'p': reason",
-// "scene file 'p' is too large (at most 64 MiB)"). `what` names the kind of file.
-Result<std::string> readTextFile(const std::string& path, const std::string& what,
-                                 std::uintmax_t maxBytes = std::uintmax_t{64} << 20);
-
 // Parses JSON text; errors are located ("file:line:col: invalid JSON: ..."), including numbers
 // too large for a double (1e999).
 Result<Json> parse(std::string_view text, const std::string& sourceName);

@@ -20,6 +20,7 @@
 
 #include "core/json_fields.h"
 #include "gi2d/scene2d_json_internal.h"
+#include "luxel/core/file_io.h"
 #include "luxel/core/image_io.h"
 
 namespace luxel::gi2d {
@@ -464,7 +465,7 @@ Result<Scene2D> scene2DFromJson(const json::Json& root, std::string_view text,
 }
 
 Result<Scene2D> loadScene2D(const std::string& path) {
-    auto text = json::readTextFile(path, "scene");
+    auto text = readFileBytes(path, "scene");
     if (!text) return text.error();
     return parseScene2D(*text, path, std::filesystem::path(path).parent_path().string());
 }

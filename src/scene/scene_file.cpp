@@ -4,12 +4,13 @@
 
 #include "core/json_fields.h"
 #include "gi2d/scene2d_json_internal.h"
+#include "luxel/core/file_io.h"
 #include "voxel/voxel_scene_internal.h"
 
 namespace luxel::scene {
 
 Result<SceneFile> loadSceneFile(const std::string& path, const SceneFileOptions& options) {
-    auto text = json::readTextFile(path, "scene");
+    auto text = readFileBytes(path, "scene");
     if (!text) return text.error();
     auto root = json::parse(*text, path);
     if (!root) return root.error();

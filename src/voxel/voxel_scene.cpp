@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/json_fields.h"
+#include "luxel/core/file_io.h"
 #include "luxel/voxel/generators.h"
 #include "luxel/voxel/vox_import.h"
 #include "voxel/voxel_scene_internal.h"
@@ -325,7 +326,7 @@ bool isVoxelScene(const json::Json& root) {
 }
 
 Result<VoxelScene> loadVoxelScene(const std::string& path, int width, int height) {
-    auto text = json::readTextFile(path, "scene");
+    auto text = readFileBytes(path, "scene");
     if (!text) return text.error();
     auto root = json::parse(*text, path);
     if (!root) return root.error();

@@ -1,0 +1,40 @@
+// Hash-consing of octants: every octant with the same 8 entries (and, in a coloured tree, the
+// same 8 leaf colours) is stored once, which turns the octree into a DAG (SVDAG sharing, Kämpe,
+// Sintorn and Assarsson 2013). An open-addressing table of octant bases into the tree's own
+// arrays, so it costs 4 bytes per slot beyond the octants themselves.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "luxel/octree/octree.h"
+
+namespace luxel::octree {
+
+class OctantTable {
+  public:
+    // Octants are appended to `tree` (entries 0-7, the root, are never shared or returned).
+    explicit OctantTable(Octree& tree);
+
+    // The base of the octant with these entries (and colours, in a coloured tree; may be null
+    // otherwise), appended when new. 0 when the array would exceed kMaxEntries.
+    std::uint32_t intern(const std::uint32_t* entries, const Colour* colours);
+
+    // Forgets everything and indexes the tree's octants again (after the tree was replaced).
+    void reindex();
+
+    // Most entries an array may hold: branch values (index + 248) must fit in a uint32.
+    static constexpr std::uint64_t kMaxEntries = (std::uint64_t{1} << 32) - 256;
+
+  private:
+    std::uint64_t hashOf(const std::uint32_t* entries, const Colour* colours) const;
+    bool equalAt(std::uint32_t base, const std::uint32_t* entries, const Colour* colours) const;
+    void insert(std::uint32_t base, std::uint64_t hash);
+    void grow();
+
+    Octree& tree_;
+    std::vector<std::uint32_t> slots_;  // octant number (base / 8), 0 = free
+    std::uint64_t used_ = 0;
+};
+
+}  // namespace luxel::octree
