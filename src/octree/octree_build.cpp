@@ -24,23 +24,31 @@ struct Entry {
 // octants into a leaf and interning the rest.
 class Builder {
   public:
-    Builder(const OctreeSource& source, Octree& tree, bool colours)
-        : source_(source), tree_(tree), table_(tree), colours_(colours), size_(source.size()) {}
+    Builder(const OctreeSource& source, Octree& tree, bool colours, bool collapse)
+        : source_(source),
+          tree_(tree),
+          table_(tree),
+          colours_(colours),
+          collapse_(collapse),
+          size_(source.size()) {}
 
     bool failed() const { return failed_; }
 
     // The entry for the cube [origin, origin + 2^level).
     Entry build(Int3 origin, int level) {
-        if (origin.x >= size_.x || origin.y >= size_.y || origin.z >= size_.z) return {};
+        if (collapse_ && (origin.x >= size_.x || origin.y >= size_.y || origin.z >= size_.z)) {
+            return {};
+        }
         if (level == 0) {
             Entry e;
+            if (origin.x >= size_.x || origin.y >= size_.y || origin.z >= size_.z) return e;
             std::uint8_t opacity = 0;
             source_.voxel(origin, opacity, e.colour);
             e.value = opacity;
             if (opacity == 0 || !colours_) e.colour = Colour{};
             return e;
         }
-        if (auto uniform = source_.uniformBlock(origin, level)) {
+        if (auto uniform = collapse_ ? source_.uniformBlock(origin, level) : std::nullopt) {
             Entry e{uniform->opacity, uniform->colour};
             if (e.value == 0 || !colours_) e.colour = Colour{};
             return e;
@@ -57,7 +65,7 @@ class Builder {
             colours[slot] = e.colour;
             uniform = uniform && isLeaf(e.value) && e.value == values[0] && e.colour == colours[0];
         }
-        if (uniform) return {values[0], colours[0]};
+        if (uniform && collapse_) return {values[0], colours[0]};
         const std::uint32_t base = table_.intern(values, colours_ ? colours : nullptr);
         if (base == 0) {
             failed_ = true;
@@ -71,6 +79,7 @@ class Builder {
     Octree& tree_;
     OctantTable table_;
     bool colours_;
+    bool collapse_;
     Int3 size_;
     bool failed_ = false;
 };
@@ -137,10 +146,11 @@ Result<Octree> buildOctree(const OctreeSource& source, const BuildOptions& optio
     }
     Octree tree;
     tree.depth = depth;
+    tree.size = size;
     tree.nodes.assign(8, 0);
     const bool colours = options.colours && source.hasColours();
     if (colours) tree.colours.assign(8, Colour{});
-    Builder builder(source, tree, colours);
+    Builder builder(source, tree, colours, options.collapse);
     const int half = 1 << (depth - 1);
     for (int slot = 0; slot < 8; ++slot) {
         const Int3 child((slot & 1) * half, ((slot >> 2) & 1) * half, ((slot >> 1) & 1) * half);

@@ -38,9 +38,11 @@ std::string serializeOctree(const Octree& tree) {
     out.append(kOctreeMagic);
     put<std::uint32_t>(out, kOctreeFileVersion);
     put<std::uint32_t>(out, static_cast<std::uint32_t>(tree.depth));
-    put<std::uint64_t>(out, tree.nodes.size());
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(tree.size.x));
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(tree.size.y));
+    put<std::uint32_t>(out, static_cast<std::uint32_t>(tree.size.z));
     put<std::uint32_t>(out, tree.hasColours() ? kColoursFlag : 0);
-    put<std::uint32_t>(out, 0);
+    put<std::uint64_t>(out, tree.nodes.size());
     for (std::uint32_t v : tree.nodes) put<std::uint32_t>(out, v);
     for (const Colour& c : tree.colours) {
         const char rgba[4] = {static_cast<char>(c.r), static_cast<char>(c.g),
@@ -62,9 +64,15 @@ Result<Octree> parseOctree(std::string_view bytes, const std::string& name) {
                     std::to_string(kOctreeFileVersion) + ")");
     }
     const auto depth = get<std::uint32_t>(bytes, 12);
-    const auto count = get<std::uint64_t>(bytes, 16);
-    const auto flags = get<std::uint32_t>(bytes, 24);
-    if ((flags & ~kColoursFlag) != 0 || get<std::uint32_t>(bytes, 28) != 0) {
+    Int3 size;
+    for (int a = 0; a < 3; ++a) {
+        const auto v = get<std::uint32_t>(bytes, 16 + 4 * a);
+        if (v > (1u << kMaxDepth)) return fail("size " + std::to_string(v) + " is too large");
+        size[a] = static_cast<int>(v);
+    }
+    const auto flags = get<std::uint32_t>(bytes, 28);
+    const auto count = get<std::uint64_t>(bytes, 32);
+    if ((flags & ~kColoursFlag) != 0) {
         return fail("unknown flags " + std::to_string(flags) + " in the header");
     }
     if (depth < 1 || depth > static_cast<std::uint32_t>(kMaxDepth)) {
@@ -83,6 +91,7 @@ Result<Octree> parseOctree(std::string_view bytes, const std::string& name) {
     if (Status s = checkMemory(count * perEntry, "octree " + name); !s) return s.error();
     Octree tree;
     tree.depth = static_cast<int>(depth);
+    tree.size = size;
     tree.nodes.resize(count);
     for (std::uint64_t i = 0; i < count; ++i) {
         tree.nodes[i] = get<std::uint32_t>(bytes, kOctreeHeaderBytes + 4 * i);

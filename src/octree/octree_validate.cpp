@@ -90,4 +90,19 @@ Status validateOctree(std::span<const std::uint32_t> nodes, int depth, std::uint
     return Ok{};
 }
 
+Status validateOctree(const Octree& tree) {
+    if (Status s = validateOctree(tree.nodes, tree.depth, tree.colours.size()); !s) return s;
+    const Int3 size = tree.size;
+    if (size.x == 0 && size.y == 0 && size.z == 0) return Ok{};
+    const int side = 1 << tree.depth;
+    for (int v : {size.x, size.y, size.z}) {
+        if (v < 1 || v > side) {
+            return Error("octree size " + std::to_string(size.x) + "x" + std::to_string(size.y) +
+                         "x" + std::to_string(size.z) + " does not fit its " +
+                         std::to_string(side) + "^3 cube");
+        }
+    }
+    return Ok{};
+}
+
 }  // namespace luxel::octree

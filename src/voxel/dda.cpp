@@ -9,46 +9,17 @@
 #include "voxel/voxel_world_access.h"
 
 namespace luxel::voxel {
-namespace {
-
 namespace shared = gpu::shared;
 
-bool finite(const Vec3d& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-shared::dvec3 toShared(const Vec3d& v) {
-    return {v.x, v.y, v.z};
-}
-
-}  // namespace
-
 Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap, ChunkSkip skip) {
-    Hit hit;
     const Int3 size = world.size();
-    const Vec3d& d = ray.direction;
-    if (!finite(ray.origin) || !finite(d) || (d.x == 0.0 && d.y == 0.0 && d.z == 0.0) ||
-        !(tMax >= 0.0)) {
-        return hit;
-    }
+    if (!finiteRay(ray) || !(tMax >= 0.0)) return Hit{};
     const int cap = stepCap > 0 ? stepCap : 3 * (size.x + size.y + size.z);
     const int chunkShift = std::countr_zero(static_cast<unsigned>(world.chunkSize()));
-    const shared::dvec3 o = toShared(ray.origin), dir = toShared(d);
-    const shared::VoxelTrace trace =
-        shared::voxelTraverse(world, {size.x, size.y, size.z}, chunkShift, o, dir, tMax, cap,
-                              skip == ChunkSkip::Enabled, world.emptySpaceCurrent());
-    hit.steps = trace.steps;
-    hit.capped = trace.capped;
-    if (!trace.hit) return hit;
-    hit.hit = true;
-    hit.voxel = {trace.cell.x, trace.cell.y, trace.cell.z};
-    hit.t = trace.t;
-    if (trace.axis >= 0) hit.normal[trace.axis] = -trace.stp[trace.axis];
-    const shared::VoxelSurface surface = shared::voxelSurface(o, dir, trace);
-    hit.point = {surface.point.x, surface.point.y, surface.point.z};
-    hit.u = surface.u;
-    hit.v = surface.v;
-    return hit;
+    const shared::VoxelTrace trace = shared::voxelTraverse(
+        world, {size.x, size.y, size.z}, chunkShift, toShared(ray.origin), toShared(ray.direction),
+        tMax, cap, skip == ChunkSkip::Enabled, world.emptySpaceCurrent());
+    return hitFromTrace(ray, trace);
 }
 
 std::vector<Hit> castRays(const VoxelWorld& world, std::span<const Ray> rays, double tMax,

@@ -1,6 +1,6 @@
-// The CPU side of the shared voxel traversal (src/gpu/shaders/shared/voxel_dda.h): double
-// precision, and the accessors over a VoxelWorld's brick masks, brick distances and chunk counts.
-// The GPU side is src/gpu/shaders/voxel/voxel_world_access.glsl.
+// The CPU side of the shared voxel traversal (src/gpu/shaders/shared/voxel_dda.h): the walk in
+// double (walk_access.h), and the accessors over a VoxelWorld's brick masks, brick distances and
+// chunk counts. The GPU side is src/gpu/shaders/voxel/voxel_world_access.glsl.
 #pragma once
 
 #include <bit>
@@ -9,9 +9,8 @@
 
 #include "gpu/shaders/shared/glsl_compat.h"
 #include "luxel/voxel/voxel_world.h"
+#include "voxel/walk_access.h"
 
-#define LUXEL_REAL double
-#define LUXEL_REAL3 dvec3
 #define LUXEL_VOXEL_WORLD const ::luxel::voxel::VoxelWorld&
 #define LUXEL_BRICK_MASK std::uint64_t
 
@@ -40,10 +39,6 @@ inline bool voxelChunkEmpty(const voxel::VoxelWorld& w, ivec3 cell) {
 
 inline bool voxelSolidAt(const voxel::VoxelWorld& w, ivec3 cell) {
     return w.solid(cell.x, cell.y, cell.z);
-}
-
-inline double voxelNextToward(double x, double toward) {
-    return std::nextafter(x, toward);
 }
 
 }  // namespace luxel::gpu::shared

@@ -33,6 +33,7 @@ TEST(OctreeFile, RoundTripsWithAndWithoutColours) {
         auto back = readOctreeFile(path);
         ASSERT_TRUE(back.ok()) << back.error().message();
         EXPECT_EQ(back->depth, tree.depth);
+        EXPECT_EQ(back->size, Int3(20, 20, 20));
         EXPECT_EQ(back->nodes, tree.nodes);
         EXPECT_EQ(back->colours, tree.colours);
     }
@@ -56,11 +57,14 @@ TEST(OctreeFile, DamagedHeadersAreNamed) {
     b[12] = 40;
     expectError(b, "depth 40 is outside 1..16");
     b = good;
-    b[23] = 0x7f;  // an entry count near 2^63
+    b[39] = 0x7f;  // an entry count near 2^63
     expectError(b, "entries but");
     b = good;
-    b[24] = 4;
+    b[28] = 4;
     expectError(b, "unknown flags 4");
+    b = good;
+    b[16] = 33;  // size x 33 in a 32^3 cube
+    expectError(b, "does not fit its 32^3 cube");
     expectError(good.substr(0, good.size() - 3), "bytes follow it");
     b = good;
     b[kOctreeHeaderBytes + 1] = 0x10;  // entry 0 becomes a branch far past the end

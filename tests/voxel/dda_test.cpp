@@ -2,6 +2,8 @@
 // backends: castRays on the CPU (double) and VoxelGpuRenderer::castRays on the Vulkan device
 // (float; lavapipe on CPU-only machines, skipped with the reason when there is no device). Both
 // run the same kernel (src/gpu/shaders/shared/voxel_dda.h), so the edge-case rules hold on both.
+// The same suite runs on the sparse voxel octree built from each test world
+// (src/gpu/shaders/shared/octree_walk.h): its hits must be the dense walk's, edge cases included.
 #include "luxel/voxel/dda.h"
 
 #include <gtest/gtest.h>
@@ -13,12 +15,14 @@
 #include <vector>
 
 #include "luxel/gpu/context.h"
+#include "luxel/octree/octree_build.h"
+#include "luxel/octree/octree_trace.h"
 #include "luxel/voxel/voxel_gpu.h"
 
 namespace luxel::voxel {
 namespace {
 
-enum class Backend { Cpu, Gpu };
+enum class Backend { Cpu, Gpu, OctreeCpu };
 
 // One Vulkan context for the whole suite (validation on: any message fails the test).
 gpu::Context* sharedContext() {
@@ -32,21 +36,35 @@ gpu::Context* sharedContext() {
 class VoxelDdaTest : public ::testing::TestWithParam<Backend> {
   protected:
     void SetUp() override {
-        if (GetParam() == Backend::Gpu && !sharedContext()) {
+        if (gpu() && !sharedContext()) {
             GTEST_SKIP() << "no Vulkan device: " << gpu::Context::create().error().message();
         }
     }
     void TearDown() override {
-        if (GetParam() == Backend::Gpu && sharedContext()) {
+        if (gpu() && sharedContext()) {
             EXPECT_EQ(sharedContext()->validationMessages(), 0)
                 << sharedContext()->lastValidationMessage();
         }
     }
     bool gpu() const { return GetParam() == Backend::Gpu; }
+    bool octree() const { return GetParam() == Backend::OctreeCpu; }
 
     std::vector<Hit> castAll(const VoxelWorld& world, const std::vector<Ray>& rays,
                              double tMax = kInfinity, int stepCap = 0,
                              ChunkSkip skip = ChunkSkip::Enabled) const {
+        if (octree()) {
+            // Without collapse every leaf is a voxel, so the octree visits every cell as the
+            // plain walk does (ChunkSkip::Disabled); with it, uniform octants are jumped.
+            auto tree = octree::buildOctree(
+                world, {.colours = false, .collapse = skip == ChunkSkip::Enabled});
+            EXPECT_TRUE(tree.ok());
+            std::vector<Hit> hits;
+            for (const octree::OctreeHit& h :
+                 octree::castRays(*tree, rays, {.tMax = tMax, .stepCap = stepCap})) {
+                hits.push_back(h.hit);
+            }
+            return hits;
+        }
         if (!gpu()) return castRays(world, rays, tMax, stepCap, skip);
         auto renderer = VoxelGpuRenderer::create(*sharedContext(), world);
         EXPECT_TRUE(renderer.ok()) << renderer.error().message();
@@ -61,11 +79,14 @@ class VoxelDdaTest : public ::testing::TestWithParam<Backend> {
     }
 };
 
-INSTANTIATE_TEST_SUITE_P(Backends, VoxelDdaTest, ::testing::Values(Backend::Cpu, Backend::Gpu),
-                         [](const auto& param) {
-                             return param.param == Backend::Cpu ? std::string("Cpu")
-                                                                : std::string("Gpu");
-                         });
+std::string backendName(const ::testing::TestParamInfo<Backend>& info) {
+    static const char* const kNames[] = {"Cpu", "Gpu", "OctreeCpu"};
+    return kNames[static_cast<int>(info.param)];
+}
+
+INSTANTIATE_TEST_SUITE_P(Backends, VoxelDdaTest,
+                         ::testing::Values(Backend::Cpu, Backend::Gpu, Backend::OctreeCpu),
+                         backendName);
 
 // The ray the GPU sees: rounded to float.
 Ray roundedToFloat(const Ray& r) {

@@ -44,11 +44,15 @@ constexpr int childSlot(int x, int y, int z, int level) {
 using Colour = voxel::Voxel;  // RGBA8; for voxel worlds alpha is the texture slot
 
 struct Octree {
-    int depth = 1;                     // the tree is 2^depth voxels a side
+    int depth = 1;  // the tree is 2^depth voxels a side
+    // The box [0, size) the content occupies within the cube (a 300x120x300 world in a 512^3
+    // cube): rays are clipped to it. Zero means the whole cube.
+    Int3 size;
     std::vector<std::uint32_t> nodes;  // the design's array; entries 0-7 are the root octant
     std::vector<Colour> colours;       // empty, or one per entry (the leaf colour stored there)
 
     int side() const { return 1 << depth; }
+    Int3 extent() const { return size.x > 0 ? size : Int3(side(), side(), side()); }
     bool hasColours() const { return !colours.empty(); }
 };
 

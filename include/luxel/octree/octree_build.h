@@ -16,6 +16,9 @@ namespace luxel::octree {
 
 struct BuildOptions {
     bool colours = true;  // keep a colour per leaf (octree.h); false: opacity only
+    // Merge a uniform octant into one leaf. false keeps every leaf a voxel (octants are still
+    // shared): traversal then visits every cell, as the plain per-voxel walk does.
+    bool collapse = true;
 };
 
 // What the builder reads. Cells outside size() are empty.

@@ -2,10 +2,10 @@
 //   offset  0  8 bytes  magic "LXOCTREE"
 //           8  u32      version (1)
 //          12  u32      depth (1..kMaxDepth)
-//          16  u64      entry count n
-//          24  u32      flags: bit 0 = colours follow the entries; other bits must be 0
-//          28  u32      reserved, 0
-//          32  n x u32  the entries (octree.h)
+//          16  3 x u32  content size x, y, z (Octree::size; 0 0 0 = the whole cube)
+//          28  u32      flags: bit 0 = colours follow the entries; other bits must be 0
+//          32  u64      entry count n
+//          40  n x u32  the entries (octree.h)
 //              n x 4    RGBA colours, one per entry, when flag bit 0 is set
 // Reading checks the header against the file size before allocating and validates the tree
 // (octree_validate.h), so a hostile file gives an error, never a crash or a huge allocation.
@@ -21,7 +21,7 @@ namespace luxel::octree {
 
 inline constexpr std::string_view kOctreeMagic = "LXOCTREE";
 inline constexpr std::uint32_t kOctreeFileVersion = 1;
-inline constexpr std::size_t kOctreeHeaderBytes = 32;
+inline constexpr std::size_t kOctreeHeaderBytes = 40;
 
 std::string serializeOctree(const Octree& tree);
 // `name` labels errors ("terrain.lxo: ...").

@@ -20,8 +20,7 @@ namespace luxel::octree {
 // Runs in time and memory linear in the array.
 Status validateOctree(std::span<const std::uint32_t> nodes, int depth,
                       std::uint64_t colourCount = 0);
-inline Status validateOctree(const Octree& tree) {
-    return validateOctree(tree.nodes, tree.depth, tree.colours.size());
-}
+// The same, plus the content box: zero, or each side in 1..2^depth.
+Status validateOctree(const Octree& tree);
 
 }  // namespace luxel::octree

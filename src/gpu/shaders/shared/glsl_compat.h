@@ -26,6 +26,7 @@
 
 #ifdef __cplusplus
 
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -183,8 +184,14 @@ using std::abs;
 using std::cos;
 using std::exp;
 using std::floor;
+using std::log;
+using std::pow;
 using std::sin;
 using std::sqrt;
+// Index of the highest set bit, -1 for 0 (GLSL findMSB; callers pass non-negative values).
+constexpr int findMSB(int v) {
+    return v <= 0 ? -1 : 31 - std::countl_zero(static_cast<unsigned>(v));
+}
 template <typename T>
 constexpr T min(T a, T b) {
     return b < a ? b : a;

@@ -1,0 +1,55 @@
+// The CPU side of the shared A&W walk (src/gpu/shaders/shared/voxel_walk.h): double precision,
+// and the conversion of a finished walk into a voxel::Hit, shared by the dense world's castRay
+// (dda.cpp) and the octree's (src/octree/octree_trace.cpp).
+#pragma once
+
+#include <cmath>
+
+#include "gpu/shaders/shared/glsl_compat.h"
+#include "luxel/voxel/dda.h"
+
+#define LUXEL_REAL double
+#define LUXEL_REAL3 dvec3
+
+namespace luxel::gpu::shared {
+
+inline double voxelNextToward(double x, double toward) {
+    return std::nextafter(x, toward);
+}
+
+}  // namespace luxel::gpu::shared
+
+#include "gpu/shaders/shared/voxel_walk.h"
+
+namespace luxel::voxel {
+
+inline bool finiteRay(const Ray& ray) {
+    const Vec3d& o = ray.origin;
+    const Vec3d& d = ray.direction;
+    return std::isfinite(o.x) && std::isfinite(o.y) && std::isfinite(o.z) && std::isfinite(d.x) &&
+           std::isfinite(d.y) && std::isfinite(d.z) && !(d.x == 0.0 && d.y == 0.0 && d.z == 0.0);
+}
+
+inline gpu::shared::dvec3 toShared(const Vec3d& v) {
+    return {v.x, v.y, v.z};
+}
+
+// The Hit of a finished walk: cell, entry t and face, the point snapped onto the face, and (u, v).
+inline Hit hitFromTrace(const Ray& ray, const gpu::shared::VoxelTrace& trace) {
+    Hit hit;
+    hit.steps = trace.steps;
+    hit.capped = trace.capped;
+    if (!trace.hit) return hit;
+    hit.hit = true;
+    hit.voxel = {trace.cell.x, trace.cell.y, trace.cell.z};
+    hit.t = trace.t;
+    if (trace.axis >= 0) hit.normal[trace.axis] = -trace.stp[trace.axis];
+    const gpu::shared::VoxelSurface surface =
+        gpu::shared::voxelSurface(toShared(ray.origin), toShared(ray.direction), trace);
+    hit.point = {surface.point.x, surface.point.y, surface.point.z};
+    hit.u = surface.u;
+    hit.v = surface.v;
+    return hit;
+}
+
+}  // namespace luxel::voxel
