@@ -1,18 +1,39 @@
-// The CPU side of the shared octree traversal (src/gpu/shaders/shared/octree_walk.h): the walk in
-// double (voxel/walk_access.h) and the entry accessor over the array. The GPU side is
-// src/gpu/shaders/octree/octree_access.glsl.
+// The CPU side of the shared octree kernels (src/gpu/shaders/shared/octree_walk.h and
+// octree_render.h): the walk in double (voxel/walk_access.h) and the accessors over the arrays.
+// The GPU side is src/gpu/shaders/octree/octree_access.glsl.
 #pragma once
 
 #include <cstdint>
 
+#include "luxel/octree/octree.h"
 #include "voxel/walk_access.h"
 
-#define LUXEL_OCTREE const std::uint32_t*
+namespace luxel::octree {
+
+// The arrays the kernels read: the entries and, when present, one colour per entry.
+struct OctreeArrays {
+    const std::uint32_t* nodes = nullptr;
+    const Colour* colours = nullptr;
+};
+
+inline OctreeArrays arraysOf(const Octree& tree) {
+    return {tree.nodes.data(), tree.hasColours() ? tree.colours.data() : nullptr};
+}
+
+}  // namespace luxel::octree
+
+#define LUXEL_OCTREE const ::luxel::octree::OctreeArrays&
 
 namespace luxel::gpu::shared {
 
-inline uint octreeEntry(const std::uint32_t* nodes, uint index) {
-    return nodes[index];
+inline uint octreeEntry(const octree::OctreeArrays& tree, uint index) {
+    return tree.nodes[index];
+}
+
+inline vec3 octreeLeafSrgb(const octree::OctreeArrays& tree, uint entry) {
+    if (!tree.colours) return vec3(0.8f);
+    const octree::Colour c = tree.colours[entry];
+    return vec3(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f);
 }
 
 }  // namespace luxel::gpu::shared

@@ -14,7 +14,7 @@ OctreeHit castRay(const Octree& tree, const voxel::Ray& ray, const TraceOptions&
     const int cap = options.stepCap > 0 ? options.stepCap : 3 * (size.x + size.y + size.z);
     shared::uint entry = 0;
     const shared::VoxelTrace trace = shared::octreeTraverse(
-        tree.nodes.data(), tree.depth, {size.x, size.y, size.z}, voxel::toShared(ray.origin),
+        arraysOf(tree), tree.depth, {size.x, size.y, size.z}, voxel::toShared(ray.origin),
         voxel::toShared(ray.direction), options.tMax, cap,
         std::max<shared::uint>(options.threshold, 1), entry);
     return {voxel::hitFromTrace(ray, trace), entry};

@@ -16,6 +16,7 @@
 #include "luxel/core/tonemap.h"
 #include "luxel/gpu/context.h"
 #include "luxel/voxel/surface_cast.h"
+#include "voxel/cast_batch.h"
 
 namespace luxel::voxel {
 
@@ -354,15 +355,8 @@ Result<std::vector<Hit>> VoxelGpuRenderer::castRays(std::span<const Ray> rays, d
     State& s = *state_;
     std::vector<Hit> hits(rays.size());
     if (rays.empty()) return hits;
-    const float limit = static_cast<float>(tMax);
-    std::vector<shared::VoxelCastRay> in(rays.size());
-    for (std::size_t i = 0; i < rays.size(); ++i) {
-        const Ray& r = rays[i];
-        in[i] = {float(r.origin.x),    float(r.origin.y),
-                 float(r.origin.z),    limit,
-                 float(r.direction.x), float(r.direction.y),
-                 float(r.direction.z), skip == ChunkSkip::Enabled ? 1u : 0u};
-    }
+    const std::vector<shared::VoxelCastRay> in =
+        castRaysForGpu(rays, tMax, skip == ChunkSkip::Enabled);
     const std::uint64_t outBytes = rays.size() * sizeof(shared::VoxelCastHit);
     auto rayBuffer = s.context->createBuffer(in.size() * sizeof(shared::VoxelCastRay));
     if (!rayBuffer) return rayBuffer.error();
@@ -391,20 +385,7 @@ Result<std::vector<Hit>> VoxelGpuRenderer::castRays(std::span<const Ray> rays, d
     if (Status st = s.context->download(**hitBuffer, std::as_writable_bytes(std::span(out))); !st) {
         return st.error();
     }
-    for (std::size_t i = 0; i < out.size(); ++i) {
-        const shared::VoxelCastHit& o = out[i];
-        Hit& h = hits[i];
-        h.hit = (o.flags & 1u) != 0;
-        h.capped = (o.flags & 2u) != 0;
-        h.steps = o.steps;
-        if (!h.hit) continue;
-        h.voxel = {o.voxelX, o.voxelY, o.voxelZ};
-        h.normal = {o.normalX, o.normalY, o.normalZ};
-        h.t = o.t;
-        h.point = {o.pointX, o.pointY, o.pointZ};
-        h.u = o.u;
-        h.v = o.v;
-    }
+    for (std::size_t i = 0; i < out.size(); ++i) hits[i] = hitFromGpu(out[i]);
     return hits;
 }
 

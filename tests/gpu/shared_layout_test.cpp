@@ -11,6 +11,7 @@
 #include "gpu/layout_check.h"
 #include "gpu/shaders/shared/hrc_layout.h"
 #include "gpu/shaders/shared/medium_layout.h"
+#include "gpu/shaders/shared/octree_layout.h"
 #include "gpu/shaders/shared/rc_layout.h"
 #include "gpu/shaders/shared/voxel_layout.h"
 #include "gpu/spirv_reflect.h"
@@ -47,6 +48,32 @@ TEST(GpuSharedLayout, WorkgroupSizesComeFromTheSharedConstants) {
               (std::array<std::uint32_t, 3>{LUXEL_VOXEL_GROUP_X, LUXEL_VOXEL_GROUP_Y, 1}));
     EXPECT_EQ(reflect("voxel_cast").workgroupSize,
               (std::array<std::uint32_t, 3>{LUXEL_VOXEL_CAST_GROUP, 1, 1}));
+    EXPECT_EQ(reflect("octree_cast").workgroupSize,
+              (std::array<std::uint32_t, 3>{LUXEL_OCTREE_CAST_GROUP, 1, 1}));
+}
+
+TEST(GpuSharedLayout, OctreeCastBuffersAndPushConstants) {
+    using P = OctreeCastPush;
+    expectPushConstants(
+        "octree_cast", {sizeof(P),
+                        {LUXEL_MEMBER(P, rays), LUXEL_MEMBER(P, stepCap), LUXEL_MEMBER(P, depth),
+                         LUXEL_MEMBER(P, threshold), LUXEL_MEMBER(P, sizeX), LUXEL_MEMBER(P, sizeY),
+                         LUXEL_MEMBER(P, sizeZ), LUXEL_MEMBER(P, pad0)}});
+    using R = VoxelCastRay;
+    expectBuffer("octree_cast", 1,
+                 {sizeof(R),
+                  {LUXEL_MEMBER(R, originX), LUXEL_MEMBER(R, originY), LUXEL_MEMBER(R, originZ),
+                   LUXEL_MEMBER(R, tMax), LUXEL_MEMBER(R, directionX), LUXEL_MEMBER(R, directionY),
+                   LUXEL_MEMBER(R, directionZ), LUXEL_MEMBER(R, jumps)}});
+    using H = VoxelCastHit;
+    expectBuffer(
+        "octree_cast", 2,
+        {sizeof(H),
+         {LUXEL_MEMBER(H, flags), LUXEL_MEMBER(H, steps), LUXEL_MEMBER(H, voxelX),
+          LUXEL_MEMBER(H, voxelY), LUXEL_MEMBER(H, voxelZ), LUXEL_MEMBER(H, normalX),
+          LUXEL_MEMBER(H, normalY), LUXEL_MEMBER(H, normalZ), LUXEL_MEMBER(H, t),
+          LUXEL_MEMBER(H, pointX), LUXEL_MEMBER(H, pointY), LUXEL_MEMBER(H, pointZ),
+          LUXEL_MEMBER(H, u), LUXEL_MEMBER(H, v), LUXEL_MEMBER(H, entry), LUXEL_MEMBER(H, pad0)}});
 }
 
 TEST(GpuSharedLayout, HrcPushConstants) {
@@ -147,7 +174,7 @@ TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
           LUXEL_MEMBER(H, voxelY), LUXEL_MEMBER(H, voxelZ), LUXEL_MEMBER(H, normalX),
           LUXEL_MEMBER(H, normalY), LUXEL_MEMBER(H, normalZ), LUXEL_MEMBER(H, t),
           LUXEL_MEMBER(H, pointX), LUXEL_MEMBER(H, pointY), LUXEL_MEMBER(H, pointZ),
-          LUXEL_MEMBER(H, u), LUXEL_MEMBER(H, v), LUXEL_MEMBER(H, pad0), LUXEL_MEMBER(H, pad1)}});
+          LUXEL_MEMBER(H, u), LUXEL_MEMBER(H, v), LUXEL_MEMBER(H, entry), LUXEL_MEMBER(H, pad0)}});
     expectPushConstants(
         "voxel_cast", {sizeof(VoxelCastPush),
                        {LUXEL_MEMBER(VoxelCastPush, rays), LUXEL_MEMBER(VoxelCastPush, stepCap)}});

@@ -16,13 +16,14 @@
 
 #include "luxel/gpu/context.h"
 #include "luxel/octree/octree_build.h"
+#include "luxel/octree/octree_gpu.h"
 #include "luxel/octree/octree_trace.h"
 #include "luxel/voxel/voxel_gpu.h"
 
 namespace luxel::voxel {
 namespace {
 
-enum class Backend { Cpu, Gpu, OctreeCpu };
+enum class Backend { Cpu, Gpu, OctreeCpu, OctreeGpu };
 
 // One Vulkan context for the whole suite (validation on: any message fails the test).
 gpu::Context* sharedContext() {
@@ -46,8 +47,10 @@ class VoxelDdaTest : public ::testing::TestWithParam<Backend> {
                 << sharedContext()->lastValidationMessage();
         }
     }
-    bool gpu() const { return GetParam() == Backend::Gpu; }
-    bool octree() const { return GetParam() == Backend::OctreeCpu; }
+    bool gpu() const { return GetParam() == Backend::Gpu || GetParam() == Backend::OctreeGpu; }
+    bool octree() const {
+        return GetParam() == Backend::OctreeCpu || GetParam() == Backend::OctreeGpu;
+    }
 
     std::vector<Hit> castAll(const VoxelWorld& world, const std::vector<Ray>& rays,
                              double tMax = kInfinity, int stepCap = 0,
@@ -58,11 +61,20 @@ class VoxelDdaTest : public ::testing::TestWithParam<Backend> {
             auto tree = octree::buildOctree(
                 world, {.colours = false, .collapse = skip == ChunkSkip::Enabled});
             EXPECT_TRUE(tree.ok());
-            std::vector<Hit> hits;
-            for (const octree::OctreeHit& h :
-                 octree::castRays(*tree, rays, {.tMax = tMax, .stepCap = stepCap})) {
-                hits.push_back(h.hit);
+            const octree::TraceOptions options{.tMax = tMax, .stepCap = stepCap};
+            std::vector<octree::OctreeHit> found;
+            if (gpu()) {
+                auto uploaded = octree::OctreeGpu::create(*sharedContext(), *tree);
+                EXPECT_TRUE(uploaded.ok()) << uploaded.error().message();
+                auto cast = uploaded->castRays(rays, options);
+                EXPECT_TRUE(cast.ok()) << cast.error().message();
+                if (cast.ok()) found = std::move(*cast);
+                found.resize(rays.size());
+            } else {
+                found = octree::castRays(*tree, rays, options);
             }
+            std::vector<Hit> hits;
+            for (const octree::OctreeHit& h : found) hits.push_back(h.hit);
             return hits;
         }
         if (!gpu()) return castRays(world, rays, tMax, stepCap, skip);
@@ -80,12 +92,13 @@ class VoxelDdaTest : public ::testing::TestWithParam<Backend> {
 };
 
 std::string backendName(const ::testing::TestParamInfo<Backend>& info) {
-    static const char* const kNames[] = {"Cpu", "Gpu", "OctreeCpu"};
+    static const char* const kNames[] = {"Cpu", "Gpu", "OctreeCpu", "OctreeGpu"};
     return kNames[static_cast<int>(info.param)];
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, VoxelDdaTest,
-                         ::testing::Values(Backend::Cpu, Backend::Gpu, Backend::OctreeCpu),
+                         ::testing::Values(Backend::Cpu, Backend::Gpu, Backend::OctreeCpu,
+                                           Backend::OctreeGpu),
                          backendName);
 
 // The ray the GPU sees: rounded to float.

@@ -181,6 +181,7 @@ using dvec3 = tvec3<double>;
 
 // GLSL built-ins on scalars (the std:: ones, plus those std lacks under the GLSL name).
 using std::abs;
+using std::ceil;
 using std::cos;
 using std::exp;
 using std::floor;
@@ -211,6 +212,14 @@ constexpr T mix(T a, T b, float t) {
 template <typename T>
 T length(tvec3<T> v) {
     return std::sqrt(dot(v, v));
+}
+template <typename T>
+tvec3<T> normalize(tvec3<T> v) {
+    return v * (T(1) / length(v));
+}
+template <typename T>
+constexpr tvec3<T> cross(tvec3<T> a, tvec3<T> b) {
+    return tvec3<T>(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
 }
 
 }  // namespace luxel::gpu::shared

@@ -43,31 +43,33 @@ LUXEL_FUNC_HOT int octreeSlot(ivec3 c, int level) {
 }
 
 LUXEL_FUNC void octreeCursorReset(LUXEL_INOUT(OctreeCursor) cursor, int depth) {
-    cursor.base[depth] = 0u;
+    for (int i = 0; i <= LUXEL_OCTREE_MAX_DEPTH; ++i) cursor.base[i] = 0u;
     cursor.deepest = depth;
     cursor.last = ivec3(0);
 }
 
 // The leaf holding `cell` (inside the cube). Starts at the lowest octant still holding the cell.
+// One exit at the end: the cursor is written back there only (an early return from inside the
+// loop lost the stack writes under Mesa's lavapipe).
 LUXEL_FUNC_HOT OctreeLeaf octreeLocate(LUXEL_OCTREE tree, int depth,
                                        LUXEL_INOUT(OctreeCursor) cursor, ivec3 cell) {
     const int diff = (cell.x ^ cursor.last.x) | (cell.y ^ cursor.last.y) | (cell.z ^ cursor.last.z);
     int level = clamp(findMSB(diff) + 1, cursor.deepest, depth);
     uint base = cursor.base[level];
-    for (;;) {
-        const uint entry = base + uint(octreeSlot(cell, level - 1));
-        const uint value = octreeEntry(tree, entry);
-        if (value < LUXEL_OCTREE_LEAF_LIMIT || level == 1) {
-            cursor.deepest = level;
-            cursor.last = cell;
-            const int mask = ~((1 << (level - 1)) - 1);
-            return OctreeLeaf(entry, value < LUXEL_OCTREE_LEAF_LIMIT ? value : 0u, level - 1,
-                              ivec3(cell.x & mask, cell.y & mask, cell.z & mask));
-        }
+    uint entry = base + uint(octreeSlot(cell, level - 1));
+    uint value = octreeEntry(tree, entry);
+    while (value >= LUXEL_OCTREE_LEAF_LIMIT && level > 1) {
         base = value - LUXEL_OCTREE_BRANCH_BIAS;
         level -= 1;
         cursor.base[level] = base;
+        entry = base + uint(octreeSlot(cell, level - 1));
+        value = octreeEntry(tree, entry);
     }
+    cursor.deepest = level;
+    cursor.last = cell;
+    const int mask = ~((1 << (level - 1)) - 1);
+    return OctreeLeaf(entry, value < LUXEL_OCTREE_LEAF_LIMIT ? value : 0u, level - 1,
+                      ivec3(cell.x & mask, cell.y & mask, cell.z & mask));
 }
 
 // The walk and the cursor of one ray through the octree.

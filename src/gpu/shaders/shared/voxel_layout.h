@@ -98,7 +98,8 @@ struct VoxelCastHit {
     float t;
     float pointX, pointY, pointZ;
     float u, v;
-    uint pad0, pad1;
+    uint entry;  // octree casts: the hit leaf's entry (octree.h), for its colour; else 0
+    uint pad0;
 };
 
 struct VoxelCastPush {

@@ -1,10 +1,10 @@
 // The GPU side of the shared voxel traversal (shared/voxel_dda.h; the CPU side is
-// src/voxel/voxel_world_access.h): float precision and the accessors over the world's storage
-// buffers. Needs `params` (VoxelRenderParams), `voxels[]`, `chunkSolid[]`, `brickMasks[]` and
+// src/voxel/voxel_world_access.h): the walk in float (walk_access.glsl) and the accessors over
+// the world's storage buffers. Needs `params` (VoxelRenderParams), `voxels[]`, `chunkSolid[]`, `brickMasks[]` and
 // `brickDistances[]` declared by the includer (bindings in shared/voxel_layout.h).
 
-#define LUXEL_REAL float
-#define LUXEL_REAL3 vec3
+#include "voxel/walk_access.glsl"
+
 #define LUXEL_VOXEL_WORLD uint
 #define LUXEL_BRICK_MASK uvec2
 
@@ -56,34 +56,7 @@ bool voxelSolidAt(uint world, ivec3 cell) {
     return (voxelValue(cell) >> 24) != 0u;
 }
 
-// Next float towards `toward` for the non-negative coordinates of the world box (a negative
-// value is returned unchanged; the walk that uses it is bounded).
-float voxelNextToward(float x, float toward) {
-    if (toward < x) return x > 0.0 ? uintBitsToFloat(floatBitsToUint(x) - 1u) : x;
-    return x >= 0.0 ? uintBitsToFloat(floatBitsToUint(x) + 1u) : x;
-}
-
 #include "shared/voxel_dda.h"
-
-// A hit as the shading code reads it (dda.h's Hit in float).
-struct Hit {
-    bool hit;
-    bool capped;
-    ivec3 voxel;
-    ivec3 normal;
-    float t;
-    vec3 point;
-    float u, v;
-    int steps;
-};
-
-Hit missHit() {
-    return Hit(false, false, ivec3(0), ivec3(0), LUXEL_INFINITY, vec3(0.0), 0.0, 0.0, 0);
-}
-
-bool finite3(vec3 v) {
-    return !any(isnan(v)) && !any(isinf(v));
-}
 
 // castRay (dda.h): the first solid voxel along o + t d with entry t in [0, tMax].
 Hit castRayLimited(vec3 o, vec3 d, float tMax, int cap, bool jumps) {
@@ -95,18 +68,7 @@ Hit castRayLimited(vec3 o, vec3 d, float tMax, int cap, bool jumps) {
     const bool current = (params.flags & LUXEL_VOXEL_DISTANCES_CURRENT) != 0u;
     const VoxelTrace trace =
         voxelTraverse(0u, size, int(params.chunkShift), o, d, tMax, cap, jumps, current);
-    h.steps = trace.steps;
-    h.capped = trace.capped;
-    if (!trace.hit) return h;
-    h.hit = true;
-    h.voxel = trace.cell;
-    h.t = trace.t;
-    if (trace.axis >= 0) h.normal[trace.axis] = -trace.stp[trace.axis];
-    const VoxelSurface surface = voxelSurface(o, d, trace);
-    h.point = surface.point;
-    h.u = surface.u;
-    h.v = surface.v;
-    return h;
+    return hitFromTrace(o, d, trace);
 }
 
 Hit castRay(vec3 o, vec3 d) {

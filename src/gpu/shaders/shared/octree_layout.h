@@ -1,0 +1,67 @@
+// Octree GPU structures shared by C++ and GLSL (offsets checked against the compiled shaders in
+// tests/gpu/shared_layout_test.cpp).
+//
+// Buffers of octree_cast (a batch of rays; the CPU twin is octree::castRays, octree_trace.h):
+//   0 nodes: the octree array, one uint per entry (include/luxel/octree/octree.h)
+//   1 VoxelCastRay per ray (voxel_layout.h; `jumps` is unused)
+//   2 VoxelCastHit per ray (voxel_layout.h; `entry` is the hit leaf's entry)
+#ifndef LUXEL_GPU_SHARED_OCTREE_LAYOUT_H
+#define LUXEL_GPU_SHARED_OCTREE_LAYOUT_H
+
+#include "voxel_layout.h"
+
+#ifdef __cplusplus
+namespace luxel::gpu::shared {
+#endif
+
+#define LUXEL_OCTREE_CAST_GROUP 64
+
+// What every octree pass needs to know about the tree and the batch.
+struct OctreeCastPush {
+    uint rays;
+    uint stepCap;              // resolved: never 0
+    uint depth;                // 1..16
+    uint threshold;            // least opacity that stops a ray, 1..255
+    uint sizeX, sizeY, sizeZ;  // the content box (Octree::extent)
+    uint pad0;
+};
+
+// octree_render (one invocation per pixel; the CPU twin is octree::renderOctree,
+// include/luxel/octree/octree_render.h) binds:
+//   0 OctreeRenderParams
+//   1 nodes (as octree_cast)
+//   2 colours: one uint per entry (r | g << 8 | b << 16 | a << 24), or one dummy without colours
+//   3 output: VoxelPixel per pixel (voxel_layout.h), rows top to bottom
+#define LUXEL_OCTREE_RENDER_GROUP_X 8
+#define LUXEL_OCTREE_RENDER_GROUP_Y 8
+
+#define LUXEL_OCTREE_MODE_SURFACE 0u
+#define LUXEL_OCTREE_MODE_VOLUME 1u
+#define LUXEL_OCTREE_MODE_ADDITIVE 2u
+
+#define LUXEL_OCTREE_SHADOWS 1u     // surface mode: shadow rays toward the sun
+#define LUXEL_OCTREE_SCATTERING 2u  // volume mode: sunlight scattered in the medium
+#define LUXEL_OCTREE_COLOURS 4u     // leaves have colours (binding 2)
+
+// Camera, light, medium and mode of a render; every member a 4-byte scalar (no std430 padding).
+struct OctreeRenderParams {
+    float originX, originY, originZ, sunRadius;  // camera; sun's angular radius (radians)
+    float forwardX, forwardY, forwardZ, opacityScale;
+    float rightX, rightY, rightZ, albedo;  // right * tan(fov / 2) * aspect; single-scatter albedo
+    float upX, upY, upZ, phaseG;           // up * tan(fov / 2); Henyey-Greenstein g
+    float sunX, sunY, sunZ, ambient;       // unit direction towards the sun; sky light fraction
+    float sunR, sunG, sunB, pad0;          // sun radiance scale (linear RGB)
+    float skyR, skyG, skyB, pad1;          // sky and background (linear RGB)
+    uint width, height, depth, mode;
+    uint sizeX, sizeY, sizeZ, threshold;
+    uint shadowSamples, flags, octaves, stepCap;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(OctreeCastPush) == 32);
+static_assert(sizeof(OctreeRenderParams) == 160);
+static_assert(offsetof(OctreeRenderParams, width) == 112);
+}  // namespace luxel::gpu::shared
+#endif
+
+#endif

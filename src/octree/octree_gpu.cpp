@@ -1,0 +1,160 @@
+#include "luxel/octree/octree_gpu.h"
+
+#include <algorithm>
+
+#include "gpu/shaders/shared/octree_layout.h"
+#include "luxel/core/memory.h"
+#include "octree/octree_render_params.h"
+#include "voxel/cast_batch.h"
+
+namespace luxel::octree {
+
+namespace shared = gpu::shared;
+
+struct OctreeGpu::State {
+    gpu::Context* context = nullptr;
+    gpu::Program* castProgram = nullptr;
+    gpu::Program* renderProgram = nullptr;
+    std::shared_ptr<gpu::Buffer> nodes;
+    std::shared_ptr<gpu::Buffer> colours;  // one uint per entry, or one dummy
+    std::shared_ptr<gpu::Buffer> params;
+    Octree shape;  // depth and size only (no arrays): what renderParams reads
+    std::uint64_t bytes = 0;
+    int depth = 1;
+    Int3 size;
+    bool hasColours = false;
+};
+
+OctreeGpu::OctreeGpu(std::unique_ptr<State> state) : state_(std::move(state)) {}
+OctreeGpu::OctreeGpu(OctreeGpu&&) noexcept = default;
+OctreeGpu& OctreeGpu::operator=(OctreeGpu&&) noexcept = default;
+OctreeGpu::~OctreeGpu() = default;
+
+std::uint64_t OctreeGpu::deviceBytes() const {
+    return state_ ? state_->bytes : 0;
+}
+
+Result<OctreeGpu> OctreeGpu::create(gpu::Context& context, const Octree& tree) {
+    const std::uint64_t colourWords = tree.hasColours() ? tree.colours.size() : 1;
+    const std::uint64_t bytes = (tree.nodes.size() + colourWords) * sizeof(std::uint32_t) +
+                                sizeof(shared::OctreeRenderParams);
+    const std::uint64_t limit = context.device().deviceLocalBytes;
+    if (limit > 0 && bytes > limit) {
+        return Error("octree of " + formatBytes(bytes) + " does not fit the device's " +
+                     formatBytes(limit));
+    }
+    auto state = std::make_unique<State>();
+    state->context = &context;
+    state->depth = tree.depth;
+    state->size = tree.extent();
+    state->shape.depth = tree.depth;
+    state->shape.size = tree.size;
+    state->hasColours = tree.hasColours();
+    auto program = context.program("octree_cast", 3, sizeof(shared::OctreeCastPush));
+    if (!program) return program.error();
+    state->castProgram = *program;
+    auto renderProgram = context.program("octree_render", 4, 0);
+    if (!renderProgram) return renderProgram.error();
+    state->renderProgram = *renderProgram;
+    auto nodes = context.createBuffer(tree.nodes.size() * sizeof(std::uint32_t));
+    if (!nodes) return nodes.error();
+    state->nodes = std::move(*nodes);
+    if (Status s = context.upload(*state->nodes, std::as_bytes(std::span(tree.nodes))); !s) {
+        return s.error();
+    }
+    std::vector<std::uint32_t> packed(colourWords, 0);
+    for (std::size_t i = 0; i < tree.colours.size(); ++i) {
+        const Colour& c = tree.colours[i];
+        packed[i] = std::uint32_t{c.r} | std::uint32_t{c.g} << 8 | std::uint32_t{c.b} << 16 |
+                    std::uint32_t{c.a} << 24;
+    }
+    auto colours = context.createBuffer(packed.size() * sizeof(std::uint32_t));
+    if (!colours) return colours.error();
+    state->colours = std::move(*colours);
+    if (Status s = context.upload(*state->colours, std::as_bytes(std::span(packed))); !s) {
+        return s.error();
+    }
+    auto params = context.createBuffer(sizeof(shared::OctreeRenderParams));
+    if (!params) return params.error();
+    state->params = std::move(*params);
+    state->bytes = bytes;
+    return OctreeGpu(std::move(state));
+}
+
+Result<Image> OctreeGpu::render(const voxel::Camera& camera, const OctreeRenderOptions& options,
+                                std::vector<gpu::PassTiming>* timings) {
+    if (Status s = validateRenderOptions(options); !s) return s.error();
+    State& s = *state_;
+    shared::OctreeRenderParams p = renderParams(s.shape, camera, options);
+    if (!(p.flags & LUXEL_OCTREE_COLOURS) && s.hasColours) p.flags |= LUXEL_OCTREE_COLOURS;
+    const std::uint64_t pixels = static_cast<std::uint64_t>(camera.width()) * camera.height();
+    if (Status st = checkMemory(pixels * sizeof(shared::VoxelPixel), "an octree image"); !st) {
+        return st.error();
+    }
+    if (Status st = s.context->upload(*s.params, std::as_bytes(std::span(&p, 1))); !st) {
+        return st.error();
+    }
+    auto output = s.context->createBuffer(pixels * sizeof(shared::VoxelPixel));
+    if (!output) return output.error();
+    gpu::Dispatch d;
+    d.name = "octree render";
+    d.program = s.renderProgram;
+    d.buffers = {s.params.get(), s.nodes.get(), s.colours.get(), output->get()};
+    d.setThreads(static_cast<std::uint64_t>(camera.width()),
+                 static_cast<std::uint64_t>(camera.height()));
+    auto passes = s.context->run(std::span(&d, 1));
+    if (!passes) return passes.error();
+    if (timings) timings->insert(timings->end(), passes->begin(), passes->end());
+    std::vector<shared::VoxelPixel> out(pixels);
+    if (Status st = s.context->download(**output, std::as_writable_bytes(std::span(out))); !st) {
+        return st.error();
+    }
+    Image image(camera.width(), camera.height(), 3);
+    for (int y = 0; y < camera.height(); ++y) {
+        for (int x = 0; x < camera.width(); ++x) {
+            const shared::VoxelPixel& px = out[static_cast<std::size_t>(y) * camera.width() + x];
+            image.setRgb(x, y, Rgb(px.r, px.g, px.b));
+        }
+    }
+    return image;
+}
+
+Result<std::vector<OctreeHit>> OctreeGpu::castRays(std::span<const voxel::Ray> rays,
+                                                   const TraceOptions& options,
+                                                   std::vector<gpu::PassTiming>* timings) {
+    State& s = *state_;
+    std::vector<OctreeHit> hits(rays.size());
+    if (rays.empty()) return hits;
+    const std::vector<shared::VoxelCastRay> in = voxel::castRaysForGpu(rays, options.tMax, true);
+    auto rayBuffer = s.context->createBuffer(in.size() * sizeof(shared::VoxelCastRay));
+    if (!rayBuffer) return rayBuffer.error();
+    auto hitBuffer = s.context->createBuffer(rays.size() * sizeof(shared::VoxelCastHit));
+    if (!hitBuffer) return hitBuffer.error();
+    if (Status st = s.context->upload(**rayBuffer, std::as_bytes(std::span(in))); !st) {
+        return st.error();
+    }
+    const Int3 size = s.size;
+    const int cap = options.stepCap > 0 ? options.stepCap : 3 * (size.x + size.y + size.z);
+    gpu::Dispatch d;
+    d.name = "octree cast rays";
+    d.program = s.castProgram;
+    d.buffers = {s.nodes.get(), rayBuffer->get(), hitBuffer->get()};
+    d.setPush(shared::OctreeCastPush{
+        static_cast<std::uint32_t>(rays.size()), static_cast<std::uint32_t>(cap),
+        static_cast<std::uint32_t>(s.depth), std::max<std::uint32_t>(options.threshold, 1),
+        static_cast<std::uint32_t>(size.x), static_cast<std::uint32_t>(size.y),
+        static_cast<std::uint32_t>(size.z), 0u});
+    d.setThreads(rays.size());
+    auto passes = s.context->run(std::span(&d, 1));
+    if (!passes) return passes.error();
+    if (timings) timings->insert(timings->end(), passes->begin(), passes->end());
+    std::vector<shared::VoxelCastHit> out(rays.size());
+    if (Status st = s.context->download(**hitBuffer, std::as_writable_bytes(std::span(out))); !st) {
+        return st.error();
+    }
+    for (std::size_t i = 0; i < out.size(); ++i)
+        hits[i] = {voxel::hitFromGpu(out[i]), out[i].entry};
+    return hits;
+}
+
+}  // namespace luxel::octree
