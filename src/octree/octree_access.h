@@ -38,4 +38,5 @@ inline vec3 octreeLeafSrgb(const octree::OctreeArrays& tree, uint entry) {
 
 }  // namespace luxel::gpu::shared
 
+#include "gpu/shaders/shared/octree_render.h"
 #include "gpu/shaders/shared/octree_walk.h"

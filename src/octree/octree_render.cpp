@@ -4,7 +4,6 @@
 #include <numbers>
 #include <string>
 
-#include "gpu/shaders/shared/octree_render.h"
 #include "luxel/core/parallel.h"
 #include "octree/octree_access.h"
 #include "octree/octree_render_params.h"
@@ -60,6 +59,9 @@ Status validateRenderOptions(const OctreeRenderOptions& o) {
     if (!(o.albedo >= 0.0f && o.albedo <= 1.0f)) return bad("albedo must be in 0..1");
     if (!(o.phaseG > -1.0f && o.phaseG < 1.0f)) return bad("phase g must be in (-1, 1)");
     if (o.octaves < 1 || o.octaves > 8) return bad("octaves must be in 1..8");
+    if (!(o.octaveWeight >= 0.0f && o.octaveWeight <= 1.0f)) {
+        return bad("octave weight must be in 0..1");
+    }
     return Ok{};
 }
 
@@ -84,6 +86,7 @@ shared::OctreeRenderParams renderParams(const Octree& tree, const voxel::Camera&
     p.sunX = sun.x, p.sunY = sun.y, p.sunZ = sun.z;
     p.ambient = o.ambient;
     p.sunR = o.sun.r, p.sunG = o.sun.g, p.sunB = o.sun.b;
+    p.octaveWeight = o.octaveWeight;
     p.skyR = o.sky.r, p.skyG = o.sky.g, p.skyB = o.sky.b;
     p.width = static_cast<std::uint32_t>(camera.width());
     p.height = static_cast<std::uint32_t>(camera.height());

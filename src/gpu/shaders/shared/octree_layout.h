@@ -50,7 +50,7 @@ struct OctreeRenderParams {
     float rightX, rightY, rightZ, albedo;  // right * tan(fov / 2) * aspect; single-scatter albedo
     float upX, upY, upZ, phaseG;           // up * tan(fov / 2); Henyey-Greenstein g
     float sunX, sunY, sunZ, ambient;       // unit direction towards the sun; sky light fraction
-    float sunR, sunG, sunB, pad0;          // sun radiance scale (linear RGB)
+    float sunR, sunG, sunB, octaveWeight;  // sun radiance scale (linear RGB); octave weight ratio
     float skyR, skyG, skyB, pad1;          // sky and background (linear RGB)
     uint width, height, depth, mode;
     uint sizeX, sizeY, sizeZ, threshold;

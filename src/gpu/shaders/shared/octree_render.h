@@ -23,7 +23,7 @@
 // Early termination: below this transmittance the rest of a ray cannot show (8-bit output).
 #define LUXEL_OCTREE_MIN_TRANSMITTANCE (1.0f / 512.0f)
 // Volume lighting is evaluated at least once per this many voxels of a leaf's chord.
-#define LUXEL_OCTREE_LIGHT_STEP 1.0f
+#define LUXEL_OCTREE_LIGHT_STEP 0.5f
 #define LUXEL_OCTREE_MAX_LIGHT_STEPS 64
 
 LUXEL_SHARED_BEGIN
@@ -115,7 +115,8 @@ LUXEL_FUNC float octreePhaseHG(float cosTheta, float g) {
 
 // Sunlight scattered toward the viewer at `point` per unit scattering: single scattering
 // (E T_sun p) plus octaves i = 1..octaves-1 of multiple scattering, each with the light's
-// transmittance raised to 0.5^i and the phase anisotropy and weight halved (Wrenninge 2015's
+// transmittance raised to 0.5^i, the phase anisotropy halved and the weight multiplied by
+// octaveWeight^i (Wrenninge 2015's
 // art-directable multiple scattering, applied on the light path as real-time cloud renderers do).
 LUXEL_FUNC vec3 octreeInScatter(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams) p,
                                 LUXEL_REAL3 point, vec3 viewDir) {
@@ -129,7 +130,7 @@ LUXEL_FUNC vec3 octreeInScatter(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams) 
     float exponent = 1.0f;
     for (int i = 0; i < max(int(p.octaves), 1); ++i) {
         sum += weight * octreePhaseHG(cosTheta, g) * pow(sunT, exponent);
-        weight *= 0.5f;
+        weight *= p.octaveWeight;
         g *= 0.5f;
         exponent *= 0.5f;
     }
@@ -207,7 +208,8 @@ LUXEL_FUNC vec3 octreeShadeVolume(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams
             if (!octreeRayLeave(r, leaf, LUXEL_REAL(LUXEL_INFINITY))) break;
         }
     }
-    return radiance + octreeSky(p) * transmittance;
+    // Additive is emission only: no background behind the sum.
+    return additive ? radiance : radiance + octreeSky(p) * transmittance;
 }
 
 // The linear RGB of pixel (px, py), rows top to bottom.
