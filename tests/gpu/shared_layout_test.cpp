@@ -77,7 +77,8 @@ TEST(GpuSharedLayout, OctreeRenderParams) {
                               LUXEL_MEMBER(P, sizeX),         LUXEL_MEMBER(P, sizeY),
                               LUXEL_MEMBER(P, sizeZ),         LUXEL_MEMBER(P, threshold),
                               LUXEL_MEMBER(P, shadowSamples), LUXEL_MEMBER(P, flags),
-                              LUXEL_MEMBER(P, octaves),       LUXEL_MEMBER(P, stepCap)}});
+                              LUXEL_MEMBER(P, octaves),       LUXEL_MEMBER(P, stepCap)}},
+                 /* element= */ false);
     expectBuffer("octree_render", 3,
                  {sizeof(VoxelPixel),
                   {LUXEL_MEMBER(VoxelPixel, r), LUXEL_MEMBER(VoxelPixel, g),
