@@ -131,7 +131,8 @@ class SceneReader {
         if (const Json* v = find(root, "type")) {
             // The scene-file reader sends "voxel" documents elsewhere; anything else is a mistake.
             const std::string type = readString(*v, "type");
-            if (type != "2d") fail("type", "unknown scene type '" + type + "' (known: 2d, voxel)");
+            if (type != "2d")
+                fail("type", "unknown scene type '" + type + "' (known: 2d, voxel, octree)");
         }
         if (const Json* v = find(root, "description")) readString(*v, "description");
 

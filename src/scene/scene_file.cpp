@@ -5,6 +5,7 @@
 #include "core/json_fields.h"
 #include "gi2d/scene2d_json_internal.h"
 #include "luxel/core/file_io.h"
+#include "scene/octree_scene_internal.h"
 #include "voxel/voxel_scene_internal.h"
 
 namespace luxel::scene {
@@ -17,6 +18,12 @@ Result<SceneFile> loadSceneFile(const std::string& path, const SceneFileOptions&
     if (voxel::isVoxelScene(*root)) {
         auto scene = voxel::voxelSceneFromJson(*root, *text, path, options.voxelImageSize.width,
                                                options.voxelImageSize.height);
+        if (!scene) return scene.error();
+        return SceneFile{path, std::move(*scene)};
+    }
+    if (isOctreeScene(*root)) {
+        auto scene = octreeSceneFromJson(*root, *text, path, options.voxelImageSize.width,
+                                         options.voxelImageSize.height);
         if (!scene) return scene.error();
         return SceneFile{path, std::move(*scene)};
     }

@@ -126,9 +126,11 @@ void textureByColour(const Json& list, VoxelWorld& world, const TextureSet& text
     }
 }
 
+}  // namespace
+
 // Builds the world described by "world".
-VoxelWorld buildWorld(const Json& w, const std::filesystem::path& baseDir,
-                      const TextureSet& textures) {
+VoxelWorld worldFromJson(const Json& w, const std::filesystem::path& baseDir,
+                         const TextureSet& textures) {
     checkObject(w, "world",
                 {"source", "size", "chunk", "seed", "height", "amplitude", "frequency", "octaves",
                  "water", "caves", "density", "color", "file", "shapes", "texture_by_color"});
@@ -237,7 +239,7 @@ VoxelWorld buildWorld(const Json& w, const std::filesystem::path& baseDir,
     return world;
 }
 
-Camera buildCamera(const Json& c, int width, int height) {
+Camera cameraFromJson(const Json& c, int width, int height) {
     checkObject(c, "camera", {"position", "yaw", "pitch", "look_at", "fov", "size"});
     const Json* pos = find(c, "position");
     if (!pos) throw Invalid{"camera", "needs \"position\": [x, y, z]"};
@@ -265,6 +267,8 @@ Camera buildCamera(const Json& c, int width, int height) {
     if (!camera) throw Invalid{"camera", camera.error().message()};
     return *camera;
 }
+
+namespace {
 
 ShadeOptions buildShading(const Json& root) {
     ShadeOptions o;
@@ -344,9 +348,9 @@ Result<VoxelScene> voxelSceneFromJson(const json::Json& root, std::string_view t
         if (!camera) throw Invalid{"", "a voxel scene needs \"camera\""};
         const std::filesystem::path baseDir = std::filesystem::path(path).parent_path();
         TextureSet textures = buildTextures(find(root, "textures"), baseDir);
-        VoxelWorld built = buildWorld(*world, baseDir, textures);
-        VoxelScene scene{std::move(built), buildCamera(*camera, width, height), buildShading(root),
-                         path, std::move(textures)};
+        VoxelWorld built = worldFromJson(*world, baseDir, textures);
+        VoxelScene scene{std::move(built), cameraFromJson(*camera, width, height),
+                         buildShading(root), path, std::move(textures)};
         return scene;
     } catch (const Invalid& invalid) {
         return json::locate(invalid, text, path);

@@ -2,6 +2,7 @@
 // (luxel/scene/scene_file.h), which reads and parses a file once whatever its type.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <string_view>
 
@@ -9,6 +10,12 @@
 #include "luxel/voxel/voxel_scene.h"
 
 namespace luxel::voxel {
+
+// The parts other scene types share (octree scenes, luxel/scene/scene_file.h); both throw
+// json::Invalid naming the field. A world's "textures" come from its scene.
+VoxelWorld worldFromJson(const json::Json& world, const std::filesystem::path& baseDir,
+                         const TextureSet& textures);
+Camera cameraFromJson(const json::Json& camera, int width, int height);
 
 // Whether a parsed scene document declares "type": "voxel".
 bool isVoxelScene(const json::Json& root);

@@ -41,11 +41,15 @@ TEST(SceneFile, BadFilesGiveLocatedErrors) {
     auto bad = loadSceneFile(malformed);
     ASSERT_FALSE(bad.ok());
     EXPECT_EQ(bad.error().message().rfind(malformed + ":2:", 0), 0u) << bad.error().message();
-    const std::string unknown = writeScene("unknown.json", R"({"type": "octree"})");
+    const std::string unknown = writeScene("unknown.json", R"({"type": "mesh"})");
     auto wrongType = loadSceneFile(unknown);
     ASSERT_FALSE(wrongType.ok());
     EXPECT_EQ(wrongType.error().message(),
-              unknown + ":1:10: type: unknown scene type 'octree' (known: 2d, voxel)");
+              unknown + ":1:10: type: unknown scene type 'mesh' (known: 2d, voxel, octree)");
+    const std::string noTree = writeScene("notree.json", R"({"type": "octree"})");
+    auto treeless = loadSceneFile(noTree);
+    ASSERT_FALSE(treeless.ok());
+    EXPECT_EQ(treeless.error().message(), noTree + ":1:1: an octree scene needs \"octree\"");
 }
 
 }  // namespace

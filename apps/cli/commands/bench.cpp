@@ -32,6 +32,10 @@ int runBench(const BenchArgs& args) {
     if (!file) return reportError(file.error());
     auto backend = parseBenchBackend(args.backend);
     if (!backend) return reportError(backend.error());
+    if (file->kind() == scene::SceneKind::Octree) {
+        return benchOctreeScene({args.scene, *backend, args.device, args.sizes, args.repeat},
+                                std::move(file->octree()));
+    }
     if (file->kind() == scene::SceneKind::Voxel) {
         return benchVoxelScene({args.scene, *backend, args.device, args.sizes, args.repeat},
                                std::move(file->voxel()));

@@ -27,6 +27,10 @@ Runner addRasterCommand(CLI::App& app);
 Runner addCompareSolversCommand(CLI::App& app);
 Runner addDevicesCommand(CLI::App& app);
 Runner addBenchCommand(CLI::App& app);
+Runner addOctreeCommand(CLI::App& app);
+
+// "a voxel scene", "an octree scene", "a 2D scene": for messages that refuse a scene's kind.
+const char* sceneKindPhrase(scene::SceneKind kind);
 
 // Prints "luxel: error: <message>" to stderr and returns the exit code for bad input.
 int reportError(const Error& error);
@@ -100,5 +104,10 @@ int benchVoxelScene(const VoxelBenchRequest& request, voxel::VoxelScene scene);
 
 // `luxel info` on a voxel scene (`size`: WxH overriding the camera's image size, or empty).
 int infoVoxelScene(const voxel::VoxelScene& scene);
+
+// The same three for octree scenes ("type": "octree"); render takes the voxel request's fields.
+int renderOctreeScene(const VoxelRenderRequest& request, scene::OctreeScene scene);
+int benchOctreeScene(const VoxelBenchRequest& request, scene::OctreeScene scene);
+int infoOctreeScene(const scene::OctreeScene& scene);
 
 }  // namespace luxel::cli

@@ -37,11 +37,24 @@ Result<scene::SceneFile> loadScene(const std::string& scenePath, const std::stri
     return scene::loadSceneFile(scenePath, {{dims->first, dims->second}});
 }
 
+const char* sceneKindPhrase(scene::SceneKind kind) {
+    switch (kind) {
+        case scene::SceneKind::Voxel:
+            return "a voxel scene";
+        case scene::SceneKind::Octree:
+            return "an octree scene";
+        case scene::SceneKind::TwoD:
+            break;
+    }
+    return "a 2D scene";
+}
+
 Result<SizedScene> loadSizedScene(const std::string& scenePath, const std::string& size) {
     auto file = loadScene(scenePath, "");
     if (!file) return file.error();
-    if (file->kind() == scene::SceneKind::Voxel) {
-        return Error(scenePath + ": a voxel scene; this command works on 2D scenes");
+    if (file->kind() != scene::SceneKind::TwoD) {
+        return Error(scenePath + ": " + sceneKindPhrase(file->kind()) +
+                     "; this command works on 2D scenes");
     }
     return sizeScene(std::move(file->twoD()), size);
 }

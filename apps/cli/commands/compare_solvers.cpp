@@ -113,9 +113,10 @@ int runCompareSolvers(const CompareSolversArgs& args) {
     if (auto size = parseSize(args.size); !size) return reportError(size.error());
     auto file = loadScene(args.scene, "");
     if (!file) return reportError(file.error());
-    if (file->kind() == scene::SceneKind::Voxel) {
-        return reportError(Error(args.scene + ": a voxel scene; compare-solvers compares the 2D "
-                                              "solvers"));
+    if (file->kind() != scene::SceneKind::TwoD) {
+        return reportError(Error(args.scene + ": " + sceneKindPhrase(file->kind()) +
+                                 "; compare-solvers compares the 2D "
+                                 "solvers"));
     }
     const std::vector<SolverRun> solvers = {
         {"reference", {"--solver", "reference", "--rays", std::to_string(args.rays)}},

@@ -33,6 +33,7 @@ int runInfo(const InfoArgs& args) {
     auto file = loadScene(args.scene, args.size);
     if (!file) return reportError(file.error());
     if (file->kind() == scene::SceneKind::Voxel) return infoVoxelScene(file->voxel());
+    if (file->kind() == scene::SceneKind::Octree) return infoOctreeScene(file->octree());
     auto dims = parseSize(args.size);
     if (!dims) return reportError(dims.error());
     gi2d::Scene2D* scene = &file->twoD();

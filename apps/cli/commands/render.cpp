@@ -212,14 +212,17 @@ int runRender(const RenderArgs& args) {
     Stopwatch loadTime;
     auto file = loadScene(args.scene, args.size);
     if (!file) return reportError(file.error());
-    if (file->kind() == scene::SceneKind::Voxel) {
+    if (file->kind() != scene::SceneKind::TwoD) {
+        const bool voxel = file->kind() == scene::SceneKind::Voxel;
         if (!args.options2DGiven.empty()) {
             return reportError(Error(args.options2DGiven.front() + " applies to 2D scenes; " +
-                                     args.scene + " is a voxel scene"));
+                                     args.scene + " is " + sceneKindPhrase(file->kind())));
         }
-        return renderVoxelScene({args.scene, args.size, args.out, args.png, tone, args.quiet,
-                                 args.stats, args.backend, args.device, loadTime.seconds()},
-                                std::move(file->voxel()));
+        const VoxelRenderRequest request{args.scene,  args.size,         args.out,   args.png,
+                                         tone,        args.quiet,        args.stats, args.backend,
+                                         args.device, loadTime.seconds()};
+        return voxel ? renderVoxelScene(request, std::move(file->voxel()))
+                     : renderOctreeScene(request, std::move(file->octree()));
     }
 
     auto sized = sizeScene(std::move(file->twoD()), args.size);

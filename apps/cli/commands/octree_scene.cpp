@@ -1,0 +1,138 @@
+// `luxel render`, `info` and `bench` on octree scenes ("type": "octree"): the exact octree
+// traversal with the surface, volume and additive modes, on the CPU or (--backend) the GPU.
+#include <cstdio>
+#include <memory>
+
+#include "commands/command.h"
+#include "luxel/core/image_io.h"
+#include "luxel/core/memory.h"
+#include "luxel/core/timer.h"
+#include "luxel/gpu/context.h"
+#include "luxel/octree/octree_gpu.h"
+#include "luxel/octree/octree_render.h"
+
+namespace luxel::cli {
+namespace {
+
+Result<voxel::Camera> resized(const voxel::Camera& camera, int width, int height) {
+    return voxel::Camera::lookAt(camera.position(), camera.position() + camera.forward(),
+                                 camera.fovYDegrees(), width, height);
+}
+
+void printStats(const octree::OctreeStats& s) {
+    std::printf("  octree             depth %d (%d^3), %llu octants (%llu if unshared), %s\n",
+                s.depth, 1 << s.depth, static_cast<unsigned long long>(s.octants),
+                static_cast<unsigned long long>(s.expandedOctants),
+                formatBytes(s.geometryBytes).c_str());
+    std::printf("  voxels             %llu solid of %.3g\n",
+                static_cast<unsigned long long>(s.solidVoxels), static_cast<double>(s.totalVoxels));
+    std::printf("  bits per voxel     %.4f per solid voxel, %.3g per voxel (geometry)\n",
+                s.bitsPerSolidVoxel, s.bitsPerVoxel);
+    if (s.attributeBytes > 0) {
+        std::printf("  colours            %s (attributes, separate from the geometry)\n",
+                    formatBytes(s.attributeBytes).c_str());
+    }
+}
+
+}  // namespace
+
+int renderOctreeScene(const VoxelRenderRequest& request, scene::OctreeScene loaded) {
+    scene::OctreeScene* scene = &loaded;
+    auto context = chooseGpuBackend(request.backend, request.device, request.quiet);
+    if (!context) return reportError(context.error());
+    Stopwatch renderTime;
+    Result<Image> radiance = Image();
+    if (*context) {
+        auto uploaded = octree::OctreeGpu::create(**context, scene->tree);
+        if (!uploaded) return reportError(uploaded.error());
+        radiance = uploaded->render(scene->camera, scene->render);
+    } else {
+        radiance = octree::renderOctree(scene->tree, scene->camera, scene->render);
+    }
+    if (!radiance) return reportError(radiance.error());
+    const double renderSeconds = renderTime.seconds();
+    const Image out =
+        hasExtension(request.out, ".png") ? toneMap(*radiance, request.tone) : *radiance;
+    if (Status s = writeImage(request.out, out); !s) return reportError(s.error());
+    if (!request.png.empty()) {
+        if (Status s = writePng(request.png, toneMap(*radiance, request.tone)); !s) {
+            return reportError(s.error());
+        }
+    }
+    if (request.stats) std::printf("stats solve_seconds=%.6f\n", renderSeconds);
+    if (!request.quiet) {
+        const double pixels = static_cast<double>(radiance->width()) * radiance->height();
+        std::printf("%s: octree (%s), %s mode, image %dx%d, %s\n", request.scene.c_str(),
+                    scene->source.c_str(), octree::octreeModeName(scene->render.mode),
+                    radiance->width(), radiance->height(),
+                    *context ? ("gpu: " + (**context).device().name).c_str() : "cpu");
+        std::printf("  build %.3f s, render %.3f s incl. upload (%.2f Mpixel/s)\n",
+                    scene->buildSeconds, renderSeconds, pixels / renderSeconds * 1e-6);
+        std::printf("  wrote %s%s%s\n", request.out.c_str(), request.png.empty() ? "" : ", ",
+                    request.png.c_str());
+    }
+    return 0;
+}
+
+int infoOctreeScene(const scene::OctreeScene& scene) {
+    std::printf("%s\n", scene.sourcePath.c_str());
+    std::printf("  source             %s (built in %.3f s)\n", scene.source.c_str(),
+                scene.buildSeconds);
+    printStats(octree::measure(scene.tree));
+    const Vec3d p = scene.camera.position(), f = scene.camera.forward();
+    std::printf("  camera             at (%g, %g, %g) looking along (%.3f, %.3f, %.3f), fov %g\n",
+                p.x, p.y, p.z, f.x, f.y, f.z, scene.camera.fovYDegrees());
+    std::printf("  image              %dx%d, %s mode\n", scene.camera.width(),
+                scene.camera.height(), octree::octreeModeName(scene.render.mode));
+    return 0;
+}
+
+int benchOctreeScene(const VoxelBenchRequest& request, scene::OctreeScene loaded) {
+    if (request.repeat < 1) return reportError(Error("--repeat must be at least 1"));
+    scene::OctreeScene* scene = &loaded;
+    std::vector<ImageSize> sizes{{scene->camera.width(), scene->camera.height()}};
+    if (!request.sizes.empty()) {
+        auto parsed = parseImageSizeList(request.sizes, "--sizes");
+        if (!parsed) return reportError(parsed.error());
+        sizes = *parsed;
+    }
+    std::unique_ptr<gpu::Context> context;
+    std::unique_ptr<octree::OctreeGpu> gpuTree;
+    if (request.backend == gpu::Backend::Gpu) {
+        auto opened = openBenchGpu(request.device);
+        if (!opened) return reportError(opened.error());
+        context = std::move(*opened);
+        auto uploaded = octree::OctreeGpu::create(*context, scene->tree);
+        if (!uploaded) return reportError(uploaded.error());
+        gpuTree = std::make_unique<octree::OctreeGpu>(std::move(*uploaded));
+    }
+    std::printf("%s, octree %s mode on the %s, best of %d\n", request.scene.c_str(),
+                octree::octreeModeName(scene->render.mode), gpu::backendName(request.backend),
+                request.repeat);
+    std::printf("%11s %10s %9s%s\n", "size", "ms", "Mpix/s", gpuTree ? "  dispatch ms" : "");
+    for (const auto& [width, height] : sizes) {
+        auto camera = resized(scene->camera, width, height);
+        if (!camera) return reportError(camera.error());
+        double best = 1e300, bestDispatch = 0;
+        for (int r = 0; r < request.repeat + (gpuTree ? 1 : 0); ++r) {  // GPU: one warm-up run
+            std::vector<gpu::PassTiming> timings;
+            Stopwatch clock;
+            auto image = gpuTree ? gpuTree->render(*camera, scene->render, &timings)
+                                 : octree::renderOctree(scene->tree, *camera, scene->render);
+            if (!image) return reportError(image.error());
+            const double ms = clock.seconds() * 1e3;
+            if (gpuTree && r == 0) continue;
+            if (ms < best) {
+                best = ms;
+                bestDispatch = timings.empty() ? 0 : timings.front().milliseconds;
+            }
+        }
+        std::printf("%5dx%-5d %10.2f %9.2f", width, height, best,
+                    static_cast<double>(width) * height / (best * 1e3));
+        if (gpuTree) std::printf("  %11.2f", bestDispatch);
+        std::printf("\n");
+    }
+    return 0;
+}
+
+}  // namespace luxel::cli
