@@ -190,7 +190,11 @@ bool ModeOctree::frameConverged() {
 void ModeOctree::drawStats() {
     ImGui::Text("octree %s: depth %d (%d^3), %llu octants, %s", source_.c_str(), stats_.depth,
                 1 << stats_.depth, static_cast<unsigned long long>(stats_.octants),
-                formatBytes(stats_.geometryBytes + stats_.attributeBytes).c_str());
+                formatBytes(stats_.geometryBytes).c_str());
+    if (stats_.attributeBytes > 0) {
+        ImGui::SameLine();
+        ImGui::Text("+ %s colours", formatBytes(stats_.attributeBytes).c_str());
+    }
     ImGui::Text("  %.3g solid voxels, %.2f bits per solid voxel (geometry)",
                 static_cast<double>(stats_.solidVoxels), stats_.bitsPerSolidVoxel);
 }
