@@ -52,6 +52,7 @@ constexpr CommandSpec kCommands[] = {
     {"mouse_move", ScriptCommand::MouseMove},
     {"mouse_up", ScriptCommand::MouseUp},
     {"click", ScriptCommand::Click},
+    {"wheel", ScriptCommand::Wheel},
     {"screenshot", ScriptCommand::Screenshot},
     {"screenshot_window", ScriptCommand::ScreenshotWindow},
     {"resize", ScriptCommand::Resize},
@@ -136,6 +137,14 @@ std::string parseArguments(const std::vector<std::string>& args, ScriptEvent& ev
             }
             return "";
         }
+        case ScriptCommand::Wheel:
+            if (auto e = expectCount(1, 1, "'wheel NOTCHES' (positive: up, away from you)");
+                !e.empty())
+                return e;
+            if (!parseInt(args[0], event.y) || event.y < -100 || event.y > 100 || event.y == 0) {
+                return "'" + args[0] + "' is not a wheel step in -100..100 other than 0";
+            }
+            return "";
         case ScriptCommand::Resize:
             if (auto e = expectCount(2, 2, "'resize WIDTH HEIGHT'"); !e.empty()) return e;
             if (!parseInt(args[0], event.x) || !parseInt(args[1], event.y) || event.x < 1 ||

@@ -6,7 +6,8 @@
 //   wait SECONDS | wait_frames N | wait_render | wait_converged
 //   key NAME | key_down NAME | key_up NAME        NAME: an SDL key name, optional ctrl+/shift+/alt+
 //   mouse_down X Y [left|middle|right] | mouse_move X Y | mouse_up X Y [button] | click X Y
-//   [button] screenshot FILE.png | screenshot_window FILE.png | quit
+//   [button] | wheel NOTCHES
+//   screenshot FILE.png | screenshot_window FILE.png | quit
 //
 // Mouse coordinates are window pixels. Parsing is pure (no SDL) so it is unit-tested.
 #pragma once
@@ -32,6 +33,7 @@ enum class ScriptCommand {
     MouseMove,
     MouseUp,
     Click,
+    Wheel,
     Screenshot,
     ScreenshotWindow,
     Resize,
@@ -52,7 +54,7 @@ struct ScriptEvent {
     double seconds = 0.0;  // wait
     int frames = 0;        // wait_frames
     KeyChord key;          // key commands
-    int x = 0, y = 0;      // mouse commands, window pixels
+    int x = 0, y = 0;      // mouse commands, window pixels; wheel: y notches (up positive)
     MouseButton button = MouseButton::Left;
     std::string path;  // screenshot commands
 };

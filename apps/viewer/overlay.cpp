@@ -43,6 +43,7 @@ void drawOverlay(const OverlayInfo& info, ViewerMode& mode) {
     } else {
         ImGui::TextUnformatted("rendering the first frame...");
     }
+    mode.drawStats();
     if (!info.lastScreenshot.empty()) ImGui::Text("wrote %s", info.lastScreenshot.c_str());
     ImGui::TextUnformatted("F1 panels   F12 screenshot   Esc quit");
     if (ImGui::CollapsingHeader("controls")) mode.drawPanel();

@@ -109,6 +109,14 @@ std::vector<SDL_Event> toSdlEvents(const ScriptEvent& event, ScriptedMouse& mous
             events.push_back(buttonEvent(SDL_MOUSEBUTTONUP, event, mouse, windowId));
             return events;
         }
+        case ScriptCommand::Wheel: {
+            SDL_Event e{};
+            e.type = SDL_MOUSEWHEEL;
+            e.wheel.windowID = windowId;
+            e.wheel.y = event.y;
+            e.wheel.direction = SDL_MOUSEWHEEL_NORMAL;
+            return {e};
+        }
         default:
             return {};
     }

@@ -32,6 +32,8 @@ class ViewerMode {
     virtual void update(double seconds) = 0;
     // The mode's ImGui panel contents (inside the "luxel-view" window).
     virtual void drawPanel() = 0;
+    // Lines always shown above the panel, under the frame statistics.
+    virtual void drawStats() {}
 
     virtual std::shared_ptr<const Frame> latestFrame(bool* fresh) = 0;
     // The latest frame shows the current state (see ScriptClock).
@@ -40,7 +42,7 @@ class ViewerMode {
     // Internal resolution; the frame is scaled to the window.
     virtual int internalWidth() const = 0;
     virtual int internalHeight() const = 0;
-    // "2D" or "voxel", for the overlay and the exit summary.
+    // "2D", "voxel" or "octree", for the overlay and the exit summary.
     virtual std::string name() const = 0;
 };
 

@@ -19,13 +19,16 @@ Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
     ParsedOptions parsed;
     ViewerOptions& o = parsed.options;
     std::string size, internalSize, backend = "auto", solver = "hrc", merge = "vanilla";
-    CLI::App app{"luxel-view: interactive 2D radiance cascades and voxel viewer", "luxel-view"};
-    app.add_option("scene", o.scene, "2D scene (.json) or voxel scene (\"type\": \"voxel\")")
+    CLI::App app{"luxel-view: interactive 2D radiance cascades, voxel and octree viewer",
+                 "luxel-view"};
+    app.add_option("scene", o.scene,
+                   "2D scene (.json), voxel scene (\"type\": \"voxel\") or octree scene (\"type\": "
+                   "\"octree\")")
         ->required();
     app.add_option("--size", size, "window size WxH");
     app.add_option("--internal-size", internalSize, "render size WxH (independent of the window)");
     app.add_option("--internal-scale", o.internalScale,
-                   "render size as a fraction of the canvas (2D) or window (voxel)")
+                   "render size as a fraction of the canvas (2D) or window (voxel, octree)")
         ->check(CLI::Range(0.05f, 4.0f));
     app.add_option("--backend", backend, "auto | cpu | gpu");
     app.add_option("--device", o.device, "Vulkan device index or name part");

@@ -11,12 +11,13 @@
 namespace luxel::viewer {
 
 struct ViewerOptions {
-    std::string scene;    // a 2D scene or a voxel scene (type "voxel")
+    std::string scene;    // a 2D scene, a voxel scene (type "voxel") or an octree (type "octree")
     int windowWidth = 0;  // 0: chosen from the scene
     int windowHeight = 0;
     int internalWidth = 0;  // 0: from internalScale
     int internalHeight = 0;
-    float internalScale = 0.0f;  // 0: the mode's default (2D: of the canvas; voxel: of the window)
+    float internalScale =
+        0.0f;  // 0: the mode's default (2D: of the canvas; voxel, octree: of the window)
     gpu::Backend backend = gpu::Backend::Auto;     // --backend auto | cpu | gpu
     std::string device;                            // Vulkan device index or name part
     gi2d::Solver2D solver = gi2d::Solver2D::Hrc;   // 2D: --solver hrc | rc | reference

@@ -71,6 +71,9 @@ TEST(InputScript, ErrorsNameTheFileAndLine) {
         {"at soon quit\n", "s.txt:1: expected 'at SECONDS"},
         {"quit now\n", "s.txt:1: quit: expected no arguments"},
         {"resize 0 10\n", "s.txt:1: resize: window size '0 10'"},
+        {"wheel\n", "s.txt:1: wheel: expected 'wheel NOTCHES'"},
+        {"wheel 0\n", "s.txt:1: wheel: '0' is not a wheel step"},
+        {"wheel up\n", "s.txt:1: wheel: 'up' is not a wheel step"},
     };
     for (const Case& c : cases) {
         auto script = parseScript(c.text, "s.txt", anyKey);
@@ -78,6 +81,15 @@ TEST(InputScript, ErrorsNameTheFileAndLine) {
         EXPECT_NE(script.error().message().find(c.needle), std::string::npos)
             << script.error().message();
     }
+}
+
+TEST(InputScript, WheelTakesSignedNotches) {
+    auto script = parseScript("wheel 3\nwheel -2\n", "s.txt", anyKey);
+    ASSERT_TRUE(script) << script.error().message();
+    ASSERT_EQ(script->events.size(), 2u);
+    EXPECT_EQ(script->events[0].command, ScriptCommand::Wheel);
+    EXPECT_EQ(script->events[0].y, 3);
+    EXPECT_EQ(script->events[1].y, -2);
 }
 
 TEST(InputScript, MissingFileIsAnError) {

@@ -14,63 +14,18 @@
 #include "luxel/core/image_io.h"
 #include "luxel/gi2d/scene2d_json.h"
 #include "luxel/gpu/context.h"
-#include "support/run_command.h"
+#include "viewer_xvfb.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using luxel::Image;
-
-// Sanitizer builds: SDL's video subsystem leaves libdbus allocations behind at exit, and libdbus
-// (built without frame pointers) gives them stacks LeakSanitizer cannot match to a suppression.
-// Leak checks stay on for the viewer's logic, which the unit tests link; only the windowed
-// process runs without them.
-#ifdef __SANITIZE_ADDRESS__
-constexpr const char* kViewerSanitizerOptions = "ASAN_OPTIONS=detect_leaks=0 ";
-#else
-constexpr const char* kViewerSanitizerOptions = "";
-#endif
-
+using luxel::test::meanAbsDiff;
+using luxel::test::regionMean;
+using luxel::test::run;
 using luxel::test::RunResult;
-
-RunResult run(const std::string& command) {
-    return luxel::test::runCommand(command);
-}
-
-// Mean of the first three channels over the square of half-side r around (cx, cy).
-double regionMean(const Image& image, int cx, int cy, int r) {
-    double sum = 0;
-    int n = 0;
-    for (int y = cy - r; y <= cy + r; ++y) {
-        for (int x = cx - r; x <= cx + r; ++x) {
-            if (!image.inside(x, y)) continue;
-            const luxel::Rgb c = image.rgb(x, y);
-            sum += (c.r + c.g + c.b) / 3.0;
-            ++n;
-        }
-    }
-    return n ? sum / n : 0.0;
-}
-
-double stddev(const Image& image) {
-    const double mean = regionMean(image, image.width() / 2, image.height() / 2,
-                                   std::max(image.width(), image.height()));
-    double sq = 0;
-    for (int y = 0; y < image.height(); ++y) {
-        for (int x = 0; x < image.width(); ++x) {
-            const luxel::Rgb c = image.rgb(x, y);
-            const double v = (c.r + c.g + c.b) / 3.0 - mean;
-            sq += v * v;
-        }
-    }
-    return std::sqrt(sq / static_cast<double>(image.pixelCount()));
-}
-
-double meanAbsDiff(const Image& a, const Image& b) {
-    double sum = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) sum += std::fabs(a.data()[i] - b.data()[i]);
-    return sum / static_cast<double>(a.size());
-}
+using luxel::test::stddev;
+using luxel::test::ViewerXvfb;
 
 // A 256x256 room: a lamp on the left and an opaque pillar in the middle.
 const char* kLampScene = R"({
@@ -91,50 +46,6 @@ const char* kVoxelScene = R"({
   "sun": [0.4, 1.0, 0.3],
   "render": {"reflections": 1, "shadows": true, "textures": true}
 })";
-
-class ViewerXvfb : public testing::Test {
-  protected:
-    void SetUp() override {
-        ASSERT_EQ(run("command -v xvfb-run").exitCode, 0)
-            << "xvfb-run is missing: install the Debian package xvfb (deps/debian-packages.txt, "
-               "scripts/setup.sh); the viewer tests need a virtual display";
-        dir_ = fs::temp_directory_path() /
-               ("luxel_view_" + std::to_string(getpid()) + "_" +
-                testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    // Screenshots stay for a look when a test fails or LUXEL_KEEP_VIEW_OUTPUT is set.
-    void TearDown() override {
-        if (!HasFailure() && !std::getenv("LUXEL_KEEP_VIEW_OUTPUT")) fs::remove_all(dir_);
-    }
-
-    std::string write(const std::string& name, const std::string& text) {
-        std::ofstream(dir_ / name) << text;
-        return (dir_ / name).string();
-    }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-    // Runs the viewer on a private virtual display, from the test's folder.
-    RunResult view(const std::string& args) {
-        // Distinct starting display numbers keep parallel tests from racing for one server.
-        static int serial = 0;
-        const int server = 100 + (getpid() % 400) * 4 + (serial++ % 4);
-        const std::string command = "cd '" + dir_.string() + "' && SDL_RENDER_DRIVER=software " +
-                                    kViewerSanitizerOptions + "timeout 120 xvfb-run -a -n " +
-                                    std::to_string(server) + " -s '-screen 0 1024x768x24' " +
-                                    LUXEL_VIEW_PATH + " " + args;
-        return run(command);
-    }
-
-    Image png(const std::string& name) {
-        auto image = luxel::readPng(path(name));
-        EXPECT_TRUE(image) << (image ? "" : image.error().message());
-        return image ? *image : Image(1, 1, 3);
-    }
-
-    fs::path dir_;
-};
 
 TEST_F(ViewerXvfb, DraggingTheLightMovesTheLightAndRTogglesGi) {
     const std::string scene = write("lamp.json", kLampScene);
