@@ -30,8 +30,8 @@ class OctreeSource {
     virtual Int3 size() const = 0;
     virtual bool hasColours() const = 0;
     // The layout a build uses unless told: LeafOrder where colours vary voxel by voxel (voxel
-    // worlds), PerEntry where they come in large uniform regions (docs/algorithms/
-    // sparse-voxel-octree.md §2 weighs the two).
+    // worlds), PerEntry where they come in large uniform regions (the trade-off is measured in
+    // docs/algorithms/sparse-voxel-octree.md §2).
     virtual AttributeLayout preferredLayout() const { return AttributeLayout::PerEntry; }
     // The opacity and colour of one voxel inside size().
     virtual void voxel(Int3 cell, std::uint8_t& opacity, Colour& colour) const = 0;
