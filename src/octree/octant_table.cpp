@@ -30,7 +30,7 @@ void OctantTable::reindex() {
     used_ = 0;
     for (std::uint64_t o = 1; o < octants; ++o) {
         const auto base = static_cast<std::uint32_t>(o * 8);
-        const Colour* colours = tree_.hasColours() ? &tree_.colours[base] : nullptr;
+        const Colour* colours = perEntry() ? &tree_.colours[base] : nullptr;
         const std::uint64_t h = hashOf(&tree_.nodes[base], colours);
         // Keep the first of duplicate octants (an input array may hold copies).
         bool present = false;
@@ -79,13 +79,13 @@ void OctantTable::grow() {
     for (std::uint32_t octant : old) {
         if (octant == 0) continue;
         const std::uint32_t base = octant * 8;
-        const Colour* colours = tree_.hasColours() ? &tree_.colours[base] : nullptr;
+        const Colour* colours = perEntry() ? &tree_.colours[base] : nullptr;
         insert(base, hashOf(&tree_.nodes[base], colours));
     }
 }
 
 std::uint32_t OctantTable::intern(const std::uint32_t* entries, const Colour* colours) {
-    if (!tree_.hasColours()) colours = nullptr;
+    if (!perEntry()) colours = nullptr;
     const std::uint64_t h = hashOf(entries, colours);
     std::uint64_t i = h & (slots_.size() - 1);
     for (; slots_[i] != 0; i = (i + 1) & (slots_.size() - 1)) {
@@ -94,7 +94,7 @@ std::uint32_t OctantTable::intern(const std::uint32_t* entries, const Colour* co
     if (tree_.nodes.size() + 8 > kMaxEntries) return 0;
     const auto base = static_cast<std::uint32_t>(tree_.nodes.size());
     tree_.nodes.insert(tree_.nodes.end(), entries, entries + 8);
-    if (tree_.hasColours()) {
+    if (perEntry()) {
         if (colours) {
             tree_.colours.insert(tree_.colours.end(), colours, colours + 8);
         } else {

@@ -1,7 +1,8 @@
-// Hash-consing of octants: every octant with the same 8 entries (and, in a coloured tree, the
-// same 8 leaf colours) is stored once, which turns the octree into a DAG (SVDAG sharing, Kämpe,
-// Sintorn and Assarsson 2013). An open-addressing table of octant bases into the tree's own
-// arrays, so it costs 4 bytes per slot beyond the octants themselves.
+// Hash-consing of octants: every octant with the same 8 entries (and, in a tree with per-entry
+// colours, the same 8 leaf colours; LeafOrder trees share on the entries alone) is stored once,
+// which turns the octree into a DAG (SVDAG sharing, Kämpe, Sintorn and Assarsson 2013). An
+// open-addressing table of octant bases into the tree's own arrays, so it costs 4 bytes per slot
+// beyond the octants themselves.
 #pragma once
 
 #include <cstdint>
@@ -16,7 +17,7 @@ class OctantTable {
     // Octants are appended to `tree` (entries 0-7, the root, are never shared or returned).
     explicit OctantTable(Octree& tree);
 
-    // The base of the octant with these entries (and colours, in a coloured tree; may be null
+    // The base of the octant with these entries (and colours, in a PerEntry tree; may be null
     // otherwise), appended when new. 0 when the array would exceed kMaxEntries.
     std::uint32_t intern(const std::uint32_t* entries, const Colour* colours);
 
@@ -31,6 +32,7 @@ class OctantTable {
     bool equalAt(std::uint32_t base, const std::uint32_t* entries, const Colour* colours) const;
     void insert(std::uint32_t base, std::uint64_t hash);
     void grow();
+    bool perEntry() const { return tree_.attributes() == AttributeLayout::PerEntry; }
 
     Octree& tree_;
     std::vector<std::uint32_t> slots_;  // octant number (base / 8), 0 = free

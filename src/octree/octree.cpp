@@ -3,16 +3,35 @@
 #include <unordered_map>
 #include <vector>
 
+#include "octree/leaf_order.h"
+
 namespace luxel::octree {
 
+const char* attributeLayoutName(AttributeLayout layout) {
+    switch (layout) {
+        case AttributeLayout::None:
+            return "none";
+        case AttributeLayout::PerEntry:
+            return "per-entry";
+        case AttributeLayout::LeafOrder:
+            return "leaf-order";
+    }
+    return "none";
+}
+
 Leaf findLeaf(const Octree& tree, Int3 cell) {
+    const bool leafOrder = tree.leafOrder();
     std::uint32_t base = 0;
+    std::uint32_t firstLeaf = 0;  // LeafOrder: the leaf index where the current octant starts
     for (int level = tree.depth - 1; level >= 0; --level) {
-        const std::uint32_t entry = base + childSlot(cell.x, cell.y, cell.z, level);
+        const int slot = childSlot(cell.x, cell.y, cell.z, level);
+        const std::uint32_t entry = base + slot;
         const std::uint32_t value = tree.nodes[entry];
+        if (leafOrder) firstLeaf += leavesBefore(tree, base, slot);
         if (isLeaf(value) || level == 0) {
             const int mask = ~((1 << level) - 1);
-            return {entry, static_cast<std::uint8_t>(isLeaf(value) ? value : 0), level,
+            return {entry, leafOrder ? firstLeaf : entry,
+                    static_cast<std::uint8_t>(isLeaf(value) ? value : 0), level,
                     Int3(cell.x & mask, cell.y & mask, cell.z & mask)};
         }
         base = childBase(value);
@@ -26,7 +45,7 @@ std::uint8_t opacityAt(const Octree& tree, Int3 cell) {
 
 Colour colourAt(const Octree& tree, Int3 cell) {
     if (!tree.hasColours()) return {};
-    return tree.colours[findLeaf(tree, cell).entry];
+    return tree.colours[findLeaf(tree, cell).colourIndex];
 }
 
 namespace {
@@ -93,7 +112,9 @@ OctreeStats measure(const Octree& tree) {
     s.depth = tree.depth;
     s.octants = tree.nodes.size() / 8;
     s.geometryBytes = tree.nodes.size() * sizeof(std::uint32_t);
+    s.layout = tree.attributes();
     s.attributeBytes = tree.colours.size() * sizeof(Colour);
+    if (tree.leafOrder()) s.attributeIndexBytes = tree.leafCounts.size() * sizeof(std::uint32_t);
     const std::uint64_t side = static_cast<std::uint64_t>(tree.side());
     s.totalVoxels = side * side * side;
     if (tree.nodes.size() < 8) return s;

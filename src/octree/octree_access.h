@@ -10,14 +10,17 @@
 
 namespace luxel::octree {
 
-// The arrays the kernels read: the entries and, when present, one colour per entry.
+// The arrays the kernels read: the entries and, when present, the colours (per entry, or in leaf
+// order with the per-octant leaf counts).
 struct OctreeArrays {
     const std::uint32_t* nodes = nullptr;
     const Colour* colours = nullptr;
+    const std::uint32_t* leafCounts = nullptr;  // LeafOrder trees only
 };
 
 inline OctreeArrays arraysOf(const Octree& tree) {
-    return {tree.nodes.data(), tree.hasColours() ? tree.colours.data() : nullptr};
+    return {tree.nodes.data(), tree.hasColours() ? tree.colours.data() : nullptr,
+            tree.leafOrder() ? tree.leafCounts.data() : nullptr};
 }
 
 }  // namespace luxel::octree
@@ -30,9 +33,17 @@ inline uint octreeEntry(const octree::OctreeArrays& tree, uint index) {
     return tree.nodes[index];
 }
 
-inline vec3 octreeLeafSrgb(const octree::OctreeArrays& tree, uint entry) {
+inline bool octreeLeafOrder(const octree::OctreeArrays& tree) {
+    return tree.leafCounts != nullptr;
+}
+
+inline uint octreeLeafCount(const octree::OctreeArrays& tree, uint octant) {
+    return tree.leafCounts[octant];
+}
+
+inline vec3 octreeLeafSrgb(const octree::OctreeArrays& tree, uint index) {
     if (!tree.colours) return vec3(0.8f);
-    const octree::Colour c = tree.colours[entry];
+    const octree::Colour c = tree.colours[index];
     return vec3(c.r / 255.0f, c.g / 255.0f, c.b / 255.0f);
 }
 

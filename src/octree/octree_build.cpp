@@ -3,6 +3,7 @@
 #include <string>
 
 #include "octant_table.h"
+#include "octree/leaf_order.h"
 
 namespace luxel::octree {
 
@@ -107,6 +108,7 @@ class WorldSource final : public OctreeSource {
     }
     Int3 size() const override { return world_.size(); }
     bool hasColours() const override { return true; }
+    AttributeLayout preferredLayout() const override { return AttributeLayout::LeafOrder; }
     void voxel(Int3 c, std::uint8_t& opacity, Colour& colour) const override {
         const voxel::Voxel v = world_.get(c.x, c.y, c.z);
         opacity = v.solid() ? 255 : 0;
@@ -144,11 +146,15 @@ Result<Octree> buildOctree(const OctreeSource& source, const BuildOptions& optio
                      "x" + std::to_string(size.z) + " needs depth " + std::to_string(depth) +
                      ", more than the supported " + std::to_string(kMaxDepth));
     }
+    const AttributeLayout layout = options.layout.value_or(source.preferredLayout());
+    const bool colours = options.colours && source.hasColours() && layout != AttributeLayout::None;
+    if (colours && layout == AttributeLayout::LeafOrder) {
+        return buildLeafOrderTree(source, options, depth);
+    }
     Octree tree;
     tree.depth = depth;
     tree.size = size;
     tree.nodes.assign(8, 0);
-    const bool colours = options.colours && source.hasColours();
     if (colours) tree.colours.assign(8, Colour{});
     Builder builder(source, tree, colours, options.collapse);
     const int half = 1 << (depth - 1);

@@ -34,6 +34,7 @@ std::uint32_t OctreeEditor::entryFor(const std::uint32_t* entries, const Colour*
 }
 
 Status OctreeEditor::set(Int3 cell, std::uint8_t opacity, Colour colour) {
+    if (tree_->leafOrder()) return setLeafOrder(cell, opacity, colour);
     Octree& t = *tree_;
     const bool colours = t.hasColours();
     if (opacity == 0 || !colours) colour = Colour{};
@@ -100,8 +101,18 @@ Status OctreeEditor::set(Int3 cell, std::uint8_t opacity, Colour colour) {
 Octree compacted(const Octree& tree) {
     Octree out;
     out.depth = tree.depth;
+    out.size = tree.size;
+    out.layout = tree.layout;
     out.nodes.assign(8, 0);
-    if (tree.hasColours()) out.colours.assign(8, Colour{});
+    // PerEntry colours move with their entries; LeafOrder colours stay (the expanded tree is the
+    // same) and the leaf counts move with their octants.
+    const bool perEntry = tree.attributes() == AttributeLayout::PerEntry;
+    const bool leafOrder = tree.leafOrder();
+    if (perEntry) out.colours.assign(8, Colour{});
+    if (leafOrder) {
+        out.colours = tree.colours;
+        out.leafCounts.assign(1, tree.leafCounts[0]);
+    }
     std::unordered_map<std::uint32_t, std::uint32_t> moved{{0u, 0u}};  // old base -> new base
     // Depth-first with an explicit stack of (old base, new base) octants whose entries to copy.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> todo{{0u, 0u}};
@@ -110,7 +121,7 @@ Octree compacted(const Octree& tree) {
         todo.pop_back();
         for (int i = 0; i < 8; ++i) {
             const std::uint32_t v = tree.nodes[from + i];
-            if (tree.hasColours()) out.colours[to + i] = tree.colours[from + i];
+            if (perEntry) out.colours[to + i] = tree.colours[from + i];
             if (isLeaf(v)) {
                 out.nodes[to + i] = v;
                 continue;
@@ -119,7 +130,8 @@ Octree compacted(const Octree& tree) {
             if (fresh) {
                 it->second = static_cast<std::uint32_t>(out.nodes.size());
                 out.nodes.resize(out.nodes.size() + 8, 0);
-                if (tree.hasColours()) out.colours.resize(out.nodes.size());
+                if (perEntry) out.colours.resize(out.nodes.size());
+                if (leafOrder) out.leafCounts.push_back(tree.leafCounts[childBase(v) / 8]);
                 todo.push_back({childBase(v), it->second});
             }
             out.nodes[to + i] = branchTo(it->second);

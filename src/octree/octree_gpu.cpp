@@ -16,13 +16,15 @@ struct OctreeGpu::State {
     gpu::Program* castProgram = nullptr;
     gpu::Program* renderProgram = nullptr;
     std::shared_ptr<gpu::Buffer> nodes;
-    std::shared_ptr<gpu::Buffer> colours;  // one uint per entry, or one dummy
+    std::shared_ptr<gpu::Buffer> colours;     // one uint per entry or leaf, or one dummy
+    std::shared_ptr<gpu::Buffer> leafCounts;  // one uint per octant (LeafOrder), or one dummy
     std::shared_ptr<gpu::Buffer> params;
     Octree shape;  // depth and size only (no arrays): what renderParams reads
     std::uint64_t bytes = 0;
     int depth = 1;
     Int3 size;
     bool hasColours = false;
+    bool leafOrder = false;
 };
 
 OctreeGpu::OctreeGpu(std::unique_ptr<State> state) : state_(std::move(state)) {}
@@ -36,8 +38,10 @@ std::uint64_t OctreeGpu::deviceBytes() const {
 
 Result<OctreeGpu> OctreeGpu::create(gpu::Context& context, const Octree& tree) {
     const std::uint64_t colourWords = tree.hasColours() ? tree.colours.size() : 1;
-    const std::uint64_t bytes = (tree.nodes.size() + colourWords) * sizeof(std::uint32_t) +
-                                sizeof(shared::OctreeRenderParams);
+    const std::uint64_t countWords = tree.leafOrder() ? tree.leafCounts.size() : 1;
+    const std::uint64_t bytes =
+        (tree.nodes.size() + colourWords + countWords) * sizeof(std::uint32_t) +
+        sizeof(shared::OctreeRenderParams);
     const std::uint64_t limit = context.device().deviceLocalBytes;
     if (limit > 0 && bytes > limit) {
         return Error("octree of " + formatBytes(bytes) + " does not fit the device's " +
@@ -50,10 +54,11 @@ Result<OctreeGpu> OctreeGpu::create(gpu::Context& context, const Octree& tree) {
     state->shape.depth = tree.depth;
     state->shape.size = tree.size;
     state->hasColours = tree.hasColours();
-    auto program = context.program("octree_cast", 3, sizeof(shared::OctreeCastPush));
+    state->leafOrder = tree.leafOrder();
+    auto program = context.program("octree_cast", 4, sizeof(shared::OctreeCastPush));
     if (!program) return program.error();
     state->castProgram = *program;
-    auto renderProgram = context.program("octree_render", 4, 0);
+    auto renderProgram = context.program("octree_render", 5, 0);
     if (!renderProgram) return renderProgram.error();
     state->renderProgram = *renderProgram;
     auto nodes = context.createBuffer(tree.nodes.size() * sizeof(std::uint32_t));
@@ -74,6 +79,15 @@ Result<OctreeGpu> OctreeGpu::create(gpu::Context& context, const Octree& tree) {
     if (Status s = context.upload(*state->colours, std::as_bytes(std::span(packed))); !s) {
         return s.error();
     }
+    const std::vector<std::uint32_t> dummy(1, 0);
+    const std::span<const std::uint32_t> counts =
+        tree.leafOrder() ? std::span<const std::uint32_t>(tree.leafCounts) : std::span(dummy);
+    auto leafCounts = context.createBuffer(counts.size() * sizeof(std::uint32_t));
+    if (!leafCounts) return leafCounts.error();
+    state->leafCounts = std::move(*leafCounts);
+    if (Status s = context.upload(*state->leafCounts, std::as_bytes(counts)); !s) {
+        return s.error();
+    }
     auto params = context.createBuffer(sizeof(shared::OctreeRenderParams));
     if (!params) return params.error();
     state->params = std::move(*params);
@@ -86,7 +100,8 @@ Result<Image> OctreeGpu::render(const voxel::Camera& camera, const OctreeRenderO
     if (Status s = validateRenderOptions(options); !s) return s.error();
     State& s = *state_;
     shared::OctreeRenderParams p = renderParams(s.shape, camera, options);
-    if (!(p.flags & LUXEL_OCTREE_COLOURS) && s.hasColours) p.flags |= LUXEL_OCTREE_COLOURS;
+    if (s.hasColours) p.flags |= LUXEL_OCTREE_COLOURS;
+    if (s.leafOrder) p.flags |= LUXEL_OCTREE_LEAF_ORDER;
     const std::uint64_t pixels = static_cast<std::uint64_t>(camera.width()) * camera.height();
     if (Status st = checkMemory(pixels * sizeof(shared::VoxelPixel), "an octree image"); !st) {
         return st.error();
@@ -99,7 +114,7 @@ Result<Image> OctreeGpu::render(const voxel::Camera& camera, const OctreeRenderO
     gpu::Dispatch d;
     d.name = "octree render";
     d.program = s.renderProgram;
-    d.buffers = {s.params.get(), s.nodes.get(), s.colours.get(), output->get()};
+    d.buffers = {s.params.get(), s.nodes.get(), s.colours.get(), output->get(), s.leafCounts.get()};
     d.setThreads(static_cast<std::uint64_t>(camera.width()),
                  static_cast<std::uint64_t>(camera.height()));
     auto passes = s.context->run(std::span(&d, 1));
@@ -138,12 +153,12 @@ Result<std::vector<OctreeHit>> OctreeGpu::castRays(std::span<const voxel::Ray> r
     gpu::Dispatch d;
     d.name = "octree cast rays";
     d.program = s.castProgram;
-    d.buffers = {s.nodes.get(), rayBuffer->get(), hitBuffer->get()};
+    d.buffers = {s.nodes.get(), rayBuffer->get(), hitBuffer->get(), s.leafCounts.get()};
     d.setPush(shared::OctreeCastPush{
         static_cast<std::uint32_t>(rays.size()), static_cast<std::uint32_t>(cap),
         static_cast<std::uint32_t>(s.depth), std::max<std::uint32_t>(options.threshold, 1),
         static_cast<std::uint32_t>(size.x), static_cast<std::uint32_t>(size.y),
-        static_cast<std::uint32_t>(size.z), 0u});
+        static_cast<std::uint32_t>(size.z), s.leafOrder ? LUXEL_OCTREE_LEAF_ORDER : 0u});
     d.setThreads(rays.size());
     auto passes = s.context->run(std::span(&d, 1));
     if (!passes) return passes.error();
@@ -153,7 +168,7 @@ Result<std::vector<OctreeHit>> OctreeGpu::castRays(std::span<const voxel::Ray> r
         return st.error();
     }
     for (std::size_t i = 0; i < out.size(); ++i)
-        hits[i] = {voxel::hitFromGpu(out[i]), out[i].entry};
+        hits[i] = {voxel::hitFromGpu(out[i]), out[i].entry, out[i].pad0};  // pad0: colour index
     return hits;
 }
 

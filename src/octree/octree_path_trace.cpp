@@ -20,7 +20,7 @@ double extinction(std::uint32_t value, float opacityScale) {
 }
 
 // The distance along o + t d (d unit) at which the optical depth reaches `depth`, or +inf when the
-// ray leaves the medium first; `entry` receives the leaf there.
+// ray leaves the medium first; `entry` receives the colour index of the leaf there.
 double freeFlight(const OctreeArrays& tree, const shared::OctreeRenderParams& p, dvec3 o, dvec3 d,
                   double depth, std::uint32_t& entry) {
     shared::OctreeRay r;
@@ -35,7 +35,7 @@ double freeFlight(const OctreeArrays& tree, const shared::OctreeRenderParams& p,
             const double sigma = extinction(leaf.value, p.opacityScale);
             const double t0 = r.walk.t, t1 = shared::octreeLeafExitT(r, leaf);
             if (sigma * (t1 - t0) >= depth) {
-                entry = leaf.entry;
+                entry = leaf.colourIndex;
                 return t0 + depth / sigma;
             }
             depth -= sigma * (t1 - t0);

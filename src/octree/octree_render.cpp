@@ -99,7 +99,8 @@ shared::OctreeRenderParams renderParams(const Octree& tree, const voxel::Camera&
     p.shadowSamples = static_cast<std::uint32_t>(o.shadowSamples);
     p.flags = (o.shadows ? LUXEL_OCTREE_SHADOWS : 0u) |
               (o.scattering ? LUXEL_OCTREE_SCATTERING : 0u) |
-              (tree.hasColours() ? LUXEL_OCTREE_COLOURS : 0u);
+              (tree.hasColours() ? LUXEL_OCTREE_COLOURS : 0u) |
+              (tree.leafOrder() ? LUXEL_OCTREE_LEAF_ORDER : 0u);
     p.octaves = static_cast<std::uint32_t>(o.octaves);
     p.stepCap = static_cast<std::uint32_t>(3 * (size.x + size.y + size.z));
     return p;

@@ -12,12 +12,12 @@ OctreeHit castRay(const Octree& tree, const voxel::Ray& ray, const TraceOptions&
     if (!voxel::finiteRay(ray) || !(options.tMax >= 0.0)) return {};
     const Int3 size = tree.extent();
     const int cap = options.stepCap > 0 ? options.stepCap : 3 * (size.x + size.y + size.z);
-    shared::uint entry = 0;
-    const shared::VoxelTrace trace = shared::octreeTraverse(
+    shared::uint entry = 0, colourIndex = 0;
+    const shared::VoxelTrace trace = shared::octreeTraverseLeaf(
         arraysOf(tree), tree.depth, {size.x, size.y, size.z}, voxel::toShared(ray.origin),
         voxel::toShared(ray.direction), options.tMax, cap,
-        std::max<shared::uint>(options.threshold, 1), entry);
-    return {voxel::hitFromTrace(ray, trace), entry};
+        std::max<shared::uint>(options.threshold, 1), entry, colourIndex);
+    return {voxel::hitFromTrace(ray, trace), entry, colourIndex};
 }
 
 std::vector<OctreeHit> castRays(const Octree& tree, std::span<const voxel::Ray> rays,

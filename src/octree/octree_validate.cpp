@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "octree/leaf_order.h"
+
 namespace luxel::octree {
 namespace {
 
@@ -90,8 +92,40 @@ Status validateOctree(std::span<const std::uint32_t> nodes, int depth, std::uint
     return Ok{};
 }
 
+Status validateLeafOrder(const Octree& tree) {
+    const std::uint64_t octants = tree.nodes.size() / 8;
+    if (tree.leafCounts.size() != octants) {
+        return Error("octree has " + std::to_string(tree.leafCounts.size()) + " leaf counts for " +
+                     std::to_string(octants) +
+                     " octants; the leaf-order layout needs one per octant");
+    }
+    auto counts = computeLeafCounts(tree.nodes);
+    if (!counts) return counts.error();
+    for (std::uint64_t o = 0; o < octants; ++o) {
+        // Octants the root does not reach (left by edits) are never walked: 0 = unreachable.
+        if ((*counts)[o] == 0 || (*counts)[o] == tree.leafCounts[o]) continue;
+        return Error("octree leaf count of octant " + std::to_string(o * 8) + " is " +
+                     std::to_string(tree.leafCounts[o]) + " but its subtree has " +
+                     std::to_string((*counts)[o]) + " leaves");
+    }
+    if (tree.colours.size() != (*counts)[0]) {
+        return Error("octree has " + std::to_string(tree.colours.size()) +
+                     " leaf-order colours for " + std::to_string((*counts)[0]) +
+                     " leaves; it needs one per leaf");
+    }
+    return Ok{};
+}
+
 Status validateOctree(const Octree& tree) {
-    if (Status s = validateOctree(tree.nodes, tree.depth, tree.colours.size()); !s) return s;
+    const bool leafOrder = tree.layout == AttributeLayout::LeafOrder &&
+                           (!tree.colours.empty() || !tree.leafCounts.empty());
+    if (Status s = validateOctree(tree.nodes, tree.depth, leafOrder ? 0 : tree.colours.size());
+        !s) {
+        return s;
+    }
+    if (leafOrder) {
+        if (Status s = validateLeafOrder(tree); !s) return s;
+    }
     const Int3 size = tree.size;
     if (size.x == 0 && size.y == 0 && size.z == 0) return Ok{};
     const int side = 1 << tree.depth;

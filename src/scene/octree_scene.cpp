@@ -30,7 +30,8 @@ Rgb colourOf(const Json& v, const std::string& path) {
 // The tree described by "octree".
 octree::Octree buildTree(const Json& o, const std::filesystem::path& baseDir,
                          std::string& described) {
-    json::checkObject(o, "octree", {"source", "size", "seed", "world", "path", "colours"});
+    json::checkObject(o, "octree",
+                      {"source", "size", "seed", "world", "path", "colours", "attributes"});
     const Json* sourceJson = find(o, "source");
     if (!sourceJson || !sourceJson->is_string()) {
         throw Invalid{"octree.source",
@@ -39,6 +40,15 @@ octree::Octree buildTree(const Json& o, const std::filesystem::path& baseDir,
     const std::string source = sourceJson->get<std::string>();
     const bool colours =
         find(o, "colours") ? json::readBool(*find(o, "colours"), "octree.colours") : true;
+    std::optional<octree::AttributeLayout> layout;  // unset: the source's preferred layout
+    if (const Json* a = find(o, "attributes")) {
+        const std::string name = json::readString(*a, "octree.attributes");
+        if (name != "per-entry" && name != "leaf-order") {
+            throw Invalid{"octree.attributes", "must be \"per-entry\" or \"leaf-order\""};
+        }
+        layout = name == "per-entry" ? octree::AttributeLayout::PerEntry
+                                     : octree::AttributeLayout::LeafOrder;
+    }
     const std::uint64_t seed = find(o, "seed") ? static_cast<std::uint64_t>(json::readWholeNumber(
                                                      *find(o, "seed"), "octree.seed", 0, 1e15))
                                                : 1;
@@ -56,20 +66,21 @@ octree::Octree buildTree(const Json& o, const std::filesystem::path& baseDir,
             size ? wholeNumberIn(*size, "octree.size", 8, octree::kMaxVolumeSide) : 256;
         auto volume = octree::makePhantom(side, seed);
         if (!volume) throw Invalid{"octree.size", volume.error().message()};
-        tree = octree::buildOctree(*volume, {.colours = colours});
+        tree = octree::buildOctree(*volume, {.colours = colours, .layout = layout});
         described = "phantom " + std::to_string(side);
     } else if (source == "terrain") {
         const Json* size = find(o, "size");
         const int side =
             size ? wholeNumberIn(*size, "octree.size", 8, 1 << octree::kMaxDepth) : 4096;
         if ((side & (side - 1)) != 0) throw Invalid{"octree.size", "must be a power of two"};
-        tree = octree::buildOctree(*octree::makeSparseTerrain(side, seed), {.colours = colours});
+        tree = octree::buildOctree(*octree::makeSparseTerrain(side, seed),
+                                   {.colours = colours, .layout = layout});
         described = "terrain " + std::to_string(side);
     } else if (source == "world") {
         const Json* world = find(o, "world");
         if (!world) throw Invalid{"octree", "a \"world\" source needs \"world\": {...}"};
         const voxel::VoxelWorld built = voxel::worldFromJson(*world, baseDir, voxel::TextureSet{});
-        tree = octree::buildOctree(built, {.colours = colours});
+        tree = octree::buildOctree(built, {.colours = colours, .layout = layout});
         described = "voxel world";
     } else if (source == "file") {
         const std::string file = pathOf();

@@ -91,7 +91,7 @@ TEST(GpuSharedLayout, OctreeCastBuffersAndPushConstants) {
         "octree_cast", {sizeof(P),
                         {LUXEL_MEMBER(P, rays), LUXEL_MEMBER(P, stepCap), LUXEL_MEMBER(P, depth),
                          LUXEL_MEMBER(P, threshold), LUXEL_MEMBER(P, sizeX), LUXEL_MEMBER(P, sizeY),
-                         LUXEL_MEMBER(P, sizeZ), LUXEL_MEMBER(P, pad0)}});
+                         LUXEL_MEMBER(P, sizeZ), LUXEL_MEMBER(P, flags)}});
     using R = VoxelCastRay;
     expectBuffer("octree_cast", 1,
                  {sizeof(R),

@@ -51,21 +51,22 @@ TEST(OctreeFile, DamagedHeadersAreNamed) {
     expectError("", "not a luxel octree file");
     expectError("LXOCTREX" + good.substr(8), "not a luxel octree file");
     std::string b = good;
-    b[8] = 2;
-    expectError(b, "version 2 is not supported");
+    b[8] = 3;
+    expectError(b, "version 3 is not supported");
     b = good;
     b[12] = 40;
     expectError(b, "depth 40 is outside 1..16");
     b = good;
     b[39] = 0x7f;  // an entry count near 2^63
-    expectError(b, "entries but");
+    expectError(b, "entries and 0 colours but");
     b = good;
     b[28] = 4;
-    expectError(b, "unknown flags 4");
+    expectError(b, "unknown attribute layout 4");
     b = good;
     b[16] = 33;  // size x 33 in a 32^3 cube
     expectError(b, "does not fit its 32^3 cube");
     expectError(good.substr(0, good.size() - 3), "bytes follow it");
+    expectError(good.substr(0, 44), "the header is cut short");
     b = good;
     b[kOctreeHeaderBytes + 1] = 0x10;  // entry 0 becomes a branch far past the end
     expectError(b, "octree entry 0: branch");

@@ -29,8 +29,12 @@ void printStats(const octree::OctreeStats& s) {
     std::printf("  bits per voxel     %.4f per solid voxel, %.3g per voxel (geometry)\n",
                 s.bitsPerSolidVoxel, s.bitsPerVoxel);
     if (s.attributeBytes > 0) {
-        std::printf("  colours            %s (attributes, separate from the geometry)\n",
-                    formatBytes(s.attributeBytes).c_str());
+        std::printf("  colours            %s (attributes, separate from the geometry), %s\n",
+                    formatBytes(s.attributeBytes).c_str(), octree::attributeLayoutName(s.layout));
+    }
+    if (s.attributeIndexBytes > 0) {
+        std::printf("  attribute index    %s (leaf counts, one per octant)\n",
+                    formatBytes(s.attributeIndexBytes).c_str());
     }
 }
 

@@ -15,10 +15,12 @@
 namespace luxel::octree {
 
 struct BuildOptions {
-    bool colours = true;  // keep a colour per leaf (octree.h); false: opacity only
+    bool colours = true;  // keep the source's colours (octree.h); false: opacity only
     // Merge a uniform octant into one leaf. false keeps every leaf a voxel (octants are still
     // shared): traversal then visits every cell, as the plain per-voxel walk does.
     bool collapse = true;
+    // PerEntry or LeafOrder for a coloured source; unset: the source's preferredLayout().
+    std::optional<AttributeLayout> layout = std::nullopt;
 };
 
 // What the builder reads. Cells outside size() are empty.
@@ -27,6 +29,10 @@ class OctreeSource {
     virtual ~OctreeSource() = default;
     virtual Int3 size() const = 0;
     virtual bool hasColours() const = 0;
+    // The layout a build uses unless told: LeafOrder where colours vary voxel by voxel (voxel
+    // worlds), PerEntry where they come in large uniform regions (the trade-off is measured in
+    // docs/algorithms/sparse-voxel-octree.md §2).
+    virtual AttributeLayout preferredLayout() const { return AttributeLayout::PerEntry; }
     // The opacity and colour of one voxel inside size().
     virtual void voxel(Int3 cell, std::uint8_t& opacity, Colour& colour) const = 0;
     // Whether the aligned cube [origin, origin + 2^level) holds one opacity and colour throughout

@@ -1,7 +1,8 @@
 // Editing a DAG octree voxel by voxel: a change rebuilds only the octants on the path from the
 // root to the voxel (shared octants are never modified; the new path is interned like the
 // builder's octants), so an edit costs O(depth) whatever the tree's size. The old path stays in
-// the array until compact().
+// the array until compact(). In the LeafOrder layout the edit also splices the leaf colours it
+// adds or removes into the colour array (O(colours)) and records the new octants' leaf counts.
 #pragma once
 
 #include <memory>
@@ -31,6 +32,7 @@ class OctreeEditor {
   private:
     std::uint32_t entryFor(const std::uint32_t* entries, const Colour* colours, Colour& leafColour,
                            bool& ok);
+    Status setLeafOrder(Int3 cell, std::uint8_t opacity, Colour colour);  // octree_edit_leaf_order
 
     std::unique_ptr<Octree> tree_;  // stable address: the table refers to it
     std::unique_ptr<OctantTable> table_;

@@ -21,7 +21,8 @@ struct TraceOptions {
 
 struct OctreeHit {
     voxel::Hit hit;
-    std::uint32_t entry = 0;  // the hit leaf's entry (for its colour); 0 on a miss
+    std::uint32_t entry = 0;        // the hit leaf's entry; 0 on a miss
+    std::uint32_t colourIndex = 0;  // its index in Octree::colours (Leaf::colourIndex); 0 on a miss
 };
 
 // `tree` must be valid (octree_validate.h).

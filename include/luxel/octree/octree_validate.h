@@ -20,7 +20,11 @@ namespace luxel::octree {
 // Runs in time and memory linear in the array.
 Status validateOctree(std::span<const std::uint32_t> nodes, int depth,
                       std::uint64_t colourCount = 0);
-// The same, plus the content box: zero, or each side in 1..2^depth.
+// The same, plus the content box: zero, or each side in 1..2^depth; and for the LeafOrder layout
+// the attribute index: one leaf count per octant, each equal to the leaves of its subtree
+// (recomputed), and one colour per leaf of the expanded tree.
 Status validateOctree(const Octree& tree);
+// The LeafOrder checks alone, on a tree whose array validateOctree(nodes, depth) accepted.
+Status validateLeafOrder(const Octree& tree);
 
 }  // namespace luxel::octree

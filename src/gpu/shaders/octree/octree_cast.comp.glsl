@@ -9,8 +9,10 @@ layout(local_size_x = LUXEL_OCTREE_CAST_GROUP) in;
 layout(std430, set = 0, binding = 0) readonly buffer Nodes { uint nodes[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Rays { VoxelCastRay rays[]; };
 layout(std430, set = 0, binding = 2) writeonly buffer Hits { VoxelCastHit hits[]; };
+layout(std430, set = 0, binding = 3) readonly buffer LeafCounts { uint leafCounts[]; };
 layout(push_constant) uniform Push { OctreeCastPush batch; };
 
+#define LUXEL_OCTREE_LEAF_ORDER_ON ((batch.flags & LUXEL_OCTREE_LEAF_ORDER) != 0u)
 #include "octree/octree_access.glsl"
 
 void main() {
@@ -21,13 +23,15 @@ void main() {
     const vec3 d = vec3(r.directionX, r.directionY, r.directionZ);
     Hit h = missHit();
     uint entry = 0u;
+    uint colourIndex = 0u;
     if (finite3(o) && finite3(d) && !(d.x == 0.0 && d.y == 0.0 && d.z == 0.0) && r.tMax >= 0.0) {
         const ivec3 size = ivec3(batch.sizeX, batch.sizeY, batch.sizeZ);
-        const VoxelTrace trace = octreeTraverse(0u, int(batch.depth), size, o, d, r.tMax,
-                                                int(batch.stepCap), batch.threshold, entry);
+        const VoxelTrace trace =
+            octreeTraverseLeaf(0u, int(batch.depth), size, o, d, r.tMax, int(batch.stepCap),
+                               batch.threshold, entry, colourIndex);
         h = hitFromTrace(o, d, trace);
     }
     hits[i] = VoxelCastHit((h.hit ? 1u : 0u) | (h.capped ? 2u : 0u), h.steps, h.voxel.x, h.voxel.y,
                            h.voxel.z, h.normal.x, h.normal.y, h.normal.z, h.t, h.point.x,
-                           h.point.y, h.point.z, h.u, h.v, entry, 0u);
+                           h.point.y, h.point.z, h.u, h.v, entry, colourIndex);
 }

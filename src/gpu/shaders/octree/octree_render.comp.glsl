@@ -9,7 +9,9 @@ layout(std430, set = 0, binding = 0) readonly buffer Params { OctreeRenderParams
 layout(std430, set = 0, binding = 1) readonly buffer Nodes { uint nodes[]; };
 layout(std430, set = 0, binding = 2) readonly buffer Colours { uint colours[]; };
 layout(std430, set = 0, binding = 3) writeonly buffer Output { VoxelPixel pixels[]; };
+layout(std430, set = 0, binding = 4) readonly buffer LeafCounts { uint leafCounts[]; };
 
+#define LUXEL_OCTREE_LEAF_ORDER_ON ((params.flags & LUXEL_OCTREE_LEAF_ORDER) != 0u)
 #define LUXEL_OCTREE_WITH_COLOURS
 #include "octree/octree_access.glsl"
 #include "shared/octree_render.h"

@@ -4,7 +4,9 @@
 // Buffers of octree_cast (a batch of rays; the CPU twin is octree::castRays, octree_trace.h):
 //   0 nodes: the octree array, one uint per entry (include/luxel/octree/octree.h)
 //   1 VoxelCastRay per ray (voxel_layout.h; `jumps` is unused)
-//   2 VoxelCastHit per ray (voxel_layout.h; `entry` is the hit leaf's entry)
+//   2 VoxelCastHit per ray (voxel_layout.h; `entry` is the hit leaf's entry, `pad0` its colour
+//     index: the entry, or its leaf order in a LeafOrder tree)
+//   3 leafCounts: one uint per octant (LeafOrder trees), or one dummy
 #ifndef LUXEL_GPU_SHARED_OCTREE_LAYOUT_H
 #define LUXEL_GPU_SHARED_OCTREE_LAYOUT_H
 
@@ -23,15 +25,17 @@ struct OctreeCastPush {
     uint depth;                // 1..16
     uint threshold;            // least opacity that stops a ray, 1..255
     uint sizeX, sizeY, sizeZ;  // the content box (Octree::extent)
-    uint pad0;
+    uint flags;                // LUXEL_OCTREE_LEAF_ORDER
 };
 
 // octree_render (one invocation per pixel; the CPU twin is octree::renderOctree,
 // include/luxel/octree/octree_render.h) binds:
 //   0 OctreeRenderParams
 //   1 nodes (as octree_cast)
-//   2 colours: one uint per entry (r | g << 8 | b << 16 | a << 24), or one dummy without colours
+//   2 colours: one uint (r | g << 8 | b << 16 | a << 24) per entry or, in a LeafOrder tree, per
+//     leaf; one dummy without colours
 //   3 output: VoxelPixel per pixel (voxel_layout.h), rows top to bottom
+//   4 leafCounts: as octree_cast's binding 3
 #define LUXEL_OCTREE_RENDER_GROUP_X 8
 #define LUXEL_OCTREE_RENDER_GROUP_Y 8
 
@@ -42,6 +46,7 @@ struct OctreeCastPush {
 #define LUXEL_OCTREE_SHADOWS 1u     // surface mode: shadow rays toward the sun
 #define LUXEL_OCTREE_SCATTERING 2u  // volume mode: sunlight scattered in the medium
 #define LUXEL_OCTREE_COLOURS 4u     // leaves have colours (binding 2)
+#define LUXEL_OCTREE_LEAF_ORDER 8u  // colours in leaf order, indexed through the leaf counts
 
 // Camera, light, medium and mode of a render; every member a 4-byte scalar (no std430 padding).
 struct OctreeRenderParams {

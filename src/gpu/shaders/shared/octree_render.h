@@ -10,8 +10,9 @@
 // emission-like sum with no occlusion).
 //
 // The includer defines what octree_walk.h needs and
-//   vec3 octreeLeafSrgb(LUXEL_OCTREE tree, uint entry): the leaf's colour, sRGB in [0, 1]
-//   (a light grey when the tree has no colours).
+//   vec3 octreeLeafSrgb(LUXEL_OCTREE tree, uint index): the colour at `index` (a leaf's
+//   OctreeLeaf::colourIndex: its entry, or its leaf order), sRGB in [0, 1] (a light grey when the
+//   tree has no colours).
 #ifndef LUXEL_GPU_SHARED_OCTREE_RENDER_H
 #define LUXEL_GPU_SHARED_OCTREE_RENDER_H
 
@@ -32,9 +33,9 @@ LUXEL_FUNC float octreeSrgbToLinear(float c) {
     return c <= 0.04045f ? c / 12.92f : pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
-// The leaf's albedo in linear RGB.
-LUXEL_FUNC vec3 octreeLeafColour(LUXEL_OCTREE tree, uint entry) {
-    const vec3 c = octreeLeafSrgb(tree, entry);
+// The albedo of the leaf with this colour index, in linear RGB.
+LUXEL_FUNC vec3 octreeLeafColour(LUXEL_OCTREE tree, uint colourIndex) {
+    const vec3 c = octreeLeafSrgb(tree, colourIndex);
     return vec3(octreeSrgbToLinear(c.x), octreeSrgbToLinear(c.y), octreeSrgbToLinear(c.z));
 }
 
@@ -145,11 +146,12 @@ LUXEL_FUNC vec3 octreeSky(LUXEL_IN(OctreeRenderParams) p) {
 LUXEL_FUNC vec3 octreeShadeSurface(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams) p, LUXEL_REAL3 o,
                                    LUXEL_REAL3 d, uint pixel) {
     uint entry = 0u;
-    const VoxelTrace trace =
-        octreeTraverse(tree, int(p.depth), octreeParamsSize(p), o, d, LUXEL_REAL(LUXEL_INFINITY),
-                       int(p.stepCap), p.threshold, entry);
+    uint colourIndex = 0u;
+    const VoxelTrace trace = octreeTraverseLeaf(tree, int(p.depth), octreeParamsSize(p), o, d,
+                                                LUXEL_REAL(LUXEL_INFINITY), int(p.stepCap),
+                                                p.threshold, entry, colourIndex);
     if (!trace.hit) return octreeSky(p);
-    const vec3 albedo = octreeLeafColour(tree, entry);
+    const vec3 albedo = octreeLeafColour(tree, colourIndex);
     const VoxelSurface surface = voxelSurface(o, d, trace);
     vec3 normal = vec3(0.0f);
     if (trace.axis >= 0) normal[trace.axis] = -float(trace.stp[trace.axis]);
@@ -177,7 +179,7 @@ LUXEL_FUNC vec3 octreeShadeVolume(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams
             const OctreeLeaf leaf = octreeLocate(tree, int(p.depth), r.cursor, r.walk.cell);
             if (leaf.value > 0u) {
                 const float alpha = octreeAlpha(leaf.value, p.opacityScale);
-                const vec3 colour = octreeLeafColour(tree, leaf.entry);
+                const vec3 colour = octreeLeafColour(tree, leaf.colourIndex);
                 const LUXEL_REAL t0 = r.walk.t;
                 const float chord = float(octreeLeafExitT(r, leaf) - t0);
                 if (additive) {

@@ -8,7 +8,13 @@
 //
 // The includer defines, besides what voxel_walk.h needs:
 // - LUXEL_OCTREE: the type of the tree handle passed through to the accessor;
-// - uint octreeEntry(LUXEL_OCTREE tree, uint index): entry `index` of the array.
+// - uint octreeEntry(LUXEL_OCTREE tree, uint index): entry `index` of the array;
+// - bool octreeLeafOrder(LUXEL_OCTREE tree): colours are in leaf order
+// (AttributeLayout::LeafOrder);
+// - uint octreeLeafCount(LUXEL_OCTREE tree, uint octant): leaves below octant `octant` (base / 8).
+// In leaf order the walk also tracks, per octant on the stack, the index of its first leaf in
+// depth-first order, so a leaf's colour index costs the sibling counts of the octants descended
+// through, never an expansion of the DAG (docs/algorithms/sparse-voxel-octree.md §1 "Colour").
 #ifndef LUXEL_GPU_SHARED_OCTREE_WALK_H
 #define LUXEL_GPU_SHARED_OCTREE_WALK_H
 
@@ -21,19 +27,23 @@
 
 LUXEL_SHARED_BEGIN
 
-// The leaf found for a cell: its entry, its value (opacity 0..255), and its cube
-// [origin, origin + 2^level).
+// The leaf found for a cell: its entry, its value (opacity 0..255), its cube
+// [origin, origin + 2^level), and the index of its colour (its leaf order in a LeafOrder tree,
+// else its entry).
 struct OctreeLeaf {
     uint entry;
     uint value;
     int level;
     ivec3 origin;
+    uint colourIndex;
 };
 
 // The octants above the last cell looked up: base[L] is the first entry of the octant of level L
-// (entries 2^(L-1) wide; the root is level depth) holding it, valid for L in [deepest, depth].
+// (entries 2^(L-1) wide; the root is level depth) holding it, and first[L] the leaf order of its
+// first leaf (LeafOrder trees), valid for L in [deepest, depth].
 struct OctreeCursor {
     uint base[LUXEL_OCTREE_MAX_DEPTH + 1];
+    uint first[LUXEL_OCTREE_MAX_DEPTH + 1];
     int deepest;
     ivec3 last;
 };
@@ -43,9 +53,25 @@ LUXEL_FUNC_HOT int octreeSlot(ivec3 c, int level) {
 }
 
 LUXEL_FUNC void octreeCursorReset(LUXEL_INOUT(OctreeCursor) cursor, int depth) {
-    for (int i = 0; i <= LUXEL_OCTREE_MAX_DEPTH; ++i) cursor.base[i] = 0u;
+    for (int i = 0; i <= LUXEL_OCTREE_MAX_DEPTH; ++i) {
+        cursor.base[i] = 0u;
+        cursor.first[i] = 0u;
+    }
     cursor.deepest = depth;
     cursor.last = ivec3(0);
+}
+
+// Leaves of the expanded tree before `slot` in the octant at `base`: 1 per leaf, the child's
+// count per branch.
+LUXEL_FUNC_HOT uint octreeLeavesBefore(LUXEL_OCTREE tree, uint base, int slot) {
+    uint n = 0u;
+    for (int j = 0; j < slot; ++j) {
+        const uint e = octreeEntry(tree, base + uint(j));
+        n += e < LUXEL_OCTREE_LEAF_LIMIT
+                 ? 1u
+                 : octreeLeafCount(tree, (e - LUXEL_OCTREE_BRANCH_BIAS) >> 3u);
+    }
+    return n;
 }
 
 // The leaf holding `cell` (inside the cube). Starts at the lowest octant still holding the cell.
@@ -55,21 +81,29 @@ LUXEL_FUNC_HOT OctreeLeaf octreeLocate(LUXEL_OCTREE tree, int depth,
                                        LUXEL_INOUT(OctreeCursor) cursor, ivec3 cell) {
     const int diff = (cell.x ^ cursor.last.x) | (cell.y ^ cursor.last.y) | (cell.z ^ cursor.last.z);
     int level = clamp(findMSB(diff) + 1, cursor.deepest, depth);
+    const bool leafOrder = octreeLeafOrder(tree);
     uint base = cursor.base[level];
-    uint entry = base + uint(octreeSlot(cell, level - 1));
+    uint first = cursor.first[level];
+    int slot = octreeSlot(cell, level - 1);
+    uint entry = base + uint(slot);
+    if (leafOrder) first += octreeLeavesBefore(tree, base, slot);
     uint value = octreeEntry(tree, entry);
     while (value >= LUXEL_OCTREE_LEAF_LIMIT && level > 1) {
         base = value - LUXEL_OCTREE_BRANCH_BIAS;
         level -= 1;
         cursor.base[level] = base;
-        entry = base + uint(octreeSlot(cell, level - 1));
+        cursor.first[level] = first;
+        slot = octreeSlot(cell, level - 1);
+        entry = base + uint(slot);
+        if (leafOrder) first += octreeLeavesBefore(tree, base, slot);
         value = octreeEntry(tree, entry);
     }
     cursor.deepest = level;
     cursor.last = cell;
     const int mask = ~((1 << (level - 1)) - 1);
     return OctreeLeaf(entry, value < LUXEL_OCTREE_LEAF_LIMIT ? value : 0u, level - 1,
-                      ivec3(cell.x & mask, cell.y & mask, cell.z & mask));
+                      ivec3(cell.x & mask, cell.y & mask, cell.z & mask),
+                      leafOrder ? first : entry);
 }
 
 // The walk and the cursor of one ray through the octree.
@@ -119,13 +153,15 @@ LUXEL_FUNC_HOT LUXEL_REAL octreeLeafExitT(LUXEL_IN(OctreeRay) r, OctreeLeaf leaf
 }
 
 // The first cell whose leaf opacity is at least `threshold` (1: any non-empty voxel) with entry
-// t in [0, tMax], within `cap` loop iterations (leaves visited); the hit's entry index is
-// returned in `entry`.
-LUXEL_FUNC_HOT VoxelTrace octreeTraverse(LUXEL_OCTREE tree, int depth, ivec3 size, LUXEL_REAL3 o,
-                                         LUXEL_REAL3 d, LUXEL_REAL tMax, int cap, uint threshold,
-                                         LUXEL_INOUT(uint) entry) {
+// t in [0, tMax], within `cap` loop iterations (leaves visited); the hit's entry index and colour
+// index are returned in `entry` and `colourIndex` (0 on a miss).
+LUXEL_FUNC_HOT VoxelTrace octreeTraverseLeaf(LUXEL_OCTREE tree, int depth, ivec3 size,
+                                             LUXEL_REAL3 o, LUXEL_REAL3 d, LUXEL_REAL tMax, int cap,
+                                             uint threshold, LUXEL_INOUT(uint) entry,
+                                             LUXEL_INOUT(uint) colourIndex) {
     OctreeRay r;
     entry = 0u;
+    colourIndex = 0u;
     if (!octreeRayStart(r, depth, size, o, d, tMax)) return voxelMiss(0, false);
     int steps = 0;
     for (;;) {
@@ -134,11 +170,20 @@ LUXEL_FUNC_HOT VoxelTrace octreeTraverse(LUXEL_OCTREE tree, int depth, ivec3 siz
         const OctreeLeaf leaf = octreeLocate(tree, depth, r.cursor, r.walk.cell);
         if (leaf.value >= threshold) {
             entry = leaf.entry;
+            colourIndex = leaf.colourIndex;
             return VoxelTrace(true, false, r.walk.cell, r.walk.t, r.walk.axis, voxelStep(r.walk),
                               steps);
         }
         if (!octreeRayLeave(r, leaf, tMax)) return voxelMiss(steps, false);
     }
+}
+
+// octreeTraverseLeaf without the colour index.
+LUXEL_FUNC_HOT VoxelTrace octreeTraverse(LUXEL_OCTREE tree, int depth, ivec3 size, LUXEL_REAL3 o,
+                                         LUXEL_REAL3 d, LUXEL_REAL tMax, int cap, uint threshold,
+                                         LUXEL_INOUT(uint) entry) {
+    uint colourIndex = 0u;
+    return octreeTraverseLeaf(tree, depth, size, o, d, tMax, cap, threshold, entry, colourIndex);
 }
 
 LUXEL_SHARED_END
