@@ -1,4 +1,4 @@
-// OpenVDB files as octrees and back (docs/algorithms/sparse-voxel-octree.md §7). Lives in its own
+// OpenVDB files as octrees and back (docs/algorithms/sparse-voxel-octree.md §6). Lives in its own
 // library, luxel_octree_vdb, so that only what reads or writes .vdb files links OpenVDB; this
 // header includes no OpenVDB header.
 //
