@@ -100,6 +100,7 @@ Status OctreeEditor::set(Int3 cell, std::uint8_t opacity, Colour colour) {
 Octree compacted(const Octree& tree) {
     Octree out;
     out.depth = tree.depth;
+    out.size = tree.size;
     out.nodes.assign(8, 0);
     if (tree.hasColours()) out.colours.assign(8, Colour{});
     std::unordered_map<std::uint32_t, std::uint32_t> moved{{0u, 0u}};  // old base -> new base

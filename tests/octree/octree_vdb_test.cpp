@@ -140,6 +140,8 @@ TEST(OctreeVdb, UniformBlocksMatchTheVoxels) {
     t.addTile(1, Coord(16, 8, 8), 0.5f, true);
     t.fill(CoordBBox(Coord(3, 3, 3), Coord(30, 12, 9)), 0.5f, true);
     t.setValueOn(Coord(20, 20, 20), 1.0f);
+    // Content that runs past the content box (cells 33.. and 27.. up to 43, beyond 40x36x30).
+    t.fill(CoordBBox(Coord(30, 26, 18), Coord(40, 40, 40)), 1.0f, true);
     const Coord origin(-3, -1, -2);
     const Int3 size(40, 36, 30);
     const VdbSource source(*grid, origin, size, VdbQuantiser{});
