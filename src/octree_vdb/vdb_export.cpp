@@ -1,6 +1,7 @@
 // exportVdb (luxel/octree/octree_vdb.h): the octree's leaves filled into a FOG_VOLUME float grid.
 #include <sstream>
 #include <string>
+#include <unordered_map>
 
 #include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
@@ -13,10 +14,26 @@
 namespace luxel::octree {
 namespace {
 
-// Bound on the grid's bytes per octant of the expanded tree: each leaf node (8^3 floats and
-// masks, 2.2 KiB) holds a cube that is not uniform, which is an octant of the expanded tree;
-// the file's bytes in memory (compressed) are at most as many again.
-constexpr std::uint64_t kGridBytesPerOctant = 4608;
+// The grid's bytes per leaf node: 8^3 floats, two masks and the node's bookkeeping, and as many
+// again for the file's bytes in memory (at most: they are compressed).
+constexpr std::uint64_t kGridBytesPerLeafNode = 2 * 2304;
+
+// How many cubes 8 voxels wide the expanded tree under `entry` (2^level wide) does not hold
+// uniformly: the grid's leaf nodes, since the grid's nodes are aligned like the tree's cubes.
+// Memoised per shared octant and level, so it is linear in the DAG, not in the expanded tree.
+std::uint64_t leafNodes(const Octree& tree, std::uint32_t entry, int level,
+                        std::unordered_map<std::uint64_t, std::uint64_t>& memo) {
+    if (isLeaf(entry) || level < 3) return 0;
+    if (level == 3) return 1;
+    const std::uint64_t key = std::uint64_t{entry} << 5 | static_cast<std::uint64_t>(level);
+    if (auto it = memo.find(key); it != memo.end()) return it->second;
+    std::uint64_t n = 0;
+    for (int slot = 0; slot < 8; ++slot) {
+        n += leafNodes(tree, tree.nodes[childBase(entry) + slot], level - 1, memo);
+    }
+    memo.emplace(key, n);
+    return n;
+}
 
 // Fills the leaves under `entry` (a cube 2^level wide at `origin`), clipped to the content box.
 void fill(const Octree& tree, std::uint32_t entry, Int3 origin, int level, Int3 extent,
@@ -53,10 +70,12 @@ void fill(const Octree& tree, std::uint32_t entry, Int3 origin, int level, Int3 
 Status exportVdb(const Octree& tree, const std::string& path, const VdbExportOptions& options) {
     if (options.grid.empty()) return Error(path + ": the grid name must not be empty");
     if (Status s = validateOctree(tree); !s) return Error(path + ": " + s.error().message());
-    const OctreeStats stats = measure(tree);
-    if (Status s =
-            checkMemory(stats.expandedOctants * kGridBytesPerOctant,
-                        path + ": a grid of " + std::to_string(stats.expandedOctants) + " octants");
+    std::unordered_map<std::uint64_t, std::uint64_t> memo;
+    std::uint64_t nodes = 0;
+    for (int slot = 0; slot < 8; ++slot)
+        nodes += leafNodes(tree, tree.nodes[slot], tree.depth - 1, memo);
+    if (Status s = checkMemory(nodes * kGridBytesPerLeafNode,
+                               path + ": a grid of " + std::to_string(nodes) + " leaf nodes");
         !s) {
         return s.error();
     }
