@@ -17,3 +17,14 @@ endif()
 if(LUXEL_BUILD_BENCH)
   find_package(benchmark REQUIRED)
 endif()
+# OpenVDB: import and export of octrees (luxel_octree_vdb only). Debian's FindOpenVDB.cmake ships
+# its own FindTBB/FindOpenEXR, which would shadow the config packages found above, so libopenvdb
+# is found directly, with the TBB, Imath (half) and Boost headers its own headers include.
+find_path(OPENVDB_INCLUDE_DIR openvdb/openvdb.h REQUIRED)
+find_library(OPENVDB_LIBRARY openvdb REQUIRED)
+find_package(Imath CONFIG REQUIRED)
+find_package(Boost 1.70 CONFIG REQUIRED)
+add_library(luxel_openvdb INTERFACE IMPORTED)
+target_include_directories(luxel_openvdb SYSTEM INTERFACE ${OPENVDB_INCLUDE_DIR})
+target_link_libraries(luxel_openvdb INTERFACE ${OPENVDB_LIBRARY} TBB::tbb Imath::Imath
+                                              Boost::headers)

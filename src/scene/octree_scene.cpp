@@ -30,8 +30,9 @@ Rgb colourOf(const Json& v, const std::string& path) {
 // The tree described by "octree".
 octree::Octree buildTree(const Json& o, const std::filesystem::path& baseDir,
                          std::string& described) {
-    json::checkObject(o, "octree",
-                      {"source", "size", "seed", "world", "path", "colours", "attributes"});
+    json::checkObject(
+        o, "octree",
+        {"source", "size", "seed", "world", "path", "colours", "attributes", "grid", "max"});
     const Json* sourceJson = find(o, "source");
     if (!sourceJson || !sourceJson->is_string()) {
         throw Invalid{"octree.source",
@@ -90,9 +91,8 @@ octree::Octree buildTree(const Json& o, const std::filesystem::path& baseDir,
         throw Invalid{"octree.path", tree.error().message()};
     } else if (source == "vdb") {
         const std::string file = pathOf();
-        tree = importVdbForScene(file, colours);
         described = "vdb " + file;
-        if (!tree) throw Invalid{"octree.path", tree.error().message()};
+        return vdbTreeFromJson(o, file);
     } else {
         throw Invalid{"octree.source",
                       "must be \"phantom\", \"terrain\", \"world\", \"file\" or \"vdb\", got \"" +

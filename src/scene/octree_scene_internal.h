@@ -15,8 +15,8 @@ bool isOctreeScene(const json::Json& root);
 Result<OctreeScene> octreeSceneFromJson(const json::Json& root, std::string_view text,
                                         const std::string& path, int width = 0, int height = 0);
 
-// An OpenVDB grid as an octree (the "vdb" source); an error naming why when luxel was built
-// without OpenVDB.
-Result<octree::Octree> importVdbForScene(const std::string& path, bool colours);
+// The tree of a "vdb" source (the "octree" object `o`, its file at `path`); throws json::Invalid
+// naming the field.
+octree::Octree vdbTreeFromJson(const json::Json& o, const std::string& path);
 
 }  // namespace luxel::scene
