@@ -99,9 +99,10 @@ std::vector<TilePixel> exactPixels(const Octree& tree, const voxel::Camera& came
                 shared::dvec3 o, d;
                 shared::octreeTilesRay(p, x, y, o, d);
                 shared::uint entry = 0;
-                const shared::VoxelTrace trace = shared::octreeTraverse(
-                    arrays, tree.depth, shared::octreeParamsSize(p), o, d,
-                    std::numeric_limits<double>::infinity(), static_cast<int>(p.stepCap), p.threshold, entry);
+                const shared::VoxelTrace trace =
+                    shared::octreeTraverse(arrays, tree.depth, shared::octreeParamsSize(p), o, d,
+                                           std::numeric_limits<double>::infinity(),
+                                           static_cast<int>(p.stepCap), p.threshold, entry);
                 TilePixel& px = out[static_cast<std::size_t>(y) * width + x];
                 px.hit = trace.hit;
                 if (trace.hit) px.cell = {trace.cell.x, trace.cell.y, trace.cell.z};

@@ -44,7 +44,7 @@ struct TilePixel {
 };
 
 struct TileRender {
-    Image image;                   // linear RGB, the camera's size
+    Image image;                    // linear RGB, the camera's size
     std::vector<TilePixel> pixels;  // rows top to bottom
 };
 

@@ -119,9 +119,9 @@ LUXEL_FUNC OctreeTileState octreeTilesPass(LUXEL_OCTREE tree, LUXEL_IN(OctreeRen
         cell[a] = slab;  // the dominant axis is the slab's, not a rounded coordinate
         s.samples += 1u;
         uint value = 0u;
-        const uint entry = octreeTileQuery(
-            tree, int(p.depth), ivec3(cell.x << level, cell.y << level, cell.z << level), level,
-            value);
+        const uint entry =
+            octreeTileQuery(tree, int(p.depth),
+                            ivec3(cell.x << level, cell.y << level, cell.z << level), level, value);
         // A branch (value >= 256) is above every threshold: something is inside.
         if (value >= p.threshold) {
             s.status = LUXEL_OCTREE_TILE_FOUND;
@@ -146,8 +146,8 @@ LUXEL_FUNC OctreeTileState octreeTilesPass(LUXEL_OCTREE tree, LUXEL_IN(OctreeRen
 // hit (octreeShadeSurface, octree_render.h: Lambert with sky light and the sun's visibility
 // through the exact walk), or the sky. A coarse cell that is a branch has no colour of its own:
 // it is drawn the light grey of trees without colours (the frames before the last pass).
-LUXEL_FUNC vec3 octreeTilesShade(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams) p,
-                                 LUXEL_REAL3 o, LUXEL_REAL3 d, OctreeTileState s, uint pixel) {
+LUXEL_FUNC vec3 octreeTilesShade(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams) p, LUXEL_REAL3 o,
+                                 LUXEL_REAL3 d, OctreeTileState s, uint pixel) {
     if (s.status != LUXEL_OCTREE_TILE_FOUND) return octreeSky(p);
     const int width = 1 << int(s.level);
     const ivec3 lo = ivec3(s.cellX, s.cellY, s.cellZ) * width;
