@@ -52,6 +52,8 @@ int runConvert(const OctreeArgs& args) {
 
 }  // namespace
 
+CLI::App* addOctreeTilesCommand(CLI::App& octree, Runner& run);  // octree_tiles.cpp
+
 Runner addOctreeCommand(CLI::App& app) {
     auto args = std::make_shared<OctreeArgs>();
     app.require_subcommand(1);
@@ -61,7 +63,10 @@ Runner addOctreeCommand(CLI::App& app) {
     CLI::App* convert = app.add_subcommand("convert", "convert between octree files");
     convert->add_option("input", args->input, "input (.lxo)")->required();
     convert->add_option("output", args->output, "output (.lxo)")->required();
-    return [args, build, convert] {
+    Runner runTiles;
+    CLI::App* tiles = addOctreeTilesCommand(app, runTiles);
+    return [args, build, convert, tiles, runTiles] {
+        if (tiles->parsed()) return runTiles();
         if (build->parsed()) return runBuild(*args);
         if (convert->parsed()) return runConvert(*args);
         return reportError(Error("octree: choose build or convert"));
