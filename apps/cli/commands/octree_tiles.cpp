@@ -1,6 +1,7 @@
-// `luxel octree tiles SCENE [--size WxH] [--backend cpu|gpu] [--tile-bits N]`: the WebGL octree
-// design's tile rendering (luxel/octree/octree_tiles.h) against the exact traversal on an octree
-// scene: the pixels it loses (the loss table) and the time per frame of both, surface mode.
+// `luxel octree tiles SCENE [--size WxH] [--backend cpu|gpu] [--tile-bits N] [--shadows]`: the
+// WebGL octree design's tile rendering (luxel/octree/octree_tiles.h) against the exact traversal on
+// an octree scene: the pixels it loses (the loss table) and the time per frame of both, surface
+// mode.
 #include <algorithm>
 #include <cstdio>
 #include <memory>
@@ -20,6 +21,7 @@ namespace {
 struct TilesArgs {
     std::string scene, size, backend = "cpu", device;
     int tileBits = 3, repeat = 3;
+    bool shadows = false;
 };
 
 // The best of `repeat` runs of `frame` (which returns false on failure), in milliseconds.
@@ -50,6 +52,9 @@ int runTiles(const TilesArgs& args) {
     const scene::OctreeScene& scene = file->octree();
     octree::OctreeRenderOptions options = scene.render;
     options.mode = octree::OctreeMode::Surface;  // the tiles find surfaces
+    // Off by default: the design changes primary visibility, and shadows (traced exactly by both)
+    // would cost the exact frame for the pixels the tiles lose.
+    options.shadows = options.shadows && args.shadows;
     const octree::TileOptions tiles{.tileBits = args.tileBits};
     if (Status s = octree::validateTileOptions(tiles); !s) return reportError(s.error());
     const voxel::Camera& camera = scene.camera;
@@ -125,6 +130,7 @@ CLI::App* addOctreeTilesCommand(CLI::App& octree, Runner& run) {
     tiles->add_option("--device", args->device, "GPU device (index or name part)");
     tiles->add_option("--tile-bits", args->tileBits, "tiles are 2^bits cells a side")
         ->capture_default_str();
+    tiles->add_flag("--shadows", args->shadows, "keep the scene's sun shadows in both frames");
     tiles->add_option("--repeat", args->repeat, "frames timed (the best is reported)")
         ->check(CLI::Range(1, 100))
         ->capture_default_str();

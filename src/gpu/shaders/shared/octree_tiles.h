@@ -1,12 +1,13 @@
 // The WebGL octree design's rendering proposal (docs/algorithms/sparse-voxel-octree.md §6),
-// shared by the CPU twin (octree::renderOctreeTiles) and the GPU pass (octree/octree_tiles.comp):
-// fixed-size tiles of 2^bits cells a side, one scale per pass, and in each pass a fixed-step
-// march instead of the exact DDA. Pass k looks only inside the cell the coarser pass k-1 found:
-// it samples the ray where it enters that cell and then where it enters each following slab of
-// the ray's dominant axis (the "parallelogram": the step advances one cell along that axis, so a
-// ray crossing the tile takes exactly 2^bits samples), and the first sample in an occupied cell
-// is the pixel's hit at this scale. Cells a ray crosses inside a slab without a sample are never
-// looked at, which is where the method loses against octreeTraverse (octree_walk.h).
+// shared by the CPU twin (octree::renderOctreeTiles) and the GPU pass
+// (octree/octree_tiles.comp.glsl): fixed-size tiles of 2^bits cells a side, one scale per pass, and
+// in each pass a fixed-step march instead of the exact DDA. Pass k looks only inside the cell the
+// coarser pass k-1 found: it samples the ray where it enters that cell and then where it enters
+// each following slab of the ray's dominant axis (the "parallelogram": the step advances one cell
+// along that axis, so a ray crossing the tile takes exactly 2^bits samples), and the first sample
+// in an occupied cell is the pixel's hit at this scale. Cells a ray crosses inside a slab without a
+// sample are never looked at, which is where the method loses against octreeTraverse
+// (octree_walk.h).
 //
 // The includer defines what octree_render.h needs (the walk, octreeEntry, octreeLeafSrgb).
 #ifndef LUXEL_GPU_SHARED_OCTREE_TILES_H
