@@ -67,6 +67,8 @@ int runConvert(const OctreeArgs& args) {
 
 }  // namespace
 
+CLI::App* addOctreeTilesCommand(CLI::App& octree, Runner& run);  // octree_tiles.cpp
+
 Runner addOctreeCommand(CLI::App& app) {
     auto args = std::make_shared<OctreeArgs>();
     app.require_subcommand(1);
@@ -85,10 +87,13 @@ Runner addOctreeCommand(CLI::App& app) {
         ->add_option("--max", args->vdb.max,
                      ".vdb input: the fog value that maps to opacity 255 (default 1)")
         ->check(CLI::PositiveNumber);
-    return [args, build, convert] {
+    Runner runTiles;
+    CLI::App* tiles = addOctreeTilesCommand(app, runTiles);
+    return [args, build, convert, tiles, runTiles] {
+        if (tiles->parsed()) return runTiles();
         if (build->parsed()) return runBuild(*args);
         if (convert->parsed()) return runConvert(*args);
-        return reportError(Error("octree: choose build or convert"));
+        return reportError(Error("octree: choose build, convert or tiles"));
     };
 }
 
