@@ -16,6 +16,7 @@ struct OctreeArrays {
     const std::uint32_t* nodes = nullptr;
     const Colour* colours = nullptr;
     const std::uint32_t* leafCounts = nullptr;  // LeafOrder trees only
+    const float* lightCache = nullptr;          // T_sun per light cache corner, when cached
 };
 
 inline OctreeArrays arraysOf(const Octree& tree) {
@@ -39,6 +40,10 @@ inline bool octreeLeafOrder(const octree::OctreeArrays& tree) {
 
 inline uint octreeLeafCount(const octree::OctreeArrays& tree, uint octant) {
     return tree.leafCounts[octant];
+}
+
+inline float octreeLightCacheValue(const octree::OctreeArrays& tree, uint corner) {
+    return tree.lightCache[corner];
 }
 
 inline vec3 octreeLeafSrgb(const octree::OctreeArrays& tree, uint index) {

@@ -4,6 +4,7 @@
 
 #include "gpu/shaders/shared/octree_layout.h"
 #include "luxel/core/memory.h"
+#include "octree/octree_access.h"
 #include "octree/octree_render_params.h"
 #include "voxel/cast_batch.h"
 
@@ -15,10 +16,22 @@ struct OctreeGpu::State {
     gpu::Context* context = nullptr;
     gpu::Program* castProgram = nullptr;
     gpu::Program* renderProgram = nullptr;
+    gpu::Program* lightProgram = nullptr;
     std::shared_ptr<gpu::Buffer> nodes;
     std::shared_ptr<gpu::Buffer> colours;     // one uint per entry or leaf, or one dummy
     std::shared_ptr<gpu::Buffer> leafCounts;  // one uint per octant (LeafOrder), or one dummy
     std::shared_ptr<gpu::Buffer> params;
+    // The light cache of the last scattering render, kept while its light is unchanged.
+    std::shared_ptr<gpu::Buffer> lightCache;  // or one dummy float
+    std::uint32_t lightStride = 0;            // 0: lightCache holds nothing
+    float lightSun[3] = {0, 0, 0};
+    float lightOpacityScale = 0;
+    std::uint64_t lightCacheBytes = sizeof(float);
+
+    Result<shared::OctreeRenderParams> uploadParams(const voxel::Camera& camera,
+                                                    const OctreeRenderOptions& options);
+    Status prepareLightCache(const shared::OctreeRenderParams& p,
+                             std::vector<gpu::Dispatch>& passes);
     Octree shape;  // depth and size only (no arrays): what renderParams reads
     std::uint64_t bytes = 0;
     int depth = 1;
@@ -41,7 +54,7 @@ Result<OctreeGpu> OctreeGpu::create(gpu::Context& context, const Octree& tree) {
     const std::uint64_t countWords = tree.leafOrder() ? tree.leafCounts.size() : 1;
     const std::uint64_t bytes =
         (tree.nodes.size() + colourWords + countWords) * sizeof(std::uint32_t) +
-        sizeof(shared::OctreeRenderParams);
+        sizeof(shared::OctreeRenderParams) + sizeof(float);  // + the light cache's dummy
     const std::uint64_t limit = context.device().deviceLocalBytes;
     if (limit > 0 && bytes > limit) {
         return Error("octree of " + formatBytes(bytes) + " does not fit the device's " +
@@ -58,9 +71,15 @@ Result<OctreeGpu> OctreeGpu::create(gpu::Context& context, const Octree& tree) {
     auto program = context.program("octree_cast", 4, sizeof(shared::OctreeCastPush));
     if (!program) return program.error();
     state->castProgram = *program;
-    auto renderProgram = context.program("octree_render", 5, 0);
+    auto renderProgram = context.program("octree_render", 6, 0);
     if (!renderProgram) return renderProgram.error();
     state->renderProgram = *renderProgram;
+    auto lightProgram = context.program("octree_light_cache", 4, 0);
+    if (!lightProgram) return lightProgram.error();
+    state->lightProgram = *lightProgram;
+    auto lightCache = context.createBuffer(sizeof(float));
+    if (!lightCache) return lightCache.error();
+    state->lightCache = std::move(*lightCache);
     auto nodes = context.createBuffer(tree.nodes.size() * sizeof(std::uint32_t));
     if (!nodes) return nodes.error();
     state->nodes = std::move(*nodes);
@@ -95,31 +114,101 @@ Result<OctreeGpu> OctreeGpu::create(gpu::Context& context, const Octree& tree) {
     return OctreeGpu(std::move(state));
 }
 
-Result<Image> OctreeGpu::render(const voxel::Camera& camera, const OctreeRenderOptions& options,
-                                std::vector<gpu::PassTiming>* timings) {
-    if (Status s = validateRenderOptions(options); !s) return s.error();
-    State& s = *state_;
+// Makes s.lightCache hold the cache `p` reads (p.lightStride != 0), adding its fill pass to
+// `passes` unless the one already there was traced under the same light. `p` is uploaded.
+Status OctreeGpu::State::prepareLightCache(const shared::OctreeRenderParams& p,
+                                           std::vector<gpu::Dispatch>& passes) {
+    State& s = *this;
+    if (p.lightStride == 0) return Ok{};
+    if (s.lightStride == p.lightStride && s.lightSun[0] == p.sunX && s.lightSun[1] == p.sunY &&
+        s.lightSun[2] == p.sunZ && s.lightOpacityScale == p.opacityScale) {
+        return Ok{};
+    }
+    if (Status st = checkLightCacheSize(p); !st) return st;
+    const std::uint64_t corners = shared::octreeLightCacheCorners(p);
+    if (s.lightCacheBytes < corners * sizeof(float)) {
+        auto buffer = s.context->createBuffer(corners * sizeof(float));
+        if (!buffer) return buffer.error();
+        s.bytes += corners * sizeof(float) - s.lightCacheBytes;
+        s.lightCacheBytes = corners * sizeof(float);
+        s.lightCache = std::move(*buffer);
+    }
+    gpu::Dispatch d;
+    d.name = "octree light cache";
+    d.program = s.lightProgram;
+    d.buffers = {s.params.get(), s.nodes.get(), s.leafCounts.get(), s.lightCache.get()};
+    d.setThreads(corners);
+    passes.push_back(std::move(d));
+    s.lightStride = p.lightStride;
+    s.lightSun[0] = p.sunX, s.lightSun[1] = p.sunY, s.lightSun[2] = p.sunZ;
+    s.lightOpacityScale = p.opacityScale;
+    return Ok{};
+}
+
+// Uploads the parameters of a render (camera and options) with the tree's flags.
+Result<shared::OctreeRenderParams> OctreeGpu::State::uploadParams(
+    const voxel::Camera& camera, const OctreeRenderOptions& options) {
+    State& s = *this;
+    if (Status st = validateRenderOptions(options); !st) return st.error();
     shared::OctreeRenderParams p = renderParams(s.shape, camera, options);
     if (s.hasColours) p.flags |= LUXEL_OCTREE_COLOURS;
     if (s.leafOrder) p.flags |= LUXEL_OCTREE_LEAF_ORDER;
+    if (Status st = s.context->upload(*s.params, std::as_bytes(std::span(&p, 1))); !st) {
+        return st.error();
+    }
+    return p;
+}
+
+Result<std::vector<float>> OctreeGpu::lightCache(const OctreeRenderOptions& options,
+                                                 std::vector<gpu::PassTiming>* timings) {
+    State& s = *state_;
+    auto camera = voxel::Camera::lookAt({0, 0, -1}, {0, 0, 0}, 60, 1, 1);
+    if (!camera) return camera.error();
+    auto p = s.uploadParams(*camera, options);
+    if (!p) return p.error();
+    if (p->lightStride == 0) return std::vector<float>{};
+    if (Status st = checkLightCacheSize(*p); !st) return st.error();
+    s.lightStride = 0;  // always run the pass: this is its single-pass entry
+    std::vector<gpu::Dispatch> passes;
+    if (Status st = s.prepareLightCache(*p, passes); !st) return st.error();
+    auto ran = s.context->run(passes);
+    if (!ran) return ran.error();
+    if (timings) timings->insert(timings->end(), ran->begin(), ran->end());
+    std::vector<float> values(shared::octreeLightCacheCorners(*p));
+    if (Status st = s.context->download(*s.lightCache, std::as_writable_bytes(std::span(values)));
+        !st) {
+        return st.error();
+    }
+    return values;
+}
+
+Result<Image> OctreeGpu::render(const voxel::Camera& camera, const OctreeRenderOptions& options,
+                                std::vector<gpu::PassTiming>* timings) {
+    State& s = *state_;
     const std::uint64_t pixels = static_cast<std::uint64_t>(camera.width()) * camera.height();
     if (Status st = checkMemory(pixels * sizeof(shared::VoxelPixel), "an octree image"); !st) {
         return st.error();
     }
-    if (Status st = s.context->upload(*s.params, std::as_bytes(std::span(&p, 1))); !st) {
-        return st.error();
-    }
+    auto p = s.uploadParams(camera, options);
+    if (!p) return p.error();
+    std::vector<gpu::Dispatch> passes;
+    if (Status st = s.prepareLightCache(*p, passes); !st) return st.error();
     auto output = s.context->createBuffer(pixels * sizeof(shared::VoxelPixel));
     if (!output) return output.error();
     gpu::Dispatch d;
     d.name = "octree render";
     d.program = s.renderProgram;
-    d.buffers = {s.params.get(), s.nodes.get(), s.colours.get(), output->get(), s.leafCounts.get()};
+    d.buffers = {s.params.get(), s.nodes.get(),      s.colours.get(),
+                 output->get(),  s.leafCounts.get(), s.lightCache.get()};
     d.setThreads(static_cast<std::uint64_t>(camera.width()),
                  static_cast<std::uint64_t>(camera.height()));
-    auto passes = s.context->run(std::span(&d, 1));
-    if (!passes) return passes.error();
-    if (timings) timings->insert(timings->end(), passes->begin(), passes->end());
+    passes.push_back(std::move(d));
+    auto ran = s.context->run(passes);
+    if (!ran) {
+        s.lightStride = 0;  // the fill may not have run
+        return ran.error();
+    }
+    if (timings) timings->insert(timings->end(), ran->begin(), ran->end());
     std::vector<shared::VoxelPixel> out(pixels);
     if (Status st = s.context->download(**output, std::as_writable_bytes(std::span(out))); !st) {
         return st.error();

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "luxel/core/parallel.h"
+#include "luxel/octree/octree_light_cache.h"
 #include "octree/octree_access.h"
 #include "octree/octree_render_params.h"
 
@@ -62,34 +63,29 @@ Status validateRenderOptions(const OctreeRenderOptions& o) {
     if (!(o.octaveWeight >= 0.0f && o.octaveWeight <= 1.0f)) {
         return bad("octave weight must be in 0..1");
     }
+    if (o.lightCacheStride != kLightCacheAuto &&
+        (o.lightCacheStride < 0 || o.lightCacheStride > 4096)) {
+        return bad("light cache stride must be auto (-1) or 0..4096");
+    }
     return Ok{};
 }
 
-shared::OctreeRenderParams renderParams(const Octree& tree, const voxel::Camera& camera,
-                                        const OctreeRenderOptions& o) {
+shared::OctreeRenderParams mediumParams(const Octree& tree, const OctreeRenderOptions& o) {
     shared::OctreeRenderParams p{};
-    const Vec3d pos = camera.position();
-    const double tanHalf = std::tan(camera.fovYDegrees() * std::numbers::pi / 360.0);
-    const double aspect = static_cast<double>(camera.width()) / camera.height();
-    const Vec3d f = camera.forward(), r = camera.right() * (tanHalf * aspect),
-                u = camera.up() * tanHalf;
     const Vec3 sun = normalize(o.sunDirection);
     const Int3 size = tree.extent();
-    p.originX = float(pos.x), p.originY = float(pos.y), p.originZ = float(pos.z);
     p.sunRadius = o.sunRadiusDegrees * std::numbers::pi_v<float> / 180.0f;
-    p.forwardX = float(f.x), p.forwardY = float(f.y), p.forwardZ = float(f.z);
     p.opacityScale = o.opacityScale;
-    p.rightX = float(r.x), p.rightY = float(r.y), p.rightZ = float(r.z);
     p.albedo = o.albedo;
-    p.upX = float(u.x), p.upY = float(u.y), p.upZ = float(u.z);
     p.phaseG = o.phaseG;
     p.sunX = sun.x, p.sunY = sun.y, p.sunZ = sun.z;
     p.ambient = o.ambient;
     p.sunR = o.sun.r, p.sunG = o.sun.g, p.sunB = o.sun.b;
     p.octaveWeight = o.octaveWeight;
     p.skyR = o.sky.r, p.skyG = o.sky.g, p.skyB = o.sky.b;
-    p.width = static_cast<std::uint32_t>(camera.width());
-    p.height = static_cast<std::uint32_t>(camera.height());
+    const bool cached = o.mode == OctreeMode::Volume && o.scattering;
+    p.lightStride =
+        static_cast<std::uint32_t>(cached ? lightCacheStride(size, o.lightCacheStride) : 0);
     p.depth = static_cast<std::uint32_t>(tree.depth);
     p.mode = static_cast<std::uint32_t>(o.mode);
     p.sizeX = static_cast<std::uint32_t>(size.x);
@@ -106,11 +102,38 @@ shared::OctreeRenderParams renderParams(const Octree& tree, const voxel::Camera&
     return p;
 }
 
+shared::OctreeRenderParams renderParams(const Octree& tree, const voxel::Camera& camera,
+                                        const OctreeRenderOptions& o) {
+    shared::OctreeRenderParams p = mediumParams(tree, o);
+    const Vec3d pos = camera.position();
+    const double tanHalf = std::tan(camera.fovYDegrees() * std::numbers::pi / 360.0);
+    const double aspect = static_cast<double>(camera.width()) / camera.height();
+    const Vec3d f = camera.forward(), r = camera.right() * (tanHalf * aspect),
+                u = camera.up() * tanHalf;
+    p.originX = float(pos.x), p.originY = float(pos.y), p.originZ = float(pos.z);
+    p.forwardX = float(f.x), p.forwardY = float(f.y), p.forwardZ = float(f.z);
+    p.rightX = float(r.x), p.rightY = float(r.y), p.rightZ = float(r.z);
+    p.upX = float(u.x), p.upY = float(u.y), p.upZ = float(u.z);
+    p.width = static_cast<std::uint32_t>(camera.width());
+    p.height = static_cast<std::uint32_t>(camera.height());
+    return p;
+}
+
 Result<Image> renderOctree(const Octree& tree, const voxel::Camera& camera,
-                           const OctreeRenderOptions& options) {
+                           const OctreeRenderOptions& options, OctreeLightCache* lightCache) {
     if (Status s = validateRenderOptions(options); !s) return s.error();
     const shared::OctreeRenderParams p = renderParams(tree, camera, options);
-    const OctreeArrays arrays = arraysOf(tree);
+    OctreeArrays arrays = arraysOf(tree);
+    OctreeLightCache local;
+    OctreeLightCache& cache = lightCache ? *lightCache : local;
+    if (p.lightStride != 0) {
+        if (!cache.matches(tree, options)) {
+            auto filled = fillLightCache(tree, options);
+            if (!filled) return filled.error();
+            cache = std::move(*filled);
+        }
+        arrays.lightCache = cache.values.data();
+    }
     Image image(camera.width(), camera.height(), 3);
     parallelForRange(camera.height(), 1, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {

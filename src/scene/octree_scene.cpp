@@ -105,10 +105,11 @@ octree::Octree buildTree(const Json& o, const std::filesystem::path& baseDir,
 octree::OctreeRenderOptions renderOptions(const Json* r) {
     octree::OctreeRenderOptions o;
     if (!r) return o;
-    json::checkObject(*r, "render",
-                      {"mode", "threshold", "opacity_scale", "shadows", "sun_radius",
-                       "shadow_samples", "scattering", "albedo", "phase_g", "octaves",
-                       "octave_weight", "sun_direction", "sun", "sky", "ambient"});
+    json::checkObject(
+        *r, "render",
+        {"mode", "threshold", "opacity_scale", "shadows", "sun_radius", "shadow_samples",
+         "scattering", "albedo", "phase_g", "octaves", "octave_weight", "light_cache_stride",
+         "sun_direction", "sun", "sky", "ambient"});
     if (const Json* v = find(*r, "mode")) {
         auto mode = octree::parseOctreeMode(json::readString(*v, "render.mode"), "render.mode");
         if (!mode) throw Invalid{"render.mode", "must be \"surface\", \"volume\" or \"additive\""};
@@ -139,6 +140,9 @@ octree::OctreeRenderOptions renderOptions(const Json* r) {
     if (const Json* v = find(*r, "octaves")) o.octaves = wholeNumberIn(*v, "render.octaves", 1, 8);
     if (const Json* v = find(*r, "octave_weight")) {
         o.octaveWeight = float(json::readNumberIn(*v, "render.octave_weight", 0, 1));
+    }
+    if (const Json* v = find(*r, "light_cache_stride")) {
+        o.lightCacheStride = wholeNumberIn(*v, "render.light_cache_stride", -1, 4096);
     }
     if (const Json* v = find(*r, "sun_direction")) {
         const auto d = json::readNumbers(*v, "render.sun_direction", 3, -1, 1);

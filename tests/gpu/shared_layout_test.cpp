@@ -53,32 +53,36 @@ TEST(GpuSharedLayout, WorkgroupSizesComeFromTheSharedConstants) {
     EXPECT_EQ(reflect("octree_render").workgroupSize,
               (std::array<std::uint32_t, 3>{LUXEL_OCTREE_RENDER_GROUP_X,
                                             LUXEL_OCTREE_RENDER_GROUP_Y, 1}));
+    EXPECT_EQ(reflect("octree_light_cache").workgroupSize,
+              (std::array<std::uint32_t, 3>{LUXEL_OCTREE_LIGHT_CACHE_GROUP, 1, 1}));
 }
 
 TEST(GpuSharedLayout, OctreeRenderParams) {
     using P = OctreeRenderParams;
-    expectBuffer("octree_render", 0,
-                 {sizeof(P), {LUXEL_MEMBER(P, originX),       LUXEL_MEMBER(P, originY),
-                              LUXEL_MEMBER(P, originZ),       LUXEL_MEMBER(P, sunRadius),
-                              LUXEL_MEMBER(P, forwardX),      LUXEL_MEMBER(P, forwardY),
-                              LUXEL_MEMBER(P, forwardZ),      LUXEL_MEMBER(P, opacityScale),
-                              LUXEL_MEMBER(P, rightX),        LUXEL_MEMBER(P, rightY),
-                              LUXEL_MEMBER(P, rightZ),        LUXEL_MEMBER(P, albedo),
-                              LUXEL_MEMBER(P, upX),           LUXEL_MEMBER(P, upY),
-                              LUXEL_MEMBER(P, upZ),           LUXEL_MEMBER(P, phaseG),
-                              LUXEL_MEMBER(P, sunX),          LUXEL_MEMBER(P, sunY),
-                              LUXEL_MEMBER(P, sunZ),          LUXEL_MEMBER(P, ambient),
-                              LUXEL_MEMBER(P, sunR),          LUXEL_MEMBER(P, sunG),
-                              LUXEL_MEMBER(P, sunB),          LUXEL_MEMBER(P, octaveWeight),
-                              LUXEL_MEMBER(P, skyR),          LUXEL_MEMBER(P, skyG),
-                              LUXEL_MEMBER(P, skyB),          LUXEL_MEMBER(P, pad1),
-                              LUXEL_MEMBER(P, width),         LUXEL_MEMBER(P, height),
-                              LUXEL_MEMBER(P, depth),         LUXEL_MEMBER(P, mode),
-                              LUXEL_MEMBER(P, sizeX),         LUXEL_MEMBER(P, sizeY),
-                              LUXEL_MEMBER(P, sizeZ),         LUXEL_MEMBER(P, threshold),
-                              LUXEL_MEMBER(P, shadowSamples), LUXEL_MEMBER(P, flags),
-                              LUXEL_MEMBER(P, octaves),       LUXEL_MEMBER(P, stepCap)}},
-                 /* element= */ false);
+    for (const char* shader : {"octree_render", "octree_light_cache"}) {
+        expectBuffer(shader, 0,
+                     {sizeof(P), {LUXEL_MEMBER(P, originX),       LUXEL_MEMBER(P, originY),
+                                  LUXEL_MEMBER(P, originZ),       LUXEL_MEMBER(P, sunRadius),
+                                  LUXEL_MEMBER(P, forwardX),      LUXEL_MEMBER(P, forwardY),
+                                  LUXEL_MEMBER(P, forwardZ),      LUXEL_MEMBER(P, opacityScale),
+                                  LUXEL_MEMBER(P, rightX),        LUXEL_MEMBER(P, rightY),
+                                  LUXEL_MEMBER(P, rightZ),        LUXEL_MEMBER(P, albedo),
+                                  LUXEL_MEMBER(P, upX),           LUXEL_MEMBER(P, upY),
+                                  LUXEL_MEMBER(P, upZ),           LUXEL_MEMBER(P, phaseG),
+                                  LUXEL_MEMBER(P, sunX),          LUXEL_MEMBER(P, sunY),
+                                  LUXEL_MEMBER(P, sunZ),          LUXEL_MEMBER(P, ambient),
+                                  LUXEL_MEMBER(P, sunR),          LUXEL_MEMBER(P, sunG),
+                                  LUXEL_MEMBER(P, sunB),          LUXEL_MEMBER(P, octaveWeight),
+                                  LUXEL_MEMBER(P, skyR),          LUXEL_MEMBER(P, skyG),
+                                  LUXEL_MEMBER(P, skyB),          LUXEL_MEMBER(P, lightStride),
+                                  LUXEL_MEMBER(P, width),         LUXEL_MEMBER(P, height),
+                                  LUXEL_MEMBER(P, depth),         LUXEL_MEMBER(P, mode),
+                                  LUXEL_MEMBER(P, sizeX),         LUXEL_MEMBER(P, sizeY),
+                                  LUXEL_MEMBER(P, sizeZ),         LUXEL_MEMBER(P, threshold),
+                                  LUXEL_MEMBER(P, shadowSamples), LUXEL_MEMBER(P, flags),
+                                  LUXEL_MEMBER(P, octaves),       LUXEL_MEMBER(P, stepCap)}},
+                     /* element= */ false);
+    }
     expectBuffer("octree_render", 3,
                  {sizeof(VoxelPixel),
                   {LUXEL_MEMBER(VoxelPixel, r), LUXEL_MEMBER(VoxelPixel, g),

@@ -31,9 +31,16 @@ class OctreeGpu {
                                             const TraceOptions& options = {},
                                             std::vector<gpu::PassTiming>* timings = nullptr);
 
-    // The GPU twin of renderOctree (octree_render.h): the same per-pixel kernel, in float.
+    // The GPU twin of renderOctree (octree_render.h): the same per-pixel kernel, in float. The
+    // light cache of volume scattering is filled by its own pass and kept while the sun
+    // direction, the opacity scale and the stride are unchanged.
     Result<Image> render(const voxel::Camera& camera, const OctreeRenderOptions& options,
                          std::vector<gpu::PassTiming>* timings = nullptr);
+
+    // The light cache pass alone (the twin of fillLightCache, octree_light_cache.h): T_sun per
+    // corner, empty when the options have no cache.
+    Result<std::vector<float>> lightCache(const OctreeRenderOptions& options,
+                                          std::vector<gpu::PassTiming>* timings = nullptr);
 
     std::uint64_t deviceBytes() const;
 

@@ -15,6 +15,13 @@
 
 namespace luxel::octree {
 
+struct OctreeLightCache;  // octree_light_cache.h
+
+// OctreeRenderOptions::lightCacheStride: the smallest power of two giving at most this many cells
+// per axis.
+inline constexpr int kLightCacheAuto = -1;
+inline constexpr int kLightCacheAutoCells = 128;
+
 enum class OctreeMode {
     Surface,   // the first leaf at least `threshold`, lit by sky and sun, with shadows
     Volume,    // front-to-back compositing of the opacities, early termination
@@ -45,13 +52,20 @@ struct OctreeRenderOptions {
     // path tracing within 12% (relative L1) on tests/octree/octree_scattering_test.cpp's sphere,
     // where single scattering alone is 43% dark.
     float octaveWeight = 0.3f;
+    // Scattering reads the sun's transmittance from a cache at the corners of a grid of this
+    // spacing in voxels (octree_light_cache.h): kLightCacheAuto, 0 = exact rays at every sample
+    // (slow), or a spacing up to 4096.
+    int lightCacheStride = kLightCacheAuto;
 };
 
 // Every option checked (NaN, out of range) with an Error naming it.
 Status validateRenderOptions(const OctreeRenderOptions& options);
 
-// `tree` must be valid; the image has the camera's size.
+// `tree` must be valid; the image has the camera's size. With `lightCache`, a cache that matches
+// the tree and options is reused and any other is refilled there (frames under one light fill
+// it once); without, a cache is filled for this render alone.
 Result<Image> renderOctree(const Octree& tree, const voxel::Camera& camera,
-                           const OctreeRenderOptions& options);
+                           const OctreeRenderOptions& options,
+                           OctreeLightCache* lightCache = nullptr);
 
 }  // namespace luxel::octree

@@ -10,10 +10,16 @@ layout(std430, set = 0, binding = 1) readonly buffer Nodes { uint nodes[]; };
 layout(std430, set = 0, binding = 2) readonly buffer Colours { uint colours[]; };
 layout(std430, set = 0, binding = 3) writeonly buffer Output { VoxelPixel pixels[]; };
 layout(std430, set = 0, binding = 4) readonly buffer LeafCounts { uint leafCounts[]; };
+layout(std430, set = 0, binding = 5) readonly buffer LightCache { float lightCache[]; };
 
 #define LUXEL_OCTREE_LEAF_ORDER_ON ((params.flags & LUXEL_OCTREE_LEAF_ORDER) != 0u)
 #define LUXEL_OCTREE_WITH_COLOURS
 #include "octree/octree_access.glsl"
+
+float octreeLightCacheValue(uint tree, uint corner) {
+    return lightCache[corner];
+}
+
 #include "shared/octree_render.h"
 
 void main() {

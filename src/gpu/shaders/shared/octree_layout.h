@@ -36,8 +36,15 @@ struct OctreeCastPush {
 //     leaf; one dummy without colours
 //   3 output: VoxelPixel per pixel (voxel_layout.h), rows top to bottom
 //   4 leafCounts: as octree_cast's binding 3
+//   5 lightCache: one float (T_sun) per corner of the light cache (shared/octree_light_cache.h),
+//     or one dummy when lightStride is 0
 #define LUXEL_OCTREE_RENDER_GROUP_X 8
 #define LUXEL_OCTREE_RENDER_GROUP_Y 8
+
+// octree_light_cache (one invocation per corner; the CPU twin is octree::fillLightCache,
+// include/luxel/octree/octree_light_cache.h) binds 0 OctreeRenderParams, 1 nodes, 2 leafCounts
+// (as octree_render) and 3 lightCache (written).
+#define LUXEL_OCTREE_LIGHT_CACHE_GROUP 64
 
 #define LUXEL_OCTREE_MODE_SURFACE 0u
 #define LUXEL_OCTREE_MODE_VOLUME 1u
@@ -56,7 +63,8 @@ struct OctreeRenderParams {
     float upX, upY, upZ, phaseG;           // up * tan(fov / 2); Henyey-Greenstein g
     float sunX, sunY, sunZ, ambient;       // unit direction towards the sun; sky light fraction
     float sunR, sunG, sunB, octaveWeight;  // sun radiance scale (linear RGB); octave weight ratio
-    float skyR, skyG, skyB, pad1;          // sky and background (linear RGB)
+    float skyR, skyG, skyB;                // sky and background (linear RGB)
+    uint lightStride;                      // light cache grid spacing in voxels; 0: none
     uint width, height, depth, mode;
     uint sizeX, sizeY, sizeZ, threshold;
     uint shadowSamples, flags, octaves, stepCap;

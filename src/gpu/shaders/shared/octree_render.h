@@ -18,6 +18,7 @@
 
 #include "glsl_compat.h"
 #include "octree_layout.h"
+#include "octree_light_cache.h"
 #include "octree_walk.h"
 #include "voxel_shading.h"
 
@@ -72,6 +73,39 @@ LUXEL_FUNC float octreeTransmittance(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderPar
     return transmittance;
 }
 
+// One corner of the light cache (octree_light_cache.h): the optical depth toward the sun, from
+// T_sun traced exactly from its point.
+LUXEL_FUNC float octreeLightCacheCorner(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams) p,
+                                        uint corner) {
+    const vec3 q = octreeLightCacheCornerPoint(p, corner);
+    return octreeLightCacheDepth(octreeTransmittance(tree, p, LUXEL_REAL3(q),
+                                                     LUXEL_REAL3(vec3(p.sunX, p.sunY, p.sunZ)),
+                                                     LUXEL_REAL(LUXEL_INFINITY)));
+}
+
+// The sun's transmittance from `point`: interpolated in the light cache when there is one, else
+// traced (the exact answer the cache approximates).
+LUXEL_FUNC float octreeSunTransmittance(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams) p,
+                                        LUXEL_REAL3 point) {
+    const LUXEL_REAL3 sun = LUXEL_REAL3(vec3(p.sunX, p.sunY, p.sunZ));
+    if (p.lightStride == 0u) {
+        return octreeTransmittance(tree, p, point, sun, LUXEL_REAL(LUXEL_INFINITY));
+    }
+    // The near field traced exactly (the cache blurs the sharpest change, the medium just in
+    // front), the far field read from the cache; past the box nothing is in the way.
+    const LUXEL_REAL nearT =
+        LUXEL_REAL(max(LUXEL_OCTREE_LIGHT_CACHE_NEAR_STRIDES * float(p.lightStride),
+                       LUXEL_OCTREE_LIGHT_CACHE_NEAR_VOXELS));
+    const float nearTransmittance = octreeTransmittance(tree, p, point, sun, nearT);
+    const LUXEL_REAL3 far = point + sun * nearT;
+    const vec3 f = vec3(far);
+    if (f.x < 0.0f || f.y < 0.0f || f.z < 0.0f || f.x > float(p.sizeX) || f.y > float(p.sizeY) ||
+        f.z > float(p.sizeZ)) {
+        return nearTransmittance;
+    }
+    return nearTransmittance * octreeLightCacheLookup(tree, p, f);
+}
+
 // A uniform number in [0, 1) from a hash of three integers.
 LUXEL_FUNC float octreeRandom(uint a, uint b, uint c) {
     const uint h = voxelMixHash(a * 0x9e3779b9u ^ voxelMixHash(b * 0x85ebca6bu ^ voxelMixHash(c)));
@@ -122,8 +156,7 @@ LUXEL_FUNC float octreePhaseHG(float cosTheta, float g) {
 LUXEL_FUNC vec3 octreeInScatter(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams) p,
                                 LUXEL_REAL3 point, vec3 viewDir) {
     const vec3 sun = vec3(p.sunX, p.sunY, p.sunZ);
-    const float sunT =
-        octreeTransmittance(tree, p, point, LUXEL_REAL3(sun), LUXEL_REAL(LUXEL_INFINITY));
+    const float sunT = octreeSunTransmittance(tree, p, point);
     const float cosTheta = dot(viewDir, sun);  // light travels along -sun, seen along -viewDir
     float sum = 0.0f;
     float weight = 1.0f;
