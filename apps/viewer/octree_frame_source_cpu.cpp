@@ -1,6 +1,9 @@
-// OctreeFrameSource on the CPU: renderOctree reads the tree directly.
+// OctreeFrameSource on the CPU: renderOctree reads the tree directly. The volume mode's light
+// cache is kept between frames and refilled only when the light, the opacity or the tree changes,
+// so orbiting a scattering volume costs the view rays alone.
 #include "luxel/core/parallel.h"
 #include "luxel/core/timer.h"
+#include "luxel/octree/octree_light_cache.h"
 #include "octree_frame_source.h"
 
 namespace luxel::viewer {
@@ -17,10 +20,15 @@ class CpuOctreeFrameSource final : public OctreeFrameSource {
                          const octree::OctreeRenderOptions& options,
                          std::vector<PassTime>& passes) override {
         Stopwatch clock;
-        auto image = octree::renderOctree(tree, camera, options);
-        passes.push_back({"octree render", clock.milliseconds()});
+        const bool refill = !lightCache_.matches(tree, options);
+        auto image = octree::renderOctree(tree, camera, options, &lightCache_);
+        passes.push_back({refill ? "octree render (light cache filled)" : "octree render",
+                          clock.milliseconds()});
         return image;
     }
+
+  private:
+    octree::OctreeLightCache lightCache_;
 };
 
 }  // namespace

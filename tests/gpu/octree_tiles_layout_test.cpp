@@ -49,7 +49,7 @@ TEST(OctreeTilesLayout, ParamsAndPixelsAreThoseOfOctreeRender) {
                               LUXEL_MEMBER(R, sunR),          LUXEL_MEMBER(R, sunG),
                               LUXEL_MEMBER(R, sunB),          LUXEL_MEMBER(R, octaveWeight),
                               LUXEL_MEMBER(R, skyR),          LUXEL_MEMBER(R, skyG),
-                              LUXEL_MEMBER(R, skyB),          LUXEL_MEMBER(R, pad1),
+                              LUXEL_MEMBER(R, skyB),          LUXEL_MEMBER(R, lightStride),
                               LUXEL_MEMBER(R, width),         LUXEL_MEMBER(R, height),
                               LUXEL_MEMBER(R, depth),         LUXEL_MEMBER(R, mode),
                               LUXEL_MEMBER(R, sizeX),         LUXEL_MEMBER(R, sizeY),

@@ -18,6 +18,12 @@ layout(push_constant) uniform Push { OctreeTilesPush tiles; };
 
 #define LUXEL_OCTREE_LEAF_ORDER_ON ((params.flags & LUXEL_OCTREE_LEAF_ORDER) != 0u)
 
+// The tile passes shade surfaces only: the volume mode's light cache (shared/octree_light_cache.h)
+// is never read here, and has no buffer.
+float octreeLightCacheValue(uint tree, uint corner) {
+    return 0.0;
+}
+
 #define LUXEL_OCTREE_WITH_COLOURS
 #include "octree/octree_access.glsl"
 #include "shared/octree_tiles.h"
