@@ -1,7 +1,9 @@
 // Hash-consing of octants: every octant with the same 8 entries (and, in a coloured tree, the
 // same 8 leaf colours) is stored once, which turns the octree into a DAG (SVDAG sharing, Kämpe,
-// Sintorn and Assarsson 2013). An open-addressing table of octant bases into the tree's own
-// arrays, so it costs 4 bytes per slot beyond the octants themselves.
+// Sintorn and Assarsson 2013). An open-addressing table (linear probing) of octant bases into the
+// tree's own arrays. Each slot also keeps 32 bits of the octant's hash, so a probe compares
+// octants only when those bits match and growing never reads the arrays again: the arrays are far
+// larger than the cache, and a read of them is a cache miss.
 #pragma once
 
 #include <cstdint>
@@ -29,11 +31,13 @@ class OctantTable {
   private:
     std::uint64_t hashOf(const std::uint32_t* entries, const Colour* colours) const;
     bool equalAt(std::uint32_t base, const std::uint32_t* entries, const Colour* colours) const;
-    void insert(std::uint32_t base, std::uint64_t hash);
+    void insert(std::uint32_t octant, std::uint32_t tag);
     void grow();
 
     Octree& tree_;
-    std::vector<std::uint32_t> slots_;  // octant number (base / 8), 0 = free
+    // Per slot: the octant number (base / 8; 0 = free) in the low half, 32 bits of its hash in
+    // the high half.
+    std::vector<std::uint64_t> slots_;
     std::uint64_t used_ = 0;
 };
 
