@@ -100,8 +100,13 @@ void OctantTable::grow() {
 }
 
 std::uint32_t OctantTable::intern(const std::uint32_t* entries, const Colour* colours) {
+    return intern(entries, colours, hash(entries, colours));
+}
+
+std::uint32_t OctantTable::intern(const std::uint32_t* entries, const Colour* colours,
+                                  std::uint64_t hash) {
     if (!tree_.hasColours()) colours = nullptr;
-    const auto tag = static_cast<std::uint32_t>(hashOf(entries, colours) >> 32);
+    const auto tag = static_cast<std::uint32_t>(hash >> 32);
     const std::uint64_t mask = slots_.size() - 1;
     std::uint64_t i = tag & mask;
     for (; slots_[i] != 0; i = (i + 1) & mask) {

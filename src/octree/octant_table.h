@@ -21,6 +21,16 @@ class OctantTable {
     // The base of the octant with these entries (and colours, in a coloured tree; may be null
     // otherwise), appended when new. 0 when the array would exceed kMaxEntries.
     std::uint32_t intern(const std::uint32_t* entries, const Colour* colours);
+    // The same with the octant's hash() computed earlier: a caller interning many octants can
+    // prefetch() the slot of one while interning those before it, so the table's cache misses
+    // overlap instead of following one another.
+    std::uint32_t intern(const std::uint32_t* entries, const Colour* colours, std::uint64_t hash);
+    std::uint64_t hash(const std::uint32_t* entries, const Colour* colours) const {
+        return hashOf(entries, tree_.hasColours() ? colours : nullptr);
+    }
+    void prefetch(std::uint64_t hash) const {
+        __builtin_prefetch(&slots_[(hash >> 32) & (slots_.size() - 1)]);
+    }
 
     // Forgets everything and indexes the tree's octants again (after the tree was replaced).
     void reindex();

@@ -196,24 +196,53 @@ class ParallelBuilder {
     }
 
     // Re-interns a task's octants into the tree in their local order, then finishes the plan's
-    // branches up to the next task.
+    // branches up to the next task. The table is far larger than the cache, so the slot of the
+    // octant kAhead places on is prefetched while this one is interned.
     void merge(Subtree& task) {
         failed_ = failed_ || task.failed;
         const Octree& local = task.local;
         const std::size_t octants = local.nodes.size() / 8;
         std::vector<std::uint32_t> globalBase(octants, 0);
-        std::uint32_t values[8];
-        for (std::size_t o = 1; o < octants && !failed_; ++o) {
+        // The octant's entries with branches mapped to the tree; false while a child is not
+        // merged yet (children precede parents: the local table appends in post-order).
+        auto mapped = [&](std::size_t o, std::size_t merged, std::uint32_t* values) {
             for (int slot = 0; slot < 8; ++slot) {
                 const std::uint32_t v = local.nodes[o * 8 + slot];
-                values[slot] = isLeaf(v) ? v : branchTo(globalBase[childBase(v) / 8]);
+                if (isLeaf(v)) {
+                    values[slot] = v;
+                    continue;
+                }
+                const std::size_t child = childBase(v) / 8;
+                if (child >= merged) return false;
+                values[slot] = branchTo(globalBase[child]);
             }
-            globalBase[o] = table_.intern(values, colours_ ? &local.colours[o * 8] : nullptr);
+            return true;
+        };
+        auto coloursOf = [&](std::size_t o) { return colours_ ? &local.colours[o * 8] : nullptr; };
+        constexpr std::size_t kAhead = 16;
+        std::uint64_t ahead[kAhead];
+        bool hashed[kAhead] = {};
+        std::uint32_t values[8];
+        auto prepare = [&](std::size_t p, std::size_t merged) {
+            hashed[p % kAhead] = p < octants && mapped(p, merged, values);
+            if (hashed[p % kAhead]) {
+                ahead[p % kAhead] = table_.hash(values, coloursOf(p));
+                table_.prefetch(ahead[p % kAhead]);
+            }
+        };
+        for (std::size_t p = 1; p <= kAhead; ++p) prepare(p, 1);
+        for (std::size_t o = 1; o < octants && !failed_; ++o) {
+            mapped(o, o, values);
+            const std::uint64_t h =
+                hashed[o % kAhead] ? ahead[o % kAhead] : table_.hash(values, coloursOf(o));
+            globalBase[o] = table_.intern(values, coloursOf(o), h);
             failed_ = globalBase[o] == 0;
+            prepare(o + kAhead, o + 1);
         }
         Entry root = task.root;
-        if (!isLeaf(root.value) && !failed_)
+        if (!isLeaf(root.value) && !failed_) {
             root.value = branchTo(globalBase[childBase(root.value) / 8]);
+        }
         while (cursor_ < plan_.size() && plan_[cursor_].kind != PlanNode::Kind::Task) ++cursor_;
         plan_[cursor_++].entry = root;
         finishBranches();
