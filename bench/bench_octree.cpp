@@ -45,7 +45,8 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 // One scene in its three structures, with its rays and what was measured while building them.
 struct Scene {
     voxel::VoxelWorld world;
-    octree::Octree tree;
+    octree::Octree tree;   // with colours, as scenes build it
+    octree::Octree shape;  // opacity only: colours no longer split otherwise equal octants
     nanovdb::GridHandle<nanovdb::HostBuffer> vdb;
     const nanovdb::NanoGrid<nanovdb::ValueMask>* grid = nullptr;
     std::vector<Ray> primary, shadow;
@@ -60,13 +61,12 @@ void buildNanoVdb(Scene& s) {
     const openvdb::CoordBBox box(openvdb::Coord(0), openvdb::Coord(n.x - 1, n.y - 1, n.z - 1));
     openvdb::BoolGrid::Ptr solid = openvdb::BoolGrid::create(false);
     {
-        openvdb::tools::Dense<bool, openvdb::tools::LayoutXYZ> dense(box, false);
-        parallelForRange(n.x, 1, [&](int x0, int x1) {
-            for (int x = x0; x < x1; ++x) {
+        // LayoutZYX: x varies fastest, as within the world's chunks.
+        openvdb::tools::Dense<bool, openvdb::tools::LayoutZYX> dense(box, false);
+        parallelForRange(n.z, 1, [&](int z0, int z1) {
+            for (int z = z0; z < z1; ++z) {
                 for (int y = 0; y < n.y; ++y) {
-                    for (int z = 0; z < n.z; ++z) {
-                        dense.setValue(x, y, z, s.world.solid(x, y, z));
-                    }
+                    for (int x = 0; x < n.x; ++x) dense.setValue(x, y, z, s.world.solid(x, y, z));
                 }
             }
         });
@@ -98,7 +98,8 @@ void makeRays(Scene& s, const voxel::Camera& camera, Vec3d sun) {
     for (const auto& [name, rays] : {std::pair{"primary", &s.primary}, {"shadow", &s.shadow}}) {
         const std::vector<voxel::Hit> dense = voxel::castRays(s.world, *rays);
         const std::vector<octree::OctreeHit> tree = octree::castRays(s.tree, *rays);
-        std::uint64_t treeAgree = 0, vdbAgree = 0, denseHits = 0;
+        const std::vector<octree::OctreeHit> shape = octree::castRays(s.shape, *rays);
+        std::uint64_t treeAgree = 0, shapeAgree = 0, vdbAgree = 0, denseHits = 0;
         double denseSteps = 0, treeSteps = 0, vdbSteps = 0;
         for (std::size_t i = 0; i < rays->size(); ++i) {
             const HddaHit vdb = castExactHdda(*s.grid, s.world.size(), (*rays)[i]);
@@ -106,6 +107,8 @@ void makeRays(Scene& s, const voxel::Camera& camera, Vec3d sun) {
             const voxel::Hit& o = tree[i].hit;
             denseHits += d.hit ? 1 : 0;
             treeAgree += o.hit == d.hit && (!d.hit || o.voxel == d.voxel) ? 1 : 0;
+            const voxel::Hit& g = shape[i].hit;
+            shapeAgree += g.hit == d.hit && (!d.hit || g.voxel == d.voxel) ? 1 : 0;
             vdbAgree += vdb.hit == d.hit && (!d.hit || vdb.voxel == d.voxel) ? 1 : 0;
             denseSteps += d.steps;
             treeSteps += o.steps;
@@ -114,6 +117,7 @@ void makeRays(Scene& s, const voxel::Camera& camera, Vec3d sun) {
         const double count = static_cast<double>(rays->size());
         const std::string key = name;
         s.counters[key + "_octree_agree%"] = 100.0 * static_cast<double>(treeAgree) / count;
+        s.counters[key + "_shape_octree_agree%"] = 100.0 * static_cast<double>(shapeAgree) / count;
         s.counters[key + "_nanovdb_agree%"] = 100.0 * static_cast<double>(vdbAgree) / count;
         s.counters[key + "_dense_steps"] = denseSteps / count;
         s.counters[key + "_octree_steps"] = treeSteps / count;
@@ -135,8 +139,8 @@ void finish(Scene& s, const voxel::Camera& camera, Vec3d sun) {
     s.counters["octree_attribute_bytes"] = static_cast<double>(stats.attributeBytes);
     s.counters["octree_bits_per_solid"] = stats.bitsPerSolidVoxel;
     // Without colours the interior shares octants: the geometry alone.
-    const octree::OctreeStats shape =
-        octree::measure(octree::buildOctree(s.world, {.colours = false}).value());
+    s.shape = octree::buildOctree(s.world, {.colours = false}).value();
+    const octree::OctreeStats shape = octree::measure(s.shape);
     s.counters["shape_octree_bytes"] = static_cast<double>(shape.geometryBytes);
     s.counters["shape_octree_bits_per_solid"] = shape.bitsPerSolidVoxel;
     s.counters["dense_bytes"] =
@@ -151,8 +155,14 @@ const Vec3d kSun = normalize(Vec3d{0.4, 1.0, 0.3});
 Scene& terrain() {
     static Scene s = [] {
         std::printf("octree benchmarks: building the 512^3 terrain scene\n");
-        Scene out{
-            voxel::VoxelWorld::create({512, 512, 512}, 32).value(), {}, {}, nullptr, {}, {}, {}};
+        Scene out{voxel::VoxelWorld::create({512, 512, 512}, 32).value(),
+                  {},
+                  {},
+                  {},
+                  nullptr,
+                  {},
+                  {},
+                  {}};
         voxel::TerrainOptions options;  // as bench_voxel.cpp
         options.seed = 3;
         options.baseHeight = 0.3;
@@ -175,7 +185,7 @@ Scene& phantom() {
     static Scene s = [] {
         std::printf("octree benchmarks: building the 512^3 phantom scene\n");
         const octree::Volume& v = phantomVolume();
-        Scene out{voxel::VoxelWorld::create(v.size(), 32).value(), {}, {}, nullptr, {}, {}, {}};
+        Scene out{voxel::VoxelWorld::create(v.size(), 32).value(), {}, {}, {}, nullptr, {}, {}, {}};
         parallelForRange(v.size().z / 32, 1, [&](int c0, int c1) {  // chunk slabs: no sharing
             for (int z = c0 * 32; z < c1 * 32; ++z) {
                 for (int y = 0; y < v.size().y; ++y) {
@@ -208,7 +218,7 @@ void castAll(benchmark::State& state, const std::vector<Ray>& rays, Cast&& cast)
                                                    benchmark::Counter::kIsIterationInvariantRate);
 }
 
-enum class Peer { Octree, Dense, NanoVdb };
+enum class Peer { Octree, ShapeOctree, Dense, NanoVdb };
 
 void trace(benchmark::State& state, Scene& (*scene)(), bool shadow, Peer peer) {
     Scene& s = scene();
@@ -218,6 +228,9 @@ void trace(benchmark::State& state, Scene& (*scene)(), bool shadow, Peer peer) {
             castAll(state, rays, [&](const Ray& r) { return octree::castRay(s.tree, r).hit.hit; });
             // The scene's sizes and build times, once per scene and ray kind.
             for (const auto& [name, value] : s.counters) state.counters[name] = value;
+            break;
+        case Peer::ShapeOctree:
+            castAll(state, rays, [&](const Ray& r) { return octree::castRay(s.shape, r).hit.hit; });
             break;
         case Peer::Dense:
             castAll(state, rays, [&](const Ray& r) { return voxel::castRay(s.world, r).hit; });
@@ -232,8 +245,10 @@ void trace(benchmark::State& state, Scene& (*scene)(), bool shadow, Peer peer) {
 void registerTraces() {
     const std::pair<const char*, Scene& (*)()> scenes[] = {{"terrain512", &terrain},
                                                            {"phantom512", &phantom}};
-    const std::pair<const char*, Peer> peers[] = {
-        {"octree", Peer::Octree}, {"dense_dda", Peer::Dense}, {"nanovdb_hdda", Peer::NanoVdb}};
+    const std::pair<const char*, Peer> peers[] = {{"octree", Peer::Octree},
+                                                  {"octree_opacity_only", Peer::ShapeOctree},
+                                                  {"dense_dda", Peer::Dense},
+                                                  {"nanovdb_hdda", Peer::NanoVdb}};
     for (const auto& [sceneName, scene] : scenes) {
         for (bool shadow : {false, true}) {
             for (const auto& [peerName, peer] : peers) {
