@@ -42,7 +42,7 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// One scene in its three structures, with its rays and what was measured while building them.
+// One scene in every structure, with its rays and what was measured while building them.
 struct Scene {
     voxel::VoxelWorld world;
     octree::Octree tree;   // with colours, as scenes build it
