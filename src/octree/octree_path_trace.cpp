@@ -35,7 +35,7 @@ double freeFlight(const OctreeArrays& tree, const shared::OctreeRenderParams& p,
             const double sigma = extinction(leaf.value, p.opacityScale);
             const double t0 = r.walk.t, t1 = shared::octreeLeafExitT(r, leaf);
             if (sigma * (t1 - t0) >= depth) {
-                entry = leaf.colourIndex;
+                entry = shared::octreeColourIndex(tree, int(p.depth), r.walk.cell, leaf.entry);
                 return t0 + depth / sigma;
             }
             depth -= sigma * (t1 - t0);

@@ -35,10 +35,10 @@ std::uint8_t VdbQuantiser::operator()(float v) const {
 
 VdbSource::VdbSource(const openvdb::FloatGrid& grid, openvdb::Coord origin, Int3 size,
                      VdbQuantiser quantise)
-    : origin_(origin), size_(size), quantise_(quantise), accessor_(grid.getConstAccessor()) {}
+    : origin_(origin), size_(size), quantise_(quantise), accessors_(grid.getConstAccessor()) {}
 
 void VdbSource::voxel(Int3 cell, std::uint8_t& opacity, Colour& colour) const {
-    opacity = quantise_(accessor_.getValue(origin_.offsetBy(cell.x, cell.y, cell.z)));
+    opacity = quantise_(accessor().getValue(origin_.offsetBy(cell.x, cell.y, cell.z)));
     colour = Colour{};
 }
 
@@ -77,9 +77,9 @@ std::optional<std::uint8_t> VdbSource::uniformOpacity(const CoordBBox& box) cons
         work.pop_back();
         const Coord p = b.min();
         CoordBBox region;
-        const int depth = accessor_.getValueDepth(p);
+        const int depth = accessor().getValueDepth(p);
         if (depth == kLeafDepth) {
-            const Tree::LeafNodeType* leaf = accessor_.probeConstLeaf(p);
+            const Tree::LeafNodeType* leaf = accessor().probeConstLeaf(p);
             region = leaf->getNodeBoundingBox();
             const Coord end = Coord::minComponent(region.max(), b.max());
             for (int x = p.x(); x <= end.x(); ++x) {
@@ -93,7 +93,7 @@ std::optional<std::uint8_t> VdbSource::uniformOpacity(const CoordBBox& box) cons
             const int s = tileSide(depth);
             region = CoordBBox::createCube(
                 Coord(p.x() & ~(s - 1), p.y() & ~(s - 1), p.z() & ~(s - 1)), s);
-            if (!same(accessor_.getValue(p))) return std::nullopt;
+            if (!same(accessor().getValue(p))) return std::nullopt;
         }
         const Coord& r = region.max();
         const Coord& e = b.max();

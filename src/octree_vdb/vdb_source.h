@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include <openvdb/openvdb.h>
+#include <tbb/enumerable_thread_specific.h>
 
 #include "luxel/octree/octree_build.h"
 
@@ -39,8 +40,11 @@ class VdbSource final : public OctreeSource {
     openvdb::Coord origin_;
     Int3 size_;
     VdbQuantiser quantise_;
-    // Not thread safe; the builder is single threaded. Caches the path to the last node read.
-    mutable openvdb::FloatGrid::ConstAccessor accessor_;
+    // The builder reads a source from several threads at once, and an accessor (which caches the
+    // path to the last node read) is not thread safe: one per thread, copied from an exemplar.
+    using Accessor = openvdb::FloatGrid::ConstAccessor;
+    Accessor& accessor() const { return accessors_.local(); }
+    mutable tbb::enumerable_thread_specific<Accessor> accessors_;
 };
 
 }  // namespace luxel::octree

@@ -23,7 +23,9 @@ struct BuildOptions {
     std::optional<AttributeLayout> layout = std::nullopt;
 };
 
-// What the builder reads. Cells outside size() are empty.
+// What the builder reads. Cells outside size() are empty. The builder calls a source from several
+// threads at once, so its const methods must be safe to call concurrently (per-thread caches, such
+// as OpenVDB accessors, belong in thread-local storage).
 class OctreeSource {
   public:
     virtual ~OctreeSource() = default;

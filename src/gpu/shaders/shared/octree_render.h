@@ -212,7 +212,8 @@ LUXEL_FUNC vec3 octreeShadeVolume(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams
             const OctreeLeaf leaf = octreeLocate(tree, int(p.depth), r.cursor, r.walk.cell);
             if (leaf.value > 0u) {
                 const float alpha = octreeAlpha(leaf.value, p.opacityScale);
-                const vec3 colour = octreeLeafColour(tree, leaf.colourIndex);
+                const vec3 colour = octreeLeafColour(
+                    tree, octreeColourIndex(tree, int(p.depth), r.walk.cell, leaf.entry));
                 const LUXEL_REAL t0 = r.walk.t;
                 const float chord = float(octreeLeafExitT(r, leaf) - t0);
                 if (additive) {

@@ -47,27 +47,6 @@ LUXEL_FUNC uint octreeTileQuery(LUXEL_OCTREE tree, int depth, ivec3 v, int level
     return entry;
 }
 
-// The colour index of the entry octreeTileQuery reaches for voxel `v` at `level`: its leaf order
-// in a LeafOrder tree (the sibling counts of the octants descended through, as the exact walk
-// counts them: octree_walk.h), else the entry itself.
-LUXEL_FUNC uint octreeTileColourIndex(LUXEL_OCTREE tree, int depth, ivec3 v, int level) {
-    int l = depth - 1;
-    uint base = 0u;
-    uint first = 0u;
-    uint entry = uint(octreeSlot(v, l));
-    uint value = octreeEntry(tree, entry);
-    const bool leafOrder = octreeLeafOrder(tree);
-    if (leafOrder) first += octreeLeavesBefore(tree, base, octreeSlot(v, l));
-    while (value >= LUXEL_OCTREE_LEAF_LIMIT && l > level) {
-        l -= 1;
-        base = value - LUXEL_OCTREE_BRANCH_BIAS;
-        entry = base + uint(octreeSlot(v, l));
-        if (leafOrder) first += octreeLeavesBefore(tree, base, octreeSlot(v, l));
-        value = octreeEntry(tree, entry);
-    }
-    return leafOrder ? first : entry;
-}
-
 // The part [t0, t1] (t0 >= 0) of the ray inside the box [lo, hi); false when it misses.
 LUXEL_FUNC bool octreeTileClip(LUXEL_REAL3 o, LUXEL_REAL3 d, ivec3 lo, ivec3 hi,
                                LUXEL_INOUT(LUXEL_REAL) t0, LUXEL_INOUT(LUXEL_REAL) t1) {
@@ -198,7 +177,7 @@ LUXEL_FUNC vec3 octreeTilesShade(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams)
     const uint value = octreeEntry(tree, s.entry);
     const vec3 albedo =
         value < LUXEL_OCTREE_LEAF_LIMIT
-            ? octreeLeafColour(tree, octreeTileColourIndex(tree, int(p.depth), lo, int(s.level)))
+            ? octreeLeafColour(tree, octreeColourIndex(tree, int(p.depth), lo, s.entry))
             : vec3(octreeSrgbToLinear(0.8f));
     const vec3 sun = vec3(p.sunX, p.sunY, p.sunZ);
     const float cosine = axis >= 0 ? max(dot(normal, sun), 0.0f) : 1.0f;

@@ -12,9 +12,9 @@
 // - bool octreeLeafOrder(LUXEL_OCTREE tree): colours are in leaf order
 // (AttributeLayout::LeafOrder);
 // - uint octreeLeafCount(LUXEL_OCTREE tree, uint octant): leaves below octant `octant` (base / 8).
-// In leaf order the walk also tracks, per octant on the stack, the index of its first leaf in
-// depth-first order, so a leaf's colour index costs the sibling counts of the octants descended
-// through, never an expansion of the DAG (docs/algorithms/sparse-voxel-octree.md §1 "Colour").
+// In leaf order a leaf's colour index is its depth-first order, the sibling counts of the octants
+// descended through (octreeColourIndex), never an expansion of the DAG
+// (docs/algorithms/sparse-voxel-octree.md §1 "Colour"); the walk itself does not pay for it.
 #ifndef LUXEL_GPU_SHARED_OCTREE_WALK_H
 #define LUXEL_GPU_SHARED_OCTREE_WALK_H
 
@@ -39,11 +39,9 @@ struct OctreeLeaf {
 };
 
 // The octants above the last cell looked up: base[L] is the first entry of the octant of level L
-// (entries 2^(L-1) wide; the root is level depth) holding it, and first[L] the leaf order of its
-// first leaf (LeafOrder trees), valid for L in [deepest, depth].
+// (entries 2^(L-1) wide; the root is level depth) holding it, valid for L in [deepest, depth].
 struct OctreeCursor {
     uint base[LUXEL_OCTREE_MAX_DEPTH + 1];
-    uint first[LUXEL_OCTREE_MAX_DEPTH + 1];
     int deepest;
     ivec3 last;
 };
@@ -52,11 +50,9 @@ LUXEL_FUNC_HOT int octreeSlot(ivec3 c, int level) {
     return ((c.x >> level) & 1) | (((c.z >> level) & 1) << 1) | (((c.y >> level) & 1) << 2);
 }
 
+// Only the root's slot is read before a descent writes the levels below it.
 LUXEL_FUNC void octreeCursorReset(LUXEL_INOUT(OctreeCursor) cursor, int depth) {
-    for (int i = 0; i <= LUXEL_OCTREE_MAX_DEPTH; ++i) {
-        cursor.base[i] = 0u;
-        cursor.first[i] = 0u;
-    }
+    cursor.base[depth] = 0u;
     cursor.deepest = depth;
     cursor.last = ivec3(0);
 }
@@ -76,34 +72,43 @@ LUXEL_FUNC_HOT uint octreeLeavesBefore(LUXEL_OCTREE tree, uint base, int slot) {
 
 // The leaf holding `cell` (inside the cube). Starts at the lowest octant still holding the cell.
 // One exit at the end: the cursor is written back there only (an early return from inside the
-// loop lost the stack writes under Mesa's lavapipe).
+// loop lost the stack writes under Mesa's lavapipe). The leaf's colourIndex is its entry: a
+// LeafOrder tree's leaf order costs sibling counts at every level, so it is found only for the
+// leaves whose colour is read (octreeColourIndex).
 LUXEL_FUNC_HOT OctreeLeaf octreeLocate(LUXEL_OCTREE tree, int depth,
                                        LUXEL_INOUT(OctreeCursor) cursor, ivec3 cell) {
     const int diff = (cell.x ^ cursor.last.x) | (cell.y ^ cursor.last.y) | (cell.z ^ cursor.last.z);
     int level = clamp(findMSB(diff) + 1, cursor.deepest, depth);
-    const bool leafOrder = octreeLeafOrder(tree);
-    uint base = cursor.base[level];
-    uint first = cursor.first[level];
-    int slot = octreeSlot(cell, level - 1);
-    uint entry = base + uint(slot);
-    if (leafOrder) first += octreeLeavesBefore(tree, base, slot);
+    uint entry = cursor.base[level] + uint(octreeSlot(cell, level - 1));
     uint value = octreeEntry(tree, entry);
     while (value >= LUXEL_OCTREE_LEAF_LIMIT && level > 1) {
-        base = value - LUXEL_OCTREE_BRANCH_BIAS;
+        const uint base = value - LUXEL_OCTREE_BRANCH_BIAS;
         level -= 1;
         cursor.base[level] = base;
-        cursor.first[level] = first;
-        slot = octreeSlot(cell, level - 1);
-        entry = base + uint(slot);
-        if (leafOrder) first += octreeLeavesBefore(tree, base, slot);
+        entry = base + uint(octreeSlot(cell, level - 1));
         value = octreeEntry(tree, entry);
     }
     cursor.deepest = level;
     cursor.last = cell;
     const int mask = ~((1 << (level - 1)) - 1);
     return OctreeLeaf(entry, value < LUXEL_OCTREE_LEAF_LIMIT ? value : 0u, level - 1,
-                      ivec3(cell.x & mask, cell.y & mask, cell.z & mask),
-                      leafOrder ? first : entry);
+                      ivec3(cell.x & mask, cell.y & mask, cell.z & mask), entry);
+}
+
+// The colour index of the leaf at `entry` holding `cell`: the entry itself, or in a LeafOrder tree
+// its depth-first leaf order, summed over the octants from the root down to it.
+LUXEL_FUNC_HOT uint octreeColourIndex(LUXEL_OCTREE tree, int depth, ivec3 cell, uint entry) {
+    if (!octreeLeafOrder(tree)) return entry;
+    uint base = 0u;
+    uint first = 0u;
+    for (int level = depth - 1; level >= 0; --level) {
+        const int slot = octreeSlot(cell, level);
+        first += octreeLeavesBefore(tree, base, slot);
+        const uint value = octreeEntry(tree, base + uint(slot));
+        if (value < LUXEL_OCTREE_LEAF_LIMIT || level == 0) break;
+        base = value - LUXEL_OCTREE_BRANCH_BIAS;
+    }
+    return first;
 }
 
 // The walk and the cursor of one ray through the octree.
@@ -170,7 +175,7 @@ LUXEL_FUNC_HOT VoxelTrace octreeTraverseLeaf(LUXEL_OCTREE tree, int depth, ivec3
         const OctreeLeaf leaf = octreeLocate(tree, depth, r.cursor, r.walk.cell);
         if (leaf.value >= threshold) {
             entry = leaf.entry;
-            colourIndex = leaf.colourIndex;
+            colourIndex = octreeColourIndex(tree, depth, r.walk.cell, leaf.entry);
             return VoxelTrace(true, false, r.walk.cell, r.walk.t, r.walk.axis, voxelStep(r.walk),
                               steps);
         }
