@@ -225,6 +225,9 @@ void ModeOctree::drawPanel() {
                            "%.4g", ImGuiSliderFlags_Logarithmic)) {
         c.setOpacityScale(scale);
     }
+    int window[2] = {o.windowLow, o.windowHigh};
+    if (ImGui::SliderInt2("opacity window", window, 0, 255))
+        c.setOpacityWindow(window[0], window[1]);
     int threshold = o.threshold;
     if (ImGui::SliderInt("surface threshold (,/.)", &threshold, 1, 255)) c.setThreshold(threshold);
     bool shadows = o.shadows;

@@ -139,6 +139,20 @@ void OctreeControls::setThreshold(int threshold) {
     changed();
 }
 
+void OctreeControls::setOpacityWindow(int low, int high) {
+    low = std::clamp(low, 0, 254);
+    high = std::clamp(high, 1, 255);
+    if (high <= low) {
+        if (low != state_.render.windowLow)
+            high = low + 1;  // the low end moved up
+        else
+            low = high - 1;  // the high end moved down
+    }
+    state_.render.windowLow = static_cast<std::uint8_t>(low);
+    state_.render.windowHigh = static_cast<std::uint8_t>(high);
+    changed();
+}
+
 void OctreeControls::setShadows(bool on) {
     state_.render.shadows = on;
     changed();

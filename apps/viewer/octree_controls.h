@@ -63,6 +63,8 @@ class OctreeControls {
     void setMode(octree::OctreeMode mode);
     void setOpacityScale(float scale);  // clamped to [kMinOpacityScale, kMaxOpacityScale]
     void setThreshold(int threshold);   // clamped to 1..255
+    // The opacity transfer window, clamped to 0..255 with low < high (the other end moves).
+    void setOpacityWindow(int low, int high);
     void setShadows(bool on);
     void setSunRadius(float degrees);  // 0 hard; above, soft over at least 4 samples
     void setScattering(bool on);

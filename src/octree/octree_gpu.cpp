@@ -26,6 +26,7 @@ struct OctreeGpu::State {
     std::uint32_t lightStride = 0;            // 0: lightCache holds nothing
     float lightSun[3] = {0, 0, 0};
     float lightOpacityScale = 0;
+    std::uint32_t lightWindow[2] = {0, 0};
     std::uint64_t lightCacheBytes = sizeof(float);
 
     Result<shared::OctreeRenderParams> uploadParams(const voxel::Camera& camera,
@@ -121,7 +122,8 @@ Status OctreeGpu::State::prepareLightCache(const shared::OctreeRenderParams& p,
     State& s = *this;
     if (p.lightStride == 0) return Ok{};
     if (s.lightStride == p.lightStride && s.lightSun[0] == p.sunX && s.lightSun[1] == p.sunY &&
-        s.lightSun[2] == p.sunZ && s.lightOpacityScale == p.opacityScale) {
+        s.lightSun[2] == p.sunZ && s.lightOpacityScale == p.opacityScale &&
+        s.lightWindow[0] == p.windowLow && s.lightWindow[1] == p.windowHigh) {
         return Ok{};
     }
     if (Status st = checkLightCacheSize(p); !st) return st;
@@ -142,6 +144,7 @@ Status OctreeGpu::State::prepareLightCache(const shared::OctreeRenderParams& p,
     s.lightStride = p.lightStride;
     s.lightSun[0] = p.sunX, s.lightSun[1] = p.sunY, s.lightSun[2] = p.sunZ;
     s.lightOpacityScale = p.opacityScale;
+    s.lightWindow[0] = p.windowLow, s.lightWindow[1] = p.windowHigh;
     return Ok{};
 }
 

@@ -24,7 +24,8 @@ bool OctreeLightCache::matches(const Octree& tree, const OctreeRenderOptions& op
     const shared::OctreeRenderParams p = mediumParams(tree, options);
     return stride == static_cast<int>(p.lightStride) && nodes == tree.nodes.data() &&
            nodeCount == tree.nodes.size() && sun.x == p.sunX && sun.y == p.sunY &&
-           sun.z == p.sunZ && opacityScale == p.opacityScale;
+           sun.z == p.sunZ && opacityScale == p.opacityScale && windowLow == p.windowLow &&
+           windowHigh == p.windowHigh;
 }
 
 Status checkLightCacheSize(const shared::OctreeRenderParams& p) {
@@ -46,6 +47,8 @@ Result<OctreeLightCache> fillLightCache(const Octree& tree, const OctreeRenderOp
     cache.stride = static_cast<int>(p.lightStride);
     cache.sun = Vec3(p.sunX, p.sunY, p.sunZ);
     cache.opacityScale = p.opacityScale;
+    cache.windowLow = p.windowLow;
+    cache.windowHigh = p.windowHigh;
     cache.nodes = tree.nodes.data();
     cache.nodeCount = tree.nodes.size();
     cache.values.resize(shared::octreeLightCacheCorners(p));

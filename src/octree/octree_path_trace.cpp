@@ -14,8 +14,8 @@ namespace {
 namespace shared = gpu::shared;
 using shared::dvec3;
 
-double extinction(std::uint32_t value, float opacityScale) {
-    const double a = shared::octreeAlpha(value, opacityScale);
+double extinction(std::uint32_t value, const shared::OctreeRenderParams& p) {
+    const double a = shared::octreeAlpha(value, p);
     return a >= 1.0 ? 1e9 : -std::log(1.0 - a);
 }
 
@@ -32,7 +32,7 @@ double freeFlight(const OctreeArrays& tree, const shared::OctreeRenderParams& p,
         const shared::OctreeLeaf leaf =
             shared::octreeLocate(tree, int(p.depth), r.cursor, r.walk.cell);
         if (leaf.value > 0u) {
-            const double sigma = extinction(leaf.value, p.opacityScale);
+            const double sigma = extinction(leaf.value, p);
             const double t0 = r.walk.t, t1 = shared::octreeLeafExitT(r, leaf);
             if (sigma * (t1 - t0) >= depth) {
                 entry = shared::octreeColourIndex(tree, int(p.depth), r.walk.cell, leaf.entry);

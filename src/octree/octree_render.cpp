@@ -63,6 +63,9 @@ Status validateRenderOptions(const OctreeRenderOptions& o) {
     if (!(o.octaveWeight >= 0.0f && o.octaveWeight <= 1.0f)) {
         return bad("octave weight must be in 0..1");
     }
+    if (!(o.windowLow < o.windowHigh)) {
+        return bad("opacity window must have its low end below its high end");
+    }
     if (o.lightCacheStride != kLightCacheAuto &&
         (o.lightCacheStride < 0 || o.lightCacheStride > 4096)) {
         return bad("light cache stride must be auto (-1) or 0..4096");
@@ -76,6 +79,8 @@ shared::OctreeRenderParams mediumParams(const Octree& tree, const OctreeRenderOp
     const Int3 size = tree.extent();
     p.sunRadius = o.sunRadiusDegrees * std::numbers::pi_v<float> / 180.0f;
     p.opacityScale = o.opacityScale;
+    p.windowLow = o.windowLow;
+    p.windowHigh = o.windowHigh;
     p.albedo = o.albedo;
     p.phaseG = o.phaseG;
     p.sunX = sun.x, p.sunY = sun.y, p.sunZ = sun.z;

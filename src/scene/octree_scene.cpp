@@ -107,9 +107,9 @@ octree::OctreeRenderOptions renderOptions(const Json* r) {
     if (!r) return o;
     json::checkObject(
         *r, "render",
-        {"mode", "threshold", "opacity_scale", "shadows", "sun_radius", "shadow_samples",
-         "scattering", "albedo", "phase_g", "octaves", "octave_weight", "light_cache_stride",
-         "sun_direction", "sun", "sky", "ambient"});
+        {"mode", "threshold", "opacity_scale", "opacity_window", "shadows", "sun_radius",
+         "shadow_samples", "scattering", "albedo", "phase_g", "octaves", "octave_weight",
+         "light_cache_stride", "sun_direction", "sun", "sky", "ambient"});
     if (const Json* v = find(*r, "mode")) {
         auto mode = octree::parseOctreeMode(json::readString(*v, "render.mode"), "render.mode");
         if (!mode) throw Invalid{"render.mode", "must be \"surface\", \"volume\" or \"additive\""};
@@ -117,6 +117,15 @@ octree::OctreeRenderOptions renderOptions(const Json* r) {
     }
     if (const Json* v = find(*r, "threshold")) {
         o.threshold = static_cast<std::uint8_t>(wholeNumberIn(*v, "render.threshold", 1, 255));
+    }
+    if (const Json* v = find(*r, "opacity_window")) {
+        const auto w = json::readNumbers(*v, "render.opacity_window", 2, 0, 255);
+        if (w[0] != std::floor(w[0]) || w[1] != std::floor(w[1]) || !(w[0] < w[1])) {
+            throw Invalid{"render.opacity_window",
+                          "must be [low, high], whole numbers, low < high"};
+        }
+        o.windowLow = static_cast<std::uint8_t>(w[0]);
+        o.windowHigh = static_cast<std::uint8_t>(w[1]);
     }
     if (const Json* v = find(*r, "opacity_scale")) {
         o.opacityScale = float(json::readNumberIn(*v, "render.opacity_scale", 0, 1e6));

@@ -133,6 +133,10 @@ TEST_F(CliOctree, BadInputIsRefusedWithItsLocation) {
   "octree": {"source": "file", "path": "nowhere.lxo"}, "camera": {"position": [0, 0, 0],
   "yaw": 0, "pitch": 0, "fov": 40, "size": [8, 8]}})");
     expectError("info " + missing, "nowhere.lxo");
+    const std::string window = write("window.json", R"({"type": "octree",
+  "octree": {"source": "phantom", "size": 8}, "camera": {"position": [0, 0, 0], "yaw": 0,
+  "pitch": 0, "fov": 40, "size": [8, 8]}, "render": {"opacity_window": [200, 100]}})");
+    expectError("info " + window, "render.opacity_window: must be [low, high]");
     const std::string scene = write("box.json", kBoxWorldScene);
     expectError("render " + scene + " --solver hrc --out " + path("x.png"), "an octree scene");
     expectError("octree build " + scene + " --out " + path("x.bin"), "must end in .lxo");

@@ -55,7 +55,9 @@ TEST(OctreeTilesLayout, ParamsAndPixelsAreThoseOfOctreeRender) {
                               LUXEL_MEMBER(R, sizeX),         LUXEL_MEMBER(R, sizeY),
                               LUXEL_MEMBER(R, sizeZ),         LUXEL_MEMBER(R, threshold),
                               LUXEL_MEMBER(R, shadowSamples), LUXEL_MEMBER(R, flags),
-                              LUXEL_MEMBER(R, octaves),       LUXEL_MEMBER(R, stepCap)}},
+                              LUXEL_MEMBER(R, octaves),       LUXEL_MEMBER(R, stepCap),
+                              LUXEL_MEMBER(R, windowLow),     LUXEL_MEMBER(R, windowHigh),
+                              LUXEL_MEMBER(R, pad0),          LUXEL_MEMBER(R, pad1)}},
                  false);
     using V = VoxelPixel;
     expectBuffer(

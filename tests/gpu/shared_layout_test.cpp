@@ -80,7 +80,9 @@ TEST(GpuSharedLayout, OctreeRenderParams) {
                                   LUXEL_MEMBER(P, sizeX),         LUXEL_MEMBER(P, sizeY),
                                   LUXEL_MEMBER(P, sizeZ),         LUXEL_MEMBER(P, threshold),
                                   LUXEL_MEMBER(P, shadowSamples), LUXEL_MEMBER(P, flags),
-                                  LUXEL_MEMBER(P, octaves),       LUXEL_MEMBER(P, stepCap)}},
+                                  LUXEL_MEMBER(P, octaves),       LUXEL_MEMBER(P, stepCap),
+                                  LUXEL_MEMBER(P, windowLow),     LUXEL_MEMBER(P, windowHigh),
+                                  LUXEL_MEMBER(P, pad0),          LUXEL_MEMBER(P, pad1)}},
                      /* element= */ false);
     }
     expectBuffer("octree_render", 3,

@@ -45,10 +45,12 @@ TEST(OctreeRender, GpuPassMatchesTheCpuTwinInEveryMode) {
         float opacityScale;
         float sunRadius;
         double bound;  // float vs double: chords and ties differ slightly
+        std::uint8_t windowLow = 0, windowHigh = 255;
     };
     for (const Case& c :
          {Case{OctreeMode::Surface, 1.0f, 0.0f, 2e-3}, Case{OctreeMode::Surface, 0.3f, 4.0f, 5e-3},
           Case{OctreeMode::Volume, 0.4f, 0.0f, 1e-2},
+          Case{OctreeMode::Volume, 0.8f, 0.0f, 1e-2, 100, 240},
           Case{OctreeMode::Additive, 0.05f, 0.0f, 2e-3}}) {
         OctreeRenderOptions o;
         o.mode = c.mode;
@@ -56,6 +58,8 @@ TEST(OctreeRender, GpuPassMatchesTheCpuTwinInEveryMode) {
         o.sunRadiusDegrees = c.sunRadius;
         o.shadowSamples = c.sunRadius > 0 ? 8 : 1;
         o.threshold = 100;
+        o.windowLow = c.windowLow;
+        o.windowHigh = c.windowHigh;
         auto cpu = renderOctree(tree, camera, o);
         auto gpu = uploaded->render(camera, o);
         ASSERT_TRUE(cpu.ok() && gpu.ok());
@@ -92,6 +96,33 @@ TEST(OctreeRender, VolumeModeFollowsBeerLambertThroughTheCube) {
     const double grey = std::pow((0.8 + 0.055) / 1.055, 2.4);
     EXPECT_NEAR(image.at(16, 16, 0), grey * (1 - t) + t, 1e-4);
     EXPECT_NEAR(image.at(0, 0, 0), 1.0, 1e-6);  // a corner ray misses the cube
+}
+
+// The opacity window: below its low end a value is clear, above its high end full strength, and
+// linear between, so the cube of 128 reads (128 - 64) / (192 - 64) = 0.5 of the scale; with the
+// window above 128 the cube vanishes and the sky shows through untouched.
+TEST(OctreeRender, OpacityWindowMapsValuesLinearlyBetweenItsEnds) {
+    CubeScene s;
+    OctreeRenderOptions o;
+    o.mode = OctreeMode::Volume;
+    o.scattering = false;
+    o.sky = {1, 1, 1};
+    o.ambient = 0;
+    o.opacityScale = 0.25f;
+    o.windowLow = 64;
+    o.windowHigh = 192;
+    const Image image = *renderOctree(s.tree, s.camera, o);
+    const double a = 0.5 * 0.25;
+    const double t = std::pow(1 - a, 16.0);
+    const double grey = std::pow((0.8 + 0.055) / 1.055, 2.4);
+    EXPECT_NEAR(image.at(16, 16, 0), grey * (1 - t) + t, 1e-4);
+    o.windowLow = 128;
+    const Image clear = *renderOctree(s.tree, s.camera, o);
+    EXPECT_NEAR(clear.at(16, 16, 0), 1.0, 1e-6);
+    o.windowHigh = 100;  // not above the low end
+    auto bad = renderOctree(s.tree, s.camera, o);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().message().find("opacity window"), std::string::npos);
 }
 
 TEST(OctreeRender, SurfaceShadowsDarkenTheGroundBehindABlock) {

@@ -156,6 +156,16 @@ TEST(OctreeModeControls, ModeTogglesAndTransferControlsReachTheRenderer) {
     EXPECT_NEAR(rig.rendered().opacityScale, 0.5f * std::sqrt(2.0f), 1e-6f);
     c.setOpacityScale(0.01f);
     EXPECT_FLOAT_EQ(rig.rendered().opacityScale, 0.01f);
+    c.setOpacityWindow(60, 200);
+    EXPECT_EQ(rig.rendered().windowLow, 60);
+    EXPECT_EQ(rig.rendered().windowHigh, 200);
+    c.setOpacityWindow(230, 200);  // the low end dragged past the high end pushes it up
+    EXPECT_EQ(rig.rendered().windowLow, 230);
+    EXPECT_EQ(rig.rendered().windowHigh, 231);
+    c.setOpacityWindow(230, 100);  // the high end dragged below the low end pushes it down
+    EXPECT_EQ(rig.rendered().windowLow, 99);
+    EXPECT_EQ(rig.rendered().windowHigh, 100);
+    c.setOpacityWindow(0, 255);
     c.setThreshold(100);
     c.apply(OctreeAction::ThresholdUp);
     EXPECT_EQ(rig.rendered().threshold, 108);

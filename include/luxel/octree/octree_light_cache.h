@@ -27,6 +27,7 @@ struct OctreeLightCache {
     int stride = 0;  // resolved; 0: empty
     Vec3 sun;        // unit direction toward the sun it was traced for
     float opacityScale = 0.0f;
+    std::uint32_t windowLow = 0, windowHigh = 0;  // the opacity window it was traced for
     const std::uint32_t* nodes = nullptr;  // which tree (identity only: an edit needs clear())
     std::size_t nodeCount = 0;
     // The optical depth -ln T_sun per corner, in shared/octree_light_cache.h's order.

@@ -34,6 +34,9 @@ struct OctreeRenderOptions {
     OctreeMode mode = OctreeMode::Surface;
     std::uint8_t threshold = 1;  // surface mode: the least opacity that is a surface (1..255)
     float opacityScale = 1.0f;   // opacity per voxel length = value / 255 * scale, capped at 1
+    // The transfer window: values at or below the low end are clear, at or above the high end
+    // full strength, linear between (then times opacityScale); 0..255 is value / 255.
+    std::uint8_t windowLow = 0, windowHigh = 255;
     Vec3 sunDirection{0.45f, 0.8f, 0.35f};  // towards the sun (normalised when rendering)
     Rgb sun{2.2f, 2.1f, 1.9f};              // sun radiance scale
     Rgb sky{0.55f, 0.7f, 0.95f};            // sky light and background

@@ -68,11 +68,12 @@ struct OctreeRenderParams {
     uint width, height, depth, mode;
     uint sizeX, sizeY, sizeZ, threshold;
     uint shadowSamples, flags, octaves, stepCap;
+    uint windowLow, windowHigh, pad0, pad1;  // opacity transfer window (octreeAlpha)
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(OctreeCastPush) == 32);
-static_assert(sizeof(OctreeRenderParams) == 160);
+static_assert(sizeof(OctreeRenderParams) == 176);
 static_assert(offsetof(OctreeRenderParams, width) == 112);
 }  // namespace luxel::gpu::shared
 #endif

@@ -40,8 +40,13 @@ LUXEL_FUNC vec3 octreeLeafColour(LUXEL_OCTREE tree, uint colourIndex) {
     return vec3(octreeSrgbToLinear(c.x), octreeSrgbToLinear(c.y), octreeSrgbToLinear(c.z));
 }
 
-LUXEL_FUNC float octreeAlpha(uint value, float opacityScale) {
-    return min(float(value) * (opacityScale / 255.0f), 1.0f);
+// The transfer function: values at or below windowLow are clear, at or above windowHigh full
+// strength, linear between (the window of CT viewers); times opacityScale, capped at 1. The
+// default window 0..255 is value / 255.
+LUXEL_FUNC float octreeAlpha(uint value, LUXEL_IN(OctreeRenderParams) p) {
+    const float low = float(p.windowLow);
+    const float w = clamp((float(value) - low) / (float(p.windowHigh) - low), 0.0f, 1.0f);
+    return min(w * p.opacityScale, 1.0f);
 }
 
 // Transmittance of `length` voxels in a leaf of per-voxel opacity `alpha`.
@@ -64,8 +69,8 @@ LUXEL_FUNC float octreeTransmittance(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderPar
         const OctreeLeaf leaf = octreeLocate(tree, int(p.depth), r.cursor, r.walk.cell);
         if (leaf.value > 0u) {
             const LUXEL_REAL exitT = min(octreeLeafExitT(r, leaf), tMax);
-            transmittance *= octreeSegmentTransmittance(octreeAlpha(leaf.value, p.opacityScale),
-                                                        float(exitT - r.walk.t));
+            transmittance *=
+                octreeSegmentTransmittance(octreeAlpha(leaf.value, p), float(exitT - r.walk.t));
             if (transmittance < LUXEL_OCTREE_MIN_TRANSMITTANCE) return 0.0f;
         }
         if (!octreeRayLeave(r, leaf, tMax)) break;
@@ -211,7 +216,7 @@ LUXEL_FUNC vec3 octreeShadeVolume(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams
         for (int steps = 0; steps < int(p.stepCap); ++steps) {
             const OctreeLeaf leaf = octreeLocate(tree, int(p.depth), r.cursor, r.walk.cell);
             if (leaf.value > 0u) {
-                const float alpha = octreeAlpha(leaf.value, p.opacityScale);
+                const float alpha = octreeAlpha(leaf.value, p);
                 const vec3 colour = octreeLeafColour(
                     tree, octreeColourIndex(tree, int(p.depth), r.walk.cell, leaf.entry));
                 const LUXEL_REAL t0 = r.walk.t;
