@@ -54,10 +54,10 @@ printf '%-14s %-10s %4d.%02d    %s\n' "garden" "960x540" $((ms / 1000)) $((ms % 
 # (translucent, scattering), and a 4096^3 terrain no dense grid could hold (soft shadows).
 for name in world phantom terrain; do
   start=$(date +%s%N)
-  report=$("$luxel" render "scenes/octree/$name.json" --out "out/octree-$name.exr" \
-    --png "out/octree-$name.png")
+  "$luxel" render "scenes/octree/$name.json" --quiet --out "out/octree-$name.exr" \
+    --png "out/octree-$name.png"
   ms=$(( ($(date +%s%N) - start) / 1000000 ))
-  size=$(sed -n 's/.*image \([0-9]*x[0-9]*\).*/\1/p' <<<"$report" | head -1)
+  size=$("$luxel" info "scenes/octree/$name.json" | awk '/^  image/ {sub(",", "", $2); print $2; exit}')
   printf '%-14s %-10s %4d.%02d    %s\n' "octree $name" "$size" $((ms / 1000)) $((ms % 1000 / 10)) \
     "out/octree-$name.exr out/octree-$name.png"
 done

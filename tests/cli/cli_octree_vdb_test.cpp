@@ -14,36 +14,17 @@
 #include "luxel/core/image_io.h"
 #include "luxel/octree/octree_file.h"
 #include "luxel/octree/octree_vdb.h"
-#include "support/run_command.h"
+#include "support/cli_fixture.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
+using luxel::test::runLuxel;
 using luxel::test::RunResult;
 
-RunResult runLuxel(const std::string& args) {
-    return luxel::test::runCommand(std::string(LUXEL_CLI_PATH) + " " + args);
-}
-
-class CliOctreeVdb : public testing::Test {
+class CliOctreeVdb : public luxel::test::CliFixture {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("luxel_cli_octree_vdb_" +
-                std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    std::string write(const std::string& name, const std::string& text) {
-        const fs::path p = dir_ / name;
-        std::ofstream(p) << text;
-        return p.string();
-    }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
     // A fog sphere of radius 10 named "smoke" (1 inside, a ramp at the rim), 19 voxels across (its
     // active box).
     std::string writeFogSphere(const std::string& name) {
@@ -55,16 +36,6 @@ class CliOctreeVdb : public testing::Test {
         openvdb::io::File(path(name)).write(openvdb::GridPtrVec{fog});
         return path(name);
     }
-
-    void expectError(const std::string& args, const std::string& needle) {
-        const RunResult r = runLuxel(args);
-        EXPECT_EQ(r.exitCode, 1) << args << "\n" << r.output;
-        EXPECT_NE(r.output.find("luxel: error: "), std::string::npos) << r.output;
-        EXPECT_NE(r.output.find(needle), std::string::npos)
-            << "expected '" << needle << "' in: " << r.output;
-    }
-
-    fs::path dir_;
 };
 
 TEST_F(CliOctreeVdb, ConvertsVdbToLxoAndBack) {

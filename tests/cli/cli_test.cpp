@@ -11,7 +11,7 @@
 #include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/gi2d/medium2d.h"
-#include "support/run_command.h"
+#include "support/cli_fixture.h"
 
 namespace {
 
@@ -24,36 +24,7 @@ RunResult runLuxel(const std::string& args, const std::string& environment = "")
                                    " " + args);
 }
 
-class Cli : public testing::Test {
-  protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("luxel_cli_" +
-                std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-
-    std::string write(const std::string& name, const std::string& text) {
-        const fs::path p = dir_ / name;
-        std::ofstream(p) << text;
-        return p.string();
-    }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-    // A run that must fail with exit code 1 and a single "luxel: error:" line containing `needle`.
-    void expectError(const std::string& args, const std::string& needle) {
-        const RunResult r = runLuxel(args);
-        EXPECT_EQ(r.exitCode, 1) << args << "\n" << r.output;
-        EXPECT_NE(r.output.find("luxel: error: "), std::string::npos) << r.output;
-        EXPECT_NE(r.output.find(needle), std::string::npos)
-            << "expected '" << needle << "' in: " << r.output;
-        EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
-    }
-
-    fs::path dir_;
-};
+class Cli : public luxel::test::CliFixture {};
 
 const char* kSmallScene = R"({
   "canvas": [48, 32],

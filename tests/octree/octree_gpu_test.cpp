@@ -7,16 +7,13 @@
 #include "luxel/gpu/context.h"
 #include "luxel/octree/octree_build.h"
 #include "luxel/octree/octree_gpu.h"
+#include "support/gpu_test_context.h"
 
 namespace luxel::octree {
 namespace {
 
 gpu::Context* context() {
-    static std::unique_ptr<gpu::Context> c = [] {
-        auto created = gpu::Context::create({.device = "", .validation = true});
-        return created ? std::move(*created) : nullptr;
-    }();
-    return c.get();
+    return test::sharedGpuContext();
 }
 
 // Origins on a quarter grid and power-of-two direction components keep every product exact in

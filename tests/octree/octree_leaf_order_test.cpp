@@ -7,6 +7,7 @@
 #include <memory>
 #include <random>
 
+#include "luxel/core/metrics.h"
 #include "luxel/gpu/context.h"
 #include "luxel/octree/octree_build.h"
 #include "luxel/octree/octree_edit.h"
@@ -16,6 +17,7 @@
 #include "luxel/octree/octree_trace.h"
 #include "luxel/octree/octree_validate.h"
 #include "luxel/voxel/generators.h"
+#include "support/gpu_test_context.h"
 
 namespace luxel::octree {
 namespace {
@@ -263,22 +265,11 @@ TEST(OctreeLeafOrder, TracedHitsCarryTheirLeafOrderColour) {
 }
 
 gpu::Context* context() {
-    static std::unique_ptr<gpu::Context> c = [] {
-        auto created = gpu::Context::create({.device = "", .validation = true});
-        return created ? std::move(*created) : nullptr;
-    }();
-    return c.get();
+    return test::sharedGpuContext();
 }
 
 double relativeL1(const Image& a, const Image& b) {
-    double diff = 0, sum = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x)
-            for (int c = 0; c < 3; ++c) {
-                diff += std::fabs(a.at(x, y, c) - b.at(x, y, c));
-                sum += std::fabs(b.at(x, y, c));
-            }
-    return diff / sum;
+    return compareImages(a, b)->relativeL1;
 }
 
 TEST(OctreeLeafOrder, GpuPassesMatchTheirCpuTwins) {

@@ -5,32 +5,23 @@
 #include <cmath>
 #include <memory>
 
+#include "luxel/core/metrics.h"
 #include "luxel/gpu/context.h"
 #include "luxel/octree/octree_build.h"
 #include "luxel/octree/octree_gpu.h"
 #include "luxel/octree/octree_render.h"
 #include "luxel/octree/volume_generators.h"
+#include "support/gpu_test_context.h"
 
 namespace luxel::octree {
 namespace {
 
 gpu::Context* context() {
-    static std::unique_ptr<gpu::Context> c = [] {
-        auto created = gpu::Context::create({.device = "", .validation = true});
-        return created ? std::move(*created) : nullptr;
-    }();
-    return c.get();
+    return test::sharedGpuContext();
 }
 
 double relativeL1(const Image& a, const Image& b) {
-    double diff = 0, sum = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x)
-            for (int c = 0; c < 3; ++c) {
-                diff += std::fabs(a.at(x, y, c) - b.at(x, y, c));
-                sum += std::fabs(b.at(x, y, c));
-            }
-    return diff / sum;
+    return compareImages(a, b)->relativeL1;
 }
 
 TEST(OctreeRender, GpuPassMatchesTheCpuTwinInEveryMode) {

@@ -14,16 +14,13 @@
 #include "luxel/octree/octree_tiles.h"
 #include "luxel/octree/octree_tiles_gpu.h"
 #include "luxel/octree/volume_generators.h"
+#include "support/gpu_test_context.h"
 
 namespace luxel::octree {
 namespace {
 
 gpu::Context* context() {
-    static std::unique_ptr<gpu::Context> c = [] {
-        auto created = gpu::Context::create({.device = "", .validation = true});
-        return created ? std::move(*created) : nullptr;
-    }();
-    return c.get();
+    return test::sharedGpuContext();
 }
 
 OctreeRenderOptions noShadows() {
