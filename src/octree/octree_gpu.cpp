@@ -5,6 +5,7 @@
 #include "gpu/shaders/shared/octree_layout.h"
 #include "luxel/core/memory.h"
 #include "octree/octree_access.h"
+#include "octree/octree_device_arrays.h"
 #include "octree/octree_render_params.h"
 #include "voxel/cast_batch.h"
 
@@ -17,9 +18,7 @@ struct OctreeGpu::State {
     gpu::Program* castProgram = nullptr;
     gpu::Program* renderProgram = nullptr;
     gpu::Program* lightProgram = nullptr;
-    std::shared_ptr<gpu::Buffer> nodes;
-    std::shared_ptr<gpu::Buffer> colours;     // one uint per entry or leaf, or one dummy
-    std::shared_ptr<gpu::Buffer> leafCounts;  // one uint per octant (LeafOrder), or one dummy
+    OctreeDeviceArrays arrays;
     std::shared_ptr<gpu::Buffer> params;
     // The light cache of the last scattering render, kept while its light is unchanged.
     std::shared_ptr<gpu::Buffer> lightCache;  // or one dummy float
@@ -33,12 +32,9 @@ struct OctreeGpu::State {
                                                     const OctreeRenderOptions& options);
     Status prepareLightCache(const shared::OctreeRenderParams& p,
                              std::vector<gpu::Dispatch>& passes);
-    Octree shape;  // depth and size only (no arrays): what renderParams reads
     std::uint64_t bytes = 0;
     int depth = 1;
     Int3 size;
-    bool hasColours = false;
-    bool leafOrder = false;
 };
 
 OctreeGpu::OctreeGpu(std::unique_ptr<State> state) : state_(std::move(state)) {}
@@ -51,24 +47,15 @@ std::uint64_t OctreeGpu::deviceBytes() const {
 }
 
 Result<OctreeGpu> OctreeGpu::create(gpu::Context& context, const Octree& tree) {
-    const std::uint64_t colourWords = tree.hasColours() ? tree.colours.size() : 1;
-    const std::uint64_t countWords = tree.leafOrder() ? tree.leafCounts.size() : 1;
-    const std::uint64_t bytes =
-        (tree.nodes.size() + colourWords + countWords) * sizeof(std::uint32_t) +
-        sizeof(shared::OctreeRenderParams) + sizeof(float);  // + the light cache's dummy
-    const std::uint64_t limit = context.device().deviceLocalBytes;
-    if (limit > 0 && bytes > limit) {
-        return Error("octree of " + formatBytes(bytes) + " does not fit the device's " +
-                     formatBytes(limit));
-    }
+    // The parameters and the light cache's dummy word come with the arrays.
+    const std::uint64_t extra = sizeof(shared::OctreeRenderParams) + sizeof(float);
+    auto arrays = uploadOctreeArrays(context, tree, extra);
+    if (!arrays) return arrays.error();
     auto state = std::make_unique<State>();
     state->context = &context;
     state->depth = tree.depth;
     state->size = tree.extent();
-    state->shape.depth = tree.depth;
-    state->shape.size = tree.size;
-    state->hasColours = tree.hasColours();
-    state->leafOrder = tree.leafOrder();
+    state->arrays = std::move(*arrays);
     auto program = context.program("octree_cast", 4, sizeof(shared::OctreeCastPush));
     if (!program) return program.error();
     state->castProgram = *program;
@@ -81,37 +68,10 @@ Result<OctreeGpu> OctreeGpu::create(gpu::Context& context, const Octree& tree) {
     auto lightCache = context.createBuffer(sizeof(float));
     if (!lightCache) return lightCache.error();
     state->lightCache = std::move(*lightCache);
-    auto nodes = context.createBuffer(tree.nodes.size() * sizeof(std::uint32_t));
-    if (!nodes) return nodes.error();
-    state->nodes = std::move(*nodes);
-    if (Status s = context.upload(*state->nodes, std::as_bytes(std::span(tree.nodes))); !s) {
-        return s.error();
-    }
-    std::vector<std::uint32_t> packed(colourWords, 0);
-    for (std::size_t i = 0; i < tree.colours.size(); ++i) {
-        const Colour& c = tree.colours[i];
-        packed[i] = std::uint32_t{c.r} | std::uint32_t{c.g} << 8 | std::uint32_t{c.b} << 16 |
-                    std::uint32_t{c.a} << 24;
-    }
-    auto colours = context.createBuffer(packed.size() * sizeof(std::uint32_t));
-    if (!colours) return colours.error();
-    state->colours = std::move(*colours);
-    if (Status s = context.upload(*state->colours, std::as_bytes(std::span(packed))); !s) {
-        return s.error();
-    }
-    const std::vector<std::uint32_t> dummy(1, 0);
-    const std::span<const std::uint32_t> counts =
-        tree.leafOrder() ? std::span<const std::uint32_t>(tree.leafCounts) : std::span(dummy);
-    auto leafCounts = context.createBuffer(counts.size() * sizeof(std::uint32_t));
-    if (!leafCounts) return leafCounts.error();
-    state->leafCounts = std::move(*leafCounts);
-    if (Status s = context.upload(*state->leafCounts, std::as_bytes(counts)); !s) {
-        return s.error();
-    }
     auto params = context.createBuffer(sizeof(shared::OctreeRenderParams));
     if (!params) return params.error();
     state->params = std::move(*params);
-    state->bytes = bytes;
+    state->bytes = state->arrays.bytes + extra;
     return OctreeGpu(std::move(state));
 }
 
@@ -138,7 +98,8 @@ Status OctreeGpu::State::prepareLightCache(const shared::OctreeRenderParams& p,
     gpu::Dispatch d;
     d.name = "octree light cache";
     d.program = s.lightProgram;
-    d.buffers = {s.params.get(), s.nodes.get(), s.leafCounts.get(), s.lightCache.get()};
+    d.buffers = {s.params.get(), s.arrays.nodes.get(), s.arrays.leafCounts.get(),
+                 s.lightCache.get()};
     d.setThreads(corners);
     passes.push_back(std::move(d));
     s.lightStride = p.lightStride;
@@ -153,9 +114,9 @@ Result<shared::OctreeRenderParams> OctreeGpu::State::uploadParams(
     const voxel::Camera& camera, const OctreeRenderOptions& options) {
     State& s = *this;
     if (Status st = validateRenderOptions(options); !st) return st.error();
-    shared::OctreeRenderParams p = renderParams(s.shape, camera, options);
-    if (s.hasColours) p.flags |= LUXEL_OCTREE_COLOURS;
-    if (s.leafOrder) p.flags |= LUXEL_OCTREE_LEAF_ORDER;
+    shared::OctreeRenderParams p = renderParams(s.arrays.shape, camera, options);
+    if (s.arrays.hasColours) p.flags |= LUXEL_OCTREE_COLOURS;
+    if (s.arrays.leafOrder) p.flags |= LUXEL_OCTREE_LEAF_ORDER;
     if (Status st = s.context->upload(*s.params, std::as_bytes(std::span(&p, 1))); !st) {
         return st.error();
     }
@@ -201,8 +162,8 @@ Result<Image> OctreeGpu::render(const voxel::Camera& camera, const OctreeRenderO
     gpu::Dispatch d;
     d.name = "octree render";
     d.program = s.renderProgram;
-    d.buffers = {s.params.get(), s.nodes.get(),      s.colours.get(),
-                 output->get(),  s.leafCounts.get(), s.lightCache.get()};
+    d.buffers = {s.params.get(), s.arrays.nodes.get(),      s.arrays.colours.get(),
+                 output->get(),  s.arrays.leafCounts.get(), s.lightCache.get()};
     d.setThreads(static_cast<std::uint64_t>(camera.width()),
                  static_cast<std::uint64_t>(camera.height()));
     passes.push_back(std::move(d));
@@ -245,12 +206,13 @@ Result<std::vector<OctreeHit>> OctreeGpu::castRays(std::span<const voxel::Ray> r
     gpu::Dispatch d;
     d.name = "octree cast rays";
     d.program = s.castProgram;
-    d.buffers = {s.nodes.get(), rayBuffer->get(), hitBuffer->get(), s.leafCounts.get()};
+    d.buffers = {s.arrays.nodes.get(), rayBuffer->get(), hitBuffer->get(),
+                 s.arrays.leafCounts.get()};
     d.setPush(shared::OctreeCastPush{
         static_cast<std::uint32_t>(rays.size()), static_cast<std::uint32_t>(cap),
         static_cast<std::uint32_t>(s.depth), std::max<std::uint32_t>(options.threshold, 1),
         static_cast<std::uint32_t>(size.x), static_cast<std::uint32_t>(size.y),
-        static_cast<std::uint32_t>(size.z), s.leafOrder ? LUXEL_OCTREE_LEAF_ORDER : 0u});
+        static_cast<std::uint32_t>(size.z), s.arrays.leafOrder ? LUXEL_OCTREE_LEAF_ORDER : 0u});
     d.setThreads(rays.size());
     auto passes = s.context->run(std::span(&d, 1));
     if (!passes) return passes.error();
