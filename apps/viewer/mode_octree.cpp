@@ -218,8 +218,8 @@ void ModeOctree::drawPanel() {
     if (ImGui::Button("reset view (Home)")) c.apply(OctreeAction::ResetView);
 
     int mode = static_cast<int>(o.mode);
-    const char* modes[] = {"surface", "volume", "additive"};
-    if (ImGui::Combo("mode (V)", &mode, modes, 3)) c.setMode(static_cast<octree::OctreeMode>(mode));
+    const char* modes[] = {"surface", "volume", "additive", "tiles (the design's proposal)"};
+    if (ImGui::Combo("mode (V)", &mode, modes, 4)) c.setMode(static_cast<octree::OctreeMode>(mode));
     float scale = o.opacityScale;
     if (ImGui::SliderFloat("opacity scale (-/+)", &scale, kMinOpacityScale, kMaxOpacityScale,
                            "%.4g", ImGuiSliderFlags_Logarithmic)) {

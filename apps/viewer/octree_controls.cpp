@@ -37,9 +37,10 @@ void OctreeControls::apply(OctreeAction action) {
             setOrbiting(!camera_.orbiting());
             break;
         case OctreeAction::CycleMode:
-            setMode(o.mode == octree::OctreeMode::Surface  ? octree::OctreeMode::Volume
-                    : o.mode == octree::OctreeMode::Volume ? octree::OctreeMode::Additive
-                                                           : octree::OctreeMode::Surface);
+            setMode(o.mode == octree::OctreeMode::Surface    ? octree::OctreeMode::Volume
+                    : o.mode == octree::OctreeMode::Volume   ? octree::OctreeMode::Additive
+                    : o.mode == octree::OctreeMode::Additive ? octree::OctreeMode::Tiles
+                                                             : octree::OctreeMode::Surface);
             break;
         case OctreeAction::ToggleShadows:
             setShadows(!o.shadows);

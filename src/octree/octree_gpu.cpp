@@ -4,6 +4,7 @@
 
 #include "gpu/shaders/shared/octree_layout.h"
 #include "luxel/core/memory.h"
+#include "luxel/octree/octree_tiles_gpu.h"
 #include "octree/octree_access.h"
 #include "octree/octree_device_arrays.h"
 #include "octree/octree_render_params.h"
@@ -19,6 +20,7 @@ struct OctreeGpu::State {
     gpu::Program* renderProgram = nullptr;
     gpu::Program* lightProgram = nullptr;
     OctreeDeviceArrays arrays;
+    std::unique_ptr<OctreeTilesGpu> tiles;  // the tiles mode's passes, made on first use
     std::shared_ptr<gpu::Buffer> params;
     // The light cache of the last scattering render, kept while its light is unchanged.
     std::shared_ptr<gpu::Buffer> lightCache;  // or one dummy float
@@ -149,6 +151,16 @@ Result<std::vector<float>> OctreeGpu::lightCache(const OctreeRenderOptions& opti
 Result<Image> OctreeGpu::render(const voxel::Camera& camera, const OctreeRenderOptions& options,
                                 std::vector<gpu::PassTiming>* timings) {
     State& s = *state_;
+    if (options.mode == OctreeMode::Tiles) {
+        if (!s.tiles) {
+            auto tiles = OctreeTilesGpu::create(*s.context, s.arrays);
+            if (!tiles) return tiles.error();
+            s.tiles = std::make_unique<OctreeTilesGpu>(std::move(*tiles));
+        }
+        auto rendered = s.tiles->render(camera, options, {}, timings);
+        if (!rendered) return rendered.error();
+        return std::move(rendered->image);
+    }
     const std::uint64_t pixels = static_cast<std::uint64_t>(camera.width()) * camera.height();
     if (Status st = checkMemory(pixels * sizeof(shared::VoxelPixel), "an octree image"); !st) {
         return st.error();

@@ -6,6 +6,7 @@
 
 #include "luxel/core/parallel.h"
 #include "luxel/octree/octree_light_cache.h"
+#include "luxel/octree/octree_tiles.h"
 #include "octree/octree_access.h"
 #include "octree/octree_render_params.h"
 
@@ -14,13 +15,14 @@ namespace luxel::octree {
 namespace shared = gpu::shared;
 
 Result<OctreeMode> parseOctreeMode(std::string_view text, std::string_view what) {
-    for (OctreeMode m : {OctreeMode::Surface, OctreeMode::Volume, OctreeMode::Additive}) {
+    for (OctreeMode m :
+         {OctreeMode::Surface, OctreeMode::Volume, OctreeMode::Additive, OctreeMode::Tiles}) {
         if (text == octreeModeName(m)) return m;
     }
     std::string message(what);
     message += " '";
     message += text;
-    message += "' is not one of: surface, volume, additive";
+    message += "' is not one of: surface, volume, additive, tiles";
     return Error(message);
 }
 
@@ -32,6 +34,8 @@ const char* octreeModeName(OctreeMode mode) {
             return "volume";
         case OctreeMode::Additive:
             return "additive";
+        case OctreeMode::Tiles:
+            return "tiles";
     }
     return "surface";
 }
@@ -127,6 +131,11 @@ shared::OctreeRenderParams renderParams(const Octree& tree, const voxel::Camera&
 Result<Image> renderOctree(const Octree& tree, const voxel::Camera& camera,
                            const OctreeRenderOptions& options, OctreeLightCache* lightCache) {
     if (Status s = validateRenderOptions(options); !s) return s.error();
+    if (options.mode == OctreeMode::Tiles) {
+        auto tiles = renderOctreeTiles(tree, camera, options, {});
+        if (!tiles) return tiles.error();
+        return std::move(tiles->image);
+    }
     const shared::OctreeRenderParams p = renderParams(tree, camera, options);
     OctreeArrays arrays = arraysOf(tree);
     OctreeLightCache local;

@@ -29,9 +29,14 @@ OctreeTilesGpu::~OctreeTilesGpu() = default;
 Result<OctreeTilesGpu> OctreeTilesGpu::create(gpu::Context& context, const Octree& tree) {
     auto arrays = uploadOctreeArrays(context, tree, sizeof(shared::OctreeRenderParams));
     if (!arrays) return arrays.error();
+    return create(context, *arrays);
+}
+
+Result<OctreeTilesGpu> OctreeTilesGpu::create(gpu::Context& context,
+                                              const OctreeDeviceArrays& arrays) {
     auto state = std::make_unique<State>();
     state->context = &context;
-    state->arrays = std::move(*arrays);
+    state->arrays = arrays;
     auto program = context.program("octree_tiles", 6, sizeof(shared::OctreeTilesPush));
     if (!program) return program.error();
     state->program = *program;

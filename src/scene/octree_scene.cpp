@@ -112,7 +112,9 @@ octree::OctreeRenderOptions renderOptions(const Json* r) {
          "light_cache_stride", "sun_direction", "sun", "sky", "ambient"});
     if (const Json* v = find(*r, "mode")) {
         auto mode = octree::parseOctreeMode(json::readString(*v, "render.mode"), "render.mode");
-        if (!mode) throw Invalid{"render.mode", "must be \"surface\", \"volume\" or \"additive\""};
+        if (!mode)
+            throw Invalid{"render.mode",
+                          "must be \"surface\", \"volume\", \"additive\" or \"tiles\""};
         o.mode = *mode;
     }
     if (const Json* v = find(*r, "threshold")) {

@@ -10,6 +10,7 @@
 
 #include "luxel/gpu/context.h"
 #include "luxel/octree/octree_build.h"
+#include "luxel/octree/octree_gpu.h"
 #include "luxel/octree/octree_render.h"
 #include "luxel/octree/octree_tiles.h"
 #include "luxel/octree/octree_tiles_gpu.h"
@@ -85,6 +86,37 @@ TEST(OctreeTiles, LeafOrderColoursShadeAsTheSurfaceMode) {
                 sum += std::abs(exact->at(x, y, ch));
             }
     EXPECT_LT(diff / sum, 1e-5) << "relative L1 " << diff / sum;
+}
+
+// "tiles" is a render mode: renderOctree and OctreeGpu::render give the tile passes' picture.
+TEST(OctreeTiles, IsARenderModeOnBothBackends) {
+    ASSERT_EQ(*parseOctreeMode("tiles"), OctreeMode::Tiles);
+    EXPECT_STREQ(octreeModeName(OctreeMode::Tiles), "tiles");
+    const Octree tree = floorTree(13);
+    const auto camera = *voxel::Camera::lookAt({30.3, 58.7, 27.9}, {33.1, 0.0, 35.2}, 40, 48, 48);
+    OctreeRenderOptions o = noShadows();
+    o.mode = OctreeMode::Tiles;
+    auto viaMode = renderOctree(tree, camera, o);
+    auto direct = renderOctreeTiles(tree, camera, noShadows(), {});
+    ASSERT_TRUE(viaMode.ok() && direct.ok());
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 48; ++x) ASSERT_EQ(viaMode->at(x, y, 1), direct->image.at(x, y, 1));
+    if (!context()) GTEST_SKIP() << "no Vulkan device for the GPU half";
+    auto uploaded = OctreeGpu::create(*context(), tree);
+    ASSERT_TRUE(uploaded.ok()) << uploaded.error().message();
+    auto gpu = uploaded->render(camera, o);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    double diff = 0, sum = 0;
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 48; ++x)
+            for (int ch = 0; ch < 3; ++ch) {
+                diff += std::abs(gpu->at(x, y, ch) - viaMode->at(x, y, ch));
+                sum += std::abs(viaMode->at(x, y, ch));
+            }
+    EXPECT_LT(diff / sum, 1e-2) << "relative L1 " << diff / sum;
+    // The surface mode on the same upload still renders the exact walk.
+    o.mode = OctreeMode::Surface;
+    EXPECT_TRUE(uploaded->render(camera, o).ok());
 }
 
 // The same floor three voxels lower: the coarse cell a ray is found in holds the floor's top, but

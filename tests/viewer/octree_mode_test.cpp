@@ -148,6 +148,8 @@ TEST(OctreeModeControls, ModeTogglesAndTransferControlsReachTheRenderer) {
     c.apply(OctreeAction::CycleMode);
     EXPECT_EQ(rig.rendered().mode, octree::OctreeMode::Additive);
     c.apply(OctreeAction::CycleMode);
+    EXPECT_EQ(rig.rendered().mode, octree::OctreeMode::Tiles);
+    c.apply(OctreeAction::CycleMode);
     EXPECT_EQ(rig.rendered().mode, octree::OctreeMode::Surface);
     c.setMode(octree::OctreeMode::Volume);  // the panel's combo box
     EXPECT_EQ(rig.rendered().mode, octree::OctreeMode::Volume);

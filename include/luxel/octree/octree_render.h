@@ -26,6 +26,9 @@ enum class OctreeMode {
     Surface,   // the first leaf at least `threshold`, lit by sky and sun, with shadows
     Volume,    // front-to-back compositing of the opacities, early termination
     Additive,  // the WebGL octree design's additive transparency: emission-like, no occlusion
+    // The WebGL octree design's own proposal (octree_tiles.h): 8^3 tiles, fixed-step marching,
+    // one scale per pass, shaded as the surface mode; lossy against the exact walk.
+    Tiles,
 };
 Result<OctreeMode> parseOctreeMode(std::string_view text, std::string_view what = "mode");
 const char* octreeModeName(OctreeMode mode);

@@ -15,10 +15,15 @@
 
 namespace luxel::octree {
 
+struct OctreeDeviceArrays;
+
 class OctreeTilesGpu {
   public:
     // Uploads a validated tree; refuses, with the numbers, a tree larger than the device memory.
     static Result<OctreeTilesGpu> create(gpu::Context& context, const Octree& tree);
+    // The same over a tree already on the device (src/octree/octree_device_arrays.h), whose
+    // buffers it shares: OctreeGpu's tiles mode.
+    static Result<OctreeTilesGpu> create(gpu::Context& context, const OctreeDeviceArrays& arrays);
     OctreeTilesGpu(OctreeTilesGpu&&) noexcept;
     OctreeTilesGpu& operator=(OctreeTilesGpu&&) noexcept;
     ~OctreeTilesGpu();
