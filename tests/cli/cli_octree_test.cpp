@@ -93,6 +93,26 @@ TEST_F(CliOctree, BuildWritesAContainerThatAFileSceneRendersAlike) {
         << "the container holds the same tree";
 }
 
+// The WebGL octree design's tiles against the exact walk: the loss table and both frame times, and
+// "tiles" as a scene's render mode.
+TEST_F(CliOctree, TilesReportsItsLossesAndIsARenderMode) {
+    const std::string scene = write("box.json", kBoxWorldScene);
+    RunResult r = runLuxel("octree tiles " + scene + " --backend cpu --repeat 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* line :
+         {"tiles of 8^3 cells, 2 passes", "exact traversal hits a surface",
+          "tiles miss a surface (lost)", "frame, exact traversal", "frame, tiles (2 passes)"}) {
+        EXPECT_NE(r.output.find(line), std::string::npos) << line << " in:\n" << r.output;
+    }
+    std::string tiles = kBoxWorldScene;
+    tiles.replace(tiles.find("\"surface\""), 9, "\"tiles\"");
+    r = runLuxel("render " + write("tiles.json", tiles) + " --backend cpu --out " +
+                 path("tiles.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("tiles mode"), std::string::npos) << r.output;
+    expectError("octree tiles " + scene + " --tile-bits 0", "tile");
+}
+
 TEST_F(CliOctree, BadInputIsRefusedWithItsLocation) {
     const std::string badSource = write("bad.json", R"({"type": "octree",
   "octree": {"source": "cloud"}, "camera": {"position": [0, 0, 0], "yaw": 0, "pitch": 0,
