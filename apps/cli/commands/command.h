@@ -7,6 +7,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "luxel/core/error.h"
 #include "luxel/core/tonemap.h"
@@ -101,6 +102,18 @@ struct VoxelBenchRequest {
     int repeat = 3;
 };
 int benchVoxelScene(const VoxelBenchRequest& request, voxel::VoxelScene scene);
+
+// Renders one frame at `camera`; on the GPU `timings` (else null) receives its dispatches.
+using BenchFrame =
+    std::function<Status(const voxel::Camera& camera, std::vector<gpu::PassTiming>* timings)>;
+// The table `luxel bench` prints for voxel and octree scenes. benchSizes checks --repeat and
+// --sizes first (the scene camera's size without --sizes); benchFrames prints the best of
+// request.repeat frames at each size, after one warm-up frame on the GPU, whose dispatch time
+// (transfers excluded) is printed next to the wall time.
+Result<std::vector<ImageSize>> benchSizes(const VoxelBenchRequest& request,
+                                          const voxel::Camera& camera);
+int benchFrames(const VoxelBenchRequest& request, const std::vector<ImageSize>& sizes,
+                const voxel::Camera& camera, bool onGpu, const BenchFrame& frame);
 
 // `luxel info` on a voxel scene (`size`: WxH overriding the camera's image size, or empty).
 int infoVoxelScene(const voxel::VoxelScene& scene);

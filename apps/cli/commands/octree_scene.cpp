@@ -14,11 +14,6 @@
 namespace luxel::cli {
 namespace {
 
-Result<voxel::Camera> resized(const voxel::Camera& camera, int width, int height) {
-    return voxel::Camera::lookAt(camera.position(), camera.position() + camera.forward(),
-                                 camera.fovYDegrees(), width, height);
-}
-
 void printStats(const octree::OctreeStats& s) {
     std::printf("  octree             depth %d (%d^3), %llu octants (%llu if unshared), %s\n",
                 s.depth, 1 << s.depth, static_cast<unsigned long long>(s.octants),
@@ -92,14 +87,9 @@ int infoOctreeScene(const scene::OctreeScene& scene) {
 }
 
 int benchOctreeScene(const VoxelBenchRequest& request, scene::OctreeScene loaded) {
-    if (request.repeat < 1) return reportError(Error("--repeat must be at least 1"));
     scene::OctreeScene* scene = &loaded;
-    std::vector<ImageSize> sizes{{scene->camera.width(), scene->camera.height()}};
-    if (!request.sizes.empty()) {
-        auto parsed = parseImageSizeList(request.sizes, "--sizes");
-        if (!parsed) return reportError(parsed.error());
-        sizes = *parsed;
-    }
+    auto sizes = benchSizes(request, scene->camera);
+    if (!sizes) return reportError(sizes.error());
     std::unique_ptr<gpu::Context> context;
     std::unique_ptr<octree::OctreeGpu> gpuTree;
     if (request.backend == gpu::Backend::Gpu) {
@@ -113,33 +103,13 @@ int benchOctreeScene(const VoxelBenchRequest& request, scene::OctreeScene loaded
     std::printf("%s, octree %s mode on the %s, best of %d\n", request.scene.c_str(),
                 octree::octreeModeName(scene->render.mode), gpu::backendName(request.backend),
                 request.repeat);
-    std::printf("%11s %10s %9s%s\n", "size", "ms", "Mpix/s", gpuTree ? "  dispatch ms" : "");
-    for (const auto& [width, height] : sizes) {
-        auto camera = resized(scene->camera, width, height);
-        if (!camera) return reportError(camera.error());
-        double best = 1e300, bestDispatch = 0;
-        for (int r = 0; r < request.repeat + (gpuTree ? 1 : 0); ++r) {  // GPU: one warm-up run
-            std::vector<gpu::PassTiming> timings;
-            Stopwatch clock;
-            auto image = gpuTree ? gpuTree->render(*camera, scene->render, &timings)
-                                 : octree::renderOctree(scene->tree, *camera, scene->render);
-            if (!image) return reportError(image.error());
-            const double ms = clock.seconds() * 1e3;
-            if (gpuTree && r == 0) continue;
-            if (ms < best) {
-                best = ms;
-                // Every dispatch of the frame: the tiles mode runs one per scale; a light
-                // cache kept from the warm-up frame is not refilled.
-                bestDispatch = 0;
-                for (const gpu::PassTiming& t : timings) bestDispatch += t.milliseconds;
-            }
-        }
-        std::printf("%5dx%-5d %10.2f %9.2f", width, height, best,
-                    static_cast<double>(width) * height / (best * 1e3));
-        if (gpuTree) std::printf("  %11.2f", bestDispatch);
-        std::printf("\n");
-    }
-    return 0;
+    return benchFrames(request, *sizes, scene->camera, gpuTree != nullptr,
+                       [&](const voxel::Camera& camera, std::vector<gpu::PassTiming>* timings) {
+                           auto image =
+                               gpuTree ? gpuTree->render(camera, scene->render, timings)
+                                       : octree::renderOctree(scene->tree, camera, scene->render);
+                           return image ? Status(Ok{}) : Status(image.error());
+                       });
 }
 
 }  // namespace luxel::cli
