@@ -12,14 +12,10 @@
 namespace luxel::octree {
 namespace {
 
-gpu::Context* context() {
-    return test::sharedGpuContext();
-}
-
 // Origins on a quarter grid and power-of-two direction components keep every product exact in
 // float and double, so ties resolve alike and hits, faces, t, steps and entries must agree.
 TEST(OctreeCastParity, GpuPassMatchesTheCpuTwinRayByRay) {
-    if (!context())
+    if (!test::sharedGpuContext())
         GTEST_SKIP() << "no Vulkan device: " << gpu::Context::create().error().message();
     Volume v = *Volume::create({64, 40, 72}, true);
     std::mt19937 rng(3);
@@ -46,7 +42,7 @@ TEST(OctreeCastParity, GpuPassMatchesTheCpuTwinRayByRay) {
         const Vec3d direction{dyadic[rng() % 11], -dyadic[3 + 2 * (i % 3)], dyadic[rng() % 11]};
         rays.push_back({origin, direction});
     }
-    auto gpuTree = OctreeGpu::create(*context(), *tree);
+    auto gpuTree = OctreeGpu::create(*test::sharedGpuContext(), *tree);
     ASSERT_TRUE(gpuTree.ok()) << gpuTree.error().message();
     for (std::uint8_t threshold : {std::uint8_t{1}, std::uint8_t{150}}) {
         const TraceOptions options{.threshold = threshold};
@@ -68,7 +64,8 @@ TEST(OctreeCastParity, GpuPassMatchesTheCpuTwinRayByRay) {
         }
         EXPECT_GT(hits, 2000);
     }
-    EXPECT_EQ(context()->validationMessages(), 0) << context()->lastValidationMessage();
+    EXPECT_EQ(test::sharedGpuContext()->validationMessages(), 0)
+        << test::sharedGpuContext()->lastValidationMessage();
 }
 
 }  // namespace

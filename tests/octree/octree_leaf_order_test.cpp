@@ -264,19 +264,11 @@ TEST(OctreeLeafOrder, TracedHitsCarryTheirLeafOrderColour) {
     EXPECT_GT(hits, 600);
 }
 
-gpu::Context* context() {
-    return test::sharedGpuContext();
-}
-
-double relativeL1(const Image& a, const Image& b) {
-    return compareImages(a, b)->relativeL1;
-}
-
 TEST(OctreeLeafOrder, GpuPassesMatchTheirCpuTwins) {
-    if (!context())
+    if (!test::sharedGpuContext())
         GTEST_SKIP() << "no Vulkan device: " << gpu::Context::create().error().message();
     const Octree tree = *buildOctree(jitteredVolume({40, 33, 29}, 9), kLeafOrder);
-    auto uploaded = OctreeGpu::create(*context(), tree);
+    auto uploaded = OctreeGpu::create(*test::sharedGpuContext(), tree);
     ASSERT_TRUE(uploaded.ok()) << uploaded.error().message();
     // Rays: exact dyadic origins and directions, so the walks agree hit for hit.
     std::mt19937 rng(10);
@@ -308,13 +300,15 @@ TEST(OctreeLeafOrder, GpuPassesMatchTheirCpuTwins) {
         auto c = renderOctree(tree, camera, o);
         auto g = uploaded->render(camera, o);
         ASSERT_TRUE(c.ok() && g.ok());
-        EXPECT_LT(relativeL1(*g, *c), 1e-2) << octreeModeName(mode);
+        EXPECT_LT(compareImages(*g, *c)->relativeL1, 1e-2) << octreeModeName(mode);
         Octree grey = tree;
         grey.colours.clear();
         grey.leafCounts.clear();
-        EXPECT_GT(relativeL1(*renderOctree(grey, camera, o), *c), 0.05) << octreeModeName(mode);
+        EXPECT_GT(compareImages(*renderOctree(grey, camera, o), *c)->relativeL1, 0.05)
+            << octreeModeName(mode);
     }
-    EXPECT_EQ(context()->validationMessages(), 0) << context()->lastValidationMessage();
+    EXPECT_EQ(test::sharedGpuContext()->validationMessages(), 0)
+        << test::sharedGpuContext()->lastValidationMessage();
 }
 
 }  // namespace

@@ -20,15 +20,7 @@
 namespace luxel::octree {
 namespace {
 
-gpu::Context* context() {
-    return test::sharedGpuContext();
-}
-
-double relativeL1(const Image& a, const Image& b) {
-    return compareImages(a, b)->relativeL1;
-}
-
-// scenes/octree/phantom.json's medium and light.
+// The medium and light of scenes/octree/phantom.json before its opacity window (default window).
 OctreeRenderOptions phantomOptions() {
     OctreeRenderOptions o;
     o.mode = OctreeMode::Volume;
@@ -109,18 +101,18 @@ TEST(OctreeLightCache, ARenderReusesAMatchingCacheAndRefillsAStaleOne) {
     const std::vector<float> values = cache.values;
     std::fill(cache.values.begin(), cache.values.end(), 8.0f);
     const Image stale = *renderOctree(tree, camera, o, &cache);  // matches: read as it is
-    const double staleError = relativeL1(stale, first);
+    const double staleError = compareImages(stale, first)->relativeL1;
     EXPECT_GT(staleError, 0.05);
     cache.opacityScale = -1;
     const Image refilled = *renderOctree(tree, camera, o, &cache);
     EXPECT_EQ(cache.values, values);
-    EXPECT_EQ(relativeL1(refilled, first), 0.0);
+    EXPECT_EQ(compareImages(refilled, first)->relativeL1, 0.0);
     o.sunDirection = {-0.5f, 0.8f, 0.3f};
     EXPECT_FALSE(cache.matches(tree, o));
     const Image moved = *renderOctree(tree, camera, o, &cache);
     EXPECT_TRUE(cache.matches(tree, o));
     EXPECT_NE(cache.values, values);
-    EXPECT_GT(relativeL1(moved, first), 0.01);
+    EXPECT_GT(compareImages(moved, first)->relativeL1, 0.01);
 }
 
 // The cached render against the exact one (a shadow ray at every sample) on the 256^3 phantom.
@@ -137,7 +129,7 @@ TEST(OctreeLightCache, CachedRenderIsCloseToTheExactOneOnThePhantom) {
     for (const Case& c : {Case{2, 0.005}, Case{4, 0.01}}) {
         o.lightCacheStride = c.stride;
         const Image cached = *renderOctree(phantom256(), camera, o);
-        const double error = relativeL1(cached, exact);
+        const double error = compareImages(cached, exact)->relativeL1;
         std::printf(
             "phantom 64x48, light cache stride %d: relative L1 %.4f vs exact (bound %.3f)\n",
             c.stride, error, c.bound);
@@ -147,11 +139,11 @@ TEST(OctreeLightCache, CachedRenderIsCloseToTheExactOneOnThePhantom) {
 }
 
 TEST(OctreeLightCache, GpuPassMatchesTheCpuTwin) {
-    if (!context())
+    if (!test::sharedGpuContext())
         GTEST_SKIP() << "no Vulkan device: " << gpu::Context::create().error().message();
     const Octree tree = *buildOctree(*makePhantom(48));
     const voxel::Camera camera = *voxel::Camera::lookAt({90, 60, -50}, {24, 24, 24}, 40, 64, 48);
-    auto uploaded = OctreeGpu::create(*context(), tree);
+    auto uploaded = OctreeGpu::create(*test::sharedGpuContext(), tree);
     ASSERT_TRUE(uploaded.ok()) << uploaded.error().message();
     OctreeRenderOptions o = phantomOptions();
     o.opacityScale = 0.4f;
@@ -172,17 +164,18 @@ TEST(OctreeLightCache, GpuPassMatchesTheCpuTwin) {
         auto cpuImage = renderOctree(tree, camera, o);
         auto gpuImage = uploaded->render(camera, o);
         ASSERT_TRUE(cpuImage.ok() && gpuImage.ok());
-        EXPECT_LT(relativeL1(*gpuImage, *cpuImage), 1e-2) << "stride " << stride;
+        EXPECT_LT(compareImages(*gpuImage, *cpuImage)->relativeL1, 1e-2) << "stride " << stride;
     }
-    EXPECT_EQ(context()->validationMessages(), 0) << context()->lastValidationMessage();
+    EXPECT_EQ(test::sharedGpuContext()->validationMessages(), 0)
+        << test::sharedGpuContext()->lastValidationMessage();
 }
 
 // OctreeGpu keeps the cache while the sun, the opacity scale and the stride stay.
 TEST(OctreeLightCache, GpuFillsTheCacheOnlyWhenTheLightChanges) {
-    if (!context())
+    if (!test::sharedGpuContext())
         GTEST_SKIP() << "no Vulkan device: " << gpu::Context::create().error().message();
     const Octree tree = *buildOctree(*makePhantom(32));
-    auto uploaded = OctreeGpu::create(*context(), tree);
+    auto uploaded = OctreeGpu::create(*test::sharedGpuContext(), tree);
     ASSERT_TRUE(uploaded.ok()) << uploaded.error().message();
     OctreeRenderOptions o = phantomOptions();
     auto fills = [&](const voxel::Camera& camera) {

@@ -16,20 +16,12 @@
 namespace luxel::octree {
 namespace {
 
-gpu::Context* context() {
-    return test::sharedGpuContext();
-}
-
-double relativeL1(const Image& a, const Image& b) {
-    return compareImages(a, b)->relativeL1;
-}
-
 TEST(OctreeRender, GpuPassMatchesTheCpuTwinInEveryMode) {
-    if (!context())
+    if (!test::sharedGpuContext())
         GTEST_SKIP() << "no Vulkan device: " << gpu::Context::create().error().message();
     const Octree tree = *buildOctree(*makePhantom(48));
     const voxel::Camera camera = *voxel::Camera::lookAt({90, 60, -50}, {24, 24, 24}, 40, 64, 48);
-    auto uploaded = OctreeGpu::create(*context(), tree);
+    auto uploaded = OctreeGpu::create(*test::sharedGpuContext(), tree);
     ASSERT_TRUE(uploaded.ok()) << uploaded.error().message();
     struct Case {
         OctreeMode mode;
@@ -54,9 +46,10 @@ TEST(OctreeRender, GpuPassMatchesTheCpuTwinInEveryMode) {
         auto cpu = renderOctree(tree, camera, o);
         auto gpu = uploaded->render(camera, o);
         ASSERT_TRUE(cpu.ok() && gpu.ok());
-        EXPECT_LT(relativeL1(*gpu, *cpu), c.bound) << octreeModeName(c.mode);
+        EXPECT_LT(compareImages(*gpu, *cpu)->relativeL1, c.bound) << octreeModeName(c.mode);
     }
-    EXPECT_EQ(context()->validationMessages(), 0) << context()->lastValidationMessage();
+    EXPECT_EQ(test::sharedGpuContext()->validationMessages(), 0)
+        << test::sharedGpuContext()->lastValidationMessage();
 }
 
 // A 16^3 grey cube in a 32^3 tree, seen along +z from the front.

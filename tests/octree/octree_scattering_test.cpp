@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "luxel/core/metrics.h"
 #include "luxel/octree/octree_build.h"
 #include "luxel/octree/octree_path_trace.h"
 #include "luxel/octree/octree_render.h"
@@ -24,14 +25,7 @@ Octree mediumSphere() {
 }
 
 double relativeL1(const Image& a, const Image& b) {
-    double diff = 0, sum = 0;
-    for (int y = 0; y < a.height(); ++y)
-        for (int x = 0; x < a.width(); ++x)
-            for (int c = 0; c < 3; ++c) {
-                diff += std::fabs(a.at(x, y, c) - b.at(x, y, c));
-                sum += std::fabs(b.at(x, y, c));
-            }
-    return diff / sum;
+    return compareImages(a, b)->relativeL1;
 }
 
 struct Scene {

@@ -20,10 +20,6 @@
 namespace luxel::octree {
 namespace {
 
-gpu::Context* context() {
-    return test::sharedGpuContext();
-}
-
 OctreeRenderOptions noShadows() {
     OctreeRenderOptions o;
     o.shadows = false;
@@ -101,8 +97,8 @@ TEST(OctreeTiles, IsARenderModeOnBothBackends) {
     ASSERT_TRUE(viaMode.ok() && direct.ok());
     for (int y = 0; y < 48; ++y)
         for (int x = 0; x < 48; ++x) ASSERT_EQ(viaMode->at(x, y, 1), direct->image.at(x, y, 1));
-    if (!context()) GTEST_SKIP() << "no Vulkan device for the GPU half";
-    auto uploaded = OctreeGpu::create(*context(), tree);
+    if (!test::sharedGpuContext()) GTEST_SKIP() << "no Vulkan device for the GPU half";
+    auto uploaded = OctreeGpu::create(*test::sharedGpuContext(), tree);
     ASSERT_TRUE(uploaded.ok()) << uploaded.error().message();
     auto gpu = uploaded->render(camera, o);
     ASSERT_TRUE(gpu.ok()) << gpu.error().message();
@@ -320,7 +316,7 @@ TEST(OctreeTiles, RefusesBadTileOptions) {
 // Float (GPU) against double (CPU): the same passes, so hit cells agree but for rays within
 // rounding of a cell edge; shading agrees on the pixels that hit alike.
 TEST(OctreeTiles, GpuPassesMatchTheCpuTwin) {
-    if (!context())
+    if (!test::sharedGpuContext())
         GTEST_SKIP() << "no Vulkan device: " << gpu::Context::create().error().message();
     struct Case {
         Octree tree;
@@ -335,7 +331,7 @@ TEST(OctreeTiles, GpuPassesMatchTheCpuTwin) {
         {wallsTree(), *voxel::Camera::lookAt({32.3, 30.7, 1.1}, {32.3, 28.0, 64.0}, 40, 64, 48)},
     };
     for (const Case& c : cases) {
-        auto uploaded = OctreeTilesGpu::create(*context(), c.tree);
+        auto uploaded = OctreeTilesGpu::create(*test::sharedGpuContext(), c.tree);
         ASSERT_TRUE(uploaded.ok()) << uploaded.error().message();
         const OctreeRenderOptions options;  // with sun shadows
         for (int passes : {1, 0}) {
@@ -366,7 +362,8 @@ TEST(OctreeTiles, GpuPassesMatchTheCpuTwin) {
             EXPECT_LT(colourDiff / colourSum, 5e-3) << "passes " << passes;
         }
     }
-    EXPECT_EQ(context()->validationMessages(), 0) << context()->lastValidationMessage();
+    EXPECT_EQ(test::sharedGpuContext()->validationMessages(), 0)
+        << test::sharedGpuContext()->lastValidationMessage();
 }
 
 }  // namespace
