@@ -3,7 +3,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "octree/leaf_order.h"
+#include "octree/octree_access.h"  // with the shared traversal kernel
 
 namespace luxel::octree {
 
@@ -20,18 +20,17 @@ const char* attributeLayoutName(AttributeLayout layout) {
 }
 
 Leaf findLeaf(const Octree& tree, Int3 cell) {
-    const bool leafOrder = tree.leafOrder();
     std::uint32_t base = 0;
-    std::uint32_t firstLeaf = 0;  // LeafOrder: the leaf index where the current octant starts
     for (int level = tree.depth - 1; level >= 0; --level) {
         const int slot = childSlot(cell.x, cell.y, cell.z, level);
         const std::uint32_t entry = base + slot;
         const std::uint32_t value = tree.nodes[entry];
-        if (leafOrder) firstLeaf += leavesBefore(tree, base, slot);
         if (isLeaf(value) || level == 0) {
             const int mask = ~((1 << level) - 1);
-            return {entry, leafOrder ? firstLeaf : entry,
-                    static_cast<std::uint8_t>(isLeaf(value) ? value : 0), level,
+            // The leaf order, where colours use it, as the traversal kernel finds it.
+            const std::uint32_t colourIndex = gpu::shared::octreeColourIndex(
+                arraysOf(tree), tree.depth, gpu::shared::ivec3(cell.x, cell.y, cell.z), entry);
+            return {entry, colourIndex, static_cast<std::uint8_t>(isLeaf(value) ? value : 0), level,
                     Int3(cell.x & mask, cell.y & mask, cell.z & mask)};
         }
         base = childBase(value);
