@@ -62,7 +62,7 @@ Result<TileRender> renderOctreeTiles(const Octree& tree, const voxel::Camera& ca
             for (int y = begin; y < end; ++y) {
                 for (int x = 0; x < width; ++x) {
                     shared::dvec3 o, d;
-                    shared::octreeTilesRay(p, x, y, o, d);
+                    shared::octreePixelRay(p, x, y, o, d);
                     shared::OctreeTileState& s = states[static_cast<std::size_t>(y) * width + x];
                     s = shared::octreeTilesPass(arrays, p, o, d, s, shared::uint(pass), level,
                                                 parent);
@@ -76,7 +76,7 @@ Result<TileRender> renderOctreeTiles(const Octree& tree, const voxel::Camera& ca
             for (int x = 0; x < width; ++x) {
                 const std::size_t i = static_cast<std::size_t>(y) * width + x;
                 shared::dvec3 o, d;
-                shared::octreeTilesRay(p, x, y, o, d);
+                shared::octreePixelRay(p, x, y, o, d);
                 const shared::vec3 c =
                     shared::octreeTilesShade(arrays, p, o, d, states[i], shared::uint(i));
                 out.image.setRgb(x, y, Rgb(c.x, c.y, c.z));
@@ -97,7 +97,7 @@ std::vector<TilePixel> exactPixels(const Octree& tree, const voxel::Camera& came
         for (int y = begin; y < end; ++y) {
             for (int x = 0; x < width; ++x) {
                 shared::dvec3 o, d;
-                shared::octreeTilesRay(p, x, y, o, d);
+                shared::octreePixelRay(p, x, y, o, d);
                 shared::uint entry = 0;
                 const shared::VoxelTrace trace =
                     shared::octreeTraverse(arrays, tree.depth, shared::octreeParamsSize(p), o, d,

@@ -34,7 +34,7 @@ void main() {
     const uint i = pixel.y * params.width + pixel.x;
     vec3 o = vec3(0.0);
     vec3 d = vec3(0.0);
-    octreeTilesRay(params, int(pixel.x), int(pixel.y), o, d);
+    octreePixelRay(params, int(pixel.x), int(pixel.y), o, d);
     const OctreeTileState s = octreeTilesPass(0u, params, o, d, states[i], tiles.pass,
                                               int(tiles.level), int(tiles.parentLevel));
     states[i] = s;

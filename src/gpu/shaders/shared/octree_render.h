@@ -254,16 +254,24 @@ LUXEL_FUNC vec3 octreeShadeVolume(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams
 }
 
 // The linear RGB of pixel (px, py), rows top to bottom.
-LUXEL_FUNC vec3 octreeRenderPixel(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams) p, int px,
-                                  int py) {
+// The primary ray o + t d of pixel (px, py), rows top to bottom; the tile passes
+// (octree_tiles.h) follow the same rays, so the two renderers' hits compare cell for cell.
+LUXEL_FUNC void octreePixelRay(LUXEL_IN(OctreeRenderParams) p, int px, int py,
+                               LUXEL_INOUT(LUXEL_REAL3) o, LUXEL_INOUT(LUXEL_REAL3) d) {
     const float sx = 2.0f * (float(px) + 0.5f) / float(p.width) - 1.0f;
     const float sy = 1.0f - 2.0f * (float(py) + 0.5f) / float(p.height);
     const vec3 dir =
         normalize(vec3(p.forwardX, p.forwardY, p.forwardZ) +
                   vec3(p.rightX, p.rightY, p.rightZ) * sx + vec3(p.upX, p.upY, p.upZ) * sy);
-    const LUXEL_REAL3 o =
-        LUXEL_REAL3(LUXEL_REAL(p.originX), LUXEL_REAL(p.originY), LUXEL_REAL(p.originZ));
-    const LUXEL_REAL3 d = LUXEL_REAL3(LUXEL_REAL(dir.x), LUXEL_REAL(dir.y), LUXEL_REAL(dir.z));
+    o = LUXEL_REAL3(LUXEL_REAL(p.originX), LUXEL_REAL(p.originY), LUXEL_REAL(p.originZ));
+    d = LUXEL_REAL3(LUXEL_REAL(dir.x), LUXEL_REAL(dir.y), LUXEL_REAL(dir.z));
+}
+
+LUXEL_FUNC vec3 octreeRenderPixel(LUXEL_OCTREE tree, LUXEL_IN(OctreeRenderParams) p, int px,
+                                  int py) {
+    LUXEL_REAL3 o = LUXEL_REAL3(LUXEL_REAL(0));
+    LUXEL_REAL3 d = LUXEL_REAL3(LUXEL_REAL(0));
+    octreePixelRay(p, px, py, o, d);
     if (p.mode == LUXEL_OCTREE_MODE_SURFACE) {
         return octreeShadeSurface(tree, p, o, d, uint(py) * p.width + uint(px));
     }

@@ -19,19 +19,6 @@
 
 LUXEL_SHARED_BEGIN
 
-// The primary ray of pixel (px, py): octreeRenderPixel's (octree_render.h), so a pixel of both
-// renderers follows the same ray and their hits compare cell for cell.
-LUXEL_FUNC void octreeTilesRay(LUXEL_IN(OctreeRenderParams) p, int px, int py,
-                               LUXEL_INOUT(LUXEL_REAL3) o, LUXEL_INOUT(LUXEL_REAL3) d) {
-    const float sx = 2.0f * (float(px) + 0.5f) / float(p.width) - 1.0f;
-    const float sy = 1.0f - 2.0f * (float(py) + 0.5f) / float(p.height);
-    const vec3 dir =
-        normalize(vec3(p.forwardX, p.forwardY, p.forwardZ) +
-                  vec3(p.rightX, p.rightY, p.rightZ) * sx + vec3(p.upX, p.upY, p.upZ) * sy);
-    o = LUXEL_REAL3(LUXEL_REAL(p.originX), LUXEL_REAL(p.originY), LUXEL_REAL(p.originZ));
-    d = LUXEL_REAL3(LUXEL_REAL(dir.x), LUXEL_REAL(dir.y), LUXEL_REAL(dir.z));
-}
-
 // Point query from the root: the entry whose cube (2^level voxels, or a wider leaf) holds voxel
 // `v`. Its value is returned in `value`: a branch (>= 256) has something inside, a leaf is uniform.
 LUXEL_FUNC uint octreeTileQuery(LUXEL_OCTREE tree, int depth, ivec3 v, int level,
