@@ -35,8 +35,6 @@ struct OctreeGpu::State {
     Status prepareLightCache(const shared::OctreeRenderParams& p,
                              std::vector<gpu::Dispatch>& passes);
     std::uint64_t bytes = 0;
-    int depth = 1;
-    Int3 size;
 };
 
 OctreeGpu::OctreeGpu(std::unique_ptr<State> state) : state_(std::move(state)) {}
@@ -55,8 +53,6 @@ Result<OctreeGpu> OctreeGpu::create(gpu::Context& context, const Octree& tree) {
     if (!arrays) return arrays.error();
     auto state = std::make_unique<State>();
     state->context = &context;
-    state->depth = tree.depth;
-    state->size = tree.extent();
     state->arrays = std::move(*arrays);
     auto program = context.program("octree_cast", 4, sizeof(shared::OctreeCastPush));
     if (!program) return program.error();
@@ -213,7 +209,7 @@ Result<std::vector<OctreeHit>> OctreeGpu::castRays(std::span<const voxel::Ray> r
     if (Status st = s.context->upload(**rayBuffer, std::as_bytes(std::span(in))); !st) {
         return st.error();
     }
-    const Int3 size = s.size;
+    const Int3 size = s.arrays.shape.extent();
     const int cap = options.stepCap > 0 ? options.stepCap : 3 * (size.x + size.y + size.z);
     gpu::Dispatch d;
     d.name = "octree cast rays";
@@ -222,9 +218,10 @@ Result<std::vector<OctreeHit>> OctreeGpu::castRays(std::span<const voxel::Ray> r
                  s.arrays.leafCounts.get()};
     d.setPush(shared::OctreeCastPush{
         static_cast<std::uint32_t>(rays.size()), static_cast<std::uint32_t>(cap),
-        static_cast<std::uint32_t>(s.depth), std::max<std::uint32_t>(options.threshold, 1),
-        static_cast<std::uint32_t>(size.x), static_cast<std::uint32_t>(size.y),
-        static_cast<std::uint32_t>(size.z), s.arrays.leafOrder ? LUXEL_OCTREE_LEAF_ORDER : 0u});
+        static_cast<std::uint32_t>(s.arrays.shape.depth),
+        std::max<std::uint32_t>(options.threshold, 1), static_cast<std::uint32_t>(size.x),
+        static_cast<std::uint32_t>(size.y), static_cast<std::uint32_t>(size.z),
+        s.arrays.leafOrder ? LUXEL_OCTREE_LEAF_ORDER : 0u});
     d.setThreads(rays.size());
     auto passes = s.context->run(std::span(&d, 1));
     if (!passes) return passes.error();
