@@ -115,4 +115,13 @@ Texel TextureSet::lookup(int slot, float u, float v) const {
     return t.texels[static_cast<std::size_t>(row) * t.width + column];
 }
 
+Texel TextureSet::sample(int slot, float u, float v, const TexelFootprint&, TextureFilter,
+                         int) const {
+    return lookup(slot, u, v);
+}
+
+Vec3 TextureSet::normalAt(int, float, float, const TexelFootprint&, TextureFilter) const {
+    return {0.0f, 0.0f, 1.0f};
+}
+
 }  // namespace luxel::voxel

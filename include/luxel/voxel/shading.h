@@ -12,6 +12,8 @@
 #include "luxel/core/vec.h"
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/dda.h"
+#include "luxel/voxel/ray_cone.h"
+#include "luxel/voxel/shadows/sun_visibility.h"
 #include "luxel/voxel/texture_set.h"
 #include "luxel/voxel/voxel_world.h"
 
@@ -47,6 +49,28 @@ struct ShadeOptions {
     int textureTexels = 8;    // texels per face side
     float textureStrength = 0.15f;  // darkest texel is (1 - strength) of the voxel colour
     int stepCap = 0;                // castRay step cap (0: its default)
+
+    // How surfaces are lit (docs/algorithms/voxel-surfaces.md).
+    enum class Lighting {
+        Classic,   // the Unity tracer's face term above, hard shadows, mirror reflections
+        Physical,  // materials, sun visibility by `shadowSettings`, specular, refraction
+    };
+    Lighting lighting = Lighting::Classic;
+    Rgb sunIrradiance{3.0f, 2.9f, 2.7f};  // Physical: linear, on a face square to the sun
+    enum class Specular { None, BlinnPhong, Ggx };
+    Specular specular = Specular::Ggx;
+    enum class FresnelModel { Schlick, Exact };
+    FresnelModel fresnel = FresnelModel::Exact;
+    bool refraction = true;  // transmissive materials refract (else they render opaque)
+    // Sun visibility (Physical). render() builds it from these when `sunVisibility` is null.
+    double sunAngularRadius = 0.0047;  // radians
+    ShadowSettings shadowSettings;
+    const SunVisibility* sunVisibility = nullptr;
+    // Texture filtering from ray cones, normal maps and anti-aliasing.
+    TextureFilter textureFilter = TextureFilter::Nearest;
+    int maxAnisotropy = 16;
+    bool normalMaps = true;
+    int samplesPerPixel = 1;  // stratified within the pixel
 };
 
 // The Unity tracer's face factor min((dot(n, L) + 1) / 2 + ambient, 1); in shadow dot(n, L) is

@@ -38,6 +38,19 @@ struct Texel {
     constexpr bool operator==(const Texel&) const = default;
 };
 
+// The footprint of a ray cone on a face, in face coordinates (a face spans [0, 1)^2): the two
+// half-axes of the ellipse it covers. Zero axes: a point sample (nearest texel).
+struct TexelFootprint {
+    float majorU = 0, majorV = 0;
+    float minorU = 0, minorV = 0;
+};
+
+enum class TextureFilter {
+    Nearest,      // the texel under (u, v)
+    Trilinear,    // mip-mapped, level from the footprint's major axis (isotropic)
+    Anisotropic,  // several trilinear probes along the footprint's major axis
+};
+
 struct Texture {
     std::string name;
     int width = 0, height = 0;
@@ -66,6 +79,13 @@ class TextureSet {
     // floor(v * height) counted from the bottom (v grows upwards on side faces, so images stand
     // upright on walls). Coordinates are clamped into the texture. `slot` must be valid.
     Texel lookup(int slot, float u, float v) const;
+    // Filtered colour over a footprint (Nearest: lookup). `maxAnisotropy` caps the probes.
+    Texel sample(int slot, float u, float v, const TexelFootprint& footprint, TextureFilter filter,
+                 int maxAnisotropy = 16) const;
+    // Tangent-space normal (x along u, y along v, z out of the face), unit length; (0, 0, 1)
+    // for textures without a normal map.
+    Vec3 normalAt(int slot, float u, float v, const TexelFootprint& footprint,
+                  TextureFilter filter) const;
 
   private:
     std::vector<Texture> textures_;
