@@ -2,6 +2,7 @@
 // no upload.
 #include "luxel/core/parallel.h"
 #include "luxel/core/timer.h"
+#include "luxel/voxel/render_image.h"
 #include "voxel_frame_source.h"
 
 namespace luxel::viewer {

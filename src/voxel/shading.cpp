@@ -7,7 +7,6 @@
 #include <cstdint>
 
 #include "gpu/shaders/shared/voxel_shading.h"
-#include "luxel/core/parallel.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/voxel/surface_cast.h"
 
@@ -154,22 +153,9 @@ Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& option
     return sum;
 }
 
-Rgb shadePixel(const VoxelWorld& world, const Camera& camera, int px, int py,
-               const ShadeOptions& options, const TextureSet* textures) {
-    return shadeRay(world, camera.primaryRay(px, py), options, textures);
-}
-
-Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& options,
-             const TextureSet* textures) {
-    Image image(camera.width(), camera.height(), 3);
-    parallelForRange(camera.height(), 1, [&](int begin, int end) {
-        for (int y = begin; y < end; ++y) {
-            for (int x = 0; x < camera.width(); ++x) {
-                image.setRgb(x, y, shadePixel(world, camera, x, y, options, textures));
-            }
-        }
-    });
-    return image;
+Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const RayCone& /*cone*/,
+             const ShadeOptions& options, const TextureSet* textures) {
+    return shadeRay(world, ray, options, textures);
 }
 
 }  // namespace luxel::voxel

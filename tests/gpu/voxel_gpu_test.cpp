@@ -12,6 +12,7 @@
 #include "luxel/core/tonemap.h"
 #include "luxel/gpu/context.h"
 #include "luxel/voxel/generators.h"
+#include "luxel/voxel/render_image.h"
 #include "luxel/voxel/surface_cast.h"
 #include "luxel/voxel/voxel_gpu.h"
 #include "luxel/voxel/voxel_scene.h"

@@ -6,6 +6,7 @@
 
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/generators.h"
+#include "luxel/voxel/render_image.h"
 #include "luxel/voxel/shading.h"
 
 namespace luxel::voxel {

@@ -1,5 +1,6 @@
 // Tests for voxel shading: sky, face term, shadows, reflections and deterministic rendering.
 #include "luxel/voxel/shading.h"
+#include "luxel/voxel/render_image.h"
 
 #include <gtest/gtest.h>
 

@@ -8,6 +8,7 @@
 
 #include "luxel/core/rng.h"
 #include "luxel/core/tonemap.h"
+#include "luxel/voxel/render_image.h"
 #include "luxel/voxel/shading.h"
 
 namespace luxel::voxel {

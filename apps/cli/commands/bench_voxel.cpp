@@ -6,6 +6,7 @@
 
 #include "commands/command.h"
 #include "luxel/gpu/context.h"
+#include "luxel/voxel/render_image.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/voxel_gpu.h"
 #include "luxel/voxel/voxel_scene.h"

@@ -7,6 +7,7 @@
 #include "luxel/core/image_io.h"
 #include "luxel/core/timer.h"
 #include "luxel/gpu/context.h"
+#include "luxel/voxel/render_image.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/voxel_gpu.h"
 #include "luxel/voxel/voxel_scene.h"

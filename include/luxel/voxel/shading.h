@@ -8,7 +8,6 @@
 
 #include <functional>
 
-#include "luxel/core/image.h"
 #include "luxel/core/vec.h"
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/dda.h"
@@ -90,11 +89,10 @@ float textureFactor(const Hit& hit, const ShadeOptions& options);
 Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& options,
              const TextureSet* textures = nullptr);
 
-Rgb shadePixel(const VoxelWorld& world, const Camera& camera, int px, int py,
-               const ShadeOptions& options, const TextureSet* textures = nullptr);
+// The same, for a ray carrying a cone (texture filtering and the MRMA blend of secondary rays).
+Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
+             const ShadeOptions& options, const TextureSet* textures = nullptr);
 
-// A camera.width() x camera.height() RGB image, rows in parallel.
-Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& options,
-             const TextureSet* textures = nullptr);
+// Pixel and image rendering (anti-aliasing, primary ray cones): render_image.h.
 
 }  // namespace luxel::voxel

@@ -1,0 +1,25 @@
+// Images from the voxel renderer: samples per pixel, primary ray cones, and the sun visibility
+// structures built once per image when the options ask for them.
+#pragma once
+
+#include "luxel/core/image.h"
+#include "luxel/voxel/camera.h"
+#include "luxel/voxel/shading.h"
+#include "luxel/voxel/texture_set.h"
+#include "luxel/voxel/voxel_world.h"
+
+namespace luxel::voxel {
+
+// The ray cone of a primary ray: zero width at the eye, spreading by one pixel's angle.
+RayCone primaryCone(const Camera& camera);
+
+// Radiance of pixel (px, py): options.samplesPerPixel samples, averaged.
+Rgb shadePixel(const VoxelWorld& world, const Camera& camera, int px, int py,
+               const ShadeOptions& options, const TextureSet* textures = nullptr);
+
+// A camera.width() x camera.height() RGB image, rows in parallel. With Physical lighting and no
+// options.sunVisibility, builds the visibility structures options.shadowSettings ask for first.
+Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& options,
+             const TextureSet* textures = nullptr);
+
+}  // namespace luxel::voxel
