@@ -27,6 +27,8 @@ int main(int argc, char** argv) {
         luxel::cli::addDevicesCommand);
     add("raster", "write the rasterised medium (emission, absorption) as images",
         luxel::cli::addRasterCommand);
+    add("upscale", "native vs lower internal resolution + upscaler: PSNR, SSIM, time",
+        luxel::cli::addUpscaleCommand);
     add("octree", "build or convert sparse voxel octrees (.lxo container files)",
         luxel::cli::addOctreeCommand);
 

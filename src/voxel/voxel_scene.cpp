@@ -12,6 +12,7 @@
 #include "luxel/core/file_io.h"
 #include "luxel/voxel/generators.h"
 #include "luxel/voxel/vox_import.h"
+#include "post/post_json.h"
 #include "voxel/voxel_scene_internal.h"
 
 namespace luxel::voxel {
@@ -340,8 +341,9 @@ Result<VoxelScene> loadVoxelScene(const std::string& path, int width, int height
 Result<VoxelScene> voxelSceneFromJson(const json::Json& root, std::string_view text,
                                       const std::string& path, int width, int height) {
     try {
-        checkObject(root, "",
-                    {"type", "description", "textures", "world", "camera", "sun", "sky", "render"});
+        checkObject(
+            root, "",
+            {"type", "description", "textures", "world", "camera", "sun", "sky", "render", "post"});
         const Json* world = find(root, "world");
         const Json* camera = find(root, "camera");
         if (!world) throw Invalid{"", "a voxel scene needs \"world\""};
@@ -349,8 +351,10 @@ Result<VoxelScene> voxelSceneFromJson(const json::Json& root, std::string_view t
         const std::filesystem::path baseDir = std::filesystem::path(path).parent_path();
         TextureSet textures = buildTextures(find(root, "textures"), baseDir);
         VoxelWorld built = worldFromJson(*world, baseDir, textures);
-        VoxelScene scene{std::move(built), cameraFromJson(*camera, width, height),
-                         buildShading(root), path, std::move(textures)};
+        VoxelScene scene{std::move(built),    cameraFromJson(*camera, width, height),
+                         buildShading(root),  path,
+                         std::move(textures), {}};
+        if (const Json* p = find(root, "post")) scene.post = post::postOptionsFromJson(*p, "post");
         return scene;
     } catch (const Invalid& invalid) {
         return json::locate(invalid, text, path);

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "luxel/gi2d/scene2d.h"
 #include "luxel/gpu/backend_policy.h"
 #include "luxel/gpu/fwd.h"
+#include "luxel/post/post_options.h"
 #include "luxel/scene/scene_file.h"
 
 namespace luxel::cli {
@@ -82,6 +84,17 @@ Result<gpu::Backend> parseBenchBackend(const std::string& text);
 // its name printed; fails with "--backend gpu: <reason>".
 Result<std::unique_ptr<gpu::Context>> openBenchGpu(const std::string& device);
 
+// `luxel render` flags that override a scene's "post" section (unset: the scene's value).
+struct PostFlags {
+    std::optional<float> bloom, internalScale, sharpness, exposure;
+    std::optional<ToneCurve> tone;
+    std::optional<post::Upscaler> upscaler;
+};
+post::PostOptions applyPostFlags(post::PostOptions scene, const PostFlags& flags);
+// A render made at the internal size -> the linear image at width x height: upscaled, sharpened,
+// bloomed (written as is to EXR; PNGs get post.tone on top: luxel/post/finish.h).
+Image postProcess(const Image& internal, int width, int height, const post::PostOptions& post);
+
 // A voxel scene render (`luxel render` on a file with "type": "voxel").
 struct VoxelRenderRequest {
     std::string scene, size, out, png;
@@ -90,6 +103,7 @@ struct VoxelRenderRequest {
     gpu::Backend backend = gpu::Backend::Auto;
     std::string device;      // --device
     double loadSeconds = 0;  // reading the scene (generators included)
+    PostFlags post;          // --bloom, --internal-scale, --upscaler, --sharpness, tone flags
 };
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene scene);
 
@@ -121,6 +135,9 @@ int infoVoxelScene(const voxel::VoxelScene& scene);
 // The same three for octree scenes ("type": "octree"); render takes the voxel request's fields.
 int renderOctreeScene(const VoxelRenderRequest& request, scene::OctreeScene scene);
 int benchOctreeScene(const VoxelBenchRequest& request, scene::OctreeScene scene);
+
+// `luxel upscale`: native vs internal-resolution renders with each upscaler (PSNR, SSIM, ms).
+Runner addUpscaleCommand(CLI::App& app);
 int infoOctreeScene(const scene::OctreeScene& scene);
 
 }  // namespace luxel::cli

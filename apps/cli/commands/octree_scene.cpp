@@ -10,6 +10,8 @@
 #include "luxel/gpu/context.h"
 #include "luxel/octree/octree_gpu.h"
 #include "luxel/octree/octree_render.h"
+#include "luxel/post/upscale.h"
+#include "luxel/post/voxel_frames.h"
 
 namespace luxel::cli {
 namespace {
@@ -39,22 +41,30 @@ int renderOctreeScene(const VoxelRenderRequest& request, scene::OctreeScene load
     scene::OctreeScene* scene = &loaded;
     auto context = chooseGpuBackend(request.backend, request.device, request.quiet);
     if (!context) return reportError(context.error());
+    // Octree scenes have no "post" section: the flags alone.
+    const post::PostOptions post = applyPostFlags(post::PostOptions{}, request.post);
+    const int width = scene->camera.width(), height = scene->camera.height();
+    const voxel::Camera camera =
+        post.internalScale < 1.0f
+            ? post::resizedCamera(scene->camera, post::internalSide(width, post.internalScale),
+                                  post::internalSide(height, post.internalScale))
+            : scene->camera;
     Stopwatch renderTime;
     Result<Image> radiance = Image();
     if (*context) {
         auto uploaded = octree::OctreeGpu::create(**context, scene->tree);
         if (!uploaded) return reportError(uploaded.error());
-        radiance = uploaded->render(scene->camera, scene->render);
+        radiance = uploaded->render(camera, scene->render);
     } else {
-        radiance = octree::renderOctree(scene->tree, scene->camera, scene->render);
+        radiance = octree::renderOctree(scene->tree, camera, scene->render);
     }
     if (!radiance) return reportError(radiance.error());
     const double renderSeconds = renderTime.seconds();
-    const Image out =
-        hasExtension(request.out, ".png") ? toneMap(*radiance, request.tone) : *radiance;
+    radiance = postProcess(*radiance, width, height, post);
+    const Image out = hasExtension(request.out, ".png") ? toneMap(*radiance, post.tone) : *radiance;
     if (Status s = writeImage(request.out, out); !s) return reportError(s.error());
     if (!request.png.empty()) {
-        if (Status s = writePng(request.png, toneMap(*radiance, request.tone)); !s) {
+        if (Status s = writePng(request.png, toneMap(*radiance, post.tone)); !s) {
             return reportError(s.error());
         }
     }

@@ -48,6 +48,11 @@ struct RenderArgs {
     int baseRays = gi2d::RcOptions{}.baseRays;
     double baseInterval = gi2d::RcOptions{}.baseInterval;
     int maxCascades = 0;
+    // Voxel and octree post-processing (override the scene's "post")
+    float bloom = 0.0f, internalScale = 1.0f, sharpness = 0.0f;
+    std::string upscalerName;
+    PostFlags post;                      // the post flags given, parsed
+    std::vector<std::string> postGiven;  // their names
 };
 
 // The names given on the command line -> the library's enums (luxel/gi2d/solver_choice.h,
@@ -62,6 +67,26 @@ Status parseChoices(RenderArgs& args) {
     args.solver = *solver;
     args.merge = *merge;
     args.backend = *backend;
+    return Ok{};
+}
+
+// The post flags given on the command line; the rest come from the scene's "post" section.
+Status parsePostFlags(RenderArgs& args, const CLI::App& command) {
+    PostFlags& f = args.post;
+    for (const char* name : {"--bloom", "--internal-scale", "--upscaler", "--sharpness"}) {
+        if (command.count(name) > 0) args.postGiven.push_back(name);
+    }
+    if (command.count("--bloom") > 0) f.bloom = args.bloom;
+    if (command.count("--internal-scale") > 0) f.internalScale = args.internalScale;
+    if (command.count("--sharpness") > 0) f.sharpness = args.sharpness;
+    if (command.count("--upscaler") > 0) {
+        f.upscaler = post::parseUpscaler(args.upscalerName);
+        if (!f.upscaler) {
+            return Error("--upscaler '" + args.upscalerName + "' is not bilinear or edge");
+        }
+    }
+    if (command.count("--exposure") > 0) f.exposure = args.exposure;
+    if (command.count("--tonemap") > 0) f.tone = parseToneCurve(args.tonemap);
     return Ok{};
 }
 
@@ -212,15 +237,19 @@ int runRender(const RenderArgs& args) {
     Stopwatch loadTime;
     auto file = loadScene(args.scene, args.size);
     if (!file) return reportError(file.error());
+    if (file->kind() == scene::SceneKind::TwoD && !args.postGiven.empty()) {
+        return reportError(Error(args.postGiven.front() + " applies to voxel and octree scenes; " +
+                                 args.scene + " is " + sceneKindPhrase(file->kind())));
+    }
     if (file->kind() != scene::SceneKind::TwoD) {
         const bool voxel = file->kind() == scene::SceneKind::Voxel;
         if (!args.options2DGiven.empty()) {
             return reportError(Error(args.options2DGiven.front() + " applies to 2D scenes; " +
                                      args.scene + " is " + sceneKindPhrase(file->kind())));
         }
-        const VoxelRenderRequest request{args.scene,  args.size,         args.out,   args.png,
-                                         tone,        args.quiet,        args.stats, args.backend,
-                                         args.device, loadTime.seconds()};
+        const VoxelRenderRequest request{args.scene,  args.size,          args.out,   args.png,
+                                         tone,        args.quiet,         args.stats, args.backend,
+                                         args.device, loadTime.seconds(), args.post};
         return voxel ? renderVoxelScene(request, std::move(file->voxel()))
                      : renderOctreeScene(request, std::move(file->octree()));
     }
@@ -333,6 +362,14 @@ Runner addRenderCommand(CLI::App& app) {
                    "auto (a hardware GPU when there is one, else CPU), cpu or gpu (HRC, RC, voxel)")
         ->capture_default_str();
     app.add_option("--device", args->device, "GPU: device index or part of its name");
+    app.add_option("--bloom", args->bloom, "voxel/octree: bloom strength in [0, 1] (0 = off)")
+        ->check(CLI::Range(0.0, 1.0));
+    app.add_option("--internal-scale", args->internalScale,
+                   "voxel/octree: render at this fraction of the size, then upscale")
+        ->check(CLI::Range(double(post::kMinInternalScale), 1.0));
+    app.add_option("--upscaler", args->upscalerName, "voxel/octree: bilinear or edge");
+    app.add_option("--sharpness", args->sharpness, "voxel/octree: sharpening after upscaling")
+        ->check(CLI::Range(0.0, 1.0));
     CLI::App* command = &app;
     return [args, command] {
         for (const char* name :
@@ -342,6 +379,7 @@ Runner addRenderCommand(CLI::App& app) {
             if (command->count(name) > 0) args->options2DGiven.push_back(name);
         }
         if (Status s = parseChoices(*args); !s) return reportError(s.error());
+        if (Status s = parsePostFlags(*args, *command); !s) return reportError(s.error());
         return runRender(*args);
     };
 }

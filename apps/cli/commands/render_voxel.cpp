@@ -7,6 +7,9 @@
 #include "luxel/core/image_io.h"
 #include "luxel/core/timer.h"
 #include "luxel/gpu/context.h"
+#include "luxel/post/finish.h"
+#include "luxel/post/upscale.h"
+#include "luxel/post/voxel_frames.h"
 #include "luxel/voxel/render_image.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/voxel_gpu.h"
@@ -15,35 +18,61 @@
 namespace luxel::cli {
 namespace {
 
-Result<Image> renderOnGpu(gpu::Context& context, const voxel::VoxelScene& scene) {
+Result<Image> renderOnGpu(gpu::Context& context, const voxel::VoxelScene& scene,
+                          const voxel::Camera& camera) {
     auto renderer = voxel::VoxelGpuRenderer::create(context, scene.world, &scene.textures);
     if (!renderer) return renderer.error();
-    return renderer->render(scene.camera, scene.shading);
+    return renderer->render(camera, scene.shading);
 }
 
 }  // namespace
+
+post::PostOptions applyPostFlags(post::PostOptions scene, const PostFlags& flags) {
+    if (flags.bloom) scene.bloom.strength = *flags.bloom;
+    if (flags.internalScale) scene.internalScale = *flags.internalScale;
+    if (flags.sharpness) scene.sharpness = *flags.sharpness;
+    if (flags.upscaler) scene.upscaler = *flags.upscaler;
+    if (flags.exposure) scene.tone.exposureStops = *flags.exposure;
+    if (flags.tone) scene.tone.curve = *flags.tone;
+    return scene;
+}
+
+Image postProcess(const Image& internal, int width, int height, const post::PostOptions& post) {
+    Image full = internal.width() == width && internal.height() == height
+                     ? internal
+                     : post::upscale(internal, width, height, post.upscaler);
+    if (post.sharpness > 0.0f) full = post::sharpen(full, post.sharpness);
+    return post::applyBloom(full, post);
+}
 
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded) {
     voxel::VoxelScene* scene = &loaded;
     const double loadSeconds = request.loadSeconds;
     auto context = chooseGpuBackend(request.backend, request.device, request.quiet);
     if (!context) return reportError(context.error());
+    const post::PostOptions post = applyPostFlags(scene->post, request.post);
+    const int width = scene->camera.width(), height = scene->camera.height();
+    const voxel::Camera camera =
+        post.internalScale < 1.0f
+            ? post::resizedCamera(scene->camera, post::internalSide(width, post.internalScale),
+                                  post::internalSide(height, post.internalScale))
+            : scene->camera;
     Stopwatch renderTime;
-    Image radiance;
+    Image internal;
     if (*context) {
-        auto image = renderOnGpu(**context, *scene);
+        auto image = renderOnGpu(**context, *scene, camera);
         if (!image) return reportError(image.error());
-        radiance = std::move(*image);
+        internal = std::move(*image);
     } else {
-        radiance = voxel::render(scene->world, scene->camera, scene->shading, &scene->textures);
+        internal = voxel::render(scene->world, camera, scene->shading, &scene->textures);
     }
     const double renderSeconds = renderTime.seconds();
+    const Image radiance = postProcess(internal, width, height, post);
     // EXR keeps linear radiance; PNG gets the display transform.
-    const Image out =
-        hasExtension(request.out, ".png") ? toneMap(radiance, request.tone) : radiance;
+    const Image out = hasExtension(request.out, ".png") ? toneMap(radiance, post.tone) : radiance;
     if (Status s = writeImage(request.out, out); !s) return reportError(s.error());
     if (!request.png.empty()) {
-        if (Status s = writePng(request.png, toneMap(radiance, request.tone)); !s) {
+        if (Status s = writePng(request.png, toneMap(radiance, post.tone)); !s) {
             return reportError(s.error());
         }
     }
@@ -58,6 +87,10 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
                     *context ? ("gpu: " + (**context).device().name).c_str() : "cpu");
         std::printf("  world %.3f s, render %.3f s incl. upload (%.2f Mpixel/s)\n", loadSeconds,
                     renderSeconds, pixels / renderSeconds * 1e-6);
+        if (post.internalScale < 1.0f || post.bloom.strength > 0.0f) {
+            std::printf("  internal %dx%d (%s upscaler), bloom %.2f\n", internal.width(),
+                        internal.height(), post::upscalerName(post.upscaler), post.bloom.strength);
+        }
         std::printf("  wrote %s%s%s\n", request.out.c_str(), request.png.empty() ? "" : ", ",
                     request.png.c_str());
     }

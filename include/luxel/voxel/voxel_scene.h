@@ -5,6 +5,7 @@
 #include <string>
 
 #include "luxel/core/error.h"
+#include "luxel/post/post_options.h"
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/texture_set.h"
@@ -17,7 +18,8 @@ struct VoxelScene {
     Camera camera;
     ShadeOptions shading;
     std::string sourcePath;
-    TextureSet textures;  // the scene's "textures", in slot order
+    TextureSet textures;     // the scene's "textures", in slot order
+    post::PostOptions post;  // the scene's "post": bloom, tone, internal resolution
 };
 
 // Reads a scene, builds its world (generators run here) and validates everything. Errors name the
