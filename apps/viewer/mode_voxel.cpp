@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "luxel/voxel/camera.h"
+#include "voxel_controls.h"
 
 namespace luxel::viewer {
 namespace {
@@ -40,7 +41,8 @@ ModeVoxel::ModeVoxel(voxel::VoxelScene scene, int width, int height, float expos
     state_.width = width;
     state_.height = height;
     state_.shading = scene.shading;
-    state_.exposure = exposure;
+    state_.exposure = exposure + scene.post.tone.exposureStops;
+    state_.post = scene.post;
     const Vec3& s = scene.shading.sunDirection;
     sunLength_ = std::sqrt(double(s.x) * s.x + double(s.y) * s.y + double(s.z) * s.z);
     if (sunLength_ > 0) {
@@ -139,7 +141,8 @@ void ModeVoxel::handleKey(SDL_Keycode key, bool shift) {
             setSun(sunAzimuth_, sunElevation_ - 10.0);
             break;
         default:
-            return;
+            if (!applyVoxelSurfaceKey(static_cast<int>(key), state_)) return;
+            break;
     }
     dirty_ = true;
 }
@@ -224,6 +227,50 @@ bool ModeVoxel::frameCurrent() {
     return frame && !dirty_ && frame->generation == generation_;
 }
 
+// Combo over an enum's values, by name; true when changed.
+template <typename E, int N>
+bool enumCombo(const char* label, E& value, const char* (&names)[N]) {
+    int index = static_cast<int>(value);
+    if (!ImGui::Combo(label, &index, names, N)) return false;
+    value = static_cast<E>(index);
+    return true;
+}
+
+void ModeVoxel::drawSurfacePanel() {
+    voxel::ShadeOptions& s = state_.shading;
+    post::PostOptions& p = state_.post;
+    bool changed = false;
+    const char* lightings[] = {"classic", "physical"};
+    changed |= enumCombo("lighting (P)", s.lighting, lightings);
+    const char* methods[] = {"hard", "exact", "MSM", "VSM", "SDF", "MRMA blend", "flood fill"};
+    changed |= enumCombo("shadow method (V)", s.shadowSettings.method, methods);
+    float radiusDegrees = static_cast<float>(s.sunAngularRadius * 180.0 / 3.14159265358979323846);
+    if (ImGui::SliderFloat("sun angular radius", &radiusDegrees, 0.0f, 5.0f, "%.2f deg")) {
+        s.sunAngularRadius = radiusDegrees * 3.14159265358979323846 / 180.0;
+        changed = true;
+    }
+    const char* speculars[] = {"none", "Blinn-Phong", "GGX"};
+    changed |= enumCombo("specular (G)", s.specular, speculars);
+    const char* fresnels[] = {"Schlick", "exact"};
+    changed |= enumCombo("Fresnel (Y)", s.fresnel, fresnels);
+    changed |= ImGui::Checkbox("refraction (R)", &s.refraction);
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("normal maps (N)", &s.normalMaps);
+    const char* filters[] = {"nearest", "trilinear", "anisotropic"};
+    changed |= enumCombo("texture filter (X)", s.textureFilter, filters);
+    changed |= ImGui::SliderInt("samples per pixel (, .)", &s.samplesPerPixel, 1, 64);
+    changed |= ImGui::SliderFloat("bloom (O)", &p.bloom.strength, 0.0f, 1.0f, "%.2f");
+    changed |= ImGui::SliderInt("bloom levels", &p.bloom.levels, 1, 8);
+    changed |= ImGui::SliderFloat("internal scale", &p.internalScale, post::kMinInternalScale, 1.0f,
+                                  "%.2f");
+    const char* upscalers[] = {"bilinear", "edge-aware"};
+    changed |= enumCombo("upscaler", p.upscaler, upscalers);
+    changed |= ImGui::Checkbox("temporal upscaling (reprojection)", &state_.temporal);
+    changed |= ImGui::SliderFloat("sharpening", &p.sharpness, 0.0f, 1.0f, "%.2f");
+    ImGui::Text("upscaling (U): %s", upscalingLabel(state_).c_str());
+    if (changed) dirty_ = true;
+}
+
 void ModeVoxel::drawPanel() {
     voxel::ShadeOptions& s = state_.shading;
     FlyCamera& c = state_.camera;
@@ -247,6 +294,7 @@ void ModeVoxel::drawPanel() {
     sun |= ImGui::SliderFloat("sun elevation (I/K)", &elevation, -10.0f, 90.0f, "%.0f deg");
     if (sun) setSun(azimuth, elevation);
     if (ImGui::SliderFloat("exposure", &state_.exposure, -6.0f, 6.0f, "%.1f stops")) dirty_ = true;
+    drawSurfacePanel();
     ImGui::ColorEdit3("new voxel colour", editColour_);
     ImGui::TextUnformatted("left click removes, Shift+left click adds");
 }

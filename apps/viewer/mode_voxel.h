@@ -31,6 +31,7 @@ class ModeVoxel : public ViewerMode {
     void handleKey(SDL_Keycode key, bool shift);
     void move(Vec3d direction, double distance);
     void setSun(double azimuthDegrees, double elevationDegrees);
+    void drawSurfacePanel();  // lighting, shadows, surfaces, bloom, upscaling
 
     VoxelState state_;
     Int3 worldSize_;

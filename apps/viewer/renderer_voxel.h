@@ -3,10 +3,13 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "frame.h"
 #include "luxel/core/tonemap.h"
+#include "luxel/post/post_options.h"
+#include "luxel/post/temporal.h"
 #include "luxel/voxel/dda.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/voxel_world.h"
@@ -28,9 +31,13 @@ struct FlyCamera {
 
 struct VoxelState {
     FlyCamera camera;
-    int width = 320, height = 180;  // internal resolution
+    int width = 320, height = 180;  // frame resolution (rendered at post.internalScale of it)
     voxel::ShadeOptions shading;
     float exposure = 0.0f;
+    // Bloom, tone curve, internal scale and upscaler (post.tone's exposure is `exposure`).
+    post::PostOptions post;
+    // Temporal upscaling: jittered frames at the internal scale, reprojected history.
+    bool temporal = false;
     std::vector<VoxelEdit> edits;  // new since the previous state
 };
 
@@ -43,7 +50,8 @@ class RendererVoxel {
     RendererVoxel(voxel::VoxelWorld world, std::unique_ptr<VoxelFrameSource> source);
 
     void setState(VoxelState&& state);
-    bool hasMoreWork() const { return dirty_; }
+    // Also while the temporal upscaler is still converging on a still view.
+    bool hasMoreWork() const;
     Frame step();
 
   private:
@@ -51,6 +59,7 @@ class RendererVoxel {
     std::unique_ptr<VoxelFrameSource> source_;
     VoxelState state_;
     bool dirty_ = false;
+    std::optional<post::TemporalUpscaler> temporal_;
 };
 
 }  // namespace luxel::viewer

@@ -30,6 +30,15 @@ class VoxelFrameSource {
     virtual Result<Image> render(const voxel::VoxelWorld& world, const voxel::Camera& camera,
                                  const voxel::ShadeOptions& shading,
                                  std::vector<PassTime>& passes) = 0;
+    // The same with rays through (x + 0.5 + jitter.x, y + 0.5 + jitter.y), for the temporal
+    // upscaler. Sources that cannot offset their rays (the GPU) render unjittered.
+    virtual Result<Image> renderJittered(const voxel::VoxelWorld& world,
+                                         const voxel::Camera& camera,
+                                         const voxel::ShadeOptions& shading, Vec2d jitter,
+                                         std::vector<PassTime>& passes) {
+        (void)jitter;
+        return render(world, camera, shading, passes);
+    }
 };
 
 // The CPU DDA ray caster (luxel::voxel::render), rows in parallel.

@@ -2,6 +2,7 @@
 // no upload.
 #include "luxel/core/parallel.h"
 #include "luxel/core/timer.h"
+#include "luxel/post/voxel_frames.h"
 #include "luxel/voxel/render_image.h"
 #include "voxel_frame_source.h"
 
@@ -23,6 +24,14 @@ class CpuVoxelFrameSource final : public VoxelFrameSource {
         Stopwatch clock;
         Image image = voxel::render(world, camera, shading, &textures_);
         passes.push_back({"ray cast + shade", clock.milliseconds()});
+        return image;
+    }
+    Result<Image> renderJittered(const voxel::VoxelWorld& world, const voxel::Camera& camera,
+                                 const voxel::ShadeOptions& shading, Vec2d jitter,
+                                 std::vector<PassTime>& passes) override {
+        Stopwatch clock;
+        Image image = post::renderJittered(world, camera, shading, &textures_, jitter);
+        passes.push_back({"ray cast + shade (jittered)", clock.milliseconds()});
         return image;
     }
 
