@@ -98,35 +98,38 @@ void leaveMedium(const PathRay& r, const MediumExit& exit, const Material& m, Rg
         stack.push(next);
         return;
     }
-    const shared::vec3 d = v3(r.direction);
-    const shared::vec3 nIn = -v3(toDouble(exit.outward));  // faces the incident (inside) side
-    const float cosI = -dot(nIn, d);
-    const float eta = m.ior;
-    const float k = shared::opticsRefractK(cosI, eta);
-    const shared::vec3 reflected = shared::opticsReflect(d, nIn);
     if (next.depth < 0) return;
-    if (k < 0.0f) {
-        next.direction = toDouble(reflected);
-        next.weight = weight;
-        next.cell = exit.cell;
-        stack.push(next);
-        return;
-    }
-    const float f = o.fresnel == ShadeOptions::FresnelModel::Exact
-                        ? shared::fresnelDielectricExact(cosI, m.ior, 1.0f)
-                        : shared::fresnelDielectricSchlick(cosI, m.ior, 1.0f);
+    const ExitSplit split = splitAtExit(r.direction, exit.outward, m.ior, o.fresnel);
     PathRay back = next;
-    back.direction = toDouble(reflected);
-    back.weight = weight * f;
+    back.direction = split.reflected;
+    back.weight = weight * split.reflectance;
     back.cell = exit.cell;
     stack.push(back);
+    if (split.total) return;
     next.inside = false;
-    next.direction = normalize(toDouble(shared::opticsRefract(d, nIn, eta, cosI, k)));
-    next.weight = weight * (1.0f - f);
+    next.direction = split.refracted;
+    next.weight = weight * (1.0f - split.reflectance);
     stack.push(next);
 }
 
 }  // namespace
+
+ExitSplit splitAtExit(Vec3d direction, Int3 outward, float ior,
+                      ShadeOptions::FresnelModel fresnel) {
+    const shared::vec3 d = v3(direction);
+    const shared::vec3 nIn = -v3(toDouble(outward));  // faces the incident (inside) side
+    const float cosI = -dot(nIn, d);
+    const float k = shared::opticsRefractK(cosI, ior);
+    ExitSplit split;
+    split.reflected = normalize(toDouble(shared::opticsReflect(d, nIn)));
+    split.total = k < 0.0f;
+    if (split.total) return split;
+    split.reflectance = fresnel == ShadeOptions::FresnelModel::Exact
+                            ? shared::fresnelDielectricExact(cosI, ior, 1.0f)
+                            : shared::fresnelDielectricSchlick(cosI, ior, 1.0f);
+    split.refracted = normalize(toDouble(shared::opticsRefract(d, nIn, ior, cosI, k)));
+    return split;
+}
 
 MediumExit walkMedium(const VoxelWorld& world, Int3 cell, Vec3d origin, Vec3d direction) {
     const std::uint8_t medium = world.get(cell.x, cell.y, cell.z).a;
@@ -211,15 +214,18 @@ Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
         const Hit& hit = s.hit;
         if (hit.normal == Int3{}) continue;  // the ray started inside a solid voxel: black
         const Voxel voxel = world.get(hit.voxel.x, hit.voxel.y, hit.voxel.z);
+        // The alpha byte selects the material whether or not a texture fills its slot.
         const int slot = s.slot;
-        const Material& m = o.materials.forSlot(slot);
+        const int materialSlot = textureSlotOf(voxel);
+        const Material& m = o.materials.forSlot(materialSlot);
         const double footprint = r.primary ? hit.t : r.cone.widthAt(hit.t);
         const TexelFootprint texelArea = texelFootprint(r.cone, hit.t, r.direction, hit.normal);
 
         // Surface colour: voxel colour x texel x procedural texture x material albedo.
         Rgb colour = colourOf(voxel) * m.albedo;
         const bool procedural =
-            o.textures && (slot < 0 || (o.materials.hasSlot(slot) && m.proceduralTexture));
+            o.textures && (slot < 0 ? !o.materials.hasSlot(materialSlot) || m.proceduralTexture
+                                    : o.materials.hasSlot(slot) && m.proceduralTexture);
         if (slot >= 0) {
             const Texel t =
                 textures->sample(slot, hit.u, hit.v, texelArea, o.textureFilter, o.maxAnisotropy);

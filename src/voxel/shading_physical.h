@@ -24,6 +24,16 @@ struct MediumExit {
 };
 MediumExit walkMedium(const VoxelWorld& world, Int3 cell, Vec3d origin, Vec3d direction);
 
+// What happens where a ray inside a medium of index `ior` meets its face with outward normal
+// `outward` (air outside): total internal reflection (k < 0, reflectance 1), or a Fresnel split
+// into the refracted ray leaving and the ray reflected back inside.
+struct ExitSplit {
+    bool total = false;
+    float reflectance = 1.0f;
+    Vec3d reflected, refracted;  // unit; refracted only when !total
+};
+ExitSplit splitAtExit(Vec3d direction, Int3 outward, float ior, ShadeOptions::FresnelModel fresnel);
+
 Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
                   const ShadeOptions& options, const TextureSet* textures);
 
