@@ -297,7 +297,7 @@ Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
                                      : shared::fresnelDielectricSchlick(cosI, 1.0f, m.ior);
             if (k >= 0.0f) {
                 child.direction = normalize(toDouble(shared::opticsRefract(d, nIn, eta, cosI, k)));
-                child.weight = r.weight * colour * ((1.0f - fEntry) * m.transmission);
+                child.weight = r.weight * ((1.0f - fEntry) * m.transmission);
                 child.inside = true;
                 child.cell = hit.voxel;
                 stack.push(child);

@@ -82,6 +82,15 @@ Result<gpu::Backend> parseBenchBackend(const std::string& text);
 // its name printed; fails with "--backend gpu: <reason>".
 Result<std::unique_ptr<gpu::Context>> openBenchGpu(const std::string& device);
 
+// `luxel render` flags overriding a voxel scene's surface lighting (empty: the scene's).
+struct VoxelSurfaceFlags {
+    std::string lighting, specular, fresnel;
+    bool noRefraction = false;
+};
+void addVoxelSurfaceFlags(CLI::App& app, VoxelSurfaceFlags& flags);
+// Applies them to the scene's shading options; errors name the flag.
+Status applyVoxelSurfaceFlags(const VoxelSurfaceFlags& flags, voxel::ShadeOptions& options);
+
 // A voxel scene render (`luxel render` on a file with "type": "voxel").
 struct VoxelRenderRequest {
     std::string scene, size, out, png;
@@ -90,6 +99,7 @@ struct VoxelRenderRequest {
     gpu::Backend backend = gpu::Backend::Auto;
     std::string device;      // --device
     double loadSeconds = 0;  // reading the scene (generators included)
+    VoxelSurfaceFlags surfaces;
 };
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene scene);
 

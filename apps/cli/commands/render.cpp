@@ -48,6 +48,7 @@ struct RenderArgs {
     int baseRays = gi2d::RcOptions{}.baseRays;
     double baseInterval = gi2d::RcOptions{}.baseInterval;
     int maxCascades = 0;
+    VoxelSurfaceFlags surfaces;  // voxel scenes
 };
 
 // The names given on the command line -> the library's enums (luxel/gi2d/solver_choice.h,
@@ -218,9 +219,9 @@ int runRender(const RenderArgs& args) {
             return reportError(Error(args.options2DGiven.front() + " applies to 2D scenes; " +
                                      args.scene + " is " + sceneKindPhrase(file->kind())));
         }
-        const VoxelRenderRequest request{args.scene,  args.size,         args.out,   args.png,
-                                         tone,        args.quiet,        args.stats, args.backend,
-                                         args.device, loadTime.seconds()};
+        const VoxelRenderRequest request{
+            args.scene, args.size,    args.out,    args.png,           tone,         args.quiet,
+            args.stats, args.backend, args.device, loadTime.seconds(), args.surfaces};
         return voxel ? renderVoxelScene(request, std::move(file->voxel()))
                      : renderOctreeScene(request, std::move(file->octree()));
     }
@@ -333,6 +334,7 @@ Runner addRenderCommand(CLI::App& app) {
                    "auto (a hardware GPU when there is one, else CPU), cpu or gpu (HRC, RC, voxel)")
         ->capture_default_str();
     app.add_option("--device", args->device, "GPU: device index or part of its name");
+    addVoxelSurfaceFlags(app, args->surfaces);
     CLI::App* command = &app;
     return [args, command] {
         for (const char* name :
