@@ -76,8 +76,8 @@ struct Stack {
 float sunVisibility(const VoxelWorld& world, const TextureSet* textures, const ShadeOptions& o,
                     const Hit& hit, Vec3d sun, double footprint) {
     if (dot(toDouble(hit.normal), sun) <= 0.0) return 0.0f;
-    if (o.sunVisibility) return o.sunVisibility->visibility({hit.point, hit.normal, footprint});
     if (!o.shadows) return 1.0f;
+    if (o.sunVisibility) return o.sunVisibility->visibility({hit.point, hit.normal, footprint});
     return castToSurface(world, textures, {hit.point, sun}, o.stepCap).hit.hit ? 0.0f : 1.0f;
 }
 
