@@ -9,6 +9,7 @@
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/voxel/surface_cast.h"
+#include "voxel/shading_physical.h"
 
 namespace luxel::voxel {
 namespace {
@@ -119,6 +120,9 @@ float textureFactor(const Hit& hit, const ShadeOptions& options) {
 
 Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& options,
              const TextureSet* textures) {
+    if (options.lighting == ShadeOptions::Lighting::Physical) {
+        return shadePhysical(world, ray, RayCone{}, options, textures);
+    }
     const int bounces = std::max(options.maxReflections, 0);
     Ray current = ray;
     Rgb sum;
@@ -153,8 +157,11 @@ Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& option
     return sum;
 }
 
-Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const RayCone& /*cone*/,
+Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
              const ShadeOptions& options, const TextureSet* textures) {
+    if (options.lighting == ShadeOptions::Lighting::Physical) {
+        return shadePhysical(world, ray, cone, options, textures);
+    }
     return shadeRay(world, ray, options, textures);
 }
 

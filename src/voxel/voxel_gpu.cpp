@@ -10,6 +10,7 @@
 #include <string>
 
 #include "gpu/shaders/shared/voxel_layout.h"
+#include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
 #include "luxel/core/timer.h"
@@ -67,6 +68,31 @@ std::span<const std::byte> bytesOf(const std::vector<T>& v) {
     return std::as_bytes(std::span(v));
 }
 
+shared::VoxelMaterial gpuMaterial(const Material& m, bool own) {
+    shared::VoxelMaterial g{};
+    g.albedoR = m.albedo.r, g.albedoG = m.albedo.g, g.albedoB = m.albedo.b;
+    g.metallic = m.metallic;
+    g.roughness = m.roughness, g.ior = m.ior, g.transmission = m.transmission;
+    g.flags = (m.proceduralTexture ? LUXEL_VOXEL_MATERIAL_PROCEDURAL : 0u) |
+              (own ? LUXEL_VOXEL_MATERIAL_OWN : 0u);
+    g.absorptionR = m.absorption.r, g.absorptionG = m.absorption.g, g.absorptionB = m.absorption.b;
+    g.emissionR = m.emission.r, g.emissionG = m.emission.g, g.emissionB = m.emission.b;
+    return g;
+}
+
+// The material buffer: each texture slot's material (the plain one where it has none), then the
+// plain blocks' material.
+std::vector<shared::VoxelMaterial> gpuMaterials(const MaterialTable& table) {
+    std::vector<shared::VoxelMaterial> out(LUXEL_VOXEL_MATERIALS);
+    for (int slot = 0; slot < LUXEL_VOXEL_PLAIN_MATERIAL; ++slot) {
+        out[slot] = gpuMaterial(table.forSlot(slot), table.hasSlot(slot));
+    }
+    out[LUXEL_VOXEL_PLAIN_MATERIAL] = gpuMaterial(table.plain(), false);
+    return out;
+}
+
+constexpr std::uint64_t kMaterialBytes = LUXEL_VOXEL_MATERIALS * sizeof(shared::VoxelMaterial);
+
 }  // namespace
 
 std::uint64_t estimateVoxelGpuMemory(Int3 size, int chunkSize, const TextureSet* textures,
@@ -77,7 +103,8 @@ std::uint64_t estimateVoxelGpuMemory(Int3 size, int chunkSize, const TextureSet*
     const Int3 bricks{(size.x + 3) / 4, (size.y + 3) / 4, (size.z + 3) / 4};
     return chunks * perChunk * 4 + chunks * 4 + chunkTotal(bricks) * 12 + std::max(slots, 1) * 16 +
            std::max<std::uint64_t>(texelCount(textures), 1) * 16 + 256 * 4 +
-           sizeof(shared::VoxelRenderParams) + static_cast<std::uint64_t>(width) * height * 16;
+           sizeof(shared::VoxelRenderParams) + kMaterialBytes +
+           static_cast<std::uint64_t>(width) * height * 16;
 }
 
 struct VoxelGpuRenderer::State {
@@ -88,7 +115,7 @@ struct VoxelGpuRenderer::State {
     int textureCount = 0;
     std::uint64_t bytes = 0;
     std::shared_ptr<gpu::Buffer> params, voxels, chunkSolid, brickMasks, brickDistances,
-        textureInfo, texels, srgb, output;
+        textureInfo, texels, srgb, output, materials;
     std::uint64_t outputBytes = 0;
     gpu::Program* program = nullptr;
     gpu::Program* castProgram = nullptr;
@@ -218,7 +245,7 @@ Result<VoxelGpuRenderer> VoxelGpuRenderer::create(gpu::Context& context, const V
           Allocation{&s.voxels, chunks * perChunk * 4}, Allocation{&s.chunkSolid, chunks * 4},
           Allocation{&s.brickMasks, bricks * 8}, Allocation{&s.brickDistances, bricks * 4},
           Allocation{&s.textureInfo, infos.size() * 16}, Allocation{&s.texels, texels.size() * 16},
-          Allocation{&s.srgb, srgb.size() * 4}}) {
+          Allocation{&s.srgb, srgb.size() * 4}, Allocation{&s.materials, kMaterialBytes}}) {
         auto b = context.createBuffer(a.bytes);
         if (!b) return b.error();
         *a.buffer = *b;
@@ -306,6 +333,26 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
     p.skyHorizonB = options.skyHorizon.b;
     p.textureStrength = options.textureStrength;
     p.textureTexels = static_cast<std::uint32_t>(std::max(options.textureTexels, 1));
+    if (options.lighting == ShadeOptions::Lighting::Physical) {
+        p.flags |=
+            LUXEL_VOXEL_PHYSICAL | (options.refraction ? LUXEL_VOXEL_REFRACTION : 0u) |
+            (options.fresnel == ShadeOptions::FresnelModel::Exact ? LUXEL_VOXEL_FRESNEL_EXACT : 0u);
+        p.specular = options.specular == ShadeOptions::Specular::Ggx ? LUXEL_VOXEL_SPECULAR_GGX
+                     : options.specular == ShadeOptions::Specular::BlinnPhong
+                         ? LUXEL_VOXEL_SPECULAR_BLINN_PHONG
+                         : LUXEL_VOXEL_SPECULAR_NONE;
+        p.sunIrradianceR = options.sunIrradiance.r, p.sunIrradianceG = options.sunIrradiance.g,
+        p.sunIrradianceB = options.sunIrradiance.b;
+        p.skyAmbient = options.skyAmbient;
+        // As shading_physical.cpp: the sun's image in a mirror bounds the GGX alpha.
+        p.alphaMin = std::max(0.5f * static_cast<float>(options.sunAngularRadius), 1e-3f);
+        p.maxReflections = static_cast<std::uint32_t>(
+            std::clamp(options.maxReflections, 0, LUXEL_VOXEL_MAX_DEPTH));
+    }
+    if (Status st = s.context->upload(*s.materials, bytesOf(gpuMaterials(options.materials)));
+        !st) {
+        return st.error();
+    }
     if (Status st = s.context->upload(*s.params, std::as_bytes(std::span(&p, 1))); !st) {
         return st.error();
     }
@@ -318,7 +365,8 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
         d.program = s.program;
         d.buffers = {s.params.get(),      s.voxels.get(),     s.chunkSolid.get(),
                      s.textureInfo.get(), s.texels.get(),     s.srgb.get(),
-                     s.output.get(),      s.brickMasks.get(), s.brickDistances.get()};
+                     s.output.get(),      s.brickMasks.get(), s.brickDistances.get(),
+                     s.materials.get()};
         const int rows = std::min(kBandRows, h - row);
         d.setPush(shared::VoxelBandPush{static_cast<std::uint32_t>(row),
                                         static_cast<std::uint32_t>(rows)});

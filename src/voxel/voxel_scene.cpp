@@ -13,6 +13,7 @@
 #include "luxel/voxel/generators.h"
 #include "luxel/voxel/vox_import.h"
 #include "post/post_json.h"
+#include "voxel/material_scene.h"
 #include "voxel/voxel_scene_internal.h"
 
 namespace luxel::voxel {
@@ -32,7 +33,8 @@ Voxel colourOf(const Json& v, const std::string& path) {
 }
 
 // Reads "textures": PNG files relative to the scene, each with a name shapes refer to.
-TextureSet buildTextures(const Json* list, const std::filesystem::path& baseDir) {
+TextureSet buildTextures(const Json* list, const std::filesystem::path& baseDir,
+                         const std::vector<Material>& materials, MaterialTable& table) {
     TextureSet set;
     if (!list) return set;
     if (!list->is_array()) throw Invalid{"textures", "must be an array"};
@@ -44,7 +46,7 @@ TextureSet buildTextures(const Json* list, const std::filesystem::path& baseDir)
     for (std::size_t i = 0; i < list->size(); ++i) {
         const Json& t = (*list)[i];
         const std::string path = "textures[" + std::to_string(i) + "]";
-        checkObject(t, path, {"name", "file", "reflectivity"});
+        checkObject(t, path, {"name", "file", "reflectivity", "material"});
         const Json* name = find(t, "name");
         if (!name || !name->is_string() || name->get<std::string>().empty()) {
             throw Invalid{path + ".name", "must be a non-empty string"};
@@ -61,6 +63,14 @@ TextureSet buildTextures(const Json* list, const std::filesystem::path& baseDir)
         }
         Result<int> slot = set.add(std::move(*texture));
         if (!slot) throw Invalid{path + ".name", slot.error().message()};
+        if (const Json* m = find(t, "material")) {
+            const std::string field = path + ".material";
+            Material material = findMaterial(materials, readString(*m, field), field);
+            material.proceduralTexture = false;  // the image is the texture
+            if (Status st = table.setSlot(*slot, std::move(material)); !st) {
+                throw Invalid{field, st.error().message()};
+            }
+        }
     }
     return set;
 }
@@ -69,6 +79,16 @@ TextureSet buildTextures(const Json* list, const std::filesystem::path& baseDir)
 std::uint8_t materialAlpha(const Json& object, const std::string& path,
                            const TextureSet& textures) {
     const Json* name = find(object, "texture");
+    // A material without an image is the texture slot named after it (material.h).
+    if (const Json* material = find(object, "material")) {
+        if (name) throw Invalid{path + ".material", "give \"texture\" or \"material\", not both"};
+        const std::string field = path + ".material";
+        const std::string materialName = readString(*material, field);
+        if (const std::optional<int> slot = textures.find(materialSlotName(materialName))) {
+            return alphaForSlot(*slot);
+        }
+        throw Invalid{field, "unknown material '" + materialName + "'"};
+    }
     if (!name) return kPlainBlockAlpha;
     if (!name->is_string()) throw Invalid{path + ".texture", "must be a texture name"};
     const std::optional<int> slot = textures.find(name->get<std::string>());
@@ -96,10 +116,12 @@ void textureByColour(const Json& list, VoxelWorld& world, const TextureSet& text
     std::vector<Rule> rules;
     for (std::size_t i = 0; i < list.size(); ++i) {
         const std::string path = "world.texture_by_color[" + std::to_string(i) + "]";
-        checkObject(list[i], path, {"color", "tolerance", "texture"});
+        checkObject(list[i], path, {"color", "tolerance", "texture", "material"});
         const Json* colour = find(list[i], "color");
         if (!colour) throw Invalid{path, "needs \"color\": [r, g, b]"};
-        if (!find(list[i], "texture")) throw Invalid{path, "needs \"texture\": name"};
+        if (!find(list[i], "texture") && !find(list[i], "material")) {
+            throw Invalid{path, "needs \"texture\" or \"material\": name"};
+        }
         const Json* tolerance = find(list[i], "tolerance");
         rules.push_back({colourOf(*colour, path + ".color"),
                          tolerance ? wholeNumber(*tolerance, path + ".tolerance", 0, 255) : 0,
@@ -201,11 +223,13 @@ VoxelWorld worldFromJson(const Json& w, const std::filesystem::path& baseDir,
         for (std::size_t i = 0; i < shapes->size(); ++i) {
             const Json& s = (*shapes)[i];
             const std::string path = "world.shapes[" + std::to_string(i) + "]";
-            checkObject(s, path, {"type", "center", "radius", "min", "max", "color", "texture"});
+            checkObject(s, path,
+                        {"type", "center", "radius", "min", "max", "color", "texture", "material"});
             const Json* type = find(s, "type");
             const Json* colourJson = find(s, "color");
             const std::uint8_t alpha = materialAlpha(s, path, textures);
-            // Textured shapes default to white, so the texture shows its own colours.
+            // Textured shapes (and materials) default to white, so the texture and the
+            // material's albedo show their own colours.
             Voxel colour = colourJson                  ? colourOf(*colourJson, path + ".color")
                            : alpha == kPlainBlockAlpha ? Voxel{200, 200, 200, 255}
                                                        : Voxel{255, 255, 255, 255};
@@ -271,8 +295,53 @@ Camera cameraFromJson(const Json& c, int width, int height) {
 
 namespace {
 
-ShadeOptions buildShading(const Json& root) {
+// The physical-lighting fields of "render" (docs/algorithms/voxel-surfaces.md).
+void readSurfaceOptions(const Json& render, const std::vector<Material>& materials,
+                        ShadeOptions& o) {
+    const auto choice = [&](const char* key, std::initializer_list<const char*> names) {
+        const Json* v = find(render, key);
+        if (!v) return -1;
+        const std::string field = std::string("render.") + key;
+        const std::string text = readString(*v, field);
+        std::string known;
+        int i = 0;
+        for (const char* name : names) {
+            if (text == name) return i;
+            known += (i++ ? ", " : "") + std::string(name);
+        }
+        throw Invalid{field, "unknown value '" + text + "' (known: " + known + ")"};
+    };
+    if (int i = choice("lighting", {"classic", "physical"}); i >= 0) {
+        o.lighting = i == 0 ? ShadeOptions::Lighting::Classic : ShadeOptions::Lighting::Physical;
+    }
+    if (int i = choice("specular", {"none", "blinn-phong", "ggx"}); i >= 0) {
+        o.specular = static_cast<ShadeOptions::Specular>(i);
+    }
+    if (int i = choice("fresnel", {"schlick", "exact"}); i >= 0) {
+        o.fresnel = static_cast<ShadeOptions::FresnelModel>(i);
+    }
+    if (const Json* v = find(render, "refraction"))
+        o.refraction = readBool(*v, "render.refraction");
+    if (const Json* v = find(render, "sun_irradiance")) {
+        const auto c = readNumbers(*v, "render.sun_irradiance", 3, 0, 1e4);
+        o.sunIrradiance = {float(c[0]), float(c[1]), float(c[2])};
+    }
+    if (const Json* v = find(render, "sky_ambient")) {
+        o.skyAmbient = static_cast<float>(readNumberIn(*v, "render.sky_ambient", 0, 1));
+    }
+    if (const Json* v = find(render, "material")) {
+        Material m = findMaterial(materials, readString(*v, "render.material"), "render.material");
+        m.proceduralTexture = true;
+        if (Status st = o.materials.setPlain(std::move(m)); !st) {
+            throw Invalid{"render.material", st.error().message()};
+        }
+    }
+}
+
+ShadeOptions buildShading(const Json& root, const std::vector<Material>& materials,
+                          MaterialTable table) {
     ShadeOptions o;
+    o.materials = std::move(table);
     if (const Json* sun = find(root, "sun")) {
         const auto s = readNumbers(*sun, "sun", 3, -1e3, 1e3);
         if (s[0] == 0 && s[1] == 0 && s[2] == 0) throw Invalid{"sun", "must not be zero"};
@@ -292,8 +361,11 @@ ShadeOptions buildShading(const Json& root) {
         rgb("horizon", o.skyHorizon);
     }
     if (const Json* render = find(root, "render")) {
-        checkObject(*render, "render",
-                    {"reflections", "reflection_mode", "reflectivity", "shadows", "textures"});
+        checkObject(
+            *render, "render",
+            {"reflections", "reflection_mode", "reflectivity", "shadows", "textures", "lighting",
+             "specular", "fresnel", "refraction", "sun_irradiance", "sky_ambient", "material"});
+        readSurfaceOptions(*render, materials, o);
         if (auto* v = find(*render, "reflections")) {
             o.maxReflections = wholeNumber(*v, "render.reflections", 0, 16);
         }
@@ -341,19 +413,25 @@ Result<VoxelScene> loadVoxelScene(const std::string& path, int width, int height
 Result<VoxelScene> voxelSceneFromJson(const json::Json& root, std::string_view text,
                                       const std::string& path, int width, int height) {
     try {
-        checkObject(
-            root, "",
-            {"type", "description", "textures", "world", "camera", "sun", "sky", "render", "post"});
+        checkObject(root, "",
+                    {"type", "description", "textures", "world", "camera", "sun", "sky", "render",
+                     "materials", "post"});
         const Json* world = find(root, "world");
         const Json* camera = find(root, "camera");
         if (!world) throw Invalid{"", "a voxel scene needs \"world\""};
         if (!camera) throw Invalid{"", "a voxel scene needs \"camera\""};
         const std::filesystem::path baseDir = std::filesystem::path(path).parent_path();
-        TextureSet textures = buildTextures(find(root, "textures"), baseDir);
+        const std::vector<Material> materials = materialsFromJson(find(root, "materials"));
+        MaterialTable table;
+        TextureSet textures = buildTextures(find(root, "textures"), baseDir, materials, table);
+        addMaterialSlots(materials, textures, table);
         VoxelWorld built = worldFromJson(*world, baseDir, textures);
-        VoxelScene scene{std::move(built),    cameraFromJson(*camera, width, height),
-                         buildShading(root),  path,
-                         std::move(textures), {}};
+        VoxelScene scene{std::move(built),
+                         cameraFromJson(*camera, width, height),
+                         buildShading(root, materials, std::move(table)),
+                         path,
+                         std::move(textures),
+                         {}};
         if (const Json* p = find(root, "post")) scene.post = post::postOptionsFromJson(*p, "post");
         return scene;
     } catch (const Invalid& invalid) {

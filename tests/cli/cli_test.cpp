@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -279,6 +280,30 @@ TEST_F(Cli, RendersVoxelScenes) {
     expectError("render " + bad + " --out " + path("x.png"), "camera.pitch");
     expectError("render " + scene + " --solver hrc --out " + path("x.png"),
                 "--solver applies to 2D scenes");
+}
+
+TEST_F(Cli, VoxelSurfaceFlagsOverrideTheScene) {
+    const std::string scene = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/glass.json";
+    const std::string flags = " --size 48x27 --backend cpu -q --out ";
+    ASSERT_EQ(runLuxel("render " + scene + flags + path("p.exr")).exitCode, 0);
+    const RunResult r = runLuxel("render " + scene + flags + path("c.exr") +
+                                 " --lighting classic --specular blinn-phong --fresnel schlick"
+                                 " --no-refraction");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto physical = luxel::readExr(path("p.exr"));
+    auto classic = luxel::readExr(path("c.exr"));
+    ASSERT_TRUE(physical.ok() && classic.ok());
+    double difference = 0;
+    for (int y = 0; y < 27; ++y) {
+        for (int x = 0; x < 48; ++x)
+            difference += std::abs(physical->at(x, y, 1) - classic->at(x, y, 1));
+    }
+    EXPECT_GT(difference, 1.0) << "--lighting classic changes the image";
+    expectError("render " + scene + flags + path("x.exr") + " --lighting pbr",
+                "--lighting 'pbr' is not classic or physical");
+    expectError("render " + scene + flags + path("x.exr") + " --specular phong",
+                "--specular 'phong'");
+    expectError("render " + scene + flags + path("x.exr") + " --fresnel fast", "--fresnel 'fast'");
 }
 
 TEST_F(Cli, InfoDescribesVoxelScenes) {

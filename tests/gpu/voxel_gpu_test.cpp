@@ -185,6 +185,84 @@ TEST(VoxelGpu, GardenSceneMatchesTheCpu) {
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
 }
 
+// Physical lighting: the textured terrain with a metal sphere, a glass block with absorption
+// (refraction, total internal reflection), a lamp, every specular and Fresnel model.
+TEST(VoxelGpu, PhysicalLightingMatchesTheCpu) {
+    LUXEL_REQUIRE_GPU(context);
+    VoxelWorld world = texturedTerrain();
+    addSphere(world, {48, 30, 50}, 7, Voxel{230, 230, 240, alphaForSlot(2)});
+    addBox(world, {56, 18, 30}, {66, 28, 40}, Voxel{255, 255, 255, alphaForSlot(3)});
+    addBox(world, {30, 22, 34}, {34, 26, 38}, Voxel{255, 255, 255, alphaForSlot(4)});
+    const TextureSet textures = testTextures();
+    ShadeOptions o = terrainShading(ShadeOptions::ReflectionMode::EnergyConserving);
+    o.lighting = ShadeOptions::Lighting::Physical;
+    o.maxReflections = 6;
+    Material metal;
+    metal.name = "metal";
+    metal.metallic = 1.0f;
+    metal.roughness = 0.05f;
+    Material glass;
+    glass.name = "glass";
+    glass.transmission = 1.0f;
+    glass.roughness = 0.0f;
+    glass.absorption = {0.05f, 0.02f, 0.1f};
+    glass.proceduralTexture = true;
+    Material lamp;
+    lamp.name = "lamp";
+    lamp.emission = {4.0f, 3.0f, 1.0f};
+    ASSERT_TRUE(o.materials.setSlot(2, metal).ok());
+    ASSERT_TRUE(o.materials.setSlot(3, glass).ok());
+    ASSERT_TRUE(o.materials.setSlot(4, lamp).ok());
+    Material leafy = defaultMaterial();
+    leafy.name = "leafy";
+    leafy.roughness = 0.2f;  // half mirror, half sky
+    leafy.proceduralTexture = false;
+    ASSERT_TRUE(o.materials.setSlot(0, leafy).ok());
+    const Camera camera = Camera::lookAt({48, 44, -10}, {48, 20, 50}, 60, 160, 96).value();
+    auto gpu = VoxelGpuRenderer::create(*context, world, &textures);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    for (auto specular : {ShadeOptions::Specular::Ggx, ShadeOptions::Specular::BlinnPhong,
+                          ShadeOptions::Specular::None}) {
+        o.specular = specular;
+        o.fresnel = specular == ShadeOptions::Specular::BlinnPhong
+                        ? ShadeOptions::FresnelModel::Schlick
+                        : ShadeOptions::FresnelModel::Exact;
+        auto image = gpu->render(camera, o);
+        ASSERT_TRUE(image.ok()) << image.error().message();
+        const Image cpu = render(world, camera, o, &textures);
+        const Parity p = compareDisplay(*image, cpu);
+        print("physical terrain", p);
+        EXPECT_LT(p.differingPixels, 0.01);
+        EXPECT_LT(p.meanAbs, 0.1);
+    }
+    // The GPU did light physically: far from its classic image.
+    ShadeOptions classic = o;
+    classic.lighting = ShadeOptions::Lighting::Classic;
+    auto physicalImage = gpu->render(camera, o);
+    auto classicImage = gpu->render(camera, classic);
+    ASSERT_TRUE(physicalImage.ok() && classicImage.ok());
+    EXPECT_GT(compareDisplay(*physicalImage, *classicImage).differingPixels, 0.5);
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
+// The shipped glass scene: refraction through clear and absorbing blocks, a mirror wall, a lamp.
+TEST(VoxelGpu, GlassSceneMatchesTheCpu) {
+    LUXEL_REQUIRE_GPU(context);
+    auto scene =
+        loadVoxelScene(std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/glass.json", 160, 90);
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    auto gpu = VoxelGpuRenderer::create(*context, scene->world, &scene->textures);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    auto image = gpu->render(scene->camera, scene->shading);
+    ASSERT_TRUE(image.ok()) << image.error().message();
+    const Parity p = compareDisplay(
+        *image, render(scene->world, scene->camera, scene->shading, &scene->textures));
+    print("glass", p);
+    EXPECT_LT(p.differingPixels, 0.01);
+    EXPECT_LT(p.meanAbs, 0.1);
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
 TEST(VoxelGpu, UpdateRegionMatchesACpuRenderOfTheEditedWorld) {
     LUXEL_REQUIRE_GPU(context);
     VoxelWorld world = texturedTerrain();

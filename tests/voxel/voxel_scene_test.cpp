@@ -22,8 +22,9 @@ TEST(VoxelScene, ShippedDefaultSceneLoads) {
     EXPECT_EQ(scene->world.size(), (Int3{256, 96, 256}));
     EXPECT_GT(scene->world.solidCount(), 1000000u);
     EXPECT_EQ(scene->camera.width(), 64);
-    EXPECT_EQ(scene->shading.maxReflections, 2);
+    EXPECT_EQ(scene->shading.maxReflections, 4);
     EXPECT_EQ(scene->shading.reflectionMode, ShadeOptions::ReflectionMode::EnergyConserving);
+    EXPECT_EQ(scene->shading.lighting, ShadeOptions::Lighting::Physical);
 }
 
 TEST(VoxelScene, VoxFileWorldsAndShapes) {

@@ -94,6 +94,14 @@ post::PostOptions applyPostFlags(post::PostOptions scene, const PostFlags& flags
 // A render made at the internal size -> the linear image at width x height: upscaled, sharpened,
 // bloomed (written as is to EXR; PNGs get post.tone on top: luxel/post/finish.h).
 Image postProcess(const Image& internal, int width, int height, const post::PostOptions& post);
+// `luxel render` flags overriding a voxel scene's surface lighting (empty: the scene's).
+struct VoxelSurfaceFlags {
+    std::string lighting, specular, fresnel;
+    bool noRefraction = false;
+};
+void addVoxelSurfaceFlags(CLI::App& app, VoxelSurfaceFlags& flags);
+// Applies them to the scene's shading options; errors name the flag.
+Status applyVoxelSurfaceFlags(const VoxelSurfaceFlags& flags, voxel::ShadeOptions& options);
 
 // A voxel scene render (`luxel render` on a file with "type": "voxel").
 struct VoxelRenderRequest {
@@ -104,6 +112,7 @@ struct VoxelRenderRequest {
     std::string device;      // --device
     double loadSeconds = 0;  // reading the scene (generators included)
     PostFlags post;          // --bloom, --internal-scale, --upscaler, --sharpness, tone flags
+    VoxelSurfaceFlags surfaces;
 };
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene scene);
 

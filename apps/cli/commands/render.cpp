@@ -53,6 +53,7 @@ struct RenderArgs {
     std::string upscalerName;
     PostFlags post;                      // the post flags given, parsed
     std::vector<std::string> postGiven;  // their names
+    VoxelSurfaceFlags surfaces;          // voxel scenes
 };
 
 // The names given on the command line -> the library's enums (luxel/gi2d/solver_choice.h,
@@ -247,9 +248,9 @@ int runRender(const RenderArgs& args) {
             return reportError(Error(args.options2DGiven.front() + " applies to 2D scenes; " +
                                      args.scene + " is " + sceneKindPhrase(file->kind())));
         }
-        const VoxelRenderRequest request{args.scene,  args.size,          args.out,   args.png,
-                                         tone,        args.quiet,         args.stats, args.backend,
-                                         args.device, loadTime.seconds(), args.post};
+        const VoxelRenderRequest request{
+            args.scene, args.size,    args.out,    args.png,           tone,      args.quiet,
+            args.stats, args.backend, args.device, loadTime.seconds(), args.post, args.surfaces};
         return voxel ? renderVoxelScene(request, std::move(file->voxel()))
                      : renderOctreeScene(request, std::move(file->octree()));
     }
@@ -370,6 +371,7 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option("--upscaler", args->upscalerName, "voxel/octree: bilinear or edge");
     app.add_option("--sharpness", args->sharpness, "voxel/octree: sharpening after upscaling")
         ->check(CLI::Range(0.0, 1.0));
+    addVoxelSurfaceFlags(app, args->surfaces);
     CLI::App* command = &app;
     return [args, command] {
         for (const char* name :

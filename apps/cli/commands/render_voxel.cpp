@@ -45,8 +45,49 @@ Image postProcess(const Image& internal, int width, int height, const post::Post
     return post::applyBloom(full, post);
 }
 
+void addVoxelSurfaceFlags(CLI::App& app, VoxelSurfaceFlags& flags) {
+    app.add_option("--lighting", flags.lighting,
+                   "voxel: classic or physical (default: the scene's)");
+    app.add_option("--specular", flags.specular, "voxel, physical: none, blinn-phong or ggx");
+    app.add_option("--fresnel", flags.fresnel, "voxel, physical: schlick or exact");
+    app.add_flag("--no-refraction", flags.noRefraction,
+                 "voxel, physical: transmissive materials render opaque");
+}
+
+Status applyVoxelSurfaceFlags(const VoxelSurfaceFlags& flags, voxel::ShadeOptions& o) {
+    using Options = voxel::ShadeOptions;
+    if (flags.lighting == "classic") {
+        o.lighting = Options::Lighting::Classic;
+    } else if (flags.lighting == "physical") {
+        o.lighting = Options::Lighting::Physical;
+    } else if (!flags.lighting.empty()) {
+        return Error("--lighting '" + flags.lighting + "' is not classic or physical");
+    }
+    if (flags.specular == "none") {
+        o.specular = Options::Specular::None;
+    } else if (flags.specular == "blinn-phong") {
+        o.specular = Options::Specular::BlinnPhong;
+    } else if (flags.specular == "ggx") {
+        o.specular = Options::Specular::Ggx;
+    } else if (!flags.specular.empty()) {
+        return Error("--specular '" + flags.specular + "' is not none, blinn-phong or ggx");
+    }
+    if (flags.fresnel == "schlick") {
+        o.fresnel = Options::FresnelModel::Schlick;
+    } else if (flags.fresnel == "exact") {
+        o.fresnel = Options::FresnelModel::Exact;
+    } else if (!flags.fresnel.empty()) {
+        return Error("--fresnel '" + flags.fresnel + "' is not schlick or exact");
+    }
+    if (flags.noRefraction) o.refraction = false;
+    return Ok{};
+}
+
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded) {
     voxel::VoxelScene* scene = &loaded;
+    if (Status s = applyVoxelSurfaceFlags(request.surfaces, scene->shading); !s) {
+        return reportError(s.error());
+    }
     const double loadSeconds = request.loadSeconds;
     auto context = chooseGpuBackend(request.backend, request.device, request.quiet);
     if (!context) return reportError(context.error());

@@ -11,6 +11,7 @@
 #include "luxel/core/vec.h"
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/dda.h"
+#include "luxel/voxel/material.h"
 #include "luxel/voxel/ray_cone.h"
 #include "luxel/voxel/shadows/sun_visibility.h"
 #include "luxel/voxel/texture_set.h"
@@ -70,6 +71,10 @@ struct ShadeOptions {
     int maxAnisotropy = 16;
     bool normalMaps = true;
     int samplesPerPixel = 1;  // stratified within the pixel
+    // Physical: materials by texture slot (material.h; plain blocks use materials.plain()), and
+    // the share of the sky a face is assumed to see for ambient light (no occlusion is traced).
+    MaterialTable materials;
+    float skyAmbient = 0.5f;
 };
 
 // The Unity tracer's face factor min((dot(n, L) + 1) / 2 + ambient, 1); in shadow dot(n, L) is

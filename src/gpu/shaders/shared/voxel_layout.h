@@ -15,6 +15,8 @@
 //   7 brick occupancy masks: uvec2 per 4^3 brick (low, high 32 bits of VoxelWorld::brickMask),
 //     bricks ((bz * bricksY + by) * bricksX + bx)
 //   8 brick empty-space distances: one uint per brick, same order (VoxelWorld::brickDistance)
+//   9 VoxelMaterial[LUXEL_VOXEL_MATERIALS]: the material of texture slot i (0..253), then the
+//     plain blocks' material (physical lighting)
 //
 // voxel_cast (a batch of rays; the CPU twin is castRays in dda.h) binds 0-2 as above, then
 // 3 VoxelCastRay per ray, 4 VoxelCastHit per ray, 5 brick masks, 6 brick distances.
@@ -30,7 +32,7 @@ using uint = std::uint32_t;
 
 #define LUXEL_VOXEL_GROUP_X 8
 #define LUXEL_VOXEL_GROUP_Y 8
-#define LUXEL_VOXEL_BUFFERS 9
+#define LUXEL_VOXEL_BUFFERS 10
 #define LUXEL_VOXEL_CAST_GROUP 64
 
 // VoxelRenderParams.flags
@@ -40,6 +42,21 @@ using uint = std::uint32_t;
 #define LUXEL_VOXEL_ENERGY_CONSERVING 8u
 // The brick distances are current (VoxelWorld::emptySpaceCurrent); else chunk and brick jumps.
 #define LUXEL_VOXEL_DISTANCES_CURRENT 16u
+// Physical lighting (ShadeOptions::Lighting::Physical), refraction on, exact Fresnel (else
+// Schlick).
+#define LUXEL_VOXEL_PHYSICAL 256u
+#define LUXEL_VOXEL_REFRACTION 512u
+#define LUXEL_VOXEL_FRESNEL_EXACT 1024u
+
+// Material table entries: 254 texture slots and the plain blocks' material (the last).
+#define LUXEL_VOXEL_MATERIALS 255
+#define LUXEL_VOXEL_PLAIN_MATERIAL 254
+// VoxelMaterial.flags: the procedural texture applies; the slot has a material of its own.
+#define LUXEL_VOXEL_MATERIAL_PROCEDURAL 1u
+#define LUXEL_VOXEL_MATERIAL_OWN 2u
+// Pending rays of the physical tracer's stack (reflection and refraction budget at most 16).
+#define LUXEL_VOXEL_PATH_STACK 20
+#define LUXEL_VOXEL_MAX_DEPTH 16
 
 // Must equal kMaxCutoutContinuations (surface_cast.h).
 #define LUXEL_VOXEL_MAX_CUTOUTS 64
@@ -72,7 +89,12 @@ struct VoxelRenderParams {
     uint textureTexels;
     // Bricks (4^3 voxels) per axis.
     uint bricksX, bricksY, bricksZ;
-    uint pad0;
+    // Physical lighting.
+    uint specular;  // LUXEL_VOXEL_SPECULAR_* (shared/voxel_shading.h)
+    float sunIrradianceR, sunIrradianceG, sunIrradianceB;
+    float skyAmbient;
+    float alphaMin;  // smallest GGX alpha: the sun's image in a mirror
+    uint pad0, pad1, pad2;
 };
 
 // Push constants: the band of rows one dispatch renders (images are split into bands so no
@@ -112,6 +134,18 @@ struct VoxelPixel {
     float r, g, b, a;
 };
 
+// A material (luxel/voxel/material.h) as the shader reads it.
+struct VoxelMaterial {
+    float albedoR, albedoG, albedoB;
+    float metallic;
+    float roughness, ior, transmission;
+    uint flags;  // LUXEL_VOXEL_MATERIAL_*
+    float absorptionR, absorptionG, absorptionB;
+    float pad0;
+    float emissionR, emissionG, emissionB;
+    float pad1;
+};
+
 struct VoxelTextureInfo {
     uint texelOffset;  // first texel of the slot in the texel buffer
     uint width;
@@ -120,7 +154,12 @@ struct VoxelTextureInfo {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(VoxelRenderParams) == 176);
+static_assert(sizeof(VoxelRenderParams) == 208);
+static_assert(offsetof(VoxelRenderParams, specular) == 172);
+static_assert(offsetof(VoxelRenderParams, alphaMin) == 192);
+static_assert(sizeof(VoxelMaterial) == 64);
+static_assert(offsetof(VoxelMaterial, absorptionR) == 32);
+static_assert(offsetof(VoxelMaterial, emissionR) == 48);
 static_assert(sizeof(VoxelCastRay) == 32);
 static_assert(sizeof(VoxelCastHit) == 64);
 static_assert(offsetof(VoxelRenderParams, width) == 32);

@@ -7,6 +7,12 @@
 #define LUXEL_GPU_SHARED_VOXEL_SHADING_H
 
 #include "glsl_compat.h"
+#include "optics.h"
+
+// Specular models of physical lighting (VoxelRenderParams.specular, ShadeOptions::Specular).
+#define LUXEL_VOXEL_SPECULAR_NONE 0
+#define LUXEL_VOXEL_SPECULAR_BLINN_PHONG 1
+#define LUXEL_VOXEL_SPECULAR_GGX 2
 
 LUXEL_SHARED_BEGIN
 
@@ -57,6 +63,57 @@ LUXEL_FUNC float voxelTextureFactor(ivec3 voxel, ivec3 normal, float u, float v,
 // then the sum is scaled by k / (k + 1).
 LUXEL_FUNC vec3 voxelRunningAverage(vec3 sum, vec3 colour, int k) {
     return (sum + colour * (1.0f / float(k))) * (float(k) / float(k + 1));
+}
+
+// Physical lighting (docs/algorithms/voxel-surfaces.md).
+
+// The share of a surface's environment reflection traced as a mirror ray: 1 up to roughness 0.1,
+// 0 from 0.3 on. Rougher surfaces show the sky's colour in the reflected direction instead, so
+// rough ground mirrors no towers.
+LUXEL_FUNC float voxelMirrorWeight(float roughness) {
+    return clamp((0.3f - roughness) * 5.0f, 0.0f, 1.0f);
+}
+
+// Schlick with a roughness-limited grazing reflectance, F0 + (max(1 - roughness, F0) - F0)
+// (1 - cos)^5 (Lagarde's fit for the environment seen by rough surfaces).
+LUXEL_FUNC vec3 voxelRoughFresnel(vec3 f0, float cosine, float roughness) {
+    const float m = clamp(1.0f - cosine, 0.0f, 1.0f);
+    const float m2 = m * m;
+    return f0 + (max(vec3(1.0f - roughness), f0) - f0) * (m2 * m2 * m);
+}
+
+// The specular BRDF f_s (Fresnel included, N.L not) for the sun direction l, seen along v.
+LUXEL_FUNC vec3 voxelSpecularBrdf(int model, vec3 n, vec3 v, vec3 l, float alpha, vec3 f0) {
+    const float nl = dot(n, l);
+    const float nv = dot(n, v);
+    if (model == LUXEL_VOXEL_SPECULAR_NONE || nl <= 0.0f || nv <= 0.0f) return vec3(0.0f);
+    const vec3 h = normalize(l + v);
+    const float nh = max(dot(n, h), 0.0f);
+    const vec3 f = fresnelSchlickRgb(f0, max(dot(v, h), 0.0f));
+    if (model == LUXEL_VOXEL_SPECULAR_GGX) {
+        return f * (ggxD(nh, alpha) * ggxSmithVisibility(nv, nl, alpha));
+    }
+    return f * blinnPhongLobe(nh, blinnPhongExponent(alpha));
+}
+
+// Sunlight and sky light reflected towards v: the diffuse part diffuseAlbedo / pi (E_ambient +
+// E_sun V N.L) plus the specular f_s E_sun V N.L. V is pure visibility; N.L is applied here,
+// once, outside it.
+LUXEL_FUNC vec3 voxelSurfaceLight(vec3 diffuseAlbedo, vec3 f0, float alpha, int specularModel,
+                                  vec3 n, vec3 v, vec3 l, vec3 sunIrradiance, float visibility,
+                                  vec3 ambientIrradiance) {
+    const float nl = max(dot(n, l), 0.0f);
+    const vec3 direct = sunIrradiance * (visibility * nl);
+    vec3 result = diffuseAlbedo * (ambientIrradiance + direct) * (1.0f / LUXEL_OPTICS_PI);
+    if (nl > 0.0f && visibility > 0.0f) {
+        result = result + voxelSpecularBrdf(specularModel, n, v, l, alpha, f0) * direct;
+    }
+    return result;
+}
+
+// Beer-Lambert transmittance exp(-sigma_a d) over a path of length d inside a medium.
+LUXEL_FUNC vec3 voxelTransmittance(vec3 sigmaA, float d) {
+    return vec3(exp(-sigmaA.x * d), exp(-sigmaA.y * d), exp(-sigmaA.z * d));
 }
 
 LUXEL_SHARED_END

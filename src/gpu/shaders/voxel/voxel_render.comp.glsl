@@ -14,6 +14,7 @@ layout(std430, set = 0, binding = 5) readonly buffer SrgbTable { float srgbTable
 layout(std430, set = 0, binding = 6) writeonly buffer Output { VoxelPixel pixels[]; };
 layout(std430, set = 0, binding = 7) readonly buffer BrickMasks { uvec2 brickMasks[]; };
 layout(std430, set = 0, binding = 8) readonly buffer BrickDistances { uint brickDistances[]; };
+layout(std430, set = 0, binding = 9) readonly buffer Materials { VoxelMaterial materials[]; };
 layout(push_constant) uniform Push { VoxelBandPush band; };
 
 #include "voxel/voxel_world_access.glsl"

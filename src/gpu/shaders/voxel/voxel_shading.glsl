@@ -113,8 +113,11 @@ float reflectivityOf(SurfaceHit s) {
     return (isnan(r) || isinf(r)) ? 0.0 : clamp(r, 0.0, 1.0);
 }
 
+#include "voxel/voxel_physical.glsl"
+
 // shadeRay (shading.cpp).
 vec3 shadeRay(vec3 o, vec3 d) {
+    if ((params.flags & LUXEL_VOXEL_PHYSICAL) != 0u) return shadePhysical(o, d);
     const int bounces = int(params.maxReflections);
     vec3 sum = vec3(0.0);
     if ((params.flags & LUXEL_VOXEL_ENERGY_CONSERVING) == 0u) {
