@@ -114,6 +114,19 @@ LUXEL_FUNC float dequantizeUnorm16(uint q) {
     return float(q) / 65535.0f;
 }
 
+// The moments of one stored texel: fp32 words as float bits, or two words of 16-bit optimized
+// moments (q0 | q1 << 16, q2 | q3 << 16), dequantized and decoded.
+LUXEL_FUNC vec4 unpackMoments16(uint w0, uint w1) {
+    return msmDecodeOptimized(vec4(dequantizeUnorm16(w0 & 0xffffu), dequantizeUnorm16(w0 >> 16u),
+                                   dequantizeUnorm16(w1 & 0xffffu), dequantizeUnorm16(w1 >> 16u)));
+}
+
+// V from filtered moments at receiver depth z: Hamburger MSM or VSM, then light-bleed reduction.
+LUXEL_FUNC float momentVisibility(vec4 b, float z, bool vsm, float alpha, float rho) {
+    float v = vsm ? vsmVisibility(b.x, b.y, z) : msmVisibility(b, z, alpha);
+    return reduceLightBleed(v, rho);
+}
+
 LUXEL_SHARED_END
 
 #endif

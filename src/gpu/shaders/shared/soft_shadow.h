@@ -28,14 +28,15 @@ LUXEL_SHARED_BEGIN
 
 // State of one march from a receiver towards the light.
 struct SdfShadowMarch {
-    float res;  // running min of the clearance ratio, in [-1, 1]
-    float t;    // distance along the ray (voxels)
-    float ph;   // previous distance estimate (<= 0: none yet)
+    float res;   // running min of the clearance ratio, in [-1, 1]
+    float t;     // distance along the ray (voxels)
+    float ph;    // previous distance estimate (<= 0: none yet)
+    float step;  // the last advance
     int steps;
 };
 
 LUXEL_FUNC SdfShadowMarch sdfShadowBegin(float tMin) {
-    return SdfShadowMarch(1.0f, tMin, -1.0f, 0);
+    return SdfShadowMarch(1.0f, tMin, -1.0f, 0.0f, 0);
 }
 
 // One step: `h` is the distance estimate at the current sample (negative inside occluders),
@@ -44,14 +45,21 @@ LUXEL_FUNC SdfShadowMarch sdfShadowBegin(float tMin) {
 LUXEL_FUNC void sdfShadowStep(LUXEL_INOUT(SdfShadowMarch) m, float h, float stepDistance, float w) {
     float y = 0.0f;
     float d = h;
-    if (h > 0.0f && m.ph > 0.0f) {
-        // Aaltonen: closest approach between this sample and the previous one.
-        y = min(h * h / (2.0f * m.ph), h);
-        d = sqrt(max(h * h - y * y, 0.0f));
+    if (h > 0.0f && m.ph > 0.0f && m.step > 0.0f) {
+        // Aaltonen: the surface touches both spheres (radius ph at the previous sample, h here);
+        // the closest approach lies where they intersect, y back along the ray. With the step s
+        // equal to ph this is his y = h^2 / (2 ph); the march's steps may be shorter than ph.
+        float s = m.step;
+        float yc = (h * h - m.ph * m.ph + s * s) / (2.0f * s);
+        if (yc > 0.0f && yc < h) {
+            y = yc;
+            d = sqrt(h * h - yc * yc);
+        }
     }
     m.res = max(min(m.res, d / (w * max(m.t - y, 1.0e-4f))), -1.0f);
     m.ph = h;
-    m.t += max(stepDistance, LUXEL_SDF_MIN_STEP);
+    m.step = max(stepDistance, LUXEL_SDF_MIN_STEP);
+    m.t += m.step;
     m.steps += 1;
 }
 
