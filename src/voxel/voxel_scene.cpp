@@ -12,6 +12,7 @@
 #include "luxel/core/file_io.h"
 #include "luxel/voxel/generators.h"
 #include "luxel/voxel/vox_import.h"
+#include "voxel/shadows/shadow_json.h"
 #include "voxel/voxel_scene_internal.h"
 
 namespace luxel::voxel {
@@ -292,7 +293,8 @@ ShadeOptions buildShading(const Json& root) {
     }
     if (const Json* render = find(root, "render")) {
         checkObject(*render, "render",
-                    {"reflections", "reflection_mode", "reflectivity", "shadows", "textures"});
+                    {"reflections", "reflection_mode", "reflectivity", "shadows", "textures",
+                     "sun_radius"});
         if (auto* v = find(*render, "reflections")) {
             o.maxReflections = wholeNumber(*v, "render.reflections", 0, 16);
         }
@@ -310,13 +312,11 @@ ShadeOptions buildShading(const Json& root) {
                               "must be \"running-average\" or \"energy\""};
             }
         }
-        for (const char* key : {"shadows", "textures"}) {
-            if (const Json* v = find(*render, key)) {
-                if (!v->is_boolean())
-                    throw Invalid{std::string("render.") + key, "must be true or false"};
-                (std::string(key) == "shadows" ? o.shadows : o.textures) = v->get<bool>();
-            }
+        if (const Json* v = find(*render, "textures")) {
+            if (!v->is_boolean()) throw Invalid{"render.textures", "must be true or false"};
+            o.textures = v->get<bool>();
         }
+        readShadowJson(*render, o);
     }
     return o;
 }
