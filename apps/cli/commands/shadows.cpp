@@ -205,10 +205,11 @@ int runScene(const ShadowsArgs& args, const std::string& path) {
     const char* rowFormat =
         args.markdown ? "| %-15s | %8.4f | %8.4f | %8.4f | %8.4f | %8.4f | %8.4f | %9.1f |\n"
                       : "  %-15s %8.4f %8.4f %8.4f %8.4f %8.4f %8.4f %9.1f\n";
+    const char* bold = args.markdown ? "**" : "";
     std::printf(
-        "%s%s: %dx%d, %lld surface pixels (%lld in penumbra), blend band %g..%g, "
+        "%s%s%s%s: %dx%d, %lld surface pixels (%lld in penumbra), blend band %g..%g, "
         "sun radius %.2f deg, truth %d rays, %d frame%s\n",
-        args.markdown ? "\n**" : "", path.c_str(), w, h,
+        args.markdown ? "\n" : "", bold, path.c_str(), bold, w, h,
         static_cast<long long>(std::count(primary.mask.begin(), primary.mask.end(), 1)),
         static_cast<long long>(
             voxel::compareVisibility(truth[0], truth[0], primary.mask).penumbraPixels),
