@@ -31,6 +31,8 @@ int main(int argc, char** argv) {
         luxel::cli::addUpscaleCommand);
     add("octree", "build or convert sparse voxel octrees (.lxo container files)",
         luxel::cli::addOctreeCommand);
+    add("shadows", "sun visibility by every shadow method against ray-traced truth",
+        luxel::cli::addShadowsCommand);
 
     try {
         app.parse(argc, argv);

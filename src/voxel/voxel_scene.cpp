@@ -14,6 +14,7 @@
 #include "luxel/voxel/vox_import.h"
 #include "post/post_json.h"
 #include "voxel/material_scene.h"
+#include "voxel/shadows/shadow_json.h"
 #include "voxel/voxel_scene_internal.h"
 
 namespace luxel::voxel {
@@ -361,10 +362,10 @@ ShadeOptions buildShading(const Json& root, const std::vector<Material>& materia
         rgb("horizon", o.skyHorizon);
     }
     if (const Json* render = find(root, "render")) {
-        checkObject(
-            *render, "render",
-            {"reflections", "reflection_mode", "reflectivity", "shadows", "textures", "lighting",
-             "specular", "fresnel", "refraction", "sun_irradiance", "sky_ambient", "material"});
+        checkObject(*render, "render",
+                    {"reflections", "reflection_mode", "reflectivity", "shadows", "textures",
+                     "lighting", "specular", "fresnel", "refraction", "sun_irradiance",
+                     "sky_ambient", "material", "sun_radius"});
         readSurfaceOptions(*render, materials, o);
         if (auto* v = find(*render, "reflections")) {
             o.maxReflections = wholeNumber(*v, "render.reflections", 0, 16);
@@ -383,13 +384,11 @@ ShadeOptions buildShading(const Json& root, const std::vector<Material>& materia
                               "must be \"running-average\" or \"energy\""};
             }
         }
-        for (const char* key : {"shadows", "textures"}) {
-            if (const Json* v = find(*render, key)) {
-                if (!v->is_boolean())
-                    throw Invalid{std::string("render.") + key, "must be true or false"};
-                (std::string(key) == "shadows" ? o.shadows : o.textures) = v->get<bool>();
-            }
+        if (const Json* v = find(*render, "textures")) {
+            if (!v->is_boolean()) throw Invalid{"render.textures", "must be true or false"};
+            o.textures = v->get<bool>();
         }
+        readShadowJson(*render, o);
     }
     return o;
 }

@@ -31,6 +31,7 @@ Runner addCompareSolversCommand(CLI::App& app);
 Runner addDevicesCommand(CLI::App& app);
 Runner addBenchCommand(CLI::App& app);
 Runner addOctreeCommand(CLI::App& app);
+Runner addShadowsCommand(CLI::App& app);
 
 // "a voxel scene", "an octree scene", "a 2D scene": for messages that refuse a scene's kind.
 const char* sceneKindPhrase(scene::SceneKind kind);

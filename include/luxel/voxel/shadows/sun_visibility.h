@@ -8,6 +8,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "luxel/core/error.h"
 #include "luxel/core/vec.h"
@@ -26,6 +27,11 @@ enum class ShadowMethod {
     FloodFill,  // BFS light levels (the block-game baseline)
 };
 
+// "hard", "exact", "msm", "vsm", "sdf", "blend", "flood" (the scene file's and CLI's names).
+const char* shadowMethodName(ShadowMethod method);
+// The method of a name above; false for an unknown name.
+bool parseShadowMethod(const std::string& name, ShadowMethod& method);
+
 // The sun: direction towards it (need not be unit length) and its angular radius.
 struct SunLight {
     Vec3d direction{0.0, 1.0, 0.5};
@@ -43,6 +49,9 @@ struct ShadowSettings {
     double momentBias = 0.0;           // 0: the storage's documented default
     double lightBleedReduction = 0.0;  // rho in linstep(rho, 1, V); 0 = off
     double depthBias = 0.0;            // voxels, subtracted from the receiver depth
+    // Voxels along the face normal that MSM, VSM and SDF receivers are moved off their face
+    // (normal-offset shadows: no self-shadowing without a large depth bias).
+    double normalOffset = 0.5;
     // SDF soft shadows (Sdf, Blend).
     int sdfMaxSteps = 64;
     // MRMA blend: a = smoothstep(blendNear, blendFar, footprint), footprint = camera distance
@@ -76,6 +85,13 @@ class SunVisibility {
 
     const SunLight& sun() const;
     const ShadowSettings& settings() const;
+
+    // What the method built, for upload to the GPU (SunVisibilityGpu, the render pass's shadow
+    // bindings): null when the method does not use it.
+    const class MomentShadowMap* momentMap() const;
+    const class DistanceField* distanceField() const;
+    const class LightLevels* lightLevels() const;
+    const VoxelWorld& world() const;
 
   private:
     struct State;
