@@ -12,6 +12,7 @@
 #include "luxel/core/file_io.h"
 #include "luxel/voxel/generators.h"
 #include "luxel/voxel/vox_import.h"
+#include "voxel/texture_scene_fields.h"
 #include "voxel/voxel_scene_internal.h"
 
 namespace luxel::voxel {
@@ -43,7 +44,7 @@ TextureSet buildTextures(const Json* list, const std::filesystem::path& baseDir)
     for (std::size_t i = 0; i < list->size(); ++i) {
         const Json& t = (*list)[i];
         const std::string path = "textures[" + std::to_string(i) + "]";
-        checkObject(t, path, {"name", "file", "reflectivity"});
+        checkObject(t, path, {"name", "file", "reflectivity", "normal_map"});
         const Json* name = find(t, "name");
         if (!name || !name->is_string() || name->get<std::string>().empty()) {
             throw Invalid{path + ".name", "must be a non-empty string"};
@@ -54,6 +55,7 @@ TextureSet buildTextures(const Json* list, const std::filesystem::path& baseDir)
         if (p.is_relative()) p = baseDir / p;
         Result<Texture> texture = TextureSet::load(name->get<std::string>(), p.string());
         if (!texture) throw Invalid{path + ".file", texture.error().message()};
+        readNormalMapField(t, path, baseDir, *texture);
         if (const Json* v = find(t, "reflectivity")) {
             texture->reflectivity =
                 static_cast<float>(readNumberIn(*v, path + ".reflectivity", 0, 1));
@@ -292,7 +294,9 @@ ShadeOptions buildShading(const Json& root) {
     }
     if (const Json* render = find(root, "render")) {
         checkObject(*render, "render",
-                    {"reflections", "reflection_mode", "reflectivity", "shadows", "textures"});
+                    {"reflections", "reflection_mode", "reflectivity", "shadows", "textures",
+                     LUXEL_VOXEL_FILTER_RENDER_KEYS});
+        readFilterFields(*render, o);
         if (auto* v = find(*render, "reflections")) {
             o.maxReflections = wholeNumber(*v, "render.reflections", 0, 16);
         }

@@ -90,6 +90,9 @@ struct VoxelRenderRequest {
     gpu::Backend backend = gpu::Backend::Auto;
     std::string device;      // --device
     double loadSeconds = 0;  // reading the scene (generators included)
+    // --samples and --filter (0, empty: the scene's).
+    int samples = 0;
+    std::string filter = {};
 };
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene scene);
 

@@ -48,6 +48,9 @@ struct RenderArgs {
     int baseRays = gi2d::RcOptions{}.baseRays;
     double baseInterval = gi2d::RcOptions{}.baseInterval;
     int maxCascades = 0;
+    // Voxel scenes: anti-aliasing and texture filtering (0 / empty: the scene's).
+    int samples = 0;
+    std::string filter;
 };
 
 // The names given on the command line -> the library's enums (luxel/gi2d/solver_choice.h,
@@ -218,9 +221,15 @@ int runRender(const RenderArgs& args) {
             return reportError(Error(args.options2DGiven.front() + " applies to 2D scenes; " +
                                      args.scene + " is " + sceneKindPhrase(file->kind())));
         }
-        const VoxelRenderRequest request{args.scene,  args.size,         args.out,   args.png,
-                                         tone,        args.quiet,        args.stats, args.backend,
-                                         args.device, loadTime.seconds()};
+        VoxelRenderRequest request{args.scene,  args.size,         args.out,   args.png,
+                                   tone,        args.quiet,        args.stats, args.backend,
+                                   args.device, loadTime.seconds()};
+        request.samples = args.samples;
+        request.filter = args.filter;
+        if (!voxel && (args.samples != 0 || !args.filter.empty())) {
+            return reportError(Error("--samples and --filter apply to voxel scenes; " + args.scene +
+                                     " is " + sceneKindPhrase(file->kind())));
+        }
         return voxel ? renderVoxelScene(request, std::move(file->voxel()))
                      : renderOctreeScene(request, std::move(file->octree()));
     }
@@ -333,6 +342,11 @@ Runner addRenderCommand(CLI::App& app) {
                    "auto (a hardware GPU when there is one, else CPU), cpu or gpu (HRC, RC, voxel)")
         ->capture_default_str();
     app.add_option("--device", args->device, "GPU: device index or part of its name");
+    app.add_option("--samples", args->samples,
+                   "voxel: samples per pixel, stratified (default: the scene's render.samples)");
+    app.add_option(
+        "--filter", args->filter,
+        "voxel: texture filter nearest, trilinear or anisotropic (default: the scene's)");
     CLI::App* command = &app;
     return [args, command] {
         for (const char* name :

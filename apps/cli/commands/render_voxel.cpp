@@ -2,6 +2,7 @@
 // CPU or (--backend) the GPU.
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "commands/command.h"
 #include "luxel/core/image_io.h"
@@ -26,6 +27,21 @@ Result<Image> renderOnGpu(gpu::Context& context, const voxel::VoxelScene& scene)
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded) {
     voxel::VoxelScene* scene = &loaded;
     const double loadSeconds = request.loadSeconds;
+    if (request.samples != 0) {
+        if (request.samples < 1 || request.samples > voxel::kMaxSamplesPerPixel) {
+            return reportError(
+                Error("--samples must be in 1.." + std::to_string(voxel::kMaxSamplesPerPixel)));
+        }
+        scene->shading.samplesPerPixel = request.samples;
+    }
+    if (!request.filter.empty()) {
+        const auto filter = voxel::parseTextureFilter(request.filter);
+        if (!filter) {
+            return reportError(Error("--filter '" + request.filter +
+                                     "' is not nearest, trilinear or anisotropic"));
+        }
+        scene->shading.textureFilter = *filter;
+    }
     auto context = chooseGpuBackend(request.backend, request.device, request.quiet);
     if (!context) return reportError(context.error());
     Stopwatch renderTime;
@@ -56,6 +72,8 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
                     static_cast<unsigned long long>(scene->world.solidCount()), radiance.width(),
                     radiance.height(), scene->shading.maxReflections,
                     *context ? ("gpu: " + (**context).device().name).c_str() : "cpu");
+        std::printf("  %d samples per pixel, %s textures\n", voxel::samplesPerPixel(scene->shading),
+                    voxel::textureFilterName(scene->shading.textureFilter));
         std::printf("  world %.3f s, render %.3f s incl. upload (%.2f Mpixel/s)\n", loadSeconds,
                     renderSeconds, pixels / renderSeconds * 1e-6);
         std::printf("  wrote %s%s%s\n", request.out.c_str(), request.png.empty() ? "" : ", ",
