@@ -2,6 +2,8 @@
 // determinism across thread counts.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
 #include <set>
 
 #include "gpu/shaders/shared/pixel_samples.h"
@@ -9,6 +11,7 @@
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/generators.h"
 #include "luxel/voxel/render_image.h"
+#include "luxel/voxel/voxel_scene.h"
 
 namespace luxel::voxel {
 namespace {
@@ -94,6 +97,60 @@ TEST(RenderImage, PrimaryConeSpreadsByOnePixel) {
     EXPECT_NEAR(cone.spread, 2.0 / 50, 1e-12);
     const Ray a = camera.rayAt(50, 25), b = camera.rayAt(51, 25);
     EXPECT_NEAR(length(a.direction - b.direction), cone.spread, 1e-3);
+}
+
+// A scene with `extra` fields and a bricks texture with `textureExtra`, from a temporary file.
+Result<VoxelScene> sceneWith(const std::string& name, const std::string& textureExtra,
+                             const std::string& extra) {
+    const std::string dir = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/textures/";
+    const auto path = std::filesystem::temp_directory_path() / ("luxel_aa_" + name + ".json");
+    std::ofstream(path) << R"({"type": "voxel", "textures": [{"name": "bricks", "file": ")" << dir
+                        << R"(bricks.png")" << textureExtra << R"(}],
+        "world": {"source": "empty", "size": [8, 8, 8], "shapes": [
+                  {"type": "box", "min": [0, 0, 0], "max": [8, 1, 8], "texture": "bricks"}]},
+        "camera": {"position": [4, 4, -4], "look_at": [4, 0, 4]})"
+                        << extra << "}";
+    return loadVoxelScene(path.string());
+}
+
+TEST(RenderImage, SceneFieldsForFilteringAndSamples) {
+    const std::string dir = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/textures/";
+    auto scene = sceneWith("ok", R"(, "normal_map": ")" + dir + R"(bricks_normal.png")",
+                           R"(, "render": {"samples": 9, "texture_filter": "anisotropic",
+                                 "anisotropy": 8, "normal_maps": false})");
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    EXPECT_EQ(scene->shading.samplesPerPixel, 9);
+    EXPECT_EQ(scene->shading.textureFilter, TextureFilter::Anisotropic);
+    EXPECT_EQ(scene->shading.maxAnisotropy, 8);
+    EXPECT_FALSE(scene->shading.normalMaps);
+    ASSERT_TRUE(scene->textures.hasNormalMap(0));
+    // The shipped brick normal map tilts out of mortar grooves, and is flat on a brick's face.
+    int tilted = 0;
+    for (const Texel& n : scene->textures[0].normals) tilted += n.b < 0.99f;
+    EXPECT_GT(tilted, 40);
+    EXPECT_NEAR(scene->textures.normalAt(0, 2.5f / 16, 14.5f / 16, {}, TextureFilter::Nearest).z,
+                1.0f, 1e-2f);
+
+    const struct {
+        std::string textureExtra, extra, expected;
+    } bad[] = {
+        {"", R"(, "render": {"samples": 0})", "render.samples"},
+        {"", R"(, "render": {"samples": 1000})", "render.samples"},
+        {"", R"(, "render": {"texture_filter": "bilinear"})", "render.texture_filter"},
+        {"", R"(, "render": {"anisotropy": 0})", "render.anisotropy"},
+        {"", R"(, "render": {"normal_maps": 1})", "render.normal_maps"},
+        {R"(, "normal_map": 3)", "", "textures[0].normal_map"},
+        {R"(, "normal_map": "missing.png")", "", "textures[0].normal_map"},
+        // A normal map must have its texture's size (16x16 here).
+        {R"(, "normal_map": ")" + std::string(LUXEL_SOURCE_DIR) + R"(/docs/images/garden.png")", "",
+         "the normal map of texture 'bricks' is 960x540, the texture 16x16"},
+    };
+    int i = 0;
+    for (const auto& c : bad) {
+        auto s = sceneWith("bad" + std::to_string(i++), c.textureExtra, c.extra);
+        ASSERT_FALSE(s.ok()) << c.expected;
+        EXPECT_NE(s.error().message().find(c.expected), std::string::npos) << s.error().message();
+    }
 }
 
 }  // namespace
