@@ -1,9 +1,11 @@
 // Writes the face textures under scenes/voxel/textures/ (16x16 RGBA PNG, deterministic):
 //   bricks.png  running-bond bricks with mortar joints
+//   bricks_normal.png  its tangent-space normal map: mortar grooves recessed below the bricks
 //   leaves.png  leaf clusters with transparent holes (alpha 0: cutouts the rays pass through)
 //   grass.png   grass with blade streaks
 // Usage: luxel_make_voxel_textures OUTPUT_DIR
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -64,6 +66,34 @@ luxel::Image bricks() {
     return image;
 }
 
+// Whether texel (x, y) of bricks() is mortar.
+bool brickMortar(int x, int y) {
+    const int shift = ((y / 4) % 2) * 4;
+    return y % 4 == 3 || ((x + shift) % kSide) % 8 == 7;
+}
+
+// Tangent-space normals of a height field (bricks 1, mortar 0) by wrapped central differences:
+// x along u (columns, left to right), y along v (up the face: rows run downwards), z out of the
+// face; stored (n + 1) / 2 as data (no sRGB curve).
+luxel::Image bricksNormal() {
+    luxel::Image image(kSide, kSide, 3);
+    const auto height = [](int x, int y) {
+        return brickMortar((x + kSide) % kSide, (y + kSide) % kSide) ? 0.0f : 1.0f;
+    };
+    constexpr float kDepth = 0.8f;  // groove depth in texel widths: how steep the bevels are
+    for (int y = 0; y < kSide; ++y) {
+        for (int x = 0; x < kSide; ++x) {
+            const float du = 0.5f * (height(x + 1, y) - height(x - 1, y)) * kDepth;
+            const float dv = 0.5f * (height(x, y - 1) - height(x, y + 1)) * kDepth;
+            const float len = std::sqrt(du * du + dv * dv + 1.0f);
+            image.at(x, y, 0) = (-du / len + 1.0f) * 0.5f;
+            image.at(x, y, 1) = (-dv / len + 1.0f) * 0.5f;
+            image.at(x, y, 2) = (1.0f / len + 1.0f) * 0.5f;
+        }
+    }
+    return image;
+}
+
 luxel::Image leaves() {
     luxel::Image image(kSide, kSide, 4);
     for (int y = 0; y < kSide; ++y) {
@@ -103,10 +133,14 @@ int main(int argc, char** argv) {
     const struct {
         const char* name;
         luxel::Image image;
-    } textures[] = {{"bricks.png", bricks()}, {"leaves.png", leaves()}, {"grass.png", grass()}};
+        luxel::PngEncoding encoding = luxel::PngEncoding::Srgb;
+    } textures[] = {{"bricks.png", bricks()},
+                    {"bricks_normal.png", bricksNormal(), luxel::PngEncoding::Linear},
+                    {"leaves.png", leaves()},
+                    {"grass.png", grass()}};
     for (const auto& t : textures) {
         const std::string path = dir + "/" + t.name;
-        if (luxel::Status s = luxel::writePng(path, t.image); !s) {
+        if (luxel::Status s = luxel::writePng(path, t.image, t.encoding); !s) {
             std::fprintf(stderr, "luxel_make_voxel_textures: %s\n", s.error().message().c_str());
             return 1;
         }

@@ -1,9 +1,12 @@
-// Images from the voxel renderer: the pixel loop around shadeRay.
+// Images from the voxel renderer: the pixel loop around shadeRay, with stratified samples per
+// pixel (shared/pixel_samples.h, the positions the GPU uses too).
 #include "luxel/voxel/render_image.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
+#include "gpu/shaders/shared/pixel_samples.h"
 #include "luxel/core/parallel.h"
 
 namespace luxel::voxel {
@@ -13,9 +16,24 @@ RayCone primaryCone(const Camera& camera) {
     return {0.0, 2.0 * tanHalf / camera.height()};
 }
 
+int samplesPerPixel(const ShadeOptions& options) {
+    return std::clamp(options.samplesPerPixel, 1, kMaxSamplesPerPixel);
+}
+
 Rgb shadePixel(const VoxelWorld& world, const Camera& camera, int px, int py,
                const ShadeOptions& options, const TextureSet* textures) {
-    return shadeRay(world, camera.primaryRay(px, py), primaryCone(camera), options, textures);
+    const int n = samplesPerPixel(options);
+    // Each of n samples stands for 1/n of the pixel: its cone is 1/sqrt(n) as wide.
+    RayCone cone = primaryCone(camera);
+    cone.spread /= std::sqrt(double(n));
+    Rgb sum;
+    for (int k = 0; k < n; ++k) {
+        const gpu::shared::vec2 o = gpu::shared::pixelSampleOffset(
+            static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py), k, n);
+        sum += shadeRay(world, camera.rayAt(px + double(o.x), py + double(o.y)), cone, options,
+                        textures);
+    }
+    return n == 1 ? sum : sum * (1.0f / float(n));
 }
 
 Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& options,

@@ -9,6 +9,7 @@
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/voxel/surface_cast.h"
+#include "luxel/voxel/texel_footprint.h"
 #include "voxel/shading_physical.h"
 
 namespace luxel::voxel {
@@ -46,7 +47,7 @@ struct Sample {
 };
 
 Sample sample(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
-              const ShadeOptions& options) {
+              const RayCone& cone, const ShadeOptions& options) {
     Sample s;
     s.surface = castToSurface(world, textures, ray, options.stepCap);
     // A capped ray (world larger than the cap allows) reads as sky rather than the Unity tracer's
@@ -60,7 +61,12 @@ Sample sample(const VoxelWorld& world, const TextureSet* textures, const Ray& ra
     const bool hasNormal = hit.normal != Int3{};
     Rgb colour = albedo(world.get(hit.voxel.x, hit.voxel.y, hit.voxel.z));
     if (s.surface.slot >= 0) {
-        const Texel& t = s.surface.texel;
+        Texel t = s.surface.texel;  // the nearest texel decided the cutout
+        if (options.textureFilter != TextureFilter::Nearest) {
+            t = textures->sample(s.surface.slot, hit.u, hit.v,
+                                 texelFootprint(cone, hit.t, ray.direction, hit.normal),
+                                 options.textureFilter, options.maxAnisotropy);
+        }
         colour = colour * Rgb(t.r, t.g, t.b);  // the texel tints the voxel colour
     } else if (options.textures) {
         colour = colour * textureFactor(hit, options);
@@ -120,9 +126,15 @@ float textureFactor(const Hit& hit, const ShadeOptions& options) {
 
 Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& options,
              const TextureSet* textures) {
+    return shadeRay(world, ray, RayCone{}, options, textures);
+}
+
+Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const RayCone& rayCone,
+             const ShadeOptions& options, const TextureSet* textures) {
     if (options.lighting == ShadeOptions::Lighting::Physical) {
-        return shadePhysical(world, ray, RayCone{}, options, textures);
+        return shadePhysical(world, ray, rayCone, options, textures);
     }
+    RayCone cone = rayCone;
     const int bounces = std::max(options.maxReflections, 0);
     Ray current = ray;
     Rgb sum;
@@ -130,7 +142,7 @@ Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& option
         // The Unity tracer's loop: hit k (1-based) adds colour / k, then the sum is scaled by k /
         // (k + 1).
         for (int k = 1; k <= bounces + 1; ++k) {
-            const Sample s = sample(world, textures, current, options);
+            const Sample s = sample(world, textures, current, cone, options);
             if (k == 1) {
                 sum = s.colour;
             } else {
@@ -138,12 +150,13 @@ Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& option
             }
             if (!s.reflects) break;
             current = s.next;
+            cone = cone.after(s.surface.hit.t);
         }
         return sum;
     }
     float weight = 1.0f;
     for (int k = 0; k <= bounces; ++k) {
-        const Sample s = sample(world, textures, current, options);
+        const Sample s = sample(world, textures, current, cone, options);
         if (!s.reflects || k == bounces) {
             sum += s.colour * weight;
             break;
@@ -153,16 +166,9 @@ Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& option
         weight *= r;
         if (weight == 0.0f) break;
         current = s.next;
+        cone = cone.after(s.surface.hit.t);
     }
     return sum;
-}
-
-Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
-             const ShadeOptions& options, const TextureSet* textures) {
-    if (options.lighting == ShadeOptions::Lighting::Physical) {
-        return shadePhysical(world, ray, cone, options, textures);
-    }
-    return shadeRay(world, ray, options, textures);
 }
 
 }  // namespace luxel::voxel

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <string>
 
+#include "gpu/shaders/shared/texture_filter.h"
 #include "gpu/shaders/shared/voxel_layout.h"
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/core/memory.h"
@@ -16,6 +17,7 @@
 #include "luxel/core/timer.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/gpu/context.h"
+#include "luxel/voxel/render_image.h"
 #include "luxel/voxel/surface_cast.h"
 #include "voxel/cast_batch.h"
 
@@ -27,6 +29,9 @@ namespace {
 
 static_assert(LUXEL_VOXEL_MAX_CUTOUTS == kMaxCutoutContinuations);
 static_assert(sizeof(Voxel) == 4);
+static_assert(int(TextureFilter::Nearest) == LUXEL_TEXTURE_NEAREST &&
+              int(TextureFilter::Trilinear) == LUXEL_TEXTURE_TRILINEAR &&
+              int(TextureFilter::Anisotropic) == LUXEL_TEXTURE_ANISOTROPIC);
 
 // Rows per dispatch: keeps every dispatch short on slow devices.
 constexpr int kBandRows = 64;
@@ -42,9 +47,13 @@ std::uint64_t chunkTotal(Int3 chunks) {
     return static_cast<std::uint64_t>(chunks.x) * chunks.y * chunks.z;
 }
 
+// Texels uploaded: each texture, its colour mip chain and its normal chain.
 std::uint64_t texelCount(const TextureSet* textures) {
     std::uint64_t n = 0;
-    for (int i = 0; textures && i < textures->size(); ++i) n += (*textures)[i].texels.size();
+    for (int i = 0; textures && i < textures->size(); ++i) {
+        n += (*textures)[i].texels.size() + textures->colourMips(i).size() +
+             textures->normalMips(i).size();
+    }
     return n;
 }
 
@@ -101,7 +110,8 @@ std::uint64_t estimateVoxelGpuMemory(Int3 size, int chunkSize, const TextureSet*
     const std::uint64_t perChunk = static_cast<std::uint64_t>(chunkSize) * chunkSize * chunkSize;
     const int slots = textures ? textures->size() : 0;
     const Int3 bricks{(size.x + 3) / 4, (size.y + 3) / 4, (size.z + 3) / 4};
-    return chunks * perChunk * 4 + chunks * 4 + chunkTotal(bricks) * 12 + std::max(slots, 1) * 16 +
+    return chunks * perChunk * 4 + chunks * 4 + chunkTotal(bricks) * 12 +
+           std::max(slots, 1) * sizeof(shared::VoxelTextureInfo) +
            std::max<std::uint64_t>(texelCount(textures), 1) * 16 + 256 * 4 +
            sizeof(shared::VoxelRenderParams) + kMaterialBytes +
            static_cast<std::uint64_t>(width) * height * 16;
@@ -228,9 +238,19 @@ Result<VoxelGpuRenderer> VoxelGpuRenderer::create(gpu::Context& context, const V
     std::vector<Texel> texels;
     for (int i = 0; i < s.textureCount; ++i) {
         const Texture& t = (*textures)[i];
-        infos[i] = {static_cast<std::uint32_t>(texels.size()), static_cast<std::uint32_t>(t.width),
-                    static_cast<std::uint32_t>(t.height), t.reflectivity.value_or(-1.0f)};
+        shared::VoxelTextureInfo& info = infos[i];
+        info.texelOffset = static_cast<std::uint32_t>(texels.size());
+        info.width = static_cast<std::uint32_t>(t.width);
+        info.height = static_cast<std::uint32_t>(t.height);
+        info.reflectivity = t.reflectivity.value_or(-1.0f);
         texels.insert(texels.end(), t.texels.begin(), t.texels.end());
+        // Mip chains for filtering (texture_sample.glsl).
+        info.mipOffset = static_cast<std::uint32_t>(texels.size());
+        info.levels = static_cast<std::uint32_t>(textures->mipLevels(i));
+        texels.insert(texels.end(), textures->colourMips(i).begin(), textures->colourMips(i).end());
+        info.normalOffset = static_cast<std::uint32_t>(texels.size());
+        info.hasNormalMap = textures->hasNormalMap(i) ? 1u : 0u;
+        texels.insert(texels.end(), textures->normalMips(i).begin(), textures->normalMips(i).end());
     }
     if (texels.empty()) texels.push_back(Texel{});
     std::vector<float> srgb(256);
@@ -244,8 +264,9 @@ Result<VoxelGpuRenderer> VoxelGpuRenderer::create(gpu::Context& context, const V
          {Allocation{&s.params, sizeof(shared::VoxelRenderParams)},
           Allocation{&s.voxels, chunks * perChunk * 4}, Allocation{&s.chunkSolid, chunks * 4},
           Allocation{&s.brickMasks, bricks * 8}, Allocation{&s.brickDistances, bricks * 4},
-          Allocation{&s.textureInfo, infos.size() * 16}, Allocation{&s.texels, texels.size() * 16},
-          Allocation{&s.srgb, srgb.size() * 4}, Allocation{&s.materials, kMaterialBytes}}) {
+          Allocation{&s.textureInfo, infos.size() * sizeof(shared::VoxelTextureInfo)},
+          Allocation{&s.texels, texels.size() * 16}, Allocation{&s.srgb, srgb.size() * 4},
+          Allocation{&s.materials, kMaterialBytes}}) {
         auto b = context.createBuffer(a.bytes);
         if (!b) return b.error();
         *a.buffer = *b;
@@ -353,6 +374,12 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
         !st) {
         return st.error();
     }
+    // Anti-aliasing and filtering as render_image.cpp's shadePixel and shading.cpp.
+    const int samples = samplesPerPixel(options);
+    p.samplesPerPixel = static_cast<std::uint32_t>(samples);
+    p.textureFilter = static_cast<std::uint32_t>(options.textureFilter);
+    p.maxAnisotropy = static_cast<std::uint32_t>(std::max(options.maxAnisotropy, 1));
+    p.coneSpread = static_cast<float>(primaryCone(camera).spread / std::sqrt(double(samples)));
     if (Status st = s.context->upload(*s.params, std::as_bytes(std::span(&p, 1))); !st) {
         return st.error();
     }

@@ -15,6 +15,7 @@
 #include "post/post_json.h"
 #include "voxel/material_scene.h"
 #include "voxel/shadows/shadow_json.h"
+#include "voxel/texture_scene_fields.h"
 #include "voxel/voxel_scene_internal.h"
 
 namespace luxel::voxel {
@@ -47,7 +48,7 @@ TextureSet buildTextures(const Json* list, const std::filesystem::path& baseDir,
     for (std::size_t i = 0; i < list->size(); ++i) {
         const Json& t = (*list)[i];
         const std::string path = "textures[" + std::to_string(i) + "]";
-        checkObject(t, path, {"name", "file", "reflectivity", "material"});
+        checkObject(t, path, {"name", "file", "reflectivity", "material", "normal_map"});
         const Json* name = find(t, "name");
         if (!name || !name->is_string() || name->get<std::string>().empty()) {
             throw Invalid{path + ".name", "must be a non-empty string"};
@@ -58,6 +59,7 @@ TextureSet buildTextures(const Json* list, const std::filesystem::path& baseDir,
         if (p.is_relative()) p = baseDir / p;
         Result<Texture> texture = TextureSet::load(name->get<std::string>(), p.string());
         if (!texture) throw Invalid{path + ".file", texture.error().message()};
+        readNormalMapField(t, path, baseDir, *texture);
         if (const Json* v = find(t, "reflectivity")) {
             texture->reflectivity =
                 static_cast<float>(readNumberIn(*v, path + ".reflectivity", 0, 1));
@@ -365,8 +367,9 @@ ShadeOptions buildShading(const Json& root, const std::vector<Material>& materia
         checkObject(*render, "render",
                     {"reflections", "reflection_mode", "reflectivity", "shadows", "textures",
                      "lighting", "specular", "fresnel", "refraction", "sun_irradiance",
-                     "sky_ambient", "material", "sun_radius"});
+                     "sky_ambient", "material", "sun_radius", LUXEL_VOXEL_FILTER_RENDER_KEYS});
         readSurfaceOptions(*render, materials, o);
+        readFilterFields(*render, o);
         if (auto* v = find(*render, "reflections")) {
             o.maxReflections = wholeNumber(*v, "render.reflections", 0, 16);
         }

@@ -215,6 +215,10 @@ TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
                             LUXEL_MEMBER(P, sunIrradianceB),
                             LUXEL_MEMBER(P, skyAmbient),
                             LUXEL_MEMBER(P, alphaMin),
+                            LUXEL_MEMBER(P, samplesPerPixel),
+                            LUXEL_MEMBER(P, textureFilter),
+                            LUXEL_MEMBER(P, maxAnisotropy),
+                            LUXEL_MEMBER(P, coneSpread),
                             LUXEL_MEMBER(P, pad0),
                             LUXEL_MEMBER(P, pad1),
                             LUXEL_MEMBER(P, pad2)}};
@@ -225,7 +229,10 @@ TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
         "voxel_render", 3,
         {sizeof(VoxelTextureInfo),
          {LUXEL_MEMBER(VoxelTextureInfo, texelOffset), LUXEL_MEMBER(VoxelTextureInfo, width),
-          LUXEL_MEMBER(VoxelTextureInfo, height), LUXEL_MEMBER(VoxelTextureInfo, reflectivity)}});
+          LUXEL_MEMBER(VoxelTextureInfo, height), LUXEL_MEMBER(VoxelTextureInfo, reflectivity),
+          LUXEL_MEMBER(VoxelTextureInfo, mipOffset), LUXEL_MEMBER(VoxelTextureInfo, levels),
+          LUXEL_MEMBER(VoxelTextureInfo, normalOffset),
+          LUXEL_MEMBER(VoxelTextureInfo, hasNormalMap)}});
     expectPushConstants("voxel_render", {sizeof(VoxelBandPush),
                                          {LUXEL_MEMBER(VoxelBandPush, rowOffset),
                                           LUXEL_MEMBER(VoxelBandPush, rows)}});

@@ -114,6 +114,9 @@ struct VoxelRenderRequest {
     double loadSeconds = 0;  // reading the scene (generators included)
     PostFlags post;          // --bloom, --internal-scale, --upscaler, --sharpness, tone flags
     VoxelSurfaceFlags surfaces;
+    // --samples and --filter (0, empty: the scene's).
+    int samples = 0;
+    std::string filter = {};
 };
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene scene);
 

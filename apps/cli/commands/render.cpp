@@ -54,6 +54,9 @@ struct RenderArgs {
     PostFlags post;                      // the post flags given, parsed
     std::vector<std::string> postGiven;  // their names
     VoxelSurfaceFlags surfaces;          // voxel scenes
+    // Voxel scenes: anti-aliasing and texture filtering (0 / empty: the scene's).
+    int samples = 0;
+    std::string filter;
 };
 
 // The names given on the command line -> the library's enums (luxel/gi2d/solver_choice.h,
@@ -248,9 +251,15 @@ int runRender(const RenderArgs& args) {
             return reportError(Error(args.options2DGiven.front() + " applies to 2D scenes; " +
                                      args.scene + " is " + sceneKindPhrase(file->kind())));
         }
-        const VoxelRenderRequest request{
-            args.scene, args.size,    args.out,    args.png,           tone,      args.quiet,
-            args.stats, args.backend, args.device, loadTime.seconds(), args.post, args.surfaces};
+        VoxelRenderRequest request{args.scene,  args.size,          args.out,   args.png,
+                                   tone,        args.quiet,         args.stats, args.backend,
+                                   args.device, loadTime.seconds(), args.post,  args.surfaces};
+        request.samples = args.samples;
+        request.filter = args.filter;
+        if (!voxel && (args.samples != 0 || !args.filter.empty())) {
+            return reportError(Error("--samples and --filter apply to voxel scenes; " + args.scene +
+                                     " is " + sceneKindPhrase(file->kind())));
+        }
         return voxel ? renderVoxelScene(request, std::move(file->voxel()))
                      : renderOctreeScene(request, std::move(file->octree()));
     }
@@ -372,6 +381,11 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option("--sharpness", args->sharpness, "voxel/octree: sharpening after upscaling")
         ->check(CLI::Range(0.0, 1.0));
     addVoxelSurfaceFlags(app, args->surfaces);
+    app.add_option("--samples", args->samples,
+                   "voxel: samples per pixel, stratified (default: the scene's render.samples)");
+    app.add_option(
+        "--filter", args->filter,
+        "voxel: texture filter nearest, trilinear or anisotropic (default: the scene's)");
     CLI::App* command = &app;
     return [args, command] {
         for (const char* name :

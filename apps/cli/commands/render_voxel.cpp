@@ -2,6 +2,7 @@
 // CPU or (--backend) the GPU.
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "commands/command.h"
 #include "luxel/core/image_io.h"
@@ -89,6 +90,21 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         return reportError(s.error());
     }
     const double loadSeconds = request.loadSeconds;
+    if (request.samples != 0) {
+        if (request.samples < 1 || request.samples > voxel::kMaxSamplesPerPixel) {
+            return reportError(
+                Error("--samples must be in 1.." + std::to_string(voxel::kMaxSamplesPerPixel)));
+        }
+        scene->shading.samplesPerPixel = request.samples;
+    }
+    if (!request.filter.empty()) {
+        const auto filter = voxel::parseTextureFilter(request.filter);
+        if (!filter) {
+            return reportError(Error("--filter '" + request.filter +
+                                     "' is not nearest, trilinear or anisotropic"));
+        }
+        scene->shading.textureFilter = *filter;
+    }
     auto context = chooseGpuBackend(request.backend, request.device, request.quiet);
     if (!context) return reportError(context.error());
     const post::PostOptions post = applyPostFlags(scene->post, request.post);
@@ -126,6 +142,8 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
                     static_cast<unsigned long long>(scene->world.solidCount()), radiance.width(),
                     radiance.height(), scene->shading.maxReflections,
                     *context ? ("gpu: " + (**context).device().name).c_str() : "cpu");
+        std::printf("  %d samples per pixel, %s textures\n", voxel::samplesPerPixel(scene->shading),
+                    voxel::textureFilterName(scene->shading.textureFilter));
         std::printf("  world %.3f s, render %.3f s incl. upload (%.2f Mpixel/s)\n", loadSeconds,
                     renderSeconds, pixels / renderSeconds * 1e-6);
         if (post.internalScale < 1.0f || post.bloom.strength > 0.0f) {

@@ -10,10 +10,18 @@
 
 namespace luxel::voxel {
 
+// Most samples per pixel (LUXEL_MAX_SAMPLES_PER_PIXEL in shared/pixel_samples.h).
+inline constexpr int kMaxSamplesPerPixel = 256;
+
 // The ray cone of a primary ray: zero width at the eye, spreading by one pixel's angle.
 RayCone primaryCone(const Camera& camera);
 
-// Radiance of pixel (px, py): options.samplesPerPixel samples, averaged.
+// options.samplesPerPixel clamped to 1..kMaxSamplesPerPixel.
+int samplesPerPixel(const ShadeOptions& options);
+
+// Radiance of pixel (px, py): options.samplesPerPixel samples at stratified, per-pixel
+// deterministic positions (shared/pixel_samples.h; one sample: the pixel centre), averaged.
+// Each sample's cone spreads by the pixel angle / sqrt(samples).
 Rgb shadePixel(const VoxelWorld& world, const Camera& camera, int px, int py,
                const ShadeOptions& options, const TextureSet* textures = nullptr);
 

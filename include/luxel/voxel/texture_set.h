@@ -1,9 +1,11 @@
 // Face textures for voxels: up to 254 RGBA textures, addressed by the voxel's alpha byte.
 //
 // Voxel alpha is a material byte: 0 = empty, 255 = plain block (procedural texture), 1..254 =
-// texture slot a - 1. A textured face takes the nearest texel at the hit's (u, v): its colour
-// multiplies the voxel colour (a tint), and a texel with alpha < 0.5 is a cutout that the ray
-// passes through (the Unity tracer's "transparent pixel: loop to the next block").
+// texture slot a - 1. A textured face's colour multiplies the voxel colour (a tint): the nearest
+// texel, or a filtered colour over the ray cone's footprint (sample()). A texel with alpha < 0.5
+// is a cutout that the ray passes through (the Unity tracer's "transparent pixel: loop to the
+// next block"); that decision always reads the nearest texel (lookup()), so geometry does not
+// change with distance or filter. Filtering: docs/algorithms/voxel-textures.md.
 #pragma once
 
 #include <cstdint>
@@ -39,7 +41,8 @@ struct Texel {
 };
 
 // The footprint of a ray cone on a face, in face coordinates (a face spans [0, 1)^2): the two
-// half-axes of the ellipse it covers. Zero axes: a point sample (nearest texel).
+// half-axes of the ellipse it covers (texel_footprint.h). Zero axes: a point sample (level 0,
+// bilinear for the filtered modes).
 struct TexelFootprint {
     float majorU = 0, majorV = 0;
     float minorU = 0, minorV = 0;
@@ -58,6 +61,9 @@ struct Texture {
     // Energy-conserving reflections: this material's reflectivity in [0, 1] (empty: the
     // renderer's default).
     std::optional<float> reflectivity;
+    // Tangent-space normal map (r, g, b = x along u, y along v, z out of the face, each in
+    // [-1, 1]; a unused), the same size and row order as `texels`. Empty: flat.
+    std::vector<Texel> normals = {};
 };
 
 class TextureSet {
@@ -69,6 +75,9 @@ class TextureSet {
     // Reads a PNG: colour is sRGB-decoded to linear, alpha is linear (no alpha channel: opaque;
     // grey images are grey in every channel). Size limits as in add().
     static Result<Texture> load(const std::string& name, const std::string& path);
+    // Reads a tangent-space normal map PNG into texture.normals: 8-bit RGB as data (no sRGB
+    // curve), mapped c / 255 * 2 - 1 and renormalised. It must have the texture's size.
+    static Status loadNormalMap(Texture& texture, const std::string& path);
 
     int size() const { return static_cast<int>(textures_.size()); }
     bool empty() const { return textures_.empty(); }
@@ -83,12 +92,26 @@ class TextureSet {
     Texel sample(int slot, float u, float v, const TexelFootprint& footprint, TextureFilter filter,
                  int maxAnisotropy = 16) const;
     // Tangent-space normal (x along u, y along v, z out of the face), unit length; (0, 0, 1)
-    // for textures without a normal map.
-    Vec3 normalAt(int slot, float u, float v, const TexelFootprint& footprint,
-                  TextureFilter filter) const;
+    // for textures without a normal map. Filtered like sample(), then renormalised.
+    Vec3 normalAt(int slot, float u, float v, const TexelFootprint& footprint, TextureFilter filter,
+                  int maxAnisotropy = 16) const;
+    bool hasNormalMap(int slot) const { return !normalMips_[slot].empty(); }
+
+    // Mip chains, built by add(): levels of max(1, side >> l) texels (exact area averages),
+    // level after level, rows top to bottom (sizes and offsets: shared/texture_filter.h). Colour
+    // chains hold premultiplied alpha (r * a, g * a, b * a, a) so transparent texels add no
+    // colour; normal chains hold averaged, unnormalised vectors. What the GPU uploads.
+    const std::vector<Texel>& colourMips(int slot) const { return colourMips_[slot]; }
+    const std::vector<Texel>& normalMips(int slot) const { return normalMips_[slot]; }
+    int mipLevels(int slot) const;
 
   private:
     std::vector<Texture> textures_;
+    std::vector<std::vector<Texel>> colourMips_, normalMips_;
 };
+
+// Filter names as the CLI and scene files spell them: "nearest", "trilinear", "anisotropic".
+std::optional<TextureFilter> parseTextureFilter(const std::string& name);
+const char* textureFilterName(TextureFilter filter);
 
 }  // namespace luxel::voxel

@@ -9,7 +9,9 @@
 //     (lz * chunk + ly) * chunk + lx inside it
 //   2 solid voxels per chunk (uint), same chunk order
 //   3 VoxelTextureInfo per texture slot
-//   4 texels: vec4 (linear RGB, linear alpha), rows top to bottom, slot after slot
+//   4 texels: vec4, per slot: the texture (linear RGB, linear alpha, rows top to bottom), then
+//     its colour mip chain (premultiplied alpha), then its normal chain if it has a normal map
+//     (TextureSet::colourMips / normalMips; levels and offsets: shared/texture_filter.h)
 //   5 float[256]: srgbToLinear(i / 255), the CPU's own values
 //   6 output: vec4 per pixel (linear RGB, 1), rows top to bottom
 //   7 brick occupancy masks: uvec2 per 4^3 brick (low, high 32 bits of VoxelWorld::brickMask),
@@ -94,6 +96,11 @@ struct VoxelRenderParams {
     float sunIrradianceR, sunIrradianceG, sunIrradianceB;
     float skyAmbient;
     float alphaMin;  // smallest GGX alpha: the sun's image in a mirror
+    // Anti-aliasing and texture filtering (render_image.h, texture_set.h).
+    uint samplesPerPixel;  // 1..LUXEL_MAX_SAMPLES_PER_PIXEL
+    uint textureFilter;    // LUXEL_TEXTURE_NEAREST, _TRILINEAR or _ANISOTROPIC
+    uint maxAnisotropy;
+    float coneSpread;  // primary cone spread per sample: pixel angle / sqrt(samplesPerPixel)
     uint pad0, pad1, pad2;
 };
 
@@ -151,12 +158,18 @@ struct VoxelTextureInfo {
     uint width;
     uint height;
     float reflectivity;  // < 0: none (the renderer's default applies)
+    uint mipOffset;      // first texel of the colour mip chain
+    uint levels;         // mip levels (textureLevelCount)
+    uint normalOffset;   // first texel of the normal chain (same levels)
+    uint hasNormalMap;   // 0: flat
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(VoxelRenderParams) == 208);
+static_assert(sizeof(VoxelRenderParams) == 224);
 static_assert(offsetof(VoxelRenderParams, specular) == 172);
 static_assert(offsetof(VoxelRenderParams, alphaMin) == 192);
+static_assert(offsetof(VoxelRenderParams, samplesPerPixel) == 196);
+static_assert(offsetof(VoxelRenderParams, coneSpread) == 208);
 static_assert(sizeof(VoxelMaterial) == 64);
 static_assert(offsetof(VoxelMaterial, absorptionR) == 32);
 static_assert(offsetof(VoxelMaterial, emissionR) == 48);
@@ -169,8 +182,10 @@ static_assert(offsetof(VoxelRenderParams, sunX) == 112);
 static_assert(offsetof(VoxelRenderParams, textureTexels) == 156);
 static_assert(sizeof(VoxelBandPush) == 8);
 static_assert(offsetof(VoxelBandPush, rows) == 4);
-static_assert(sizeof(VoxelTextureInfo) == 16);
+static_assert(sizeof(VoxelTextureInfo) == 32);
 static_assert(offsetof(VoxelTextureInfo, reflectivity) == 12);
+static_assert(offsetof(VoxelTextureInfo, mipOffset) == 16);
+static_assert(offsetof(VoxelTextureInfo, hasNormalMap) == 28);
 }  // namespace luxel::gpu::shared
 #endif
 

@@ -18,21 +18,28 @@ layout(std430, set = 0, binding = 9) readonly buffer Materials { VoxelMaterial m
 layout(push_constant) uniform Push { VoxelBandPush band; };
 
 #include "voxel/voxel_world_access.glsl"
+#include "voxel/texture_sample.glsl"
 #include "voxel/voxel_shading.glsl"
+#include "shared/pixel_samples.h"
 
 void main() {
     const uint x = gl_GlobalInvocationID.x;
     const uint y = band.rowOffset + gl_GlobalInvocationID.y;
     if (x >= params.width || gl_GlobalInvocationID.y >= band.rows || y >= params.height) return;
-    // Camera::rayAt(x + 0.5, y + 0.5).
     const float w = float(params.width), h = float(params.height);
-    const float sx = (2.0 * (float(x) + 0.5) / w - 1.0) * params.tanHalf * params.aspect;
-    const float sy = (1.0 - 2.0 * (float(y) + 0.5) / h) * params.tanHalf;
     const vec3 forward = vec3(params.forwardX, params.forwardY, params.forwardZ);
     const vec3 right = vec3(params.rightX, params.rightY, params.rightZ);
     const vec3 up = vec3(params.upX, params.upY, params.upZ);
     const vec3 origin = vec3(params.positionX, params.positionY, params.positionZ);
-    const vec3 direction = normalize(forward + right * sx + up * sy);
-    const vec3 rgb = shadeRay(origin, direction);
+    // shadePixel (render_image.cpp): stratified samples, Camera::rayAt at each, averaged.
+    const int n = int(clamp(params.samplesPerPixel, 1u, uint(LUXEL_MAX_SAMPLES_PER_PIXEL)));
+    vec3 sum = vec3(0.0);
+    for (int k = 0; k < n; ++k) {
+        const vec2 o = pixelSampleOffset(x, y, k, n);
+        const float sx = (2.0 * (float(x) + o.x) / w - 1.0) * params.tanHalf * params.aspect;
+        const float sy = (1.0 - 2.0 * (float(y) + o.y) / h) * params.tanHalf;
+        sum += shadeRay(origin, normalize(forward + right * sx + up * sy));
+    }
+    const vec3 rgb = n == 1 ? sum : sum * (1.0 / float(n));
     pixels[y * params.width + x] = VoxelPixel(rgb.x, rgb.y, rgb.z, 1.0);
 }

@@ -70,7 +70,8 @@ struct Sample {
     vec3 nextOrigin, nextDirection;
 };
 
-Sample shadeSample(vec3 o, vec3 d) {
+// coneWidth: the ray cone's width at o (its spread is params.coneSpread), for texture filtering.
+Sample shadeSample(vec3 o, vec3 d, float coneWidth) {
     Sample s;
     s.surface = castToSurface(o, d);
     s.reflects = false;
@@ -85,7 +86,14 @@ Sample shadeSample(vec3 o, vec3 d) {
     const bool hasNormal = h.normal != ivec3(0);
     vec3 colour = albedo(voxelValue(h.voxel));
     if (s.surface.slot >= 0) {
-        colour = colour * s.surface.texel.rgb;
+        vec4 texel = s.surface.texel;  // the nearest texel decided the cutout
+        if (params.textureFilter != LUXEL_TEXTURE_NEAREST) {
+            texel = sampleTexture(
+                s.surface.slot, h.u, h.v,
+                textureFootprint(coneWidth + params.coneSpread * length(h.point - o), d,
+                                 h.normal));
+        }
+        colour = colour * texel.rgb;
     } else if ((params.flags & LUXEL_VOXEL_PROCEDURAL_TEXTURE) != 0u) {
         colour = colour * textureFactor(h);
     }
@@ -120,15 +128,17 @@ vec3 shadeRay(vec3 o, vec3 d) {
     if ((params.flags & LUXEL_VOXEL_PHYSICAL) != 0u) return shadePhysical(o, d);
     const int bounces = int(params.maxReflections);
     vec3 sum = vec3(0.0);
+    float coneWidth = 0.0;  // RayCone::after at each bounce
     if ((params.flags & LUXEL_VOXEL_ENERGY_CONSERVING) == 0u) {
         for (int k = 1; k <= bounces + 1; ++k) {
-            const Sample s = shadeSample(o, d);
+            const Sample s = shadeSample(o, d, coneWidth);
             if (k == 1) {
                 sum = s.colour;
             } else {
                 sum = voxelRunningAverage(sum, s.colour, k);
             }
             if (!s.reflects) break;
+            coneWidth += params.coneSpread * length(s.nextOrigin - o);
             o = s.nextOrigin;
             d = s.nextDirection;
         }
@@ -136,7 +146,7 @@ vec3 shadeRay(vec3 o, vec3 d) {
     }
     float weight = 1.0;
     for (int k = 0; k <= bounces; ++k) {
-        const Sample s = shadeSample(o, d);
+        const Sample s = shadeSample(o, d, coneWidth);
         if (!s.reflects || k == bounces) {
             sum += s.colour * weight;
             break;
@@ -145,6 +155,7 @@ vec3 shadeRay(vec3 o, vec3 d) {
         sum += s.colour * (weight * (1.0 - r));
         weight *= r;
         if (weight == 0.0) break;
+        coneWidth += params.coneSpread * length(s.nextOrigin - o);
         o = s.nextOrigin;
         d = s.nextDirection;
     }
