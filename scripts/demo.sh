@@ -50,6 +50,18 @@ start=$(date +%s%N)
 ms=$(( ($(date +%s%N) - start) / 1000000 ))
 printf '%-14s %-10s %4d.%02d    %s\n' "garden" "960x540" $((ms / 1000)) $((ms % 1000 / 10)) \
   "out/garden.png (textures with cutouts)"
+# Surfaces: glass (refraction, total internal reflection, Fresnel), a mirror wall, a lamp; bloom.
+start=$(date +%s%N)
+"$luxel" render scenes/voxel/glass.json --quiet --bloom 0.3 --samples 4 --out out/glass.png
+ms=$(( ($(date +%s%N) - start) / 1000000 ))
+printf '%-14s %-10s %4d.%02d    %s\n' "glass" "960x540" $((ms / 1000)) $((ms % 1000 / 10)) \
+  "out/glass.png (physical lighting, 4 samples per pixel, bloom 0.3)"
+# Soft sun shadows: the MRMA blend of moment shadow maps and distance-field shadows.
+start=$(date +%s%N)
+"$luxel" render scenes/voxel/fence.json --quiet --lighting physical --out out/fence.png
+ms=$(( ($(date +%s%N) - start) / 1000000 ))
+printf '%-14s %-10s %4d.%02d    %s\n' "fence" "480x270" $((ms / 1000)) $((ms % 1000 / 10)) \
+  "out/fence.png (2-degree sun, MSM + SDF blend)"
 # Post-processing: bloom, and half internal resolution with the edge-aware upscaler.
 start=$(date +%s%N)
 "$luxel" render scenes/voxel/terrain.json --quiet --exposure 1.5 --bloom 0.3 \
