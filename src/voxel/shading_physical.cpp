@@ -237,7 +237,8 @@ Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
         const Vec3d ng = toDouble(hit.normal);
         Vec3d n = ng;
         if (slot >= 0 && o.normalMaps) {
-            const Vec3 t = textures->normalAt(slot, hit.u, hit.v, texelArea, o.textureFilter);
+            const Vec3 t =
+                textures->normalAt(slot, hit.u, hit.v, texelArea, o.textureFilter, o.maxAnisotropy);
             Vec3d tu, tv;
             faceTangents(hit.normal, tu, tv);
             n = normalize(tu * double(t.x) + tv * double(t.y) + ng * double(t.z));

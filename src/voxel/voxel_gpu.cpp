@@ -3,10 +3,12 @@
 #include "luxel/voxel/voxel_gpu.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include "gpu/shaders/shared/texture_filter.h"
@@ -18,8 +20,10 @@
 #include "luxel/core/tonemap.h"
 #include "luxel/gpu/context.h"
 #include "luxel/voxel/render_image.h"
+#include "luxel/voxel/shadows/sun_visibility.h"
 #include "luxel/voxel/surface_cast.h"
 #include "voxel/cast_batch.h"
+#include "voxel/shadows/shadow_upload.h"
 
 namespace luxel::voxel {
 
@@ -102,7 +106,51 @@ std::vector<shared::VoxelMaterial> gpuMaterials(const MaterialTable& table) {
 
 constexpr std::uint64_t kMaterialBytes = LUXEL_VOXEL_MATERIALS * sizeof(shared::VoxelMaterial);
 
+// Placeholders bound at 11..14 when no method needs the shadow arrays: the parameters and one
+// word each.
+constexpr std::uint64_t kShadowPlaceholderBytes = sizeof(shared::ShadowParams) + 3 * 4;
+
+// Every field of ShadowSettings: the cache of uploaded shadow arrays is keyed by them.
+static_assert(sizeof(ShadowSettings) == 96, "a new ShadowSettings field: compare it below");
+bool sameSettings(const ShadowSettings& a, const ShadowSettings& b) {
+    return a.method == b.method && a.exactSamples == b.exactSamples && a.mapSize == b.mapSize &&
+           a.momentStorage == b.momentStorage && a.momentFilter == b.momentFilter &&
+           a.filterRadius == b.filterRadius && a.momentBias == b.momentBias &&
+           a.lightBleedReduction == b.lightBleedReduction && a.depthBias == b.depthBias &&
+           a.normalOffset == b.normalOffset && a.sdfMaxSteps == b.sdfMaxSteps &&
+           a.blendNear == b.blendNear && a.blendFar == b.blendFar && a.sdfNear == b.sdfNear &&
+           a.minInBand == b.minInBand;
+}
+
+// What the uploaded shadow arrays were built from.
+struct ShadowKey {
+    const SunVisibility* given = nullptr;  // options.sunVisibility, or null when built here
+    Vec3d direction;
+    double angularRadius = 0.0;
+    ShadowSettings settings;
+    bool matches(const ShadowKey& o) const {
+        return given == o.given && direction.x == o.direction.x && direction.y == o.direction.y &&
+               direction.z == o.direction.z && angularRadius == o.angularRadius &&
+               sameSettings(settings, o.settings);
+    }
+};
+
 }  // namespace
+
+std::uint64_t estimateVoxelShadowGpuMemory(Int3 size, const ShadowSettings& settings) {
+    const std::uint64_t voxels =
+        static_cast<std::uint64_t>(std::max(size.x, 0)) * std::max(size.y, 0) * std::max(size.z, 0);
+    const ShadowMethod m = settings.method;
+    std::uint64_t moments = 4, field = 4, levels = 4;
+    if (m == ShadowMethod::Msm || m == ShadowMethod::Vsm || m == ShadowMethod::Blend) {
+        const std::uint64_t side = static_cast<std::uint64_t>(std::max(settings.mapSize, 1));
+        const bool q = settings.momentStorage == ShadowSettings::MomentStorage::Quantized16;
+        moments = side * side * (q ? 8 : 16);
+    }
+    if (m == ShadowMethod::Sdf || m == ShadowMethod::Blend) field = voxels * 4;
+    if (m == ShadowMethod::FloodFill) levels = (voxels + 3) / 4 * 4;
+    return sizeof(shared::ShadowParams) + moments + field + levels;
+}
 
 std::uint64_t estimateVoxelGpuMemory(Int3 size, int chunkSize, const TextureSet* textures,
                                      int width, int height) {
@@ -114,7 +162,7 @@ std::uint64_t estimateVoxelGpuMemory(Int3 size, int chunkSize, const TextureSet*
            std::max(slots, 1) * sizeof(shared::VoxelTextureInfo) +
            std::max<std::uint64_t>(texelCount(textures), 1) * 16 + 256 * 4 +
            sizeof(shared::VoxelRenderParams) + kMaterialBytes +
-           static_cast<std::uint64_t>(width) * height * 16;
+           static_cast<std::uint64_t>(width) * height * 16 + kShadowPlaceholderBytes;
 }
 
 struct VoxelGpuRenderer::State {
@@ -130,6 +178,85 @@ struct VoxelGpuRenderer::State {
     gpu::Program* program = nullptr;
     gpu::Program* castProgram = nullptr;
     bool distancesCurrent = false;
+    // The world and textures given to create (sun visibility is built from them).
+    const VoxelWorld* sourceWorld = nullptr;
+    const TextureSet* sourceTextures = nullptr;
+    std::uint64_t limit = 0;  // device memory the renderer may use (0: unknown)
+    // Sun visibility arrays at bindings 11..14 (placeholders until a method needs them), and
+    // what they were built from.
+    std::array<std::shared_ptr<gpu::Buffer>, 4> shadow;
+    std::uint64_t shadowBytes = 0;
+    std::optional<ShadowKey> shadowKey;
+
+    template <typename T>
+    Result<std::shared_ptr<gpu::Buffer>> uploaded(const std::vector<T>& data) {
+        auto b = context->createBuffer(data.size() * sizeof(T));
+        if (!b) return b.error();
+        if (Status st = context->upload(**b, bytesOf(data)); !st) return st.error();
+        return *b;
+    }
+
+    Status setShadowArrays(const ShadowUpload& u) {
+        auto p = uploaded(std::vector<shared::ShadowParams>{u.params});
+        if (!p) return p.error();
+        auto m = uploaded(u.moments);
+        if (!m) return m.error();
+        auto f = uploaded(u.field);
+        if (!f) return f.error();
+        auto l = uploaded(u.levels);
+        if (!l) return l.error();
+        shadow = {*p, *m, *f, *l};
+        shadowBytes = sizeof(shared::ShadowParams) + u.moments.size() * 4 + u.field.size() * 4 +
+                      u.levels.size() * 4;
+        return Ok{};
+    }
+
+    // The arrays options' sun visibility needs, built on the CPU as render() does (or taken from
+    // options.sunVisibility) and uploaded, unless the same ones are already there.
+    Status prepareShadows(const ShadeOptions& options) {
+        ShadowKey key;
+        key.given = options.sunVisibility;
+        if (key.given) {
+            key.direction = key.given->sun().direction;
+            key.angularRadius = key.given->sun().angularRadius;
+            key.settings = key.given->settings();
+        } else {
+            key.direction = {options.sunDirection.x, options.sunDirection.y,
+                             options.sunDirection.z};
+            key.angularRadius = options.sunAngularRadius;
+            key.settings = options.shadowSettings;
+        }
+        if (shadowKey && shadowKey->matches(key)) return Ok{};
+        if (key.settings.method == ShadowMethod::Exact) {
+            return Error(
+                "sun visibility 'exact' (render.shadows, --shadows) has no GPU twin: it traces "
+                "the world per light sample; render it on the CPU or use msm, vsm, sdf, blend, "
+                "flood or hard");
+        }
+        if (key.given && key.given->world().size() != size) {
+            return Error("options.sunVisibility was built for another world");
+        }
+        const std::uint64_t needed = estimateVoxelShadowGpuMemory(size, key.settings);
+        if (limit > 0 && bytes + outputBytes + needed > limit) {
+            return Error(std::string("sun visibility '") + shadowMethodName(key.settings.method) +
+                         "' needs " + formatBytes(needed) + " of device memory more, " +
+                         formatBytes(limit) + " in all are available");
+        }
+        std::optional<SunVisibility> built;
+        const SunVisibility* visibility = key.given;
+        if (!visibility) {
+            auto b = SunVisibility::build(*sourceWorld, sourceTextures,
+                                          {key.direction, key.angularRadius}, key.settings);
+            if (!b) return b.error();
+            built.emplace(std::move(*b));
+            visibility = &*built;
+        }
+        auto upload = shadowUploadOf(*visibility);
+        if (!upload) return upload.error();
+        if (Status st = setShadowArrays(*upload); !st) return st;
+        shadowKey = key;
+        return Ok{};
+    }
 
     // Brick masks and distances of the whole world (a fraction of the voxel data: 12 bytes per
     // 64 voxels), re-sent after every edit.
@@ -197,7 +324,7 @@ VoxelGpuRenderer& VoxelGpuRenderer::operator=(VoxelGpuRenderer&&) noexcept = def
 VoxelGpuRenderer::~VoxelGpuRenderer() = default;
 
 std::uint64_t VoxelGpuRenderer::deviceBytes() const {
-    return state_ ? state_->bytes + state_->outputBytes : 0;
+    return state_ ? state_->bytes + state_->shadowBytes + state_->outputBytes : 0;
 }
 
 Result<VoxelGpuRenderer> VoxelGpuRenderer::create(gpu::Context& context, const VoxelWorld& world,
@@ -221,6 +348,9 @@ Result<VoxelGpuRenderer> VoxelGpuRenderer::create(gpu::Context& context, const V
     s.chunkSize = world.chunkSize();
     s.chunks = chunkCounts(size, s.chunkSize);
     s.textureCount = textures ? textures->size() : 0;
+    s.sourceWorld = &world;
+    s.sourceTextures = textures;
+    s.limit = limit;
     auto program =
         context.program("voxel_render", LUXEL_VOXEL_BUFFERS, sizeof(shared::VoxelBandPush));
     if (!program) return program.error();
@@ -272,6 +402,10 @@ Result<VoxelGpuRenderer> VoxelGpuRenderer::create(gpu::Context& context, const V
         *a.buffer = *b;
         s.bytes += a.bytes;
     }
+    // No sun visibility arrays yet: one-word placeholders (ShadowParams for the first).
+    ShadowUpload placeholder;
+    placeholder.moments = {0}, placeholder.field = {0.0f}, placeholder.levels = {0};
+    if (Status st = s.setShadowArrays(placeholder); !st) return st.error();
     for (int cz = 0; cz < s.chunks.z; ++cz) {
         for (int cy = 0; cy < s.chunks.y; ++cy) {
             if (Status st = s.uploadChunkRow(world, 0, s.chunks.x, cy, cz); !st) return st.error();
@@ -304,6 +438,7 @@ Status VoxelGpuRenderer::updateRegion(const VoxelWorld& world, Int3 min, Int3 ma
         }
     }
     if (Status st = s.uploadChunkSolid(world); !st) return st;
+    s.shadowKey.reset();  // the maps saw the old world
     return s.uploadBricks(world);
 }
 
@@ -370,6 +505,17 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
         p.maxReflections = static_cast<std::uint32_t>(
             std::clamp(options.maxReflections, 0, LUXEL_VOXEL_MAX_DEPTH));
     }
+    if (options.lighting == ShadeOptions::Lighting::Physical) {
+        p.flags |= options.normalMaps ? LUXEL_VOXEL_NORMAL_MAPS : 0u;
+        // Hard is the shadow ray of the pass itself (it sees cutouts, as the CPU's); every other
+        // method reads the arrays at 11..14.
+        const ShadowMethod method = options.sunVisibility ? options.sunVisibility->settings().method
+                                                          : options.shadowSettings.method;
+        if (options.shadows && method != ShadowMethod::Hard) {
+            if (Status st = s.prepareShadows(options); !st) return st.error();
+            p.flags |= LUXEL_VOXEL_SUN_VISIBILITY;
+        }
+    }
     if (Status st = s.context->upload(*s.materials, bytesOf(gpuMaterials(options.materials)));
         !st) {
         return st.error();
@@ -393,7 +539,8 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
         d.buffers = {s.params.get(),      s.voxels.get(),     s.chunkSolid.get(),
                      s.textureInfo.get(), s.texels.get(),     s.srgb.get(),
                      s.output.get(),      s.brickMasks.get(), s.brickDistances.get(),
-                     s.materials.get()};
+                     s.materials.get(),   s.params.get(),     s.shadow[0].get(),
+                     s.shadow[1].get(),   s.shadow[2].get(),  s.shadow[3].get()};
         const int rows = std::min(kBandRows, h - row);
         d.setPush(shared::VoxelBandPush{static_cast<std::uint32_t>(row),
                                         static_cast<std::uint32_t>(rows)});

@@ -99,6 +99,7 @@ Image postProcess(const Image& internal, int width, int height, const post::Post
 struct VoxelSurfaceFlags {
     std::string lighting, specular, fresnel;
     bool noRefraction = false;
+    std::string shadows;  // --shadows: render.shadows' method (empty: the scene's)
 };
 void addVoxelSurfaceFlags(CLI::App& app, VoxelSurfaceFlags& flags);
 // Applies them to the scene's shading options; errors name the flag.

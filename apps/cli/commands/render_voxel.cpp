@@ -13,6 +13,7 @@
 #include "luxel/post/voxel_frames.h"
 #include "luxel/voxel/render_image.h"
 #include "luxel/voxel/shading.h"
+#include "luxel/voxel/shadows/sun_visibility.h"
 #include "luxel/voxel/voxel_gpu.h"
 #include "luxel/voxel/voxel_scene.h"
 
@@ -53,6 +54,9 @@ void addVoxelSurfaceFlags(CLI::App& app, VoxelSurfaceFlags& flags) {
     app.add_option("--fresnel", flags.fresnel, "voxel, physical: schlick or exact");
     app.add_flag("--no-refraction", flags.noRefraction,
                  "voxel, physical: transmissive materials render opaque");
+    app.add_option("--shadows", flags.shadows,
+                   "voxel, physical: sun visibility hard, exact, msm, vsm, sdf, blend or flood "
+                   "(the scene's render.shadows settings otherwise; turns shadows on)");
 }
 
 Status applyVoxelSurfaceFlags(const VoxelSurfaceFlags& flags, voxel::ShadeOptions& o) {
@@ -81,6 +85,15 @@ Status applyVoxelSurfaceFlags(const VoxelSurfaceFlags& flags, voxel::ShadeOption
         return Error("--fresnel '" + flags.fresnel + "' is not schlick or exact");
     }
     if (flags.noRefraction) o.refraction = false;
+    if (!flags.shadows.empty()) {
+        voxel::ShadowMethod method;
+        if (!voxel::parseShadowMethod(flags.shadows, method)) {
+            return Error("--shadows '" + flags.shadows +
+                         "' is not hard, exact, msm, vsm, sdf, blend or flood");
+        }
+        o.shadowSettings.method = method;
+        o.shadows = true;
+    }
     return Ok{};
 }
 

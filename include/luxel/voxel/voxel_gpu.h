@@ -19,6 +19,7 @@
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/dda.h"
 #include "luxel/voxel/shading.h"
+#include "luxel/voxel/shadows/sun_visibility.h"
 #include "luxel/voxel/texture_set.h"
 #include "luxel/voxel/voxel_world.h"
 
@@ -30,14 +31,18 @@ struct PassTiming;
 namespace luxel::voxel {
 
 // Device memory for a world of this size and chunk size, its textures, and one output image of
-// width x height.
+// width x height (with placeholders for the sun visibility arrays).
 std::uint64_t estimateVoxelGpuMemory(Int3 size, int chunkSize, const TextureSet* textures,
                                      int width, int height);
+// Device memory of the sun visibility arrays (moment map, distance field, light levels) physical
+// lighting with these settings uploads for a world of this size, on top of the above.
+std::uint64_t estimateVoxelShadowGpuMemory(Int3 size, const ShadowSettings& settings);
 
 class VoxelGpuRenderer {
   public:
     // Uploads the world and textures. Refuses, with the numbers, when the estimate (for a
-    // 1920x1080 image) exceeds `memoryBudget` bytes (0: the device's memory).
+    // 1920x1080 image) exceeds `memoryBudget` bytes (0: the device's memory). The world and
+    // textures must outlive the renderer: physical lighting builds its sun visibility from them.
     static Result<VoxelGpuRenderer> create(gpu::Context& context, const VoxelWorld& world,
                                            const TextureSet* textures = nullptr,
                                            std::uint64_t memoryBudget = 0);
@@ -46,12 +51,16 @@ class VoxelGpuRenderer {
     ~VoxelGpuRenderer();
 
     // Re-uploads the chunks overlapping [min, maxExclusive) (clipped to the world) and every
-    // chunk's solid count, after edits to `world` (the world given to create, same size).
+    // chunk's solid count, after edits to `world` (the world given to create, same size). The
+    // sun visibility arrays are rebuilt at the next render that needs them.
     Status updateRegion(const VoxelWorld& world, Int3 min, Int3 maxExclusive);
 
     // Linear RGB image, as render(world, camera, options, textures). options.materialReflectivity
-    // (a CPU callback) is refused; per-texture reflectivity works. `timings` receives the upload,
-    // dispatch (GPU timestamps) and download times.
+    // (a CPU callback) is refused; per-texture reflectivity works. Physical lighting with a
+    // shadow method other than Hard builds options.shadowSettings' SunVisibility on the CPU (or
+    // takes options.sunVisibility) and uploads its arrays, kept until the sun, its radius or the
+    // settings change; Exact (no GPU twin) is refused. `timings` receives the upload, dispatch
+    // (GPU timestamps) and download times.
     Result<Image> render(const Camera& camera, const ShadeOptions& options,
                          std::vector<gpu::PassTiming>* timings = nullptr);
 

@@ -19,6 +19,10 @@
 //   8 brick empty-space distances: one uint per brick, same order (VoxelWorld::brickDistance)
 //   9 VoxelMaterial[LUXEL_VOXEL_MATERIALS]: the material of texture slot i (0..253), then the
 //     plain blocks' material (physical lighting)
+//   10 unused (the parameters are bound again; keeps the shadow bindings where
+//      sun_visibility.glsl expects them)
+//   11-14 sun visibility (shared/shadow_layout.h): ShadowParams, moments, distance field, light
+//      levels; one-word placeholders unless LUXEL_VOXEL_SUN_VISIBILITY is set
 //
 // voxel_cast (a batch of rays; the CPU twin is castRays in dda.h) binds 0-2 as above, then
 // 3 VoxelCastRay per ray, 4 VoxelCastHit per ray, 5 brick masks, 6 brick distances.
@@ -34,7 +38,7 @@ using uint = std::uint32_t;
 
 #define LUXEL_VOXEL_GROUP_X 8
 #define LUXEL_VOXEL_GROUP_Y 8
-#define LUXEL_VOXEL_BUFFERS 10
+#define LUXEL_VOXEL_BUFFERS 15
 #define LUXEL_VOXEL_CAST_GROUP 64
 
 // VoxelRenderParams.flags
@@ -49,6 +53,11 @@ using uint = std::uint32_t;
 #define LUXEL_VOXEL_PHYSICAL 256u
 #define LUXEL_VOXEL_REFRACTION 512u
 #define LUXEL_VOXEL_FRESNEL_EXACT 1024u
+// Physical: bend the shading normal by the slots' normal maps (ShadeOptions::normalMaps).
+#define LUXEL_VOXEL_NORMAL_MAPS 2048u
+// Physical with shadows: the sun's visibility comes from the shadow bindings 11-14
+// (sun_visibility.glsl); else one hard shadow ray that sees cutouts, as the CPU's Hard method.
+#define LUXEL_VOXEL_SUN_VISIBILITY 4096u
 
 // Material table entries: 254 texture slots and the plain blocks' material (the last).
 #define LUXEL_VOXEL_MATERIALS 255

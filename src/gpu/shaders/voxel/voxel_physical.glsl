@@ -1,8 +1,10 @@
 // Physical lighting on the GPU: the twin of src/voxel/shading_physical.cpp in float, with the
-// same explicit stack of pending rays, depth budget and 1/255 weight threshold. The per-hit terms
-// are the shared kernels (shared/optics.h, shared/voxel_shading.h). Sun visibility is one hard
-// shadow ray; textures are nearest-texel and normal maps are not read (CPU only for now).
-// Included by voxel_shading.glsl after castToSurface, skyColor and textureFactor.
+// same explicit stack of pending rays, ray cones, depth budget and 1/255 weight threshold. The
+// per-hit terms are the shared kernels (shared/optics.h, shared/voxel_shading.h). Sun visibility
+// is sunVisibility (sun_visibility.glsl) for the map and field methods, else one hard shadow ray;
+// textures are filtered over the cone's footprint and normal maps bend the shading normal
+// (texture_sample.glsl). Included by voxel_shading.glsl after castToSurface, skyColor and
+// textureFactor.
 
 struct PathRay {
     vec3 origin;
@@ -11,7 +13,35 @@ struct PathRay {
     int depth;  // reflections and refractions left
     bool inside;  // travelling through the medium of `cell`
     ivec3 cell;
+    float coneWidth;  // RayCone width at `origin` (its spread is params.coneSpread throughout)
+    bool primary;     // the camera's ray: the shadow footprint is the camera distance
 };
+
+// The face's tangent frame, matching castRay's (u, v): x faces use (z, y), y faces (x, z), z faces
+// (x, y), whatever the normal's sign (faceTangents in shading_physical.cpp).
+void faceTangents(ivec3 normal, out vec3 tu, out vec3 tv) {
+    if (normal.x != 0) {
+        tu = vec3(0.0, 0.0, 1.0);
+        tv = vec3(0.0, 1.0, 0.0);
+    } else if (normal.y != 0) {
+        tu = vec3(1.0, 0.0, 0.0);
+        tv = vec3(0.0, 0.0, 1.0);
+    } else {
+        tu = vec3(1.0, 0.0, 0.0);
+        tv = vec3(0.0, 1.0, 0.0);
+    }
+}
+
+// sunVisibility in shading_physical.cpp: 0 facing away, 1 without shadows, else the options'
+// method (footprint: camera distance for primary rays, cone width for secondary ones).
+float physicalSunVisibility(Hit h, vec3 sun, float footprint) {
+    if (dot(vec3(h.normal), sun) <= 0.0) return 0.0;
+    if ((params.flags & LUXEL_VOXEL_SHADOWS) == 0u) return 1.0;
+    if ((params.flags & LUXEL_VOXEL_SUN_VISIBILITY) != 0u) {
+        return sunVisibility(h.point, h.normal, footprint);
+    }
+    return castToSurface(h.point, sun).hit.hit ? 0.0 : 1.0;
+}
 
 // Voxel alpha 1..254 selects slot a - 1; plain blocks use the last entry.
 int materialIndex(uint packed) {
@@ -96,8 +126,9 @@ vec3 shadePhysical(vec3 o, vec3 d) {
     const bool refraction = (params.flags & LUXEL_VOXEL_REFRACTION) != 0u;
     PathRay stack[LUXEL_VOXEL_PATH_STACK];
     int size = 0;
-    LUXEL_PUSH_PATH(PathRay(o, d / len, vec3(1.0), min(int(params.maxReflections),
-                                                       LUXEL_VOXEL_MAX_DEPTH), false, ivec3(0)));
+    LUXEL_PUSH_PATH(PathRay(o, d / len, vec3(1.0),
+                            min(int(params.maxReflections), LUXEL_VOXEL_MAX_DEPTH), false,
+                            ivec3(0), 0.0, true));
     vec3 sum = vec3(0.0);
     while (size > 0) {
         const PathRay r = stack[--size];
@@ -107,9 +138,11 @@ vec3 shadePhysical(vec3 o, vec3 d) {
             const vec3 w =
                 r.weight * voxelTransmittance(vec3(m.absorptionR, m.absorptionG, m.absorptionB),
                                               e.distance);
+            const float exitCone = r.coneWidth + params.coneSpread * e.distance;
             if (e.intoSolid) {
                 // Another solid behind the glass: seen directly.
-                LUXEL_PUSH_PATH(PathRay(e.point, r.direction, w, r.depth, false, ivec3(0)));
+                LUXEL_PUSH_PATH(
+                    PathRay(e.point, r.direction, w, r.depth, false, ivec3(0), exitCone, false));
                 continue;
             }
             if (r.depth - 1 < 0) continue;
@@ -119,11 +152,12 @@ vec3 shadePhysical(vec3 o, vec3 d) {
             const vec3 reflected = normalize(opticsReflect(r.direction, nIn));
             float reflectance = 1.0;
             if (!(k < 0.0)) reflectance = fresnelDielectric(cosI, m.ior, 1.0);
-            LUXEL_PUSH_PATH(PathRay(e.point, reflected, w * reflectance, r.depth - 1, true, e.cell));
+            LUXEL_PUSH_PATH(PathRay(e.point, reflected, w * reflectance, r.depth - 1, true, e.cell,
+                                    exitCone, false));
             if (!(k < 0.0)) {
                 const vec3 refracted = normalize(opticsRefract(r.direction, nIn, m.ior, cosI, k));
                 LUXEL_PUSH_PATH(PathRay(e.point, refracted, w * (1.0 - reflectance), r.depth - 1,
-                                        false, ivec3(0)));
+                                        false, ivec3(0), exitCone, false));
             }
             continue;
         }
@@ -140,33 +174,43 @@ vec3 shadePhysical(vec3 o, vec3 d) {
         const bool own = (m.flags & LUXEL_VOXEL_MATERIAL_OWN) != 0u;
         const bool proceduralFlag = (m.flags & LUXEL_VOXEL_MATERIAL_PROCEDURAL) != 0u;
 
+        // RayCone at the hit; castToSurface restarts past cutouts, so t from the ray's origin.
+        const float t = length(h.point - r.origin);
+        const float width = r.coneWidth + params.coneSpread * t;
+        const float footprint = r.primary ? t : width;
+        const TexelFootprint texelArea = textureFootprint(width, r.direction, h.normal);
+
         vec3 colour = albedo(packed) * vec3(m.albedoR, m.albedoG, m.albedoB);
         const bool procedural =
             textures && (s.slot < 0 ? !own || proceduralFlag : own && proceduralFlag);
-        if (s.slot >= 0) colour = colour * s.texel.rgb;
+        if (s.slot >= 0) colour = colour * sampleTexture(s.slot, h.u, h.v, texelArea).rgb;
         if (procedural) colour = colour * textureFactor(h);
 
+        // Shading normal: the face normal, bent by the slot's normal map.
         const vec3 ng = vec3(h.normal);
+        vec3 sn = ng;
+        if (s.slot >= 0 && (params.flags & LUXEL_VOXEL_NORMAL_MAPS) != 0u) {
+            const vec3 tn = sampleNormal(s.slot, h.u, h.v, texelArea);
+            vec3 tu, tv;
+            faceTangents(h.normal, tu, tv);
+            sn = normalize(tu * tn.x + tv * tn.y + ng * tn.z);
+        }
         const vec3 view = -r.direction;
-        const vec3 n = ng;
+        // Shading normals facing away from the eye fall back to the face normal.
+        const vec3 n = dot(sn, view) > 0.0 ? sn : ng;
         const float cosV = clamp(dot(n, view), 0.0, 1.0);
         const bool transmissive = refraction && m.transmission > 0.0;
         const float kd = (1.0 - m.metallic) * (1.0 - (transmissive ? m.transmission : 0.0));
         const vec3 f0 = mix(vec3(fresnelF0(1.0, m.ior)), colour, m.metallic);
         const float alpha = max(m.roughness * m.roughness, params.alphaMin);
-        float vis = 0.0;
-        if (dot(ng, sun) > 0.0) {
-            vis = 1.0;
-            if ((params.flags & LUXEL_VOXEL_SHADOWS) != 0u && castToSurface(h.point, sun).hit.hit) {
-                vis = 0.0;
-            }
-        }
+        const float vis = physicalSunVisibility(h, sun, footprint);
         const vec3 ambient = skyColor(n) * (LUXEL_OPTICS_PI * params.skyAmbient);
         sum += r.weight * vec3(m.emissionR, m.emissionG, m.emissionB) +
                r.weight * voxelSurfaceLight(colour * kd, f0, alpha, model, n, view, sun, sunE, vis,
                                             ambient);
 
-        const vec3 reflected = opticsReflect(r.direction, n);
+        vec3 reflected = opticsReflect(r.direction, n);
+        if (dot(reflected, ng) <= 0.0) reflected = opticsReflect(r.direction, ng);
         const float fDielectric = fresnelDielectric(cosV, 1.0, m.ior);
         const vec3 fMirror = mix(vec3(fDielectric), fresnelSchlickRgb(colour, cosV), m.metallic);
         const float g = voxelMirrorWeight(m.roughness);
@@ -177,7 +221,7 @@ vec3 shadePhysical(vec3 o, vec3 d) {
         if (r.depth <= 0) continue;
         if (g > 0.0) {
             LUXEL_PUSH_PATH(PathRay(h.point, normalize(reflected), r.weight * (fMirror * g),
-                                    r.depth - 1, false, ivec3(0)));
+                                    r.depth - 1, false, ivec3(0), width, false));
         }
         if (transmissive) {
             const float cosI = -dot(ng, r.direction);
@@ -187,7 +231,7 @@ vec3 shadePhysical(vec3 o, vec3 d) {
             if (k >= 0.0) {
                 LUXEL_PUSH_PATH(PathRay(h.point, normalize(opticsRefract(r.direction, ng, eta, cosI, k)),
                                         r.weight * ((1.0 - fEntry) * m.transmission),
-                                        r.depth - 1, true, h.voxel));
+                                        r.depth - 1, true, h.voxel, width, false));
             }
         }
     }

@@ -16,6 +16,8 @@ layout(std430, set = 0, binding = 7) readonly buffer BrickMasks { uvec2 brickMas
 layout(std430, set = 0, binding = 8) readonly buffer BrickDistances { uint brickDistances[]; };
 layout(std430, set = 0, binding = 9) readonly buffer Materials { VoxelMaterial materials[]; };
 layout(push_constant) uniform Push { VoxelBandPush band; };
+// Bindings 11-14: the sun visibility arrays (shared/shadow_layout.h), declared by the include.
+#include "voxel/sun_visibility.glsl"
 
 #include "voxel/voxel_world_access.glsl"
 #include "voxel/texture_sample.glsl"
