@@ -22,7 +22,7 @@ void readSettings(const Json& s, ShadowSettings& out) {
     checkObject(s, "render.shadows",
                 {"method", "samples", "map_size", "storage", "filter", "filter_radius",
                  "moment_bias", "light_bleed", "depth_bias", "normal_offset", "sdf_steps",
-                 "blend_near", "blend_far", "split", "combine"});
+                 "sdf_distance", "blend_near", "blend_far", "split", "combine"});
     if (const Json* v = find(s, "method")) {
         const std::string m = choice(*v, "render.shadows.method",
                                      {"hard", "exact", "msm", "vsm", "sdf", "blend", "flood"});
@@ -61,6 +61,11 @@ void readSettings(const Json& s, ShadowSettings& out) {
     if (out.blendFar < out.blendNear) {
         fail(find(s, "blend_far") ? "render.shadows.blend_far" : "render.shadows.blend_near",
              "blend_far must not be less than blend_near");
+    }
+    if (const Json* v = find(s, "sdf_distance")) {
+        out.sdfDistance = choice(*v, "render.shadows.sdf_distance", {"cubes", "centres"}) == "cubes"
+                              ? ShadowSettings::SdfDistance::Cubes
+                              : ShadowSettings::SdfDistance::Centres;
     }
     if (const Json* v = find(s, "split")) {
         out.sdfNear = choice(*v, "render.shadows.split", {"sdf-near", "msm-near"}) == "sdf-near";

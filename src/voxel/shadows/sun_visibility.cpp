@@ -161,7 +161,8 @@ float SunVisibility::visibility(const ShadowQuery& query) const {
     auto msm = [&](bool vsm) { return s.moments->visibility(offset, vsm, set); };
     auto sdf = [&] {
         return sdfSunVisibility(*s.field, offset, s.l, std::tan(s.sun.angularRadius),
-                                set.sdfMaxSteps);
+                                set.sdfMaxSteps,
+                                set.sdfDistance == ShadowSettings::SdfDistance::Cubes);
     };
     switch (set.method) {
         case ShadowMethod::Hard:

@@ -54,6 +54,9 @@ struct ShadowSettings {
     double normalOffset = 0.5;
     // SDF soft shadows (Sdf, Blend).
     int sdfMaxSteps = 64;
+    // The distance the estimator reads: Cubes, the exact distance to the voxel cubes (feature
+    // transform, DistanceField::surfaceDistance); Centres, the trilinear centre field (estimate).
+    enum class SdfDistance { Cubes, Centres } sdfDistance = SdfDistance::Cubes;
     // MRMA blend: a = smoothstep(blendNear, blendFar, footprint), footprint = camera distance
     // for primary rays, ray-cone width / voxel for secondary ones (docs §6).
     double blendNear = 48.0;
