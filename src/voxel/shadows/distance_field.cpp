@@ -12,6 +12,8 @@
 #include "luxel/core/parallel.h"
 
 namespace luxel::voxel {
+static_assert(DistanceField::kCap == LUXEL_SDF_FIELD_CAP);
+
 namespace {
 
 // D[q] = min_p (q - p)^2 + f[p] for one line (Felzenszwalb & Huttenlocher 2012, Algorithm 1),
@@ -146,7 +148,10 @@ void DistanceField::compute(const VoxelWorld& world, Int3 inLo, Int3 inHi, Int3 
                         static_cast<float>(std::clamp(s, double(-kCap), double(kCap)));
                     const std::int32_t f = solid[i] ? nearEmpty[i] : nearSolid[i];
                     std::uint32_t packed = gpu::shared::kSdfNoFeature;
-                    if (f >= 0) {
+                    // Only features that can matter under the cap: so a region update (which
+                    // sees the voxels within 2 kCap + 2) names the same ones as a rebuild.
+                    const double d2 = solid[i] ? toEmpty[i] : toSolid[i];
+                    if (f >= 0 && d2 <= (kCap + 1.0) * (kCap + 1.0)) {
                         const int fx = f % box.x, fy = (f / box.x) % box.y,
                                   fz = f / (box.x * box.y);
                         packed = gpu::shared::packSdfFeature(

@@ -31,6 +31,8 @@
 #define LUXEL_SDF_FEATURE_BASE 0x3F800000u
 #define LUXEL_SDF_FEATURE_VALID 0x200000u
 #define LUXEL_SDF_FEATURE_RANGE 63
+// DistanceField::kCap: the clamp of the stored values, and the distance of a cell without feature.
+#define LUXEL_SDF_FIELD_CAP 16.0f
 
 LUXEL_SHARED_BEGIN
 
