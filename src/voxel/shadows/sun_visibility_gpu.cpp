@@ -29,6 +29,7 @@ Result<ShadowUpload> shadowUploadOf(const SunVisibility& v) {
     p.momentBias = momentBiasOf(s);
     p.lightBleed = float(s.lightBleedReduction);
     p.normalOffset = float(s.normalOffset);
+    p.sdfNormalOffset = float(s.sdfNormalOffset);
     p.blendNear = float(s.blendNear), p.blendFar = float(s.blendFar);
     p.method = static_cast<shared::uint>(s.method);
     p.sdfMaxSteps = static_cast<shared::uint>(s.sdfMaxSteps);

@@ -47,7 +47,7 @@ struct ShadowParams {
     float vX, vY, vZ, vMin;                        // map axis v
     float texel, depthTop, depthRange, depthBias;  // texel side; depth = (top - p.l) / range
     float momentBias, lightBleed, normalOffset, blendNear;
-    float blendFar, pad0, pad1, pad2;
+    float blendFar, sdfNormalOffset, pad1, pad2;
     int sizeX, sizeY, sizeZ, mapSize;  // world size (field, levels); map texels a side
     uint method, flags, sdfMaxSteps, pad3;
 };

@@ -209,7 +209,8 @@ float sunVisibility(vec3 point, ivec3 normal, float footprint) {
         float v = shadowMoment(o, method == LUXEL_SHADOW_VSM, valid);
         return valid ? v : 1.0;
     }
-    if (method == LUXEL_SHADOW_SDF) return shadowSdf(o, l, valid);
+    vec3 os = point + n * shadow.sdfNormalOffset;
+    if (method == LUXEL_SHADOW_SDF) return shadowSdf(os, l, valid);
     if (method == LUXEL_SHADOW_FLOOD) {
         ivec3 c = ivec3(floor(point + n * 0.5));
         ivec3 s = shadowWorldSize();
@@ -222,7 +223,7 @@ float sunVisibility(vec3 point, ivec3 normal, float footprint) {
         float a0 = mrmaWeight(footprint, shadow.blendNear, shadow.blendFar, sdfNear, true, true);
         bool sdfValid = true, msmValid = true;
         float vSdf = 1.0, vMsm = 1.0;
-        if (a0 < 1.0) vSdf = shadowSdf(o, l, sdfValid);
+        if (a0 < 1.0) vSdf = shadowSdf(os, l, sdfValid);
         if (a0 > 0.0 || !sdfValid) vMsm = shadowMoment(o, false, msmValid);
         float a = mrmaWeight(footprint, shadow.blendNear, shadow.blendFar, sdfNear, sdfValid,
                              msmValid);
