@@ -1,8 +1,9 @@
 // `luxel shadows SCENE... [--size WxH] [--samples M] [--frames N] [--sun-step DEG] [--methods
-// LIST] [--out-dir DIR] [--markdown]`: sun visibility of the primary hits of each voxel scene by
-// every shadow method against the cone-sampled ground truth (M rays per point): penumbra MAE,
-// whole-image MAE, leak and false-shadow rates, seams in the blend band, flicker over a sun
-// turning by DEG per frame, and CPU time (build + evaluate) per frame.
+// LIST] [--sun-radius DEG] [--blend-band NEAR,FAR] [--out-dir DIR] [--markdown]`: sun visibility of
+// the primary hits of each voxel scene by every shadow method against the cone-sampled ground truth
+// (M rays per point): penumbra MAE, whole-image MAE, leak and false-shadow rates, seams in the
+// blend band, flicker over a sun turning by DEG per frame, and CPU time (build + evaluate) per
+// frame.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -32,6 +33,8 @@ struct ShadowsArgs {
     std::string size = "240x135", methods, outDir;
     int samples = 256, frames = 1;
     double sunStep = 1.0;
+    double sunRadius = -1.0;        // degrees; < 0: the scene's
+    std::vector<double> blendBand;  // near, far; empty: the scene's
     bool markdown = false;
 };
 
@@ -163,10 +166,15 @@ int runScene(const ShadowsArgs& args, const std::string& path) {
                                  "; luxel shadows works on voxel scenes"));
     }
     const voxel::VoxelScene& scene = file->voxel();
-    const ShadowSettings base = scene.shading.shadowSettings;
+    ShadowSettings base = scene.shading.shadowSettings;
+    if (args.blendBand.size() == 2) {
+        base.blendNear = args.blendBand[0];
+        base.blendFar = args.blendBand[1];
+    }
     auto variants = chooseVariants(base, args.methods);
     if (!variants) return reportError(variants.error());
-    const double radius = scene.shading.sunAngularRadius;
+    const double radius = args.sunRadius >= 0.0 ? args.sunRadius * std::numbers::pi / 180.0
+                                                : scene.shading.sunAngularRadius;
     const int w = scene.camera.width(), h = scene.camera.height();
     const Primary primary = primaryHits(scene);
 
@@ -281,6 +289,14 @@ Runner addShadowsCommand(CLI::App& app) {
     app.add_option("--methods", args->methods,
                    "comma-separated subset of hard, msm, msm16, vsm, sdf, sdf-centres, blend, "
                    "blend-msm-near, blend-min, flood");
+    app.add_option("--sun-radius", args->sunRadius,
+                   "sun angular radius in degrees (default: the scene's)")
+        ->check(CLI::Range(0.0, 20.0));
+    app.add_option("--blend-band", args->blendBand,
+                   "NEAR,FAR: the blend band (default: the scene's)")
+        ->delimiter(',')
+        ->expected(2)
+        ->check(CLI::Range(0.0, 1e6));
     app.add_option("--out-dir", args->outDir, "write each method's V image (PNG) here");
     app.add_flag("--markdown", args->markdown, "print the tables as Markdown");
     return [args] { return runShadows(*args); };
