@@ -110,18 +110,6 @@ constexpr std::uint64_t kMaterialBytes = LUXEL_VOXEL_MATERIALS * sizeof(shared::
 // word each.
 constexpr std::uint64_t kShadowPlaceholderBytes = sizeof(shared::ShadowParams) + 3 * 4;
 
-// Every field of ShadowSettings: the cache of uploaded shadow arrays is keyed by them.
-static_assert(sizeof(ShadowSettings) == 96, "a new ShadowSettings field: compare it below");
-bool sameSettings(const ShadowSettings& a, const ShadowSettings& b) {
-    return a.method == b.method && a.exactSamples == b.exactSamples && a.mapSize == b.mapSize &&
-           a.momentStorage == b.momentStorage && a.momentFilter == b.momentFilter &&
-           a.filterRadius == b.filterRadius && a.momentBias == b.momentBias &&
-           a.lightBleedReduction == b.lightBleedReduction && a.depthBias == b.depthBias &&
-           a.normalOffset == b.normalOffset && a.sdfMaxSteps == b.sdfMaxSteps &&
-           a.blendNear == b.blendNear && a.blendFar == b.blendFar && a.sdfNear == b.sdfNear &&
-           a.minInBand == b.minInBand;
-}
-
 // What the uploaded shadow arrays were built from.
 struct ShadowKey {
     const SunVisibility* given = nullptr;  // options.sunVisibility, or null when built here
@@ -131,7 +119,7 @@ struct ShadowKey {
     bool matches(const ShadowKey& o) const {
         return given == o.given && direction.x == o.direction.x && direction.y == o.direction.y &&
                direction.z == o.direction.z && angularRadius == o.angularRadius &&
-               sameSettings(settings, o.settings);
+               settings == o.settings;
     }
 };
 

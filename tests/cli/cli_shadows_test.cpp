@@ -33,8 +33,8 @@ TEST_F(CliShadows, PrintsAFiniteRowPerMethodAndWritesImages) {
                                  "--sun-step 2 --out-dir " +
                                  path("out"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const char* methods[] = {"hard",           "msm",       "msm16", "vsm", "sdf", "blend",
-                             "blend-msm-near", "blend-min", "flood"};
+    const char* methods[] = {"hard",        "msm",   "msm16",          "vsm",       "sdf",
+                             "sdf-centres", "blend", "blend-msm-near", "blend-min", "flood"};
     std::istringstream lines(r.output);
     std::string line;
     int rows = 0;
@@ -49,13 +49,17 @@ TEST_F(CliShadows, PrintsAFiniteRowPerMethodAndWritesImages) {
             int count = 0;
             while (fields >> v) {
                 EXPECT_TRUE(std::isfinite(v)) << line;
-                EXPECT_GE(v, count < 6 ? -1.0 : 0.0) << line;  // flicker may be negative
+                // The penumbra bias (column 1) and flicker (column 6) may be negative.
+                EXPECT_GE(v, count == 1 || count == 6 ? -1.0 : 0.0) << line;
+                if (count == 1) {
+                    EXPECT_LE(v, 1.0) << line;
+                }
                 ++count;
             }
-            EXPECT_EQ(count, 7) << line;
+            EXPECT_EQ(count, 8) << line;
         }
     }
-    EXPECT_EQ(rows, 9) << r.output;
+    EXPECT_EQ(rows, 10) << r.output;
     EXPECT_NE(r.output.find("exact (truth)"), std::string::npos);
     EXPECT_TRUE(std::filesystem::exists(path("out") + "/tiny-exact.png"));
     EXPECT_TRUE(std::filesystem::exists(path("out") + "/tiny-blend.png"));
@@ -68,6 +72,19 @@ TEST_F(CliShadows, MarkdownAndMethodSubset) {
     EXPECT_NE(r.output.find("| sdf "), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("| msm "), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("| vsm "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("| pen. bias |"), std::string::npos) << r.output;
+}
+
+TEST_F(CliShadows, SunRadiusAndBlendBandOverrideTheScene) {
+    const RunResult r = runLuxel("shadows " + tinyScene() +
+                                 " --samples 4 --size 16x9 --methods blend --sun-radius 1 "
+                                 "--blend-band 0,20");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("blend band 0..20"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("sun radius 1.00 deg"), std::string::npos) << r.output;
+    const RunResult bad = runLuxel("shadows " + tinyScene() + " --size 16x9 --sun-radius 30");
+    EXPECT_NE(bad.exitCode, 0);
+    EXPECT_NE(bad.output.find("sun-radius"), std::string::npos) << bad.output;
 }
 
 TEST_F(CliShadows, RefusesBadInput) {

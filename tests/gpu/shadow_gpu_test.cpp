@@ -57,17 +57,19 @@ TEST(GpuShadowParity, EveryMethodMatchesTheCpu) {
     struct Case {
         ShadowMethod method;
         bool quantized;
+        bool centres = false;  // the SDF reads the centre field instead of the cube distance
     };
     for (const Case c : {Case{ShadowMethod::Hard, false}, Case{ShadowMethod::Msm, false},
                          Case{ShadowMethod::Msm, true}, Case{ShadowMethod::Vsm, false},
-                         Case{ShadowMethod::Sdf, false}, Case{ShadowMethod::Blend, false},
-                         Case{ShadowMethod::FloodFill, false}}) {
+                         Case{ShadowMethod::Sdf, false}, Case{ShadowMethod::Sdf, false, true},
+                         Case{ShadowMethod::Blend, false}, Case{ShadowMethod::FloodFill, false}}) {
         ShadowSettings s;
         s.method = c.method;
         s.mapSize = 96;
         s.blendNear = 30;
         s.blendFar = 60;
         if (c.quantized) s.momentStorage = ShadowSettings::MomentStorage::Quantized16;
+        if (c.centres) s.sdfDistance = ShadowSettings::SdfDistance::Centres;
         const SunLight sun{{0.4, 1.0, 0.3}, 3.0 * std::numbers::pi / 180.0};
         const SunVisibility cpu = std::move(SunVisibility::build(world, nullptr, sun, s).value());
         auto gpu = SunVisibilityGpu::create(*context, cpu);
@@ -82,7 +84,8 @@ TEST(GpuShadowParity, EveryMethodMatchesTheCpu) {
             worst = std::max(worst, d);
             far += d > 0.05;
         }
-        SCOPED_TRACE(std::string(shadowMethodName(c.method)) + (c.quantized ? " 16-bit" : ""));
+        SCOPED_TRACE(std::string(shadowMethodName(c.method)) + (c.quantized ? " 16-bit" : "") +
+                     (c.centres ? " centres" : ""));
         // Float on the GPU, double positions on the CPU: equal up to rounding, except a few
         // points where a march's step lands on the other side of a cell boundary.
         EXPECT_LT(sum / queries.size(), 2e-3);

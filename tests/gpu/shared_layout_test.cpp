@@ -237,21 +237,24 @@ TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
     // The sun visibility parameters where sun_visibility.glsl puts them in the render pass.
     static_assert(LUXEL_VOXEL_BUFFERS == 15);
     using S = ShadowParams;
-    expectBuffer(
-        "voxel_render", 11,
-        {sizeof(S),
-         {LUXEL_MEMBER(S, lightX),       LUXEL_MEMBER(S, lightY),     LUXEL_MEMBER(S, lightZ),
-          LUXEL_MEMBER(S, tanRadius),    LUXEL_MEMBER(S, uX),         LUXEL_MEMBER(S, uY),
-          LUXEL_MEMBER(S, uZ),           LUXEL_MEMBER(S, uMin),       LUXEL_MEMBER(S, vX),
-          LUXEL_MEMBER(S, vY),           LUXEL_MEMBER(S, vZ),         LUXEL_MEMBER(S, vMin),
-          LUXEL_MEMBER(S, texel),        LUXEL_MEMBER(S, depthTop),   LUXEL_MEMBER(S, depthRange),
-          LUXEL_MEMBER(S, depthBias),    LUXEL_MEMBER(S, momentBias), LUXEL_MEMBER(S, lightBleed),
-          LUXEL_MEMBER(S, normalOffset), LUXEL_MEMBER(S, blendNear),  LUXEL_MEMBER(S, blendFar),
-          LUXEL_MEMBER(S, pad0),         LUXEL_MEMBER(S, pad1),       LUXEL_MEMBER(S, pad2),
-          LUXEL_MEMBER(S, sizeX),        LUXEL_MEMBER(S, sizeY),      LUXEL_MEMBER(S, sizeZ),
-          LUXEL_MEMBER(S, mapSize),      LUXEL_MEMBER(S, method),     LUXEL_MEMBER(S, flags),
-          LUXEL_MEMBER(S, sdfMaxSteps),  LUXEL_MEMBER(S, pad3)}},
-        /* element= */ false);
+    expectBuffer("voxel_render", 11,
+                 {sizeof(S), {LUXEL_MEMBER(S, lightX),       LUXEL_MEMBER(S, lightY),
+                              LUXEL_MEMBER(S, lightZ),       LUXEL_MEMBER(S, tanRadius),
+                              LUXEL_MEMBER(S, uX),           LUXEL_MEMBER(S, uY),
+                              LUXEL_MEMBER(S, uZ),           LUXEL_MEMBER(S, uMin),
+                              LUXEL_MEMBER(S, vX),           LUXEL_MEMBER(S, vY),
+                              LUXEL_MEMBER(S, vZ),           LUXEL_MEMBER(S, vMin),
+                              LUXEL_MEMBER(S, texel),        LUXEL_MEMBER(S, depthTop),
+                              LUXEL_MEMBER(S, depthRange),   LUXEL_MEMBER(S, depthBias),
+                              LUXEL_MEMBER(S, momentBias),   LUXEL_MEMBER(S, lightBleed),
+                              LUXEL_MEMBER(S, normalOffset), LUXEL_MEMBER(S, blendNear),
+                              LUXEL_MEMBER(S, blendFar),     LUXEL_MEMBER(S, sdfNormalOffset),
+                              LUXEL_MEMBER(S, pad1),         LUXEL_MEMBER(S, pad2),
+                              LUXEL_MEMBER(S, sizeX),        LUXEL_MEMBER(S, sizeY),
+                              LUXEL_MEMBER(S, sizeZ),        LUXEL_MEMBER(S, mapSize),
+                              LUXEL_MEMBER(S, method),       LUXEL_MEMBER(S, flags),
+                              LUXEL_MEMBER(S, sdfMaxSteps),  LUXEL_MEMBER(S, pad3)}},
+                 /* element= */ false);
     expectPushConstants("voxel_render", {sizeof(VoxelBandPush),
                                          {LUXEL_MEMBER(VoxelBandPush, rowOffset),
                                           LUXEL_MEMBER(VoxelBandPush, rows)}});

@@ -45,7 +45,7 @@ double sdfSafeStep(const DistanceField& field, Vec3d p, Vec3d d) {
 }
 
 SdfShadowResult sdfSunVisibility(const DistanceField& field, Vec3d origin, Vec3d l,
-                                 double tanRadius, int maxSteps) {
+                                 double tanRadius, int maxSteps, bool cubes) {
     SdfShadowResult r;
     const double tMax = exitT(field.size(), origin, l);
     const float w = static_cast<float>(std::max(tanRadius, 1e-6));
@@ -56,8 +56,9 @@ SdfShadowResult sdfSunVisibility(const DistanceField& field, Vec3d origin, Vec3d
             break;
         }
         const Vec3d p = origin + l * double(m.t);
-        sh::sdfShadowStep(m, static_cast<float>(field.estimate(p)),
-                          static_cast<float>(sdfSafeStep(field, p, l)), w);
+        const double h = cubes ? field.surfaceDistance(p) : field.estimate(p);
+        sh::sdfShadowStep(m, static_cast<float>(h), static_cast<float>(sdfSafeStep(field, p, l)),
+                          w);
         if (m.res <= LUXEL_SDF_RES_DONE) {
             r.valid = true;  // fully shadowed, whatever lies further on
             break;

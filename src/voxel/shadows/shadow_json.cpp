@@ -19,10 +19,11 @@ std::string choice(const Json& v, const std::string& path, std::initializer_list
 }
 
 void readSettings(const Json& s, ShadowSettings& out) {
-    checkObject(s, "render.shadows",
-                {"method", "samples", "map_size", "storage", "filter", "filter_radius",
-                 "moment_bias", "light_bleed", "depth_bias", "normal_offset", "sdf_steps",
-                 "blend_near", "blend_far", "split", "combine"});
+    checkObject(
+        s, "render.shadows",
+        {"method", "samples", "map_size", "storage", "filter", "filter_radius", "moment_bias",
+         "light_bleed", "depth_bias", "normal_offset", "sdf_steps", "sdf_normal_offset",
+         "sdf_distance", "blend_near", "blend_far", "split", "combine"});
     if (const Json* v = find(s, "method")) {
         const std::string m = choice(*v, "render.shadows.method",
                                      {"hard", "exact", "msm", "vsm", "sdf", "blend", "flood"});
@@ -56,11 +57,17 @@ void readSettings(const Json& s, ShadowSettings& out) {
     number("light_bleed", out.lightBleedReduction, 0, 0.99);
     number("depth_bias", out.depthBias, 0, 16);
     number("normal_offset", out.normalOffset, 0, 2);
+    number("sdf_normal_offset", out.sdfNormalOffset, 0, 2);
     number("blend_near", out.blendNear, 0, 1e6);
     number("blend_far", out.blendFar, 0, 1e6);
     if (out.blendFar < out.blendNear) {
         fail(find(s, "blend_far") ? "render.shadows.blend_far" : "render.shadows.blend_near",
              "blend_far must not be less than blend_near");
+    }
+    if (const Json* v = find(s, "sdf_distance")) {
+        out.sdfDistance = choice(*v, "render.shadows.sdf_distance", {"cubes", "centres"}) == "cubes"
+                              ? ShadowSettings::SdfDistance::Cubes
+                              : ShadowSettings::SdfDistance::Centres;
     }
     if (const Json* v = find(s, "split")) {
         out.sdfNear = choice(*v, "render.shadows.split", {"sdf-near", "msm-near"}) == "sdf-near";

@@ -21,7 +21,7 @@ ShadowErrors compareVisibility(std::span<const float> estimate, std::span<const 
     LUXEL_CHECK(mask.empty() || mask.size() == truth.size());
     ShadowErrors e;
     std::vector<float> errors;
-    double sum = 0, sumSq = 0, penumbra = 0;
+    double sum = 0, sumSq = 0, penumbra = 0, signedPenumbra = 0;
     std::int64_t leaks = 0, falseShadows = 0;
     for (std::size_t i = 0; i < truth.size(); ++i) {
         if (!counts(mask, i)) continue;
@@ -32,6 +32,7 @@ ShadowErrors compareVisibility(std::span<const float> estimate, std::span<const 
         sumSq += d * d;
         if (g > kPenumbraLow && g < kPenumbraHigh) {
             penumbra += d;
+            signedPenumbra += double(v) - g;
             ++e.penumbraPixels;
         }
         leaks += g < 0.1f && v > 0.5f;
@@ -43,6 +44,7 @@ ShadowErrors compareVisibility(std::span<const float> estimate, std::span<const 
     e.maeAll = sum / n;
     e.rmse = std::sqrt(sumSq / n);
     e.maePenumbra = e.penumbraPixels > 0 ? penumbra / double(e.penumbraPixels) : 0.0;
+    e.biasPenumbra = e.penumbraPixels > 0 ? signedPenumbra / double(e.penumbraPixels) : 0.0;
     e.leakRate = double(leaks) / n;
     e.falseShadowRate = double(falseShadows) / n;
     const std::size_t k = std::min(errors.size() - 1, static_cast<std::size_t>(0.99 * n));

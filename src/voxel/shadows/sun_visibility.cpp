@@ -160,8 +160,9 @@ float SunVisibility::visibility(const ShadowQuery& query) const {
     const Vec3d offset = query.point + n * set.normalOffset;
     auto msm = [&](bool vsm) { return s.moments->visibility(offset, vsm, set); };
     auto sdf = [&] {
-        return sdfSunVisibility(*s.field, offset, s.l, std::tan(s.sun.angularRadius),
-                                set.sdfMaxSteps);
+        return sdfSunVisibility(*s.field, query.point + n * set.sdfNormalOffset, s.l,
+                                std::tan(s.sun.angularRadius), set.sdfMaxSteps,
+                                set.sdfDistance == ShadowSettings::SdfDistance::Cubes);
     };
     switch (set.method) {
         case ShadowMethod::Hard:

@@ -1,6 +1,7 @@
 // SunVisibilityGpu: upload of a SunVisibility's arrays and the batch visibility pass.
 #include "luxel/voxel/shadows/sun_visibility_gpu.h"
 
+#include <bit>
 #include <cmath>
 
 #include "luxel/gpu/context.h"
@@ -28,11 +29,13 @@ Result<ShadowUpload> shadowUploadOf(const SunVisibility& v) {
     p.momentBias = momentBiasOf(s);
     p.lightBleed = float(s.lightBleedReduction);
     p.normalOffset = float(s.normalOffset);
+    p.sdfNormalOffset = float(s.sdfNormalOffset);
     p.blendNear = float(s.blendNear), p.blendFar = float(s.blendFar);
     p.method = static_cast<shared::uint>(s.method);
     p.sdfMaxSteps = static_cast<shared::uint>(s.sdfMaxSteps);
-    p.flags =
-        (s.sdfNear ? LUXEL_SHADOW_SDF_NEAR : 0u) | (s.minInBand ? LUXEL_SHADOW_MIN_IN_BAND : 0u);
+    p.flags = (s.sdfNear ? LUXEL_SHADOW_SDF_NEAR : 0u) |
+              (s.minInBand ? LUXEL_SHADOW_MIN_IN_BAND : 0u) |
+              (s.sdfDistance == ShadowSettings::SdfDistance::Cubes ? LUXEL_SHADOW_SDF_CUBES : 0u);
     p.mapSize = 1;
     if (const MomentShadowMap* m = v.momentMap()) {
         const LightFrame& f = m->frame();
@@ -43,10 +46,15 @@ Result<ShadowUpload> shadowUploadOf(const SunVisibility& v) {
         p.flags |= m->quantized() ? LUXEL_SHADOW_QUANTIZED : 0u;
         u.moments = m->words();
     }
+    // Values, then the feature words as float bits (shadow_layout.h).
+    auto fieldWords = [&](const DistanceField& d) {
+        u.field = d.values();
+        for (std::uint32_t w : d.features()) u.field.push_back(std::bit_cast<float>(w));
+    };
     if (const DistanceField* d = v.distanceField()) {
-        u.field = d->values();
+        fieldWords(*d);
     } else if (s.method == ShadowMethod::Hard) {
-        u.field = DistanceField::build(v.world()).values();
+        fieldWords(DistanceField::build(v.world()));
     }
     if (const LightLevels* lv = v.lightLevels()) {
         const std::vector<std::uint8_t>& b = lv->levels();

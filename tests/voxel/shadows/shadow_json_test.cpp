@@ -22,7 +22,8 @@ TEST(ShadowJson, ReadsEveryField) {
     auto scene = loadWithRender("all.json", R"({"shadows": {"method": "blend", "samples": 64,
         "map_size": 256, "storage": "16bit", "filter": "box", "filter_radius": 3,
         "moment_bias": 0.0001, "light_bleed": 0.2, "depth_bias": 0.1, "normal_offset": 0.3,
-        "sdf_steps": 32, "blend_near": 10, "blend_far": 20, "split": "msm-near",
+        "sdf_normal_offset": 0.07,
+        "sdf_steps": 32, "sdf_distance": "centres", "blend_near": 10, "blend_far": 20, "split": "msm-near",
         "combine": "min"}, "sun_radius": 2})");
     ASSERT_TRUE(scene.ok()) << scene.error().message();
     const ShadowSettings& s = scene->shading.shadowSettings;
@@ -37,7 +38,9 @@ TEST(ShadowJson, ReadsEveryField) {
     EXPECT_EQ(s.lightBleedReduction, 0.2);
     EXPECT_EQ(s.depthBias, 0.1);
     EXPECT_EQ(s.normalOffset, 0.3);
+    EXPECT_EQ(s.sdfNormalOffset, 0.07);
     EXPECT_EQ(s.sdfMaxSteps, 32);
+    EXPECT_EQ(s.sdfDistance, ShadowSettings::SdfDistance::Centres);
     EXPECT_EQ(s.blendNear, 10.0);
     EXPECT_EQ(s.blendFar, 20.0);
     EXPECT_FALSE(s.sdfNear);
@@ -66,6 +69,7 @@ TEST(ShadowJson, BadValuesNameTheField) {
         {R"({"shadows": {"blend_near": 30, "blend_far": 20}})", "render.shadows.blend_far"},
         {R"({"shadows": {"split": "left"}})", "render.shadows.split"},
         {R"({"shadows": {"combine": "max"}})", "render.shadows.combine"},
+        {R"({"shadows": {"sdf_distance": "edges"}})", "render.shadows.sdf_distance"},
         {R"({"shadows": {"softness": 1}})", "unknown field 'softness'"},
         {R"({"sun_radius": 45})", "render.sun_radius"},
     };

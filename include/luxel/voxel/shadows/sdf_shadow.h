@@ -23,7 +23,8 @@ struct SdfShadowResult {
 double sdfSafeStep(const DistanceField& field, Vec3d p, Vec3d d);
 
 // V of the light seen from `origin` (already offset off its face) towards unit `l`.
+// cubes: read DistanceField::surfaceDistance, else the trilinear estimate.
 SdfShadowResult sdfSunVisibility(const DistanceField& field, Vec3d origin, Vec3d l,
-                                 double tanRadius, int maxSteps);
+                                 double tanRadius, int maxSteps, bool cubes = true);
 
 }  // namespace luxel::voxel

@@ -13,8 +13,9 @@
 namespace luxel::voxel {
 
 struct ShadowErrors {
-    double maeAll = 0;       // mean |V - V_gt|
-    double maePenumbra = 0;  // the same over 0.02 < V_gt < 0.98
+    double maeAll = 0;        // mean |V - V_gt|
+    double maePenumbra = 0;   // the same over 0.02 < V_gt < 0.98
+    double biasPenumbra = 0;  // mean V - V_gt there: > 0 too light, < 0 too dark
     double rmse = 0;
     double p99 = 0;              // 99th percentile of |V - V_gt|
     double leakRate = 0;         // fraction with V_gt < 0.1 and V > 0.5

@@ -49,17 +49,25 @@ struct ShadowSettings {
     double momentBias = 0.0;           // 0: the storage's documented default
     double lightBleedReduction = 0.0;  // rho in linstep(rho, 1, V); 0 = off
     double depthBias = 0.0;            // voxels, subtracted from the receiver depth
-    // Voxels along the face normal that MSM, VSM and SDF receivers are moved off their face
-    // (normal-offset shadows: no self-shadowing without a large depth bias).
-    double normalOffset = 0.5;
+    // Voxels along the face normal that MSM and VSM receivers are moved off their face
+    // (normal-offset shadows: no self-shadowing without a large depth bias). Every voxel of
+    // offset moves a shadow edge by 1 / tan(sun elevation) voxels, so it is kept small.
+    double normalOffset = 0.05;
     // SDF soft shadows (Sdf, Blend).
     int sdfMaxSteps = 64;
+    // The same for SDF receivers: the exact cube distance needs only to leave the face.
+    double sdfNormalOffset = 0.02;
+    // The distance the estimator reads: Cubes, the exact distance to the voxel cubes (feature
+    // transform, DistanceField::surfaceDistance); Centres, the trilinear centre field (estimate).
+    enum class SdfDistance { Cubes, Centres } sdfDistance = SdfDistance::Cubes;
     // MRMA blend: a = smoothstep(blendNear, blendFar, footprint), footprint = camera distance
     // for primary rays, ray-cone width / voxel for secondary ones (docs §6).
     double blendNear = 48.0;
     double blendFar = 64.0;
     bool sdfNear = true;     // SDF near the camera and MSM far (false: the opposite split)
     bool minInBand = false;  // inside the band use min(V_msm, V_sdf) instead of the lerp
+
+    bool operator==(const ShadowSettings&) const = default;
 };
 
 // What the renderer asks: a surface point on a voxel face, its face normal, and the footprint

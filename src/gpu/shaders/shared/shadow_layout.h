@@ -7,7 +7,9 @@
 //   params   ShadowParams
 //   moments  uint per word: fp32 moments 4 words per texel (float bits), 16-bit optimized moments
 //            2 words per texel (q0 | q1 << 16, q2 | q3 << 16); texels row by row, mapSize a side
-//   field    float per voxel: the signed distance field (DistanceField::values), x fastest
+//   field    float per voxel: the signed distance field (DistanceField::values), x fastest, then
+//            as many words of feature offsets (DistanceField::features, soft_shadow.h's
+//            packSdfFeature: normal floats in [1, 2) read by floatBitsToUint)
 //   levels   uint per 4 voxels: flood-fill light levels, voxel i in byte (i & 3) of word i >> 2
 // An array a method does not use holds one dummy word.
 //
@@ -35,6 +37,7 @@ using uint = std::uint32_t;
 #define LUXEL_SHADOW_QUANTIZED 1u    // moments are 16-bit optimized
 #define LUXEL_SHADOW_SDF_NEAR 2u     // the blend uses the SDF near the camera
 #define LUXEL_SHADOW_MIN_IN_BAND 4u  // min(V_msm, V_sdf) inside the band
+#define LUXEL_SHADOW_SDF_CUBES 8u    // the SDF estimator reads the exact cube distance
 
 #define LUXEL_SHADOW_GROUP 64
 
@@ -44,7 +47,7 @@ struct ShadowParams {
     float vX, vY, vZ, vMin;                        // map axis v
     float texel, depthTop, depthRange, depthBias;  // texel side; depth = (top - p.l) / range
     float momentBias, lightBleed, normalOffset, blendNear;
-    float blendFar, pad0, pad1, pad2;
+    float blendFar, sdfNormalOffset, pad1, pad2;
     int sizeX, sizeY, sizeZ, mapSize;  // world size (field, levels); map texels a side
     uint method, flags, sdfMaxSteps, pad3;
 };

@@ -24,7 +24,57 @@
 // res below this is fully shadowed (-1 within rounding): the march may stop.
 #define LUXEL_SDF_RES_DONE (-0.999f)
 
+// The distance field's feature words (DistanceField::features): the offset from a cell to its
+// nearest voxel of the other kind (solid for empty cells, empty for solid ones), 7 bits a
+// component (offset + 64), bit 21 set when present (within 63 cells), over the exponent bits of
+// 1.0f, so the word read from the float field buffer is a normal float in [1, 2).
+#define LUXEL_SDF_FEATURE_BASE 0x3F800000u
+#define LUXEL_SDF_FEATURE_VALID 0x200000u
+#define LUXEL_SDF_FEATURE_RANGE 63
+// DistanceField::kCap: the clamp of the stored values, and the distance of a cell without feature.
+#define LUXEL_SDF_FIELD_CAP 16.0f
+
 LUXEL_SHARED_BEGIN
+
+#ifdef __cplusplus
+inline constexpr uint kSdfNoFeature = LUXEL_SDF_FEATURE_BASE;
+#endif
+
+LUXEL_FUNC uint packSdfFeature(ivec3 o) {
+    if (abs(o.x) > LUXEL_SDF_FEATURE_RANGE || abs(o.y) > LUXEL_SDF_FEATURE_RANGE ||
+        abs(o.z) > LUXEL_SDF_FEATURE_RANGE) {
+        return LUXEL_SDF_FEATURE_BASE;
+    }
+    return LUXEL_SDF_FEATURE_BASE | LUXEL_SDF_FEATURE_VALID | uint(o.x + 64) |
+           (uint(o.y + 64) << 7u) | (uint(o.z + 64) << 14u);
+}
+
+LUXEL_FUNC bool sdfFeatureValid(uint w) {
+    return (w & LUXEL_SDF_FEATURE_VALID) != 0u;
+}
+
+LUXEL_FUNC ivec3 unpackSdfFeature(uint w) {
+    return ivec3(int(w & 127u) - 64, int((w >> 7u) & 127u) - 64, int((w >> 14u) & 127u) - 64);
+}
+
+// Euclidean distance from p to the unit cube [c, c + 1].
+LUXEL_FUNC float cubeDistance(vec3 p, ivec3 c) {
+    float dx = max(max(float(c.x) - p.x, p.x - float(c.x + 1)), 0.0f);
+    float dy = max(max(float(c.y) - p.y, p.y - float(c.y + 1)), 0.0f);
+    float dz = max(max(float(c.z) - p.z, p.z - float(c.z + 1)), 0.0f);
+    return sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+// One corner cell's candidate for the distance from p to the nearest cube of the other kind than
+// p's cell (inside: p lies in a solid cell): the corner's own cube when it is of the other kind,
+// else the cube of its nearest feature (`cap` when it has none within range).
+LUXEL_FUNC float sdfCornerCandidate(vec3 p, ivec3 c, float value, uint feature, bool inside,
+                                    float cap) {
+    bool cornerSolid = value <= 0.0f;
+    if (cornerSolid != inside) return cubeDistance(p, c);
+    if (!sdfFeatureValid(feature)) return cap;
+    return cubeDistance(p, c + unpackSdfFeature(feature));
+}
 
 // State of one march from a receiver towards the light.
 struct SdfShadowMarch {

@@ -43,6 +43,36 @@ float shadowFieldCell(ivec3 c) {
     return shadowField[(c.z * s.y + c.y) * s.x + c.x];
 }
 
+// DistanceField::cornerValue and cornerFeature: outside the world empty, no feature.
+bool shadowOutside(ivec3 c) {
+    return any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, shadowWorldSize()));
+}
+
+float shadowCornerValue(ivec3 c) {
+    if (shadowOutside(c)) return LUXEL_SDF_FIELD_CAP;
+    ivec3 s = shadowWorldSize();
+    return shadowField[(c.z * s.y + c.y) * s.x + c.x];
+}
+
+uint shadowCornerFeature(ivec3 c) {
+    if (shadowOutside(c)) return LUXEL_SDF_FEATURE_BASE;
+    ivec3 s = shadowWorldSize();
+    return floatBitsToUint(shadowField[s.x * s.y * s.z + (c.z * s.y + c.y) * s.x + c.x]);
+}
+
+// DistanceField::surfaceDistance: the nearest cube the 8 cells around p name.
+float shadowSurfaceDistance(vec3 p) {
+    ivec3 c0 = ivec3(floor(p - 0.5));
+    bool inside = shadowCornerValue(ivec3(floor(p))) <= 0.0;
+    float best = LUXEL_SDF_FIELD_CAP;
+    for (int k = 0; k < 8; ++k) {
+        ivec3 c = c0 + ivec3(k & 1, (k >> 1) & 1, k >> 2);
+        best = min(best, sdfCornerCandidate(p, c, shadowCornerValue(c), shadowCornerFeature(c),
+                                            inside, LUXEL_SDF_FIELD_CAP));
+    }
+    return inside ? -best : best;
+}
+
 // DistanceField::conservative.
 float shadowFieldConservative(vec3 p) {
     ivec3 c = clamp(ivec3(floor(p)), ivec3(0), shadowWorldSize() - 1);
@@ -91,6 +121,7 @@ float shadowSdf(vec3 origin, vec3 l, out bool valid) {
     tMax = max(tMax, 0.0);
     float w = max(shadow.tanRadius, 1.0e-6);
     SdfShadowMarch m = sdfShadowBegin(0.0);
+    bool cubes = (shadow.flags & LUXEL_SHADOW_SDF_CUBES) != 0u;
     valid = false;
     while (m.steps < int(shadow.sdfMaxSteps)) {
         if (m.t >= tMax) {
@@ -98,7 +129,8 @@ float shadowSdf(vec3 origin, vec3 l, out bool valid) {
             break;
         }
         vec3 p = origin + l * m.t;
-        sdfShadowStep(m, shadowFieldEstimate(p), shadowSafeStep(p, l), w);
+        float h = cubes ? shadowSurfaceDistance(p) : shadowFieldEstimate(p);
+        sdfShadowStep(m, h, shadowSafeStep(p, l), w);
         if (m.res <= LUXEL_SDF_RES_DONE) {
             valid = true;
             break;
@@ -177,7 +209,8 @@ float sunVisibility(vec3 point, ivec3 normal, float footprint) {
         float v = shadowMoment(o, method == LUXEL_SHADOW_VSM, valid);
         return valid ? v : 1.0;
     }
-    if (method == LUXEL_SHADOW_SDF) return shadowSdf(o, l, valid);
+    vec3 os = point + n * shadow.sdfNormalOffset;
+    if (method == LUXEL_SHADOW_SDF) return shadowSdf(os, l, valid);
     if (method == LUXEL_SHADOW_FLOOD) {
         ivec3 c = ivec3(floor(point + n * 0.5));
         ivec3 s = shadowWorldSize();
@@ -190,7 +223,7 @@ float sunVisibility(vec3 point, ivec3 normal, float footprint) {
         float a0 = mrmaWeight(footprint, shadow.blendNear, shadow.blendFar, sdfNear, true, true);
         bool sdfValid = true, msmValid = true;
         float vSdf = 1.0, vMsm = 1.0;
-        if (a0 < 1.0) vSdf = shadowSdf(o, l, sdfValid);
+        if (a0 < 1.0) vSdf = shadowSdf(os, l, sdfValid);
         if (a0 > 0.0 || !sdfValid) vMsm = shadowMoment(o, false, msmValid);
         float a = mrmaWeight(footprint, shadow.blendNear, shadow.blendFar, sdfNear, sdfValid,
                              msmValid);
