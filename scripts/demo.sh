@@ -64,7 +64,7 @@ printf '%-14s %-10s %4d.%02d    %s\n' "fence" "480x270" $((ms / 1000)) $((ms % 1
   "out/fence.png (2-degree sun, MSM + SDF blend)"
 # Post-processing: bloom, and half internal resolution with the edge-aware upscaler.
 start=$(date +%s%N)
-"$luxel" render scenes/voxel/terrain.json --quiet --exposure 1.5 --bloom 0.3 \
+"$luxel" render scenes/voxel/terrain.json --quiet --bloom 0.3 \
   --internal-scale 0.5 --upscaler edge --out out/terrain-post.png
 ms=$(( ($(date +%s%N) - start) / 1000000 ))
 printf '%-14s %-10s %4d.%02d    %s\n' "terrain-post" "960x540" $((ms / 1000)) $((ms % 1000 / 10)) \
