@@ -221,6 +221,7 @@ struct VoxelGpuRenderer::State {
                 "the world per light sample; render it on the CPU or use msm, vsm, sdf, blend, "
                 "flood or hard");
         }
+        if (usesPenumbraMsm(key.settings)) return Error(kPenumbraMsmGpuError);
         if (key.given && key.given->world().size() != size) {
             return Error("options.sunVisibility was built for another world");
         }

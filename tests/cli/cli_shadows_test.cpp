@@ -33,8 +33,11 @@ TEST_F(CliShadows, PrintsAFiniteRowPerMethodAndWritesImages) {
                                  "--sun-step 2 --out-dir " +
                                  path("out"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const char* methods[] = {"hard",        "msm",   "msm16",          "vsm",       "sdf",
-                             "sdf-centres", "blend", "blend-msm-near", "blend-min", "flood"};
+    const char* methods[] = {
+        "hard",      "msm",          "msm16",          "vsm",
+        "sdf",       "sdf-centres",  "blend",          "blend-msm-near",
+        "blend-min", "msm-penumbra", "blend-penumbra", "blend-msm-near-penumbra",
+        "flood"};
     std::istringstream lines(r.output);
     std::string line;
     int rows = 0;
@@ -59,7 +62,7 @@ TEST_F(CliShadows, PrintsAFiniteRowPerMethodAndWritesImages) {
             EXPECT_EQ(count, 8) << line;
         }
     }
-    EXPECT_EQ(rows, 10) << r.output;
+    EXPECT_EQ(rows, 13) << r.output;
     EXPECT_NE(r.output.find("exact (truth)"), std::string::npos);
     EXPECT_TRUE(std::filesystem::exists(path("out") + "/tiny-exact.png"));
     EXPECT_TRUE(std::filesystem::exists(path("out") + "/tiny-blend.png"));

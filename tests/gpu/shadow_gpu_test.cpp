@@ -104,5 +104,20 @@ TEST(GpuShadowParity, ExactHasNoGpuTwin) {
     EXPECT_FALSE(SunVisibilityGpu::create(*context, cpu).ok());
 }
 
+TEST(GpuShadowParity, PenumbraSizedMomentFilterHasNoGpuTwin) {
+    gpu::Context* context = test::sharedGpuContext();
+    if (!context) GTEST_SKIP() << "no Vulkan device";
+    const VoxelWorld world = parityWorld();
+    ShadowSettings s;
+    s.method = ShadowMethod::Msm;
+    s.mapSize = 64;
+    s.msmFilter = ShadowSettings::MsmFilter::PenumbraSized;
+    const SunVisibility cpu =
+        std::move(SunVisibility::build(world, nullptr, {{0, 1, 0}, 0.01}, s).value());
+    auto gpu = SunVisibilityGpu::create(*context, cpu);
+    ASSERT_FALSE(gpu.ok());
+    EXPECT_NE(gpu.error().message().find("msm_filter"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace luxel::voxel

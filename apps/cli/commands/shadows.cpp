@@ -74,6 +74,21 @@ std::vector<Variant> allVariants(const ShadowSettings& base) {
         s.sdfNear = true;
         s.minInBand = true;
     });
+    auto penumbra = [](ShadowSettings& s) {
+        s.momentStorage = ShadowSettings::MomentStorage::Float32;
+        s.msmFilter = ShadowSettings::MsmFilter::PenumbraSized;
+    };
+    add("msm-penumbra", ShadowMethod::Msm, penumbra);
+    add("blend-penumbra", ShadowMethod::Blend, [&](ShadowSettings& s) {
+        penumbra(s);
+        s.sdfNear = true;
+        s.minInBand = false;
+    });
+    add("blend-msm-near-penumbra", ShadowMethod::Blend, [&](ShadowSettings& s) {
+        penumbra(s);
+        s.sdfNear = false;
+        s.minInBand = false;
+    });
     add("flood", ShadowMethod::FloodFill, none);
     return v;
 }
@@ -286,9 +301,10 @@ Runner addShadowsCommand(CLI::App& app) {
     app.add_option("--sun-step", args->sunStep, "degrees the sun turns per frame")
         ->check(CLI::Range(-90.0, 90.0))
         ->capture_default_str();
-    app.add_option("--methods", args->methods,
-                   "comma-separated subset of hard, msm, msm16, vsm, sdf, sdf-centres, blend, "
-                   "blend-msm-near, blend-min, flood");
+    app.add_option(
+        "--methods", args->methods,
+        "comma-separated subset of hard, msm, msm16, vsm, sdf, sdf-centres, blend, "
+        "blend-msm-near, blend-min, msm-penumbra, blend-penumbra, blend-msm-near-penumbra, flood");
     app.add_option("--sun-radius", args->sunRadius,
                    "sun angular radius in degrees (default: the scene's)")
         ->check(CLI::Range(0.0, 20.0));

@@ -23,7 +23,7 @@ void readSettings(const Json& s, ShadowSettings& out) {
         s, "render.shadows",
         {"method", "samples", "map_size", "storage", "filter", "filter_radius", "moment_bias",
          "light_bleed", "depth_bias", "normal_offset", "sdf_steps", "sdf_normal_offset",
-         "sdf_distance", "blend_near", "blend_far", "split", "combine"});
+         "sdf_distance", "blend_near", "blend_far", "split", "combine", "msm_filter"});
     if (const Json* v = find(s, "method")) {
         const std::string m = choice(*v, "render.shadows.method",
                                      {"hard", "exact", "msm", "vsm", "sdf", "blend", "flood"});
@@ -51,6 +51,11 @@ void readSettings(const Json& s, ShadowSettings& out) {
         out.momentFilter = choice(*v, "render.shadows.filter", {"gaussian", "box"}) == "box"
                                ? ShadowSettings::MomentFilter::Box
                                : ShadowSettings::MomentFilter::Gaussian;
+    }
+    if (const Json* v = find(s, "msm_filter")) {
+        out.msmFilter = choice(*v, "render.shadows.msm_filter", {"fixed", "penumbra"}) == "fixed"
+                            ? ShadowSettings::MsmFilter::Fixed
+                            : ShadowSettings::MsmFilter::PenumbraSized;
     }
     number("filter_radius", out.filterRadius, 0, 64);
     number("moment_bias", out.momentBias, 0, 0.1);

@@ -18,7 +18,19 @@ struct ShadowUpload {
     std::vector<std::uint32_t> levels;
 };
 
-// Fails for Exact (no GPU twin).
+// The penumbra-sized moment filter reads a double summed-area table the GPU lookup lacks.
+inline constexpr const char* kPenumbraMsmGpuError =
+    "render.shadows.msm_filter \"penumbra\" has no GPU twin (the penumbra-sized moment filter "
+    "reads a double summed-area table on the CPU); use \"fixed\" on the GPU or render on the CPU";
+
+// True when the settings ask for the penumbra-sized filter by a method that reads moments.
+inline bool usesPenumbraMsm(const ShadowSettings& s) {
+    return s.msmFilter == ShadowSettings::MsmFilter::PenumbraSized &&
+           (s.method == ShadowMethod::Msm || s.method == ShadowMethod::Vsm ||
+            s.method == ShadowMethod::Blend);
+}
+
+// Fails for Exact (no GPU twin) and for the penumbra-sized moment filter.
 Result<ShadowUpload> shadowUploadOf(const SunVisibility& visibility);
 
 }  // namespace luxel::voxel

@@ -90,7 +90,8 @@ Result<SunVisibility> SunVisibility::build(const VoxelWorld& world, const Textur
     state->l = normalize(d);
     const ShadowMethod m = settings.method;
     if (m == ShadowMethod::Msm || m == ShadowMethod::Vsm || m == ShadowMethod::Blend) {
-        state->moments.emplace(MomentShadowMap::build(world, textures, state->l, settings));
+        state->moments.emplace(MomentShadowMap::build(world, textures, state->l, settings,
+                                                      std::tan(sun.angularRadius)));
     }
     if (m == ShadowMethod::Sdf || m == ShadowMethod::Blend) {
         state->field.emplace(DistanceField::build(world));

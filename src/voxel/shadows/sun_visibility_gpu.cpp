@@ -18,6 +18,7 @@ Result<ShadowUpload> shadowUploadOf(const SunVisibility& v) {
     if (s.method == ShadowMethod::Exact) {
         return Error("exact sun visibility has no GPU twin (it traces the world per sample)");
     }
+    if (usesPenumbraMsm(s)) return Error(kPenumbraMsmGpuError);
     ShadowUpload u;
     shared::ShadowParams& p = u.params;
     const Vec3d l = normalize(v.sun().direction);

@@ -24,7 +24,7 @@ TEST(ShadowJson, ReadsEveryField) {
         "moment_bias": 0.0001, "light_bleed": 0.2, "depth_bias": 0.1, "normal_offset": 0.3,
         "sdf_normal_offset": 0.07,
         "sdf_steps": 32, "sdf_distance": "centres", "blend_near": 10, "blend_far": 20, "split": "msm-near",
-        "combine": "min"}, "sun_radius": 2})");
+        "combine": "min", "msm_filter": "penumbra"}, "sun_radius": 2})");
     ASSERT_TRUE(scene.ok()) << scene.error().message();
     const ShadowSettings& s = scene->shading.shadowSettings;
     EXPECT_TRUE(scene->shading.shadows);
@@ -45,6 +45,7 @@ TEST(ShadowJson, ReadsEveryField) {
     EXPECT_EQ(s.blendFar, 20.0);
     EXPECT_FALSE(s.sdfNear);
     EXPECT_TRUE(s.minInBand);
+    EXPECT_EQ(s.msmFilter, ShadowSettings::MsmFilter::PenumbraSized);
     EXPECT_NEAR(scene->shading.sunAngularRadius, 2.0 * std::numbers::pi / 180.0, 1e-12);
 }
 
@@ -70,6 +71,7 @@ TEST(ShadowJson, BadValuesNameTheField) {
         {R"({"shadows": {"split": "left"}})", "render.shadows.split"},
         {R"({"shadows": {"combine": "max"}})", "render.shadows.combine"},
         {R"({"shadows": {"sdf_distance": "edges"}})", "render.shadows.sdf_distance"},
+        {R"({"shadows": {"msm_filter": "pcss"}})", "render.shadows.msm_filter"},
         {R"({"shadows": {"softness": 1}})", "unknown field 'softness'"},
         {R"({"sun_radius": 45})", "render.sun_radius"},
     };

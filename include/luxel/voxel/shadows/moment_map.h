@@ -34,8 +34,10 @@ class MomentShadowMap {
     // Supersamples per texel side (2: four rays per texel).
     static constexpr int kSupersample = 2;
 
+    // tanSunRadius: tan(theta_L), which the penumbra-sized filter (settings.msmFilter) needs.
     static MomentShadowMap build(const VoxelWorld& world, const TextureSet* textures,
-                                 Vec3d towardsLight, const ShadowSettings& settings);
+                                 Vec3d towardsLight, const ShadowSettings& settings,
+                                 double tanSunRadius = 0.0);
 
     const LightFrame& frame() const { return frame_; }
     bool quantized() const { return quantized_; }
@@ -53,8 +55,25 @@ class MomentShadowMap {
     // depth minus depthBias, moment bias and light-bleed reduction per the settings.
     Lookup visibility(Vec3d p, bool vsm, const ShadowSettings& settings) const;
 
+    // The penumbra-sized filter's estimate at p (needs a map built with PenumbraSized).
+    struct Penumbra {
+        bool blocked = false;        // the blocker search found occluders in front of p
+        double blockerDepth = 0;     // their mean light-space distance above p, voxels
+        double width = 0;            // full penumbra width 2 tan(theta_L) * blockerDepth, voxels
+        double halfWidthTexels = 0;  // the box filter's half-width used at p
+    };
+    Penumbra penumbra(Vec3d p, const ShadowSettings& settings) const;
+
   private:
+    // Mean unfiltered moments over the box [u - h, u + h] x [v - h, v + h] (map texels), clipped
+    // to the map, from the summed-area table (bilinear in the table: exact for texel boxes).
+    std::array<double, 4> boxMoments(double u, double v, double h) const;
+
     LightFrame frame_;
+    double tanSun_ = 0.0;
+    // Penumbra-sized filter: (size + 1)^2 prefix sums of the unfiltered moments, in double
+    // (fp32 sums over a 1024^2 map would lose the moments' low digits).
+    std::vector<std::array<double, 4>> sat_;
     bool quantized_ = false;
     std::vector<std::uint32_t> words_;
 };

@@ -45,7 +45,13 @@ struct ShadowSettings {
     int mapSize = 1024;  // texels per side of the orthographic map over the world's bounds
     enum class MomentStorage { Float32, Quantized16 } momentStorage = MomentStorage::Float32;
     enum class MomentFilter { Box, Gaussian } momentFilter = MomentFilter::Gaussian;
-    double filterRadius = 2.0;         // texels: box half-width, or Gaussian sigma
+    double filterRadius = 2.0;  // texels: box half-width, or Gaussian sigma
+    // Fixed: the filter above for every receiver (a filtered hard shadow). PenumbraSized: a box
+    // whose width follows the penumbra, tan(theta_L) * (receiver - mean blocker depth), the
+    // blocker depth estimated from the moments over the widest possible penumbra (moment soft
+    // shadow mapping; CPU only: a double summed-area table of the unfiltered fp32 moments, so
+    // momentStorage and the fixed filter do not apply to it).
+    enum class MsmFilter { Fixed, PenumbraSized } msmFilter = MsmFilter::Fixed;
     double momentBias = 0.0;           // 0: the storage's documented default
     double lightBleedReduction = 0.0;  // rho in linstep(rho, 1, V); 0 = off
     double depthBias = 0.0;            // voxels, subtracted from the receiver depth

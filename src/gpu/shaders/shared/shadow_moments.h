@@ -79,6 +79,41 @@ LUXEL_FUNC float msmShadowIntensity(vec4 moments, float zf, float alpha) {
     return 1.0f - (z2 * z3 - b.x * (z2 + z3) + b.y) / ((zf - z2) * (zf - z3));
 }
 
+// The mean depth of the occluders in front of zf: the atoms below zf of the same canonical
+// three-atom distribution (support zf, z2, z3) msmShadowIntensity reads G from, weighted by
+// their weights (Vandermonde solve). Returns (G, mean blocker depth); G = 0 means no blocker
+// and the depth is then zf. The blocker search of moment soft shadow mapping (Peters et al.,
+// "Beyond hard shadows: moment shadow maps for single scattering, soft shadows and
+// translucent occluders", I3D 2016) in its simplest form.
+LUXEL_FUNC vec2 msmBlocker(vec4 moments, float zf, float alpha) {
+    vec4 b = moments * (1.0f - alpha) + vec4(0.5f) * alpha;
+    float d22 = max(b.y - b.x * b.x, 1.0e-12f);
+    float l32 = (b.z - b.x * b.y) / d22;
+    float d33 = max((b.w - b.y * b.y) - l32 * l32 * d22, 1.0e-14f);
+    float y2 = zf - b.x;
+    float y3 = zf * zf - b.y - l32 * y2;
+    float c3 = y3 / d33;
+    float c2 = y2 / d22 - l32 * c3;
+    float c1 = 1.0f - b.x * c2 - b.y * c3;
+    if (abs(c3) < 1.0e-20f) c3 = c3 < 0.0f ? -1.0e-20f : 1.0e-20f;
+    float s = sqrt(max(c2 * c2 - 4.0f * c1 * c3, 0.0f));
+    float k = -0.5f * (c2 + (c2 < 0.0f ? -s : s));
+    float ra = k / c3;
+    float rb = abs(k) > 0.0f ? c1 / k : ra;
+    float z2 = min(ra, rb);
+    float z3 = max(ra, rb);
+    if (zf <= z2) return vec2(0.0f, zf);
+    // Weights of z2 and z3: the Vandermonde system sum w = 1, sum w z = b1, sum w z^2 = b2.
+    float w2 = (zf * z3 - b.x * (zf + z3) + b.y) / ((z3 - z2) * (zf - z2));
+    if (zf <= z3) return vec2(clamp(w2, 0.0f, 1.0f), clamp(z2, 0.0f, zf));
+    float w3 = (zf * z2 - b.x * (zf + z2) + b.y) / ((z3 - zf) * (z3 - z2));
+    w2 = max(w2, 0.0f);
+    w3 = max(w3, 0.0f);
+    float g = w2 + w3;
+    if (g <= 0.0f) return vec2(0.0f, zf);
+    return vec2(min(g, 1.0f), clamp((w2 * z2 + w3 * z3) / g, 0.0f, zf));
+}
+
 // V of the Hamburger 4MSM: 1 - clamp(G).
 LUXEL_FUNC float msmVisibility(vec4 moments, float zf, float alpha) {
     return 1.0f - clamp(msmShadowIntensity(moments, zf, alpha), 0.0f, 1.0f);
