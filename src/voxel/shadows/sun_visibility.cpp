@@ -5,8 +5,10 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "gpu/shaders/shared/soft_shadow.h"
+#include "luxel/core/memory.h"
 #include "luxel/voxel/shadows/distance_field.h"
 #include "luxel/voxel/shadows/light_levels.h"
 #include "luxel/voxel/shadows/moment_map.h"
@@ -64,6 +66,29 @@ SunVisibility::SunVisibility(SunVisibility&&) noexcept = default;
 SunVisibility& SunVisibility::operator=(SunVisibility&&) noexcept = default;
 SunVisibility::~SunVisibility() = default;
 
+std::uint64_t estimateSunVisibilityBytes(Int3 worldSize, const ShadowSettings& settings) {
+    const ShadowMethod m = settings.method;
+    const std::uint64_t voxels = static_cast<std::uint64_t>(std::max(worldSize.x, 0)) *
+                                 std::max(worldSize.y, 0) * std::max(worldSize.z, 0);
+    std::uint64_t bytes = 0;
+    if (m == ShadowMethod::Msm || m == ShadowMethod::Vsm || m == ShadowMethod::Blend) {
+        const std::uint64_t texels = static_cast<std::uint64_t>(settings.mapSize) *
+                                     static_cast<std::uint64_t>(settings.mapSize);
+        bytes += texels * (3 * 16 + 16);  // raw moments, two filter passes, stored words
+        if (settings.msmFilter == ShadowSettings::MsmFilter::PenumbraSized) {
+            const std::uint64_t side = static_cast<std::uint64_t>(settings.mapSize) + 1;
+            bytes += side * side * 32;  // summed-area table of the moments, in double
+        }
+    }
+    if (m == ShadowMethod::Sdf || m == ShadowMethod::Blend) {
+        // Solid and empty masks, two squared-distance grids (double) with their nearest-feature
+        // indices, the stored distances and feature words.
+        bytes += voxels * (2 + 2 * 8 + 2 * 4 + 4 + 4);
+    }
+    if (m == ShadowMethod::FloodFill) bytes += voxels * (1 + 12);  // levels and the BFS queue
+    return bytes;
+}
+
 Result<SunVisibility> SunVisibility::build(const VoxelWorld& world, const TextureSet* textures,
                                            const SunLight& sun, const ShadowSettings& settings) {
     const Vec3d d = sun.direction;
@@ -81,6 +106,12 @@ Result<SunVisibility> SunVisibility::build(const VoxelWorld& world, const Textur
     }
     if (settings.sdfMaxSteps < 1 || settings.sdfMaxSteps > 4096) {
         return Error("SDF shadow steps must be in 1..4096");
+    }
+    if (Status fits =
+            checkMemory(estimateSunVisibilityBytes(world.size(), settings),
+                        std::string("sun visibility '") + shadowMethodName(settings.method) + "'");
+        !fits) {
+        return fits.error();
     }
     auto state = std::make_unique<State>();
     state->world = &world;

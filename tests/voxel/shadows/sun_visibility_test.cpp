@@ -134,3 +134,32 @@ TEST(SunVisibility, BadSettingsAreRefused) {
 
 }  // namespace
 }  // namespace luxel::voxel
+
+namespace luxel::voxel {
+namespace {
+
+TEST(SunVisibility, MemoryEstimateCountsWhatEachMethodBuilds) {
+    ShadowSettings s;
+    const Int3 world{64, 32, 64};
+    s.method = ShadowMethod::Hard;
+    EXPECT_EQ(estimateSunVisibilityBytes(world, s), 0u);
+    s.method = ShadowMethod::Sdf;
+    const std::uint64_t sdf = estimateSunVisibilityBytes(world, s);
+    EXPECT_GE(sdf, 64u * 32 * 64 * 8);  // at least the stored distances and features
+    s.method = ShadowMethod::Msm;
+    s.mapSize = 512;
+    const std::uint64_t msm = estimateSunVisibilityBytes(world, s);
+    EXPECT_GE(msm, 512u * 512 * 16);  // at least one fp32 moment vector per texel
+    s.msmFilter = ShadowSettings::MsmFilter::PenumbraSized;
+    EXPECT_GE(estimateSunVisibilityBytes(world, s), msm + 513u * 513 * 32);
+    s.method = ShadowMethod::Blend;
+    EXPECT_GE(estimateSunVisibilityBytes(world, s), sdf + msm);
+    // The largest world's distance transform is far beyond any machine: build() refuses it
+    // before allocating (checkMemory), instead of failing inside the transform.
+    s.method = ShadowMethod::Sdf;
+    EXPECT_GT(estimateSunVisibilityBytes({kMaxWorldSide, kMaxWorldSide, kMaxWorldSide}, s),
+              std::uint64_t{1} << 40);
+}
+
+}  // namespace
+}  // namespace luxel::voxel

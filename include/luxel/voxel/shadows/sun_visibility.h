@@ -7,6 +7,7 @@
 // Design and corrected equations: docs/algorithms/voxel-shadows.md.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -84,9 +85,14 @@ struct ShadowQuery {
     double footprint = 0.0;
 };
 
+// Peak bytes SunVisibility::build needs for a world of this size: the moment map with its filter
+// copies (and summed-area table), the distance transform's working grids, the light levels.
+std::uint64_t estimateSunVisibilityBytes(Int3 worldSize, const ShadowSettings& settings);
+
 class SunVisibility {
   public:
     // Builds what the method needs (shadow map, distance field, light levels) for this world.
+    // Refuses, with the numbers, when estimateSunVisibilityBytes exceeds the available memory.
     // The world and textures must outlive the object and not change (edits: rebuild).
     static Result<SunVisibility> build(const VoxelWorld& world, const TextureSet* textures,
                                        const SunLight& sun, const ShadowSettings& settings);
