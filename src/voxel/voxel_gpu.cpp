@@ -135,7 +135,8 @@ std::uint64_t estimateVoxelShadowGpuMemory(Int3 size, const ShadowSettings& sett
         const bool q = settings.momentStorage == ShadowSettings::MomentStorage::Quantized16;
         moments = side * side * (q ? 8 : 16);
     }
-    if (m == ShadowMethod::Sdf || m == ShadowMethod::Blend) field = voxels * 4;
+    // Distances, then one nearest-cube feature word per cell (shadow_upload.h).
+    if (m == ShadowMethod::Sdf || m == ShadowMethod::Blend) field = voxels * 8;
     if (m == ShadowMethod::FloodFill) levels = (voxels + 3) / 4 * 4;
     return sizeof(shared::ShadowParams) + moments + field + levels;
 }

@@ -203,6 +203,13 @@ TEST(VoxelPhysicalGpu, ShadowArraysAreCountedAndBudgeted) {
               estimateVoxelShadowGpuMemory(scene.world.size(), scene.shading.shadowSettings));
     EXPECT_GT(gpu->deviceBytes() - before, 256u * 256u * 16u - placeholders);
 
+    // The distance field's arrays: distances and nearest-cube features, counted alike.
+    ShadeOptions sdf = scene.shading;
+    sdf.shadowSettings.method = ShadowMethod::Sdf;
+    ASSERT_TRUE(gpu->render(scene.camera, sdf).ok());
+    EXPECT_EQ(gpu->deviceBytes() - before + placeholders,
+              estimateVoxelShadowGpuMemory(scene.world.size(), sdf.shadowSettings));
+
     // Exact has no GPU twin: refused, naming the method.
     ShadeOptions exact = scene.shading;
     exact.shadowSettings.method = ShadowMethod::Exact;
