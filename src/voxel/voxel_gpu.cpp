@@ -23,6 +23,7 @@
 #include "luxel/voxel/shadows/sun_visibility.h"
 #include "luxel/voxel/surface_cast.h"
 #include "voxel/cast_batch.h"
+#include "voxel/material_gpu.h"
 #include "voxel/shadows/shadow_upload.h"
 
 namespace luxel::voxel {
@@ -79,29 +80,6 @@ void packChunk(const VoxelWorld& world, int cx, int cy, int cz, std::uint32_t* o
 template <typename T>
 std::span<const std::byte> bytesOf(const std::vector<T>& v) {
     return std::as_bytes(std::span(v));
-}
-
-shared::VoxelMaterial gpuMaterial(const Material& m, bool own) {
-    shared::VoxelMaterial g{};
-    g.albedoR = m.albedo.r, g.albedoG = m.albedo.g, g.albedoB = m.albedo.b;
-    g.metallic = m.metallic;
-    g.roughness = m.roughness, g.ior = m.ior, g.transmission = m.transmission;
-    g.flags = (m.proceduralTexture ? LUXEL_VOXEL_MATERIAL_PROCEDURAL : 0u) |
-              (own ? LUXEL_VOXEL_MATERIAL_OWN : 0u);
-    g.absorptionR = m.absorption.r, g.absorptionG = m.absorption.g, g.absorptionB = m.absorption.b;
-    g.emissionR = m.emission.r, g.emissionG = m.emission.g, g.emissionB = m.emission.b;
-    return g;
-}
-
-// The material buffer: each texture slot's material (the plain one where it has none), then the
-// plain blocks' material.
-std::vector<shared::VoxelMaterial> gpuMaterials(const MaterialTable& table) {
-    std::vector<shared::VoxelMaterial> out(LUXEL_VOXEL_MATERIALS);
-    for (int slot = 0; slot < LUXEL_VOXEL_PLAIN_MATERIAL; ++slot) {
-        out[slot] = gpuMaterial(table.forSlot(slot), table.hasSlot(slot));
-    }
-    out[LUXEL_VOXEL_PLAIN_MATERIAL] = gpuMaterial(table.plain(), false);
-    return out;
 }
 
 constexpr std::uint64_t kMaterialBytes = LUXEL_VOXEL_MATERIALS * sizeof(shared::VoxelMaterial);
