@@ -5,8 +5,8 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 
+#include "luxel/core/file_io.h"
 #include "luxel/gi2d/scene2d_edit.h"
 #include "luxel/gi2d/scene2d_json.h"
 
@@ -224,13 +224,11 @@ bool Mode2D::frameConverged() {
 }
 
 Status Mode2D::save() {
-    std::ofstream out(savePath_, std::ios::binary);
-    out << gi2d::sceneToJson(scene_);
-    out.close();
-    if (!out) {
+    // Through a temporary and a rename: a failed save keeps the scene file as it was.
+    if (Status s = writeFileAtomically(savePath_, gi2d::sceneToJson(scene_), "scene"); !s) {
         saveMessage_ = "could not write " + savePath_;
-        std::fprintf(stderr, "luxel-view: error: %s: cannot write the scene\n", savePath_.c_str());
-        return Error(savePath_ + ": cannot write the scene");
+        std::fprintf(stderr, "luxel-view: error: %s\n", s.error().message().c_str());
+        return s;
     }
     saveMessage_ = "saved " + savePath_;
     std::printf("luxel-view: saved %s\n", savePath_.c_str());

@@ -1,10 +1,12 @@
 #include "luxel/core/file_io.h"
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <system_error>
+#include <utility>
 
 #include <unistd.h>
 
@@ -39,38 +41,108 @@ Result<std::string> readFileBytes(const std::string& path, const std::string& wh
     return text;
 }
 
-Status writeFileAtomically(const std::string& path, std::string_view bytes,
-                           const std::string& what) {
-    auto failure = [&](const std::string& reason) {
-        return Error("cannot write " + what + " '" + path + "': " + reason);
-    };
-    // Unique per process; a crash leaves at most a stray ".tmp" file, never a truncated target.
-    const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
-    {
-        std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(temporary.c_str(), "wb"),
-                                                             &std::fclose);
-        if (!file) return failure(std::generic_category().message(errno));
-        if (!bytes.empty() &&
-            std::fwrite(bytes.data(), 1, bytes.size(), file.get()) != bytes.size()) {
-            const std::string reason = std::generic_category().message(errno);
-            file.reset();
-            std::remove(temporary.c_str());
-            return failure(reason);
-        }
-        if (std::fflush(file.get()) != 0) {
-            const std::string reason = std::generic_category().message(errno);
-            file.reset();
-            std::remove(temporary.c_str());
-            return failure(reason);
-        }
+AtomicFile::AtomicFile(AtomicFile&& other) noexcept
+    : target_(std::move(other.target_)),
+      temporary_(std::move(other.temporary_)),
+      what_(std::move(other.what_)),
+      file_(std::exchange(other.file_, nullptr)),
+      published_(std::exchange(other.published_, true)) {}
+
+AtomicFile& AtomicFile::operator=(AtomicFile&& other) noexcept {
+    if (this != &other) {
+        discard();
+        target_ = std::move(other.target_);
+        temporary_ = std::move(other.temporary_);
+        what_ = std::move(other.what_);
+        file_ = std::exchange(other.file_, nullptr);
+        published_ = std::exchange(other.published_, true);
     }
-    std::error_code ec;
-    std::filesystem::rename(temporary, path, ec);
-    if (ec) {
-        std::remove(temporary.c_str());
-        return failure(ec.message());
+    return *this;
+}
+
+AtomicFile::~AtomicFile() {
+    discard();
+}
+
+void AtomicFile::discard() {
+    if (file_ != nullptr) std::fclose(std::exchange(file_, nullptr));
+    if (!published_ && !temporary_.empty()) ::unlink(temporary_.c_str());
+    published_ = true;
+}
+
+Error AtomicFile::failure(const std::string& reason) const {
+    return Error("cannot write " + what_ + " '" + target_ + "': " + reason);
+}
+
+Result<AtomicFile> AtomicFile::create(const std::string& target, const std::string& what) {
+    static std::atomic<unsigned> counter{0};
+    AtomicFile out;
+    out.target_ = target;
+    out.what_ = what;
+    // Pid and counter make the name unique per process and thread; "x" refuses an existing file.
+    // A crash leaves at most a stray ".tmp-" file, never a truncated target.
+    out.temporary_ =
+        target + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1));
+    out.file_ = std::fopen(out.temporary_.c_str(), "wbx");
+    if (out.file_ == nullptr) {
+        const int error = errno;
+        out.temporary_.clear();  // not ours to remove
+        return out.failure(std::generic_category().message(error));
+    }
+    return out;
+}
+
+Status AtomicFile::finish() {
+    if (file_ == nullptr) return failure("the file is not open");
+    // Buffered write errors (ENOSPC, EIO) surface at fflush, fsync or fclose; each is checked.
+    int error = 0;
+    if (std::ferror(file_)) error = errno != 0 ? errno : EIO;
+    if (error == 0 && std::fflush(file_) != 0) error = errno;
+    if (error == 0 && ::fsync(::fileno(file_)) != 0 && errno != EINVAL) error = errno;
+    const int closed = std::fclose(std::exchange(file_, nullptr));
+    if (error == 0 && closed != 0) error = errno;
+    if (error != 0) {
+        discard();
+        return failure(std::generic_category().message(error));
     }
     return Ok{};
+}
+
+Status AtomicFile::publish() {
+    if (file_ != nullptr || published_) return failure("the file is not finished");
+    if (::rename(temporary_.c_str(), target_.c_str()) != 0) {
+        const int error = errno;
+        discard();
+        return failure(std::generic_category().message(error));
+    }
+    published_ = true;
+    return Ok{};
+}
+
+Status AtomicFile::commit() {
+    if (Status s = finish(); !s) return s;
+    return publish();
+}
+
+Status commitAll(AtomicFile* files, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) {
+        if (Status s = files[i].finish(); !s) return s;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        if (Status s = files[i].publish(); !s) return s;
+    }
+    return Ok{};
+}
+
+Status writeFileAtomically(const std::string& path, std::string_view bytes,
+                           const std::string& what) {
+    Result<AtomicFile> file = AtomicFile::create(path, what);
+    if (!file) return file.error();
+    if (!bytes.empty() &&
+        std::fwrite(bytes.data(), 1, bytes.size(), file->file()) != bytes.size()) {
+        return file->failure(std::generic_category().message(errno));
+    }
+    return file->commit();
 }
 
 }  // namespace luxel

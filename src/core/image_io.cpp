@@ -3,7 +3,11 @@
 #include <exception>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "image_writers.h"
+#include "luxel/core/file_io.h"
 #include "luxel/core/image_io.h"
 
 namespace luxel {
@@ -57,6 +61,24 @@ Status writeImage(const std::string& path, const Image& image) {
     } catch (const std::exception& e) {
         return Error("cannot write '" + path + "': " + e.what());
     }
+}
+
+Status writeImages(const std::vector<ImageFile>& files) {
+    std::vector<AtomicFile> written;
+    written.reserve(files.size());
+    for (const ImageFile& entry : files) {
+        const ImageFormat format = formatOf(entry.path);
+        if (format == ImageFormat::Unknown) return unknownFormat("write", entry.path);
+        Result<AtomicFile> file =
+            AtomicFile::create(entry.path, format == ImageFormat::Png ? "PNG" : "EXR");
+        if (!file) return file.error();
+        const Status s = format == ImageFormat::Png
+                             ? detail::writePngInto(*file, *entry.image, PngEncoding::Srgb)
+                             : detail::writeExrInto(*file, *entry.image);
+        if (!s) return s;
+        written.push_back(std::move(*file));
+    }
+    return commitAll(written.data(), written.size());
 }
 
 }  // namespace luxel

@@ -3,6 +3,7 @@
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
+#include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 
@@ -10,10 +11,13 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 #include <vector>
 
+#include "image_writers.h"
+#include "luxel/core/file_io.h"
 #include "luxel/core/image_io.h"
 
 namespace luxel {
@@ -27,6 +31,40 @@ Error readError(const std::string& path, const std::string& problem) {
 Error writeError(const std::string& path, const std::string& problem) {
     return Error("cannot write EXR '" + path + "': " + problem);
 }
+
+// OpenEXR's output stream over an AtomicFile's FILE. OutputFile's destructor writes the line
+// offset table and swallows errors, so a failure is also remembered here and checked afterwards.
+class AtomicFileStream final : public Imf::OStream {
+  public:
+    explicit AtomicFileStream(AtomicFile& file)
+        : Imf::OStream(file.temporaryPath().c_str()), file_(file.file()) {}
+
+    void write(const char c[], int n) override {
+        if (error_ == 0 &&
+            std::fwrite(c, 1, static_cast<std::size_t>(n), file_) != static_cast<std::size_t>(n)) {
+            error_ = errno != 0 ? errno : EIO;
+        }
+        if (error_ != 0) throw std::runtime_error(std::generic_category().message(error_));
+    }
+    std::uint64_t tellp() override {
+        const off_t at = ::ftello(file_);
+        if (at < 0) fail();
+        return static_cast<std::uint64_t>(at);
+    }
+    void seekp(std::uint64_t pos) override {
+        if (::fseeko(file_, static_cast<off_t>(pos), SEEK_SET) != 0) fail();
+    }
+    int error() const { return error_; }
+
+  private:
+    void fail() {
+        if (error_ == 0) error_ = errno != 0 ? errno : EIO;
+        throw std::runtime_error(std::generic_category().message(error_));
+    }
+
+    std::FILE* file_;
+    int error_ = 0;
+};
 
 // OpenEXR's own message for a missing file is long and varies by version; opening it first gives
 // the same message as the PNG reader.
@@ -106,25 +144,29 @@ Result<Image> readExrImpl(const std::string& path) {
     return image;
 }
 
-Status writeExrImpl(const std::string& path, const Image& image) {
+Status writeExrImpl(AtomicFile& out, const Image& image) {
     static const std::vector<std::string> kNames[] = {
         {"Y"}, {"Y", "A"}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
     const std::vector<std::string>& names = kNames[image.channels() - 1];
 
     Imf::Header header(image.width(), image.height());
     for (const std::string& name : names) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-    Imf::OutputFile file(path.c_str(), header);
+    AtomicFileStream stream(out);
+    {
+        Imf::OutputFile file(stream, header);
 
-    const std::size_t xStride = sizeof(float) * image.channels();
-    const std::size_t yStride = xStride * static_cast<std::size_t>(image.width());
-    Imf::FrameBuffer frameBuffer;
-    for (int c = 0; c < image.channels(); ++c) {
-        frameBuffer.insert(names[c],
-                           Imf::Slice::Make(Imf::FLOAT, image.data() + c, Imath::V2i(0, 0),
-                                            image.width(), image.height(), xStride, yStride));
+        const std::size_t xStride = sizeof(float) * image.channels();
+        const std::size_t yStride = xStride * static_cast<std::size_t>(image.width());
+        Imf::FrameBuffer frameBuffer;
+        for (int c = 0; c < image.channels(); ++c) {
+            frameBuffer.insert(names[c],
+                               Imf::Slice::Make(Imf::FLOAT, image.data() + c, Imath::V2i(0, 0),
+                                                image.width(), image.height(), xStride, yStride));
+        }
+        file.setFrameBuffer(frameBuffer);
+        file.writePixels(image.height());
     }
-    file.setFrameBuffer(frameBuffer);
-    file.writePixels(image.height());
+    if (stream.error() != 0) return out.failure(std::generic_category().message(stream.error()));
     return Ok{};
 }
 
@@ -144,17 +186,31 @@ Result<Image> readExr(const std::string& path) {
     }
 }
 
+namespace detail {
+
+Status writeExrInto(AtomicFile& file, const Image& image) {
+    if (image.empty() || image.channels() < 1 || image.channels() > 4) {
+        return file.failure("the image is empty");
+    }
+    try {
+        return writeExrImpl(file, image);
+    } catch (const std::exception& e) {
+        return file.failure(e.what());
+    } catch (...) {
+        return file.failure("unknown error");
+    }
+}
+
+}  // namespace detail
+
 Status writeExr(const std::string& path, const Image& image) {
     if (image.empty() || image.channels() < 1 || image.channels() > 4) {
         return writeError(path, "the image is empty");
     }
-    try {
-        return writeExrImpl(path, image);
-    } catch (const std::exception& e) {
-        return writeError(path, e.what());
-    } catch (...) {
-        return writeError(path, "unknown error");
-    }
+    Result<AtomicFile> file = AtomicFile::create(path, "EXR");
+    if (!file) return file.error();
+    if (Status s = detail::writeExrInto(*file, image); !s) return s;
+    return file->commit();
 }
 
 }  // namespace luxel

@@ -15,6 +15,8 @@
 #include <system_error>
 #include <vector>
 
+#include "image_writers.h"
+#include "luxel/core/file_io.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/tonemap.h"
 
@@ -94,7 +96,10 @@ void writeToFile(png_structp png, png_bytep data, std::size_t length) {
 
 void flushFile(png_structp png) {
     auto* context = static_cast<PngContext*>(png_get_io_ptr(png));
-    std::fflush(context->file);
+    if (std::fflush(context->file) != 0) {
+        context->ioErrno = errno;
+        png_error(png, "write error");
+    }
 }
 
 // Reads the header and sets up expansion to 8 or 16 bits per channel with 1 to 4 channels.
@@ -237,8 +242,8 @@ Result<Image> readPngImpl(const std::string& path, PngEncoding encoding) {
     return image;
 }
 
-Status writePngImpl(const std::string& path, const Image& image, PngEncoding encoding) {
-    if (image.empty()) return writeError(path, "the image is empty");
+Status writePngImpl(AtomicFile& file, const Image& image, PngEncoding encoding) {
+    if (image.empty()) return file.failure("the image is empty");
     const int width = image.width();
     const int height = image.height();
     const int channels = image.channels();
@@ -263,11 +268,8 @@ Status writePngImpl(const std::string& path, const Image& image, PngEncoding enc
     if (channels == 3) colorType = PNG_COLOR_TYPE_RGB;
     if (channels == 4) colorType = PNG_COLOR_TYPE_RGB_ALPHA;
 
-    std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "wb"));
-    if (!file) return openError(path, errno);
-
     PngContext context;
-    context.file = file.get();
+    context.file = file.file();
     bool written = false;
     {
         PngWriteStructs structs;
@@ -285,14 +287,8 @@ Status writePngImpl(const std::string& path, const Image& image, PngEncoding enc
                 writePngRows(structs.png, structs.info, &header, colorType, srgb, rows.data());
         }
     }
-    const bool closed = std::fclose(file.release()) == 0;
-    const int closeErrno = errno;
-    if (!written || !closed) {
-        // A partial file would only fail later, in some other program.
-        std::remove(path.c_str());
-        if (!written) return writeError(path, describeFailure(context));
-        return writeError(path, std::generic_category().message(closeErrno));
-    }
+    // The temporary is removed by AtomicFile unless the caller publishes it.
+    if (!written) return file.failure(describeFailure(context));
     return Ok{};
 }
 
@@ -308,9 +304,26 @@ Result<Image> readPng(const std::string& path, PngEncoding encoding) {
     }
 }
 
+namespace detail {
+
+Status writePngInto(AtomicFile& file, const Image& image, PngEncoding encoding) {
+    try {
+        return writePngImpl(file, image, encoding);
+    } catch (const std::exception& e) {
+        return file.failure(e.what());
+    } catch (...) {
+        return file.failure("unknown error");
+    }
+}
+
+}  // namespace detail
+
 Status writePng(const std::string& path, const Image& image, PngEncoding encoding) {
     try {
-        return writePngImpl(path, image, encoding);
+        Result<AtomicFile> file = AtomicFile::create(path, "PNG");
+        if (!file) return file.error();
+        if (Status s = detail::writePngInto(*file, image, encoding); !s) return s;
+        return file->commit();
     } catch (const std::exception& e) {
         return writeError(path, e.what());
     } catch (...) {

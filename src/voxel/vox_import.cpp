@@ -10,6 +10,8 @@
 #include <string_view>
 #include <unordered_map>
 
+#include "luxel/core/file_io.h"
+
 namespace luxel::voxel {
 namespace {
 
@@ -386,13 +388,9 @@ Result<std::vector<std::uint8_t>> encodeVox(const VoxelWorld& world) {
 Status saveVox(const VoxelWorld& world, const std::string& path) {
     Result<std::vector<std::uint8_t>> bytes = encodeVox(world);
     if (!bytes) return Error(path + ": " + bytes.error().message());
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    if (!out) return Error(path + ": cannot open for writing");
-    out.write(reinterpret_cast<const char*>(bytes->data()),
-              static_cast<std::streamsize>(bytes->size()));
-    out.close();
-    if (!out) return Error(path + ": write failed");
-    return Ok{};
+    return writeFileAtomically(
+        path, std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
+        "vox file");
 }
 
 }  // namespace luxel::voxel

@@ -2,6 +2,7 @@
 // traversal with the surface, volume and additive modes, on the CPU or (--backend) the GPU.
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include "commands/command.h"
 #include "luxel/core/image_io.h"
@@ -62,12 +63,14 @@ int renderOctreeScene(const VoxelRenderRequest& request, scene::OctreeScene load
     const double renderSeconds = renderTime.seconds();
     radiance = postProcess(*radiance, width, height, post);
     const Image out = hasExtension(request.out, ".png") ? toneMap(*radiance, post.tone) : *radiance;
-    if (Status s = writeImage(request.out, out); !s) return reportError(s.error());
+    // --out and --png change together or not at all.
+    std::vector<ImageFile> files{{request.out, &out}};
+    Image display;
     if (!request.png.empty()) {
-        if (Status s = writePng(request.png, toneMap(*radiance, post.tone)); !s) {
-            return reportError(s.error());
-        }
+        display = toneMap(*radiance, post.tone);
+        files.push_back({request.png, &display});
     }
+    if (Status s = writeImages(files); !s) return reportError(s.error());
     if (request.stats) std::printf("stats solve_seconds=%.6f\n", renderSeconds);
     if (!request.quiet) {
         const double pixels = static_cast<double>(radiance->width()) * radiance->height();

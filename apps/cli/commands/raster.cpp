@@ -1,6 +1,7 @@
 // `luxel raster`: the rasterised medium as images, for debugging and for other tools.
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include "commands/command.h"
 #include "luxel/core/image_io.h"
@@ -19,16 +20,11 @@ int runRaster(const RasterArgs& args) {
     }
     auto medium = loadMedium(args.scene, args.size, args.supersample);
     if (!medium) return reportError(medium.error());
-    if (!args.emission.empty()) {
-        if (Status s = writeImage(args.emission, medium->emission); !s) {
-            return reportError(s.error());
-        }
-    }
-    if (!args.absorption.empty()) {
-        if (Status s = writeImage(args.absorption, medium->absorption); !s) {
-            return reportError(s.error());
-        }
-    }
+    // Both files change together or not at all.
+    std::vector<ImageFile> files;
+    if (!args.emission.empty()) files.push_back({args.emission, &medium->emission});
+    if (!args.absorption.empty()) files.push_back({args.absorption, &medium->absorption});
+    if (Status s = writeImages(files); !s) return reportError(s.error());
     std::printf("%s: %dx%d medium written\n", args.scene.c_str(), medium->width(),
                 medium->height());
     return 0;

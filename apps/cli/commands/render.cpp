@@ -293,17 +293,21 @@ int runRender(const RenderArgs& args) {
     const double solveSeconds = solveTime.seconds();
 
     const Image out = hasExtension(args.out, ".png") ? toneMap(*fluence, tone) : *fluence;
-    if (Status s = writeImage(args.out, out); !s) return reportError(s.error());
+    // --out and --png change together or not at all (writeImages renames only once both are
+    // complete).
+    std::vector<ImageFile> files{{args.out, &out}};
+    Image display;
     if (!args.png.empty()) {
         if (!hasExtension(args.png, ".png")) {
             return reportError(Error("--png '" + args.png + "' must end in .png"));
         }
-        Image display = gi2d::displayImage(*medium, *fluence, tone);
+        display = gi2d::displayImage(*medium, *fluence, tone);
         if (args.view == "probes") {
             drawProbes(args, display);
         }
-        if (Status s = writePng(args.png, display); !s) return reportError(s.error());
+        files.push_back({args.png, &display});
     }
+    if (Status s = writeImages(files); !s) return reportError(s.error());
     if (args.stats) std::printf("stats solve_seconds=%.6f\n", solveSeconds);
     if (!args.quiet) {
         std::printf("%s: %dx%d, solver %s%s%s%s, %d threads\n", args.scene.c_str(), w, h,

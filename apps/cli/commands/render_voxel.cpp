@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "commands/command.h"
 #include "luxel/core/image_io.h"
@@ -140,12 +141,14 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
     const Image radiance = postProcess(internal, width, height, post);
     // EXR keeps linear radiance; PNG gets the display transform.
     const Image out = hasExtension(request.out, ".png") ? toneMap(radiance, post.tone) : radiance;
-    if (Status s = writeImage(request.out, out); !s) return reportError(s.error());
+    // --out and --png change together or not at all.
+    std::vector<ImageFile> files{{request.out, &out}};
+    Image display;
     if (!request.png.empty()) {
-        if (Status s = writePng(request.png, toneMap(radiance, post.tone)); !s) {
-            return reportError(s.error());
-        }
+        display = toneMap(radiance, post.tone);
+        files.push_back({request.png, &display});
     }
+    if (Status s = writeImages(files); !s) return reportError(s.error());
     if (request.stats) std::printf("stats solve_seconds=%.6f\n", renderSeconds);
     if (!request.quiet) {
         const Int3 s = scene->world.size();

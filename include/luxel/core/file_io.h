@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <string_view>
 
@@ -19,5 +20,42 @@ Result<std::string> readFileBytes(const std::string& path, const std::string& wh
 // holds either its old content or all of the new ("cannot write octree 'p': reason").
 Status writeFileAtomically(const std::string& path, std::string_view bytes,
                            const std::string& what);
+
+// A file written under a fresh temporary name next to `target` (same folder, so the final rename
+// is atomic). finish() flushes, syncs and closes it, checking each step; publish() renames it over
+// the target. Writers of several files finish() all of them before publishing any, so a failure
+// leaves every target as it was. The destructor removes a temporary that was not published.
+// Errors read "cannot write <what> '<target>': reason".
+class AtomicFile {
+  public:
+    static Result<AtomicFile> create(const std::string& target, const std::string& what);
+    AtomicFile(AtomicFile&& other) noexcept;
+    AtomicFile& operator=(AtomicFile&& other) noexcept;
+    AtomicFile(const AtomicFile&) = delete;
+    AtomicFile& operator=(const AtomicFile&) = delete;
+    ~AtomicFile();
+
+    std::FILE* file() const { return file_; }
+    const std::string& target() const { return target_; }
+    const std::string& temporaryPath() const { return temporary_; }
+    Error failure(const std::string& reason) const;
+
+    Status finish();
+    Status publish();
+    Status commit();  // finish() then publish()
+
+  private:
+    AtomicFile() = default;
+    void discard();
+
+    std::string target_;
+    std::string temporary_;
+    std::string what_;
+    std::FILE* file_ = nullptr;
+    bool published_ = false;
+};
+
+// finish()es every file, then publishes them in order; stops at the first error.
+Status commitAll(AtomicFile* files, std::size_t count);
 
 }  // namespace luxel

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "luxel/core/error.h"
 #include "luxel/core/image.h"
@@ -36,5 +37,14 @@ Status writeExr(const std::string& path, const Image& image);
 // Chooses PNG or EXR by the file extension (case-insensitive); anything else is an error.
 Result<Image> readImage(const std::string& path);
 Status writeImage(const std::string& path, const Image& image);
+
+// Writes several images (each by its extension) that belong together, such as a render and its
+// preview: every one goes to a temporary file first, and the targets are renamed only once all
+// are complete, so a failure leaves every target as it was.
+struct ImageFile {
+    std::string path;
+    const Image* image = nullptr;
+};
+Status writeImages(const std::vector<ImageFile>& files);
 
 }  // namespace luxel
