@@ -156,8 +156,67 @@ Error numberOverflowError(std::string_view text, const std::string& sourceName) 
            std::string_view("+-.0123456789eE").find(text[end]) != std::string_view::npos) {
         ++end;
     }
-    return Error(where, "invalid JSON: number " + std::string(text.substr(*offset, end - *offset)) +
+    return Error(where, "invalid JSON: number " + clip(text.substr(*offset, end - *offset)) +
                             " is too large (must be finite)");
+}
+
+}  // namespace
+
+std::string clip(std::string_view text, std::size_t maxBytes) {
+    if (text.size() <= maxBytes) return std::string(text);
+    std::size_t end = maxBytes;
+    // Do not split a UTF-8 code point: back up over continuation bytes.
+    while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;
+    return std::string(text.substr(0, end)) + "...";
+}
+
+std::string boundMessage(std::string_view message) {
+    std::string out;
+    std::size_t pos = 0;
+    while (pos < message.size()) {
+        const std::size_t open = message.find('\'', pos);
+        const std::size_t close =
+            open == std::string_view::npos ? open : message.find('\'', open + 1);
+        if (close == std::string_view::npos) {
+            out += message.substr(pos);
+            break;
+        }
+        out += message.substr(pos, open + 1 - pos);
+        out += clip(message.substr(open + 1, close - open - 1));
+        out += '\'';
+        pos = close + 1;
+    }
+    return clip(out, kMaxMessageBytes);
+}
+
+namespace {
+
+struct TooDeep {};
+
+Error locatedError(const std::string& sourceName, std::string_view text, std::size_t offset,
+                   const std::string& message) {
+    SourceLocation where;
+    where.file = sourceName;
+    const TextPosition pos = textPositionAt(text, offset);
+    where.line = pos.line;
+    where.column = pos.column;
+    return Error(where, boundMessage(message));
+}
+
+std::string tooDeepMessage() {
+    return "invalid JSON: nesting deeper than " + std::to_string(kMaxNestingDepth) +
+           " levels (the nesting depth limit)";
+}
+
+// Depth and duplicate keys, located: called once nlohmann has accepted the text up to the problem.
+std::optional<Error> structureError(std::string_view text, const std::string& sourceName) {
+    const auto problem = findJsonStructureProblem(text, kMaxNestingDepth);
+    if (!problem) return std::nullopt;
+    if (problem->kind == JsonStructureProblem::Kind::TooDeep)
+        return locatedError(sourceName, text, problem->offset, tooDeepMessage());
+    return locatedError(sourceName, text, problem->offset,
+                        "invalid JSON: duplicate key '" + problem->key +
+                            "' (keys must be unique within an object)");
 }
 
 }  // namespace
@@ -166,18 +225,32 @@ Result<Json> parse(std::string_view text, const std::string& sourceName) {
     SourceLocation file;
     file.file = sourceName;
     try {
-        return Json::parse(text.begin(), text.end());
+        // Refuse deep nesting while parsing, before the document is built (depth 0 is the root).
+        const Json::parser_callback_t limitDepth = [](int depth, Json::parse_event_t event, Json&) {
+            if ((event == Json::parse_event_t::object_start ||
+                 event == Json::parse_event_t::array_start) &&
+                depth >= kMaxNestingDepth) {
+                throw TooDeep{};
+            }
+            return true;
+        };
+        Json root = Json::parse(text.begin(), text.end(), limitDepth);
+        if (auto error = structureError(text, sourceName)) return *error;
+        return root;
+    } catch (const TooDeep&) {
+        if (auto error = structureError(text, sourceName)) return *error;
+        return Error(file, tooDeepMessage());
     } catch (const Json::parse_error& e) {
         const TextPosition pos = jsonParseErrorPosition(text, e.byte);
         SourceLocation where = file;
         where.line = pos.line;
         where.column = pos.column;
-        return Error(where, "invalid JSON: " + stripJsonExceptionPrefix(e.what()));
+        return Error(where, boundMessage("invalid JSON: " + stripJsonExceptionPrefix(e.what())));
     } catch (const Json::out_of_range& e) {
         if (e.id == 406) return numberOverflowError(text, sourceName);  // e.g. 1e999
-        return Error(file, "invalid JSON: " + stripJsonExceptionPrefix(e.what()));
+        return Error(file, boundMessage("invalid JSON: " + stripJsonExceptionPrefix(e.what())));
     } catch (const Json::exception& e) {
-        return Error(file, "invalid JSON: " + stripJsonExceptionPrefix(e.what()));
+        return Error(file, boundMessage("invalid JSON: " + stripJsonExceptionPrefix(e.what())));
     }
 }
 
@@ -185,7 +258,8 @@ Error locate(const Invalid& invalid, std::string_view text, const std::string& s
     const JsonSourceMap map = JsonSourceMap::build(text);
     SourceLocation where = invalid.atKey ? map.locateKey(invalid.field) : map.locate(invalid.field);
     where.file = sourceName;
-    return Error(where, invalid.message);
+    where.field = clip(where.field);
+    return Error(where, boundMessage(invalid.message));
 }
 
 }  // namespace luxel::json

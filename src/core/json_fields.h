@@ -60,8 +60,22 @@ std::int64_t readWholeNumber(const Json& v, const std::string& path, std::int64_
 std::vector<double> readNumbers(const Json& v, const std::string& path, std::size_t n, double lo,
                                 double hi);
 
+// Nesting deeper than this is refused by parse(): readers and nlohmann's own copy and dump walk
+// documents recursively, so unbounded nesting would overflow the stack.
+inline constexpr int kMaxNestingDepth = 256;
+// Input text quoted in an error message is cut to this many bytes (then "...").
+inline constexpr std::size_t kMaxQuotedBytes = 200;
+// A whole error message is cut to this many bytes, so that one refusal stays one readable line.
+inline constexpr std::size_t kMaxMessageBytes = 600;
+
+// `text` cut to at most `maxBytes` at a UTF-8 boundary, with "..." appended when cut.
+std::string clip(std::string_view text, std::size_t maxBytes = kMaxQuotedBytes);
+// `message` with every run quoted in '...' clipped to kMaxQuotedBytes and the whole clipped to
+// kMaxMessageBytes. parse() and locate() pass every message through it.
+std::string boundMessage(std::string_view message);
+
 // Parses JSON text; errors are located ("file:line:col: invalid JSON: ..."), including numbers
-// too large for a double (1e999).
+// too large for a double (1e999), nesting deeper than kMaxNestingDepth and duplicate keys.
 Result<Json> parse(std::string_view text, const std::string& sourceName);
 
 // The Error for a validation failure, located in `text` at the failing field.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <unordered_set>
 #include <vector>
 
 namespace luxel {
@@ -188,6 +189,48 @@ std::optional<std::size_t> findNonFiniteJsonNumber(std::string_view text) {
             const std::string token(text.substr(start, cur.offset() - start));
             if (!std::isfinite(std::strtod(token.c_str(), nullptr))) return start;
         } else {
+            cur.advance();
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<JsonStructureProblem> findJsonStructureProblem(std::string_view text, int maxDepth) {
+    struct Frame {
+        bool isArray;
+        std::unordered_set<std::string> keys;
+    };
+    std::vector<Frame> stack;
+    bool expectKey = false;  // just after '{' or an object's ','
+    Cursor cur(text);
+    while (!cur.atEnd()) {
+        const char c = cur.peek();
+        const std::size_t offset = cur.offset();
+        if (c == '{' || c == '[') {
+            if (static_cast<int>(stack.size()) >= maxDepth) {
+                return JsonStructureProblem{JsonStructureProblem::Kind::TooDeep, offset, {}};
+            }
+            stack.push_back({c == '[', {}});
+            expectKey = c == '{';
+            cur.advance();
+        } else if (c == '}' || c == ']') {
+            if (stack.empty()) return std::nullopt;
+            stack.pop_back();
+            expectKey = false;
+            cur.advance();
+        } else if (c == ',') {
+            expectKey = !stack.empty() && !stack.back().isArray;
+            cur.advance();
+        } else if (c == '"') {
+            std::string key;
+            if (!readString(cur, expectKey ? &key : nullptr)) return std::nullopt;
+            if (expectKey && !stack.back().keys.insert(key).second) {
+                return JsonStructureProblem{JsonStructureProblem::Kind::DuplicateKey, offset,
+                                            std::move(key)};
+            }
+            expectKey = false;
+        } else {
+            if (!isJsonSpace(c)) expectKey = false;
             cur.advance();
         }
     }

@@ -30,6 +30,20 @@ TextPosition jsonParseErrorPosition(std::string_view text, std::size_t byte);
 // nlohmann reports without a position. The text needs to be valid only up to that number.
 std::optional<std::size_t> findNonFiniteJsonNumber(std::string_view text);
 
+// A problem in JSON text that nlohmann accepts but luxel refuses: nesting deeper than a limit
+// (which would make every recursive walk of the document a stack overflow) or an object that names
+// a key twice (nlohmann keeps the last silently).
+struct JsonStructureProblem {
+    enum class Kind { TooDeep, DuplicateKey };
+    Kind kind = Kind::TooDeep;
+    std::size_t offset = 0;  // the opening bracket beyond the limit, or the repeated key
+    std::string key;         // the repeated key, unescaped
+};
+
+// The first such problem in file order. Scans iteratively (no recursion), leniently: on malformed
+// text it reports what it found before the problem.
+std::optional<JsonStructureProblem> findJsonStructureProblem(std::string_view text, int maxDepth);
+
 // Positions of every value in a JSON text that is known to be valid (it is scanned, not checked;
 // on malformed text the map holds what was seen before the problem).
 //

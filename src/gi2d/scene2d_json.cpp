@@ -457,11 +457,11 @@ Result<Scene2D> scene2DFromJson(const json::Json& root, std::string_view text,
     } catch (const Invalid& invalid) {
         return json::locate(invalid, text, sourceName);
     } catch (const Json::exception& e) {
-        return Error(file, std::string("invalid JSON: ") + e.what());
+        return Error(file, json::boundMessage(std::string("invalid JSON: ") + e.what()));
     } catch (const std::bad_alloc&) {
         return Error(file, "out of memory while reading the scene");
     } catch (const std::exception& e) {
-        return Error(file, e.what());
+        return Error(file, json::boundMessage(e.what()));
     }
 }
 

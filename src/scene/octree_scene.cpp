@@ -199,7 +199,7 @@ Result<OctreeScene> octreeSceneFromJson(const json::Json& root, std::string_view
     } catch (const Invalid& invalid) {
         return json::locate(invalid, text, path);
     } catch (const std::exception& e) {
-        return Error(path + ": " + e.what());
+        return Error(path + ": " + json::boundMessage(e.what()));
     }
 }
 

@@ -439,7 +439,7 @@ Result<VoxelScene> voxelSceneFromJson(const json::Json& root, std::string_view t
     } catch (const Invalid& invalid) {
         return json::locate(invalid, text, path);
     } catch (const std::exception& e) {
-        return Error(path + ": " + e.what());
+        return Error(path + ": " + json::boundMessage(e.what()));
     }
 }
 
