@@ -36,6 +36,13 @@ int main(int argc, char** argv) {
 
     try {
         app.parse(argc, argv);
+    } catch (const CLI::ValidationError& e) {
+        // Out-of-range and unparsable option values: one line, like every other bad input.
+        std::fprintf(stderr, "luxel: error: %s\n", e.what());
+        return luxel::cli::kExitBadInput;
+    } catch (const CLI::ConversionError& e) {
+        std::fprintf(stderr, "luxel: error: %s\n", e.what());
+        return luxel::cli::kExitBadInput;
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     }

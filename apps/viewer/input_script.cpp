@@ -4,8 +4,9 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
+
+#include "luxel/core/file_io.h"
 
 namespace luxel::viewer {
 namespace {
@@ -69,8 +70,10 @@ std::string parseArguments(const std::vector<std::string>& args, ScriptEvent& ev
     switch (event.command) {
         case ScriptCommand::Wait:
             if (auto e = expectCount(1, 1, "'wait SECONDS'"); !e.empty()) return e;
-            if (!parseNumber(args[0], event.seconds) || event.seconds < 0) {
-                return "'" + args[0] + "' is not a number of seconds >= 0";
+            if (!parseNumber(args[0], event.seconds) || event.seconds < 0 ||
+                event.seconds > kMaxScriptSeconds) {
+                return "'" + args[0] + "' is not a number of seconds in 0.." +
+                       std::to_string(static_cast<int>(kMaxScriptSeconds));
             }
             return "";
         case ScriptCommand::WaitFrames:
@@ -190,8 +193,10 @@ Result<Script> parseScript(std::string_view text, const std::string& name,
         event.line = lineNumber;
         std::size_t first = 0;
         if (words[0] == "at") {
-            if (words.size() < 3 || !parseNumber(words[1], event.at) || event.at < 0) {
-                return Error(where, "expected 'at SECONDS COMMAND ...'");
+            if (words.size() < 3 || !parseNumber(words[1], event.at) || event.at < 0 ||
+                event.at > kMaxScriptSeconds) {
+                return Error(where, "expected 'at SECONDS COMMAND ...' with SECONDS in 0.." +
+                                        std::to_string(static_cast<int>(kMaxScriptSeconds)));
             }
             first = 2;
         }
@@ -216,11 +221,9 @@ Result<Script> parseScript(std::string_view text, const std::string& name,
 }
 
 Result<Script> loadScript(const std::string& path, const KeyNameCheck& isKnownKey) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error(path + ": cannot open the script file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseScript(text.str(), path, isKnownKey);
+    auto text = readFileBytes(path, "script", std::uintmax_t{1} << 20);
+    if (!text) return text.error();
+    return parseScript(*text, path, isKnownKey);
 }
 
 }  // namespace luxel::viewer

@@ -64,10 +64,14 @@ struct Script {
     std::vector<ScriptEvent> events;
 };
 
+// The longest wait a script may ask for ("wait", "at"): a typo such as 1e308 would hang a test.
+inline constexpr double kMaxScriptSeconds = 3600.0;
+
 // Tells whether a key name (without modifiers) is known; the viewer asks SDL.
 using KeyNameCheck = std::function<bool(const std::string& name)>;
 
-// Errors read "FILE:LINE: what is wrong".
+// Errors read "FILE:LINE: what is wrong". loadScript reads regular files only (a directory or a
+// FIFO is an error naming the path, not an empty or endless script).
 Result<Script> parseScript(std::string_view text, const std::string& name,
                            const KeyNameCheck& isKnownKey);
 Result<Script> loadScript(const std::string& path, const KeyNameCheck& isKnownKey);

@@ -8,24 +8,43 @@
 #include <system_error>
 #include <utility>
 
+#include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace luxel {
 
+Result<FilePtr> openRegularFile(const std::string& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0) return Error(std::generic_category().message(errno));
+    const auto fail = [fd](const std::string& reason) {
+        ::close(fd);
+        return Error(reason);
+    };
+    struct stat info {};
+    if (::fstat(fd, &info) != 0) return fail(std::generic_category().message(errno));
+    if (!S_ISREG(info.st_mode)) return fail("not a regular file");
+    const int flags = ::fcntl(fd, F_GETFL);
+    if (flags < 0 || ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) != 0) {
+        return fail(std::generic_category().message(errno));
+    }
+    std::FILE* file = ::fdopen(fd, "rb");
+    if (file == nullptr) return fail(std::generic_category().message(errno));
+    return FilePtr(file, &std::fclose);
+}
+
 Result<std::string> readFileBytes(const std::string& path, const std::string& what,
                                   std::uintmax_t maxBytes) {
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
-                                                         &std::fclose);
-    if (!file) {
-        return Error("cannot open " + what + " '" + path +
-                     "': " + std::generic_category().message(errno));
-    }
+    auto opened = openRegularFile(path);
+    if (!opened)
+        return Error("cannot open " + what + " '" + path + "': " + opened.error().message());
+    FilePtr file = std::move(*opened);
     std::error_code ec;
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
     const std::string tooLarge = what + " file '" + path + "' is too large (at most " +
                                  std::to_string(maxBytes >> 20) + " MiB)";
     if (!ec && size > maxBytes) return Error(tooLarge);
-    // Read in chunks up to the limit: file_size is unknown for pipes and may be stale.
+    // Read in chunks up to the limit: file_size may be stale.
     std::string text;
     char buffer[1 << 16];
     for (;;) {

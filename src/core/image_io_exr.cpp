@@ -66,16 +66,12 @@ class AtomicFileStream final : public Imf::OStream {
     int error_ = 0;
 };
 
-// OpenEXR's own message for a missing file is long and varies by version; opening it first gives
-// the same message as the PNG reader.
-bool canOpen(const std::string& path, int* error) {
-    std::FILE* file = std::fopen(path.c_str(), "rb");
-    if (file == nullptr) {
-        *error = errno;
-        return false;
-    }
-    std::fclose(file);
-    return true;
+// OpenEXR's own message for a missing file is long and varies by version, and it would block on
+// a FIFO; opening it first as a regular file gives the same messages as the PNG reader.
+Status canOpen(const std::string& path) {
+    auto opened = openRegularFile(path);
+    if (!opened) return Error("cannot open '" + path + "': " + opened.error().message());
+    return Ok{};
 }
 
 // The channels to read, in image order: R,G,B(,A), or Y(,A).
@@ -173,10 +169,7 @@ Status writeExrImpl(AtomicFile& out, const Image& image) {
 }  // namespace
 
 Result<Image> readExr(const std::string& path) {
-    int error = 0;
-    if (!canOpen(path, &error)) {
-        return Error("cannot open '" + path + "': " + std::generic_category().message(error));
-    }
+    if (Status s = canOpen(path); !s) return s.error();
     try {
         return readExrImpl(path);
     } catch (const std::exception& e) {

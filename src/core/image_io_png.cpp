@@ -40,12 +40,6 @@ struct PngHeader {
     std::size_t rowBytes = 0;
 };
 
-struct FileCloser {
-    void operator()(std::FILE* file) const {
-        if (file != nullptr) std::fclose(file);
-    }
-};
-
 // Frees libpng's structures on every way out of the calling function.
 struct PngReadStructs {
     png_structp png = nullptr;
@@ -164,8 +158,9 @@ int alphaChannel(int channels) {
 }
 
 Result<Image> readPngImpl(const std::string& path, PngEncoding encoding) {
-    std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
-    if (!file) return openError(path, errno);
+    auto opened = openRegularFile(path);
+    if (!opened) return Error("cannot open '" + path + "': " + opened.error().message());
+    FilePtr file = std::move(*opened);
 
     std::array<png_byte, 8> signature{};
     if (std::fread(signature.data(), 1, signature.size(), file.get()) != signature.size()) {

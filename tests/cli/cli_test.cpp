@@ -151,7 +151,8 @@ TEST_F(Cli, OtherBadArguments) {
     expectError("info " + scene + " --solver magic", "--solver 'magic' is not one of");
     expectError("bench " + scene + " --backend auto", "--backend 'auto' is not cpu or gpu");
     expectError("render " + scene + " --out " + path("x.tiff"), ".exr or .png");
-    expectError("render " + scene + " --rays 0 --out " + path("x.exr"), "rays must be");
+    expectError("render " + scene + " --rays 0 --out " + path("x.exr"),
+                "--rays: '0' is not a whole number in 1..");
     const RunResult r = runLuxel("render");  // CLI11 usage error: non-zero, no crash
     EXPECT_NE(r.exitCode, 0);
     EXPECT_LT(r.exitCode, 128) << r.output;

@@ -1,6 +1,10 @@
 // The --script parser and its frame-by-frame player (no display needed).
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
+#include <sys/stat.h>
+
 #include "input_script.h"
 #include "script_player.h"
 
@@ -74,6 +78,11 @@ TEST(InputScript, ErrorsNameTheFileAndLine) {
         {"wheel\n", "s.txt:1: wheel: expected 'wheel NOTCHES'"},
         {"wheel 0\n", "s.txt:1: wheel: '0' is not a wheel step"},
         {"wheel up\n", "s.txt:1: wheel: 'up' is not a wheel step"},
+        {"wait 1e308\n", "s.txt:1: wait: '1e308' is not a number of seconds in 0..3600"},
+        {"wait 3600.5\n", "s.txt:1: wait: '3600.5'"},
+        {"wait nan\n", "s.txt:1: wait: 'nan'"},
+        {"at 1e308 quit\n", "s.txt:1: expected 'at SECONDS COMMAND ...' with SECONDS in 0..3600"},
+        {"at inf quit\n", "s.txt:1: expected 'at SECONDS"},
     };
     for (const Case& c : cases) {
         auto script = parseScript(c.text, "s.txt", anyKey);
@@ -96,6 +105,39 @@ TEST(InputScript, MissingFileIsAnError) {
     auto script = loadScript("/nonexistent/script.txt", anyKey);
     ASSERT_FALSE(script);
     EXPECT_NE(script.error().message().find("/nonexistent/script.txt"), std::string::npos);
+}
+
+TEST(InputScript, TheLongestWaitIsAccepted) {
+    auto script = parseScript("wait 3600\nat 3600 quit\n", "s.txt", anyKey);
+    ASSERT_TRUE(script) << script.error().message();
+    EXPECT_EQ(script->events[0].seconds, 3600.0);
+    EXPECT_EQ(script->events[1].at, 3600.0);
+}
+
+TEST(InputScript, ADirectoryIsNotAScript) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "luxel_InputScript_ADirectoryIsNotAScript";
+    std::filesystem::create_directories(dir);
+    auto script = loadScript(dir.string(), anyKey);
+    std::filesystem::remove_all(dir);
+    ASSERT_FALSE(script);
+    EXPECT_NE(script.error().message().find(dir.string() + "': not a regular file"),
+              std::string::npos)
+        << script.error().message();
+}
+
+TEST(InputScript, AFifoIsRefusedWithoutBlocking) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "luxel_InputScript_AFifoIsRefusedWithoutBlocking";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    const std::string fifo = (dir / "script.fifo").string();
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    auto script = loadScript(fifo, anyKey);  // opening a FIFO for reading would wait for a writer
+    std::filesystem::remove_all(dir);
+    ASSERT_FALSE(script);
+    EXPECT_NE(script.error().message().find("not a regular file"), std::string::npos)
+        << script.error().message();
 }
 
 Script parse(const char* text) {

@@ -121,6 +121,7 @@ Runner addBenchCommand(CLI::App& app) {
                    "comma-separated sizes, WxH or N for NxN (default: 2D 256,512,1024,2048; "
                    "voxel the scene's camera size)");
     app.add_option("--repeat", args->repeat, "runs per size (the best is printed)")
+        ->check(wholeIn(1, 1000))
         ->capture_default_str();
     return [args] { return runBench(*args); };
 }

@@ -67,7 +67,8 @@ Runner addCompareCommand(CLI::App& app) {
     app.add_option("test", args->test, "image to judge (.exr or .png)")->required();
     app.add_option("reference", args->reference, "reference image")->required();
     app.add_option("--diff", args->diff, "write |test - reference| as a PNG");
-    app.add_option("--diff-scale", args->diffScale, "error shown as white (default: max error)");
+    app.add_option("--diff-scale", args->diffScale, "error shown as white (default: max error)")
+        ->check(finiteIn(0.0, 1e30));
     app.add_option("--mask", args->mask, "only pixels where this image is > 0.5 count");
     return [args] { return runCompare(*args); };
 }

@@ -18,6 +18,7 @@
 #include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/metrics.h"
+#include "luxel/gi2d/reference_solver.h"
 #include "luxel/voxel/voxel_scene.h"
 
 extern char** environ;
@@ -173,7 +174,9 @@ Runner addCompareSolversCommand(CLI::App& app) {
     auto args = std::make_shared<CompareSolversArgs>();
     app.add_option("scene", args->scene, "scene file (.json)")->required();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
-    app.add_option("--rays", args->rays, "reference directions per pixel")->capture_default_str();
+    app.add_option("--rays", args->rays, "reference directions per pixel")
+        ->check(wholeIn(1, gi2d::kMaxReferenceRays))
+        ->capture_default_str();
     app.add_option("--grid", args->grid, "write the display images side by side (.png)");
     return [args] { return runCompareSolvers(*args); };
 }

@@ -102,7 +102,9 @@ Runner addInfoCommand(CLI::App& app) {
         ->capture_default_str();
     app.add_option("--merge", args->mergeName, "RC: vanilla or bilinear-fix")
         ->capture_default_str();
-    app.add_option("--rays", args->rays, "directions per pixel")->capture_default_str();
+    app.add_option("--rays", args->rays, "directions per pixel")
+        ->check(wholeIn(1, gi2d::kMaxReferenceRays))
+        ->capture_default_str();
     return [args] { return runInfo(*args); };
 }
 

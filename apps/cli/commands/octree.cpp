@@ -86,7 +86,7 @@ Runner addOctreeCommand(CLI::App& app) {
     convert
         ->add_option("--max", args->vdb.max,
                      ".vdb input: the fog value that maps to opacity 255 (default 1)")
-        ->check(CLI::PositiveNumber);
+        ->check(finiteIn(1e-30, 1e30));
     Runner runTiles;
     CLI::App* tiles = addOctreeTilesCommand(app, runTiles);
     return [args, build, convert, tiles, runTiles] {

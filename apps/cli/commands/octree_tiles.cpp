@@ -11,6 +11,7 @@
 #include "commands/command.h"
 #include "luxel/core/timer.h"
 #include "luxel/gpu/context.h"
+#include "luxel/octree/octree.h"
 #include "luxel/octree/octree_gpu.h"
 #include "luxel/octree/octree_render.h"
 #include "luxel/octree/octree_tiles.h"
@@ -151,6 +152,7 @@ CLI::App* addOctreeTilesCommand(CLI::App& octree, Runner& run) {
     tiles->add_option("--backend", args->backend, "cpu or gpu")->capture_default_str();
     tiles->add_option("--device", args->device, "GPU device (index or name part)");
     tiles->add_option("--tile-bits", args->tileBits, "tiles are 2^bits cells a side")
+        ->check(wholeIn(1, octree::kMaxDepth))
         ->capture_default_str();
     tiles->add_flag("--shadows", args->shadows, "keep the scene's sun shadows in both frames");
     tiles->add_option("--repeat", args->repeat, "frames timed (the best is reported)")

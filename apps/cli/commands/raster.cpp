@@ -39,6 +39,7 @@ Runner addRasterCommand(CLI::App& app) {
     app.add_option("--emission", args->emission, "emission radiance image (.exr recommended)");
     app.add_option("--absorption", args->absorption, "absorption coefficient image (.exr)");
     app.add_option("--supersample", args->supersample, "edge samples per pixel side")
+        ->check(wholeIn(1, 64))
         ->capture_default_str();
     return [args] { return runRaster(*args); };
 }

@@ -18,6 +18,7 @@
 #include "luxel/gi2d/solver_choice.h"
 #include "luxel/gpu/backend_policy.h"
 #include "luxel/gpu/context.h"
+#include "luxel/voxel/render_image.h"
 #include "luxel/voxel/voxel_scene.h"
 
 namespace luxel::cli {
@@ -333,31 +334,40 @@ Runner addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
     app.add_option("--rays", args->rays, "directions per pixel (reference solver)")
+        ->check(wholeIn(1, gi2d::kMaxReferenceRays))
         ->capture_default_str();
     app.add_option("--threads", args->threads, "worker threads (0 = all cores)")
+        ->check(wholeIn(0, 4096))
         ->capture_default_str();
     app.add_option("--seed", args->seed, "random seed (reference solver)")->capture_default_str();
     app.add_option("--supersample", args->supersample, "edge samples per pixel side")
+        ->check(wholeIn(1, 64))
         ->capture_default_str();
     app.add_option("--traced-levels", args->tracedLevels,
                    "HRC: cascades traced exactly; the rest by ray extension (1 = extend from c0)")
+        ->check(wholeIn(1, 64))
         ->capture_default_str();
     app.add_flag("--no-blur", args->noBlur, "HRC: skip the opacity-gated cross blur (Eq 21)");
     app.add_option("--frustum", args->frustum, "HRC debug: only this frustum (+x, +y, -x, -y)");
     app.add_option("--cascade", args->cascade,
                    "debug: the cascade that --view cascade|probes shows")
+        ->check(wholeIn(0, 64))
         ->capture_default_str();
     app.add_option("--merge", args->mergeName, "RC: vanilla or bilinear-fix")
         ->capture_default_str();
     app.add_option("--march", args->march, "RC: interval tracing: auto, dda (medium), sdf (shapes)")
         ->capture_default_str();
     app.add_option("--probe-spacing", args->probeSpacing, "RC: cascade-0 probe spacing (px)")
+        ->check(wholeIn(1, 64))
         ->capture_default_str();
     app.add_option("--base-rays", args->baseRays, "RC: cascade-0 directions per probe")
+        ->check(wholeIn(1, 1024))
         ->capture_default_str();
     app.add_option("--base-interval", args->baseInterval, "RC: cascade-0 interval length (px)")
+        ->check(finiteIn(1e-3, 1e5))
         ->capture_default_str();
     app.add_option("--max-cascades", args->maxCascades, "RC: cap on the cascade count (0 = none)")
+        ->check(wholeIn(0, 16))
         ->capture_default_str();
     app.add_option("--view", args->view,
                    "gi (default), nogi (emission only), probes (RC probe grid of --cascade on the "
@@ -367,6 +377,7 @@ Runner addRenderCommand(CLI::App& app) {
         ->required();
     app.add_option("--png", args->png, "also write the display image (emission + fluence)");
     app.add_option("--exposure", args->exposure, "exposure in stops for PNG output")
+        ->check(finiteIn(-64.0, 64.0))
         ->capture_default_str();
     app.add_option("--tonemap", args->tonemap, "tone curve for PNG output: clamp, reinhard, aces")
         ->capture_default_str();
@@ -377,16 +388,17 @@ Runner addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     app.add_option("--device", args->device, "GPU: device index or part of its name");
     app.add_option("--bloom", args->bloom, "voxel/octree: bloom strength in [0, 1] (0 = off)")
-        ->check(CLI::Range(0.0, 1.0));
+        ->check(finiteIn(0.0, 1.0));
     app.add_option("--internal-scale", args->internalScale,
                    "voxel/octree: render at this fraction of the size, then upscale")
-        ->check(CLI::Range(double(post::kMinInternalScale), 1.0));
+        ->check(finiteIn(double(post::kMinInternalScale), 1.0));
     app.add_option("--upscaler", args->upscalerName, "voxel/octree: bilinear or edge");
     app.add_option("--sharpness", args->sharpness, "voxel/octree: sharpening after upscaling")
-        ->check(CLI::Range(0.0, 1.0));
+        ->check(finiteIn(0.0, 1.0));
     addVoxelSurfaceFlags(app, args->surfaces);
     app.add_option("--samples", args->samples,
-                   "voxel: samples per pixel, stratified (default: the scene's render.samples)");
+                   "voxel: samples per pixel, stratified (default: the scene's render.samples)")
+        ->check(wholeIn(0, voxel::kMaxSamplesPerPixel));
     app.add_option(
         "--filter", args->filter,
         "voxel: texture filter nearest, trilinear or anisotropic (default: the scene's)");

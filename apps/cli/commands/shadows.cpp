@@ -299,7 +299,7 @@ Runner addShadowsCommand(CLI::App& app) {
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
     app.add_option("--sun-step", args->sunStep, "degrees the sun turns per frame")
-        ->check(CLI::Range(-90.0, 90.0))
+        ->check(finiteIn(-90.0, 90.0))
         ->capture_default_str();
     app.add_option(
         "--methods", args->methods,
@@ -307,12 +307,12 @@ Runner addShadowsCommand(CLI::App& app) {
         "blend-msm-near, blend-min, msm-penumbra, blend-penumbra, blend-msm-near-penumbra, flood");
     app.add_option("--sun-radius", args->sunRadius,
                    "sun angular radius in degrees (default: the scene's)")
-        ->check(CLI::Range(0.0, 20.0));
+        ->check(finiteIn(0.0, 20.0));
     app.add_option("--blend-band", args->blendBand,
                    "NEAR,FAR: the blend band (default: the scene's)")
         ->delimiter(',')
         ->expected(2)
-        ->check(CLI::Range(0.0, 1e6));
+        ->check(finiteIn(0.0, 1e6));
     app.add_option("--out-dir", args->outDir, "write each method's V image (PNG) here");
     app.add_flag("--markdown", args->markdown, "print the tables as Markdown");
     return [args] { return runShadows(*args); };

@@ -92,7 +92,7 @@ Runner addUpscaleCommand(CLI::App& app) {
     auto args = std::make_shared<UpscaleArgs>();
     app.add_option("scene", args->scene, "voxel scene file (.json)")->required();
     app.add_option("--scale", args->scale, "internal resolution scale")
-        ->check(CLI::Range(double(post::kMinInternalScale), 1.0))
+        ->check(finiteIn(double(post::kMinInternalScale), 1.0))
         ->capture_default_str();
     app.add_option("--size", args->size, "output size WIDTHxHEIGHT (default: the scene camera's)");
     app.add_option("--frames", args->frames, "temporal upscaler frames (0: skip it)")

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -11,7 +12,15 @@
 
 namespace luxel {
 
-// The bytes of a file of at most `maxBytes` ("cannot open scene 'p': reason",
+using FilePtr = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
+
+// `path` opened for reading when it is a regular file. A FIFO or a device would block the reader
+// (opening a FIFO waits for a writer) or never end, so the open is non-blocking and fstat on the
+// open descriptor decides: nothing can be swapped in between. The error is the bare reason
+// ("not a regular file", "No such file or directory") for callers to prefix.
+Result<FilePtr> openRegularFile(const std::string& path);
+
+// The bytes of a regular file of at most `maxBytes` ("cannot open scene 'p': reason",
 // "scene file 'p' is too large (at most 64 MiB)"). `what` names the kind of file.
 Result<std::string> readFileBytes(const std::string& path, const std::string& what,
                                   std::uintmax_t maxBytes = std::uintmax_t{64} << 20);
