@@ -23,6 +23,7 @@ Result<FilePtr> openRegularFile(const std::string& path) {
     };
     struct stat info {};
     if (::fstat(fd, &info) != 0) return fail(std::generic_category().message(errno));
+    if (S_ISDIR(info.st_mode)) return fail(std::generic_category().message(EISDIR));
     if (!S_ISREG(info.st_mode)) return fail("not a regular file");
     const int flags = ::fcntl(fd, F_GETFL);
     if (flags < 0 || ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) != 0) {

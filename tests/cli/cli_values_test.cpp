@@ -3,6 +3,7 @@
 // files (a FIFO would block the reader forever).
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <string>
 
 #include <sys/stat.h>
@@ -26,12 +27,13 @@ class CliValues : public luxel::test::CliFixture {
         return p;
     }
     // Opening a FIFO for reading waits for a writer: `timeout` turns a hang into exit 124.
-    void expectNotRegular(const std::string& args) {
+    void expectNotRegular(const std::string& args,
+                          const std::string& needle = "not a regular file") {
         const luxel::test::RunResult r =
             luxel::test::runCommand("timeout 20 " + std::string(LUXEL_CLI_PATH) + " " + args);
         EXPECT_EQ(r.exitCode, 1) << args << "\n" << r.output;
         EXPECT_NE(r.output.find("luxel: error: "), std::string::npos) << r.output;
-        EXPECT_NE(r.output.find("not a regular file"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(needle), std::string::npos) << r.output;
     }
 };
 
@@ -87,7 +89,9 @@ TEST_F(CliValues, FifosAndFoldersAreNotRead) {
     expectNotRegular("info " + path("scene.json"));
     expectNotRegular("compare " + fifo("a.png") + " " + fifo("b.png"));
     expectNotRegular("compare " + fifo("a.exr") + " " + path("a.png"));
-    expectNotRegular("info " + dir_.string());
+    expectNotRegular("info " + dir_.string(), "Is a directory");
+    std::filesystem::create_directory(path("folder.png"));
+    expectNotRegular("compare " + path("folder.png") + " " + path("a.png"), "Is a directory");
 }
 
 }  // namespace

@@ -121,8 +121,7 @@ TEST(InputScript, ADirectoryIsNotAScript) {
     auto script = loadScript(dir.string(), anyKey);
     std::filesystem::remove_all(dir);
     ASSERT_FALSE(script);
-    EXPECT_NE(script.error().message().find(dir.string() + "': not a regular file"),
-              std::string::npos)
+    EXPECT_NE(script.error().message().find(dir.string() + "': Is a directory"), std::string::npos)
         << script.error().message();
 }
 

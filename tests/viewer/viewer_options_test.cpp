@@ -40,6 +40,10 @@ TEST(ViewerOptions, RejectsBadValuesWithTheOptionName) {
         {{"s.json", "--solver", "pt"}, "--solver 'pt' is not one of: reference, hrc, rc"},
         {{"s.json", "--merge", "nearest"}, "--merge 'nearest' is not one of"},
         {{"s.json", "--internal-scale", "0"}, "--internal-scale"},
+        {{"s.json", "--internal-scale", "nan"}, "--internal-scale: 'nan' is not a finite number"},
+        {{"s.json", "--exposure", "nan"}, "--exposure: 'nan' is not a finite number in [-64, 64]"},
+        {{"s.json", "--exposure", "inf"}, "--exposure: 'inf'"},
+        {{"s.json", "--threads", "-5"}, "--threads"},
     };
     for (const Case& c : cases) {
         auto parsed = parseViewerOptions(c.args);

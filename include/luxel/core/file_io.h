@@ -17,7 +17,7 @@ using FilePtr = std::unique_ptr<std::FILE, int (*)(std::FILE*)>;
 // `path` opened for reading when it is a regular file. A FIFO or a device would block the reader
 // (opening a FIFO waits for a writer) or never end, so the open is non-blocking and fstat on the
 // open descriptor decides: nothing can be swapped in between. The error is the bare reason
-// ("not a regular file", "No such file or directory") for callers to prefix.
+// ("not a regular file", "Is a directory", "No such file or directory") for callers to prefix.
 Result<FilePtr> openRegularFile(const std::string& path);
 
 // The bytes of a regular file of at most `maxBytes` ("cannot open scene 'p': reason",
