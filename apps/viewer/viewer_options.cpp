@@ -3,10 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include <charconv>
-#include <cmath>
-#include <cstdio>
-
+#include "common/number_options.h"
 #include "luxel/core/image_size.h"
 
 namespace luxel::viewer {
@@ -16,25 +13,6 @@ Result<std::pair<int, int>> parseWindowSize(const std::string& text, const std::
     if (!size) return size.error();
     return std::pair{size->width, size->height};
 }
-
-namespace {
-
-// A finite number in [lo, hi]: CLI::Range on a float lets "nan" through.
-CLI::Validator finiteIn(double lo, double hi, const std::string& range) {
-    return CLI::Validator(
-        [lo, hi, range](std::string& text) -> std::string {
-            double v = 0;
-            const char* end = text.data() + text.size();
-            const auto [stop, ec] = std::from_chars(text.data(), end, v);
-            if (ec != std::errc{} || stop != end || !std::isfinite(v) || v < lo || v > hi) {
-                return "'" + text + "' is not a finite number in " + range;
-            }
-            return {};
-        },
-        "FLOAT in " + range);
-}
-
-}  // namespace
 
 Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
     ParsedOptions parsed;
@@ -50,13 +28,13 @@ Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
     app.add_option("--internal-size", internalSize, "render size WxH (independent of the window)");
     app.add_option("--internal-scale", o.internalScale,
                    "render size as a fraction of the canvas (2D) or window (voxel, octree)")
-        ->check(finiteIn(0.05, 4.0, "[0.05, 4]"));
+        ->check(options::finiteIn(0.05, 4.0));
     app.add_option("--backend", backend, "auto | cpu | gpu");
     app.add_option("--device", o.device, "Vulkan device index or name part");
     app.add_option("--solver", solver, "2D solver: hrc | rc | reference");
     app.add_option("--merge", merge, "2D RC merge: vanilla | bilinear-fix");
     app.add_option("--exposure", o.exposure, "exposure in stops")
-        ->check(finiteIn(-64.0, 64.0, "[-64, 64]"));
+        ->check(options::finiteIn(-64.0, 64.0));
     app.add_option("--script", o.script, "timed input events (docs/viewer.md)");
     app.add_option("--record", o.recordFrames, "write the next N rendered frames as PNG")
         ->check(CLI::Range(1, 1000000));

@@ -4,6 +4,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/number_options.h"
+
 #include <functional>
 #include <memory>
 #include <optional>
@@ -42,11 +44,10 @@ int reportError(const Error& error);
 // Whether `path` ends in `ext` (lower-case, with the dot), ignoring case.
 bool hasExtension(const std::string& path, const std::string& ext);
 
-// Numeric option checks. CLI::Range on a float lets "nan" through (every comparison with NaN is
-// false), so float options use finiteIn; whole-number options use wholeIn. A failed check is a
-// CLI::ValidationError, which main prints as one "luxel: error:" line naming the option.
-CLI::Validator finiteIn(double lo, double hi);
-CLI::Validator wholeIn(long long lo, long long hi);
+// Numeric option checks (common/number_options.h). A failed check is a CLI::ValidationError,
+// which main prints as one "luxel: error:" line naming the option.
+using options::finiteIn;
+using options::wholeIn;
 
 // "512x384" -> (512, 384); an empty string gives (0, 0) = the scene's own size.
 Result<std::pair<int, int>> parseSize(const std::string& text);

@@ -1,8 +1,5 @@
 // Helpers shared by the CLI subcommands.
 #include <cctype>
-#include <charconv>
-#include <cmath>
-#include <cstdio>
 #include <string_view>
 
 #include "commands/command.h"
@@ -25,46 +22,6 @@ bool hasExtension(const std::string& path, const std::string& ext) {
     std::string tail = path.substr(path.size() - ext.size());
     for (char& c : tail) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return tail == ext;
-}
-
-namespace {
-
-std::string number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
-
-}  // namespace
-
-CLI::Validator finiteIn(double lo, double hi) {
-    const std::string range = "[" + number(lo) + ", " + number(hi) + "]";
-    return CLI::Validator(
-        [lo, hi, range](std::string& text) -> std::string {
-            double v = 0;
-            const char* end = text.data() + text.size();
-            const auto [stop, ec] = std::from_chars(text.data(), end, v);
-            if (ec != std::errc{} || stop != end || !std::isfinite(v) || v < lo || v > hi) {
-                return "'" + text + "' is not a finite number in " + range;
-            }
-            return {};
-        },
-        "FLOAT in " + range);
-}
-
-CLI::Validator wholeIn(long long lo, long long hi) {
-    const std::string range = std::to_string(lo) + ".." + std::to_string(hi);
-    return CLI::Validator(
-        [lo, hi, range](std::string& text) -> std::string {
-            long long v = 0;
-            const char* end = text.data() + text.size();
-            const auto [stop, ec] = std::from_chars(text.data(), end, v);
-            if (ec != std::errc{} || stop != end || v < lo || v > hi) {
-                return "'" + text + "' is not a whole number in " + range;
-            }
-            return {};
-        },
-        "INT in " + range);
 }
 
 Result<std::pair<int, int>> parseSize(const std::string& text) {

@@ -49,10 +49,14 @@ LUXEL_FUNC float vsmVisibility(float m1, float m2, float z) {
     return variance / (variance + d * d);
 }
 
-// Hamburger 4MSM: the shadow intensity G (occluded fraction), the sharpest lower bound consistent
-// with the four moments b, at receiver depth zf, after biasing b by alpha towards 0.5.
-LUXEL_FUNC float msmShadowIntensity(vec4 moments, float zf, float alpha) {
-    vec4 b = moments * (1.0f - alpha) + vec4(0.5f) * alpha;
+// The moments biased by alpha towards 0.5 (Peters & Klein 2015, moment bias).
+LUXEL_FUNC vec4 msmBiased(vec4 moments, float alpha) {
+    return moments * (1.0f - alpha) + vec4(0.5f) * alpha;
+}
+
+// The other two support points z2 <= z3 of the canonical three-atom representation of the
+// biased moments b with an atom at zf: the roots of c1 + c2 z + c3 z^2 where B c = (1, zf, zf^2).
+LUXEL_FUNC vec2 msmSupport(vec4 b, float zf) {
     // LDL^T of the Hankel matrix [[1, b1, b2], [b1, b2, b3], [b2, b3, b4]]. The bias keeps it
     // positive definite; the floors only catch fp32 rounding of nearly singular moments.
     float d22 = max(b.y - b.x * b.x, 1.0e-12f);
@@ -64,16 +68,23 @@ LUXEL_FUNC float msmShadowIntensity(vec4 moments, float zf, float alpha) {
     float c3 = y3 / d33;
     float c2 = y2 / d22 - l32 * c3;
     float c1 = 1.0f - b.x * c2 - b.y * c3;
-    // Roots z2 <= z3 of c1 + c2 z + c3 z^2 (the other two support points of the canonical
-    // three-atom representation), by the cancellation-free quadratic formula: with c3 near 0 (a
-    // nearly two-atom distribution in fp32) one root goes far outside [0, 1] and stays finite.
+    // The cancellation-free quadratic formula: with c3 near 0 (a nearly two-atom distribution in
+    // fp32) one root goes far outside [0, 1] and stays finite.
     if (abs(c3) < 1.0e-20f) c3 = c3 < 0.0f ? -1.0e-20f : 1.0e-20f;
     float s = sqrt(max(c2 * c2 - 4.0f * c1 * c3, 0.0f));
     float k = -0.5f * (c2 + (c2 < 0.0f ? -s : s));
     float ra = k / c3;
     float rb = abs(k) > 0.0f ? c1 / k : ra;
-    float z2 = min(ra, rb);
-    float z3 = max(ra, rb);
+    return vec2(min(ra, rb), max(ra, rb));
+}
+
+// Hamburger 4MSM: the shadow intensity G (occluded fraction), the sharpest lower bound consistent
+// with the four moments b, at receiver depth zf, after biasing b by alpha towards 0.5.
+LUXEL_FUNC float msmShadowIntensity(vec4 moments, float zf, float alpha) {
+    vec4 b = msmBiased(moments, alpha);
+    vec2 support = msmSupport(b, zf);
+    float z2 = support.x;
+    float z3 = support.y;
     if (zf <= z2) return 0.0f;
     if (zf <= z3) return (zf * z3 - b.x * (zf + z3) + b.y) / ((z3 - z2) * (zf - z2));
     return 1.0f - (z2 * z3 - b.x * (z2 + z3) + b.y) / ((zf - z2) * (zf - z3));
@@ -86,22 +97,10 @@ LUXEL_FUNC float msmShadowIntensity(vec4 moments, float zf, float alpha) {
 // "Beyond hard shadows: moment shadow maps for single scattering, soft shadows and
 // translucent occluders", I3D 2016) in its simplest form.
 LUXEL_FUNC vec2 msmBlocker(vec4 moments, float zf, float alpha) {
-    vec4 b = moments * (1.0f - alpha) + vec4(0.5f) * alpha;
-    float d22 = max(b.y - b.x * b.x, 1.0e-12f);
-    float l32 = (b.z - b.x * b.y) / d22;
-    float d33 = max((b.w - b.y * b.y) - l32 * l32 * d22, 1.0e-14f);
-    float y2 = zf - b.x;
-    float y3 = zf * zf - b.y - l32 * y2;
-    float c3 = y3 / d33;
-    float c2 = y2 / d22 - l32 * c3;
-    float c1 = 1.0f - b.x * c2 - b.y * c3;
-    if (abs(c3) < 1.0e-20f) c3 = c3 < 0.0f ? -1.0e-20f : 1.0e-20f;
-    float s = sqrt(max(c2 * c2 - 4.0f * c1 * c3, 0.0f));
-    float k = -0.5f * (c2 + (c2 < 0.0f ? -s : s));
-    float ra = k / c3;
-    float rb = abs(k) > 0.0f ? c1 / k : ra;
-    float z2 = min(ra, rb);
-    float z3 = max(ra, rb);
+    vec4 b = msmBiased(moments, alpha);
+    vec2 support = msmSupport(b, zf);
+    float z2 = support.x;
+    float z3 = support.y;
     if (zf <= z2) return vec2(0.0f, zf);
     // Weights of z2 and z3: the Vandermonde system sum w = 1, sum w z = b1, sum w z^2 = b2.
     float w2 = (zf * z3 - b.x * (zf + z3) + b.y) / ((z3 - z2) * (zf - z2));
