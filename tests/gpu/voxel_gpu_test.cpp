@@ -16,6 +16,7 @@
 #include "luxel/voxel/surface_cast.h"
 #include "luxel/voxel/voxel_gpu.h"
 #include "luxel/voxel/voxel_scene.h"
+#include "support/display_parity.h"
 
 namespace luxel::voxel {
 namespace {
@@ -30,42 +31,9 @@ std::unique_ptr<gpu::Context> makeContext() {
     auto context = makeContext();  \
     if (!context) GTEST_SKIP() << "no Vulkan device: " << gpu::Context::create().error().message()
 
-// 8-bit display values (ACES tonemap, sRGB) of two renders, compared channel by channel.
-struct Parity {
-    double differingPixels = 0;  // share of pixels with a channel off by more than 1/255
-    double meanAbs = 0;          // mean |difference| over all channels, in 1/255 units
-    int maxAbs = 0;              // largest channel difference, in 1/255 units
-};
-
-Parity compareDisplay(const Image& a, const Image& b) {
-    const Image ta = toneMap(a, {}), tb = toneMap(b, {});
-    Parity p;
-    long differing = 0;
-    double sum = 0;
-    for (int y = 0; y < a.height(); ++y) {
-        for (int x = 0; x < a.width(); ++x) {
-            int worst = 0;
-            for (int c = 0; c < 3; ++c) {
-                const auto byte = [&](const Image& im) {
-                    return static_cast<int>(std::lround(linearToSrgb(im.at(x, y, c)) * 255.0f));
-                };
-                const int d = std::abs(byte(ta) - byte(tb));
-                worst = std::max(worst, d);
-                sum += d;
-            }
-            differing += worst > 1;
-            p.maxAbs = std::max(p.maxAbs, worst);
-        }
-    }
-    p.differingPixels = static_cast<double>(differing) / a.pixelCount();
-    p.meanAbs = sum / (3.0 * a.pixelCount());
-    return p;
-}
-
-void print(const char* what, const Parity& p) {
-    std::printf("%s: %.4f%% pixels differ by > 1/255, mean |diff| %.5f/255, max %d/255\n", what,
-                100.0 * p.differingPixels, p.meanAbs, p.maxAbs);
-}
+using test::compareDisplay;
+using test::Parity;
+using test::printParity;
 
 // Slot 0: bricks-like opaque tint; slot 1: leaves with every other texel a cutout.
 TextureSet testTextures() {
@@ -138,7 +106,7 @@ TEST(VoxelGpu, SimpleAxisAlignedSceneMatchesExactly) {
     auto image = gpu->render(camera, options);
     ASSERT_TRUE(image.ok()) << image.error().message();
     const Parity p = compareDisplay(*image, render(world, camera, options));
-    print("axis-aligned boxes", p);
+    printParity("axis-aligned boxes", p);
     EXPECT_LE(p.maxAbs, 1);
     EXPECT_EQ(p.differingPixels, 0.0);
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
@@ -158,9 +126,9 @@ TEST(VoxelGpu, TexturedTerrainMatchesTheCpu) {
         auto image = gpu->render(camera, options);
         ASSERT_TRUE(image.ok()) << image.error().message();
         const Parity p = compareDisplay(*image, render(world, camera, options, &textures));
-        print(mode == ShadeOptions::ReflectionMode::EnergyConserving ? "terrain, energy"
-                                                                     : "terrain, seed",
-              p);
+        printParity(mode == ShadeOptions::ReflectionMode::EnergyConserving ? "terrain, energy"
+                                                                           : "terrain, seed",
+                    p);
         EXPECT_LT(p.differingPixels, 0.005);
         EXPECT_LT(p.meanAbs, 0.05);
     }
@@ -179,7 +147,7 @@ TEST(VoxelGpu, GardenSceneMatchesTheCpu) {
     ASSERT_TRUE(image.ok()) << image.error().message();
     const Parity p = compareDisplay(
         *image, render(scene->world, scene->camera, scene->shading, &scene->textures));
-    print("garden", p);
+    printParity("garden", p);
     EXPECT_LT(p.differingPixels, 0.005);
     EXPECT_LT(p.meanAbs, 0.05);
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
@@ -231,7 +199,7 @@ TEST(VoxelGpu, PhysicalLightingMatchesTheCpu) {
         ASSERT_TRUE(image.ok()) << image.error().message();
         const Image cpu = render(world, camera, o, &textures);
         const Parity p = compareDisplay(*image, cpu);
-        print("physical terrain", p);
+        printParity("physical terrain", p);
         EXPECT_LT(p.differingPixels, 0.01);
         EXPECT_LT(p.meanAbs, 0.1);
     }
@@ -257,7 +225,7 @@ TEST(VoxelGpu, GlassSceneMatchesTheCpu) {
     ASSERT_TRUE(image.ok()) << image.error().message();
     const Parity p = compareDisplay(
         *image, render(scene->world, scene->camera, scene->shading, &scene->textures));
-    print("glass", p);
+    printParity("glass", p);
     EXPECT_LT(p.differingPixels, 0.01);
     EXPECT_LT(p.meanAbs, 0.1);
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
@@ -279,7 +247,7 @@ TEST(VoxelGpu, UpdateRegionMatchesACpuRenderOfTheEditedWorld) {
     auto after = gpu->render(camera, options);
     ASSERT_TRUE(after.ok()) << after.error().message();
     const Parity p = compareDisplay(*after, render(world, camera, options, &textures));
-    print("after updateRegion", p);
+    printParity("after updateRegion", p);
     EXPECT_LT(p.differingPixels, 0.005);
     EXPECT_GT(compareDisplay(before, *after).differingPixels, 0.01);  // the edit shows
     // A region outside the world uploads nothing and is fine.

@@ -16,6 +16,7 @@
 #include "luxel/voxel/shadows/sun_visibility.h"
 #include "luxel/voxel/voxel_gpu.h"
 #include "luxel/voxel/voxel_scene.h"
+#include "support/display_parity.h"
 
 namespace luxel::voxel {
 namespace {
@@ -30,38 +31,9 @@ std::unique_ptr<gpu::Context> makeContext() {
     auto context = makeContext();  \
     if (!context) GTEST_SKIP() << "no Vulkan device: " << gpu::Context::create().error().message()
 
-// Share of pixels whose 8-bit display value (ACES, sRGB) differs by more than 1/255 in a
-// channel, and the mean |difference| in 1/255 units (as voxel_gpu_test.cpp).
-struct Parity {
-    double differingPixels = 0;
-    double meanAbs = 0;
-};
-
-Parity compareDisplay(const Image& a, const Image& b) {
-    const Image ta = toneMap(a, {}), tb = toneMap(b, {});
-    long differing = 0;
-    double sum = 0;
-    for (int y = 0; y < a.height(); ++y) {
-        for (int x = 0; x < a.width(); ++x) {
-            int worst = 0;
-            for (int c = 0; c < 3; ++c) {
-                const auto byte = [&](const Image& im) {
-                    return static_cast<int>(std::lround(linearToSrgb(im.at(x, y, c)) * 255.0f));
-                };
-                const int d = std::abs(byte(ta) - byte(tb));
-                worst = std::max(worst, d);
-                sum += d;
-            }
-            differing += worst > 1;
-        }
-    }
-    return {static_cast<double>(differing) / a.pixelCount(), sum / (3.0 * a.pixelCount())};
-}
-
-void print(const std::string& what, const Parity& p) {
-    std::printf("%s: %.4f%% pixels differ by > 1/255, mean |diff| %.5f/255\n", what.c_str(),
-                100.0 * p.differingPixels, p.meanAbs);
-}
+using test::compareDisplay;
+using test::Parity;
+using test::printParity;
 
 VoxelScene garden() {
     auto scene =
@@ -94,7 +66,7 @@ TEST(VoxelPhysicalGpu, SunVisibilityMethodsMatchTheCpu) {
         ASSERT_TRUE(image.ok()) << image.error().message();
         const Parity p =
             compareDisplay(*image, render(scene.world, scene.camera, o, &scene.textures));
-        print(std::string("garden, ") + shadowMethodName(method), p);
+        printParity(std::string("garden, ") + shadowMethodName(method), p);
         EXPECT_LT(p.differingPixels, 0.01) << shadowMethodName(method);
         EXPECT_LT(p.meanAbs, 0.1) << shadowMethodName(method);
         // The method's arrays were read: the image is not the hard-shadowed one.
@@ -104,7 +76,7 @@ TEST(VoxelPhysicalGpu, SunVisibilityMethodsMatchTheCpu) {
     // Hard stays the pass's own shadow ray, as the CPU's.
     const Parity p =
         compareDisplay(*hardImage, render(scene.world, scene.camera, hard, &scene.textures));
-    print("garden, hard", p);
+    printParity("garden, hard", p);
     EXPECT_LT(p.differingPixels, 0.01);
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
 }
@@ -138,7 +110,7 @@ TEST(VoxelPhysicalGpu, FilteredTexturesAndNormalMapsMatchTheCpu) {
         ASSERT_TRUE(image.ok()) << image.error().message();
         const Parity p =
             compareDisplay(*image, render(scene.world, scene.camera, o, &scene.textures));
-        print(std::string("garden, ") + c.name, p);
+        printParity(std::string("garden, ") + c.name, p);
         EXPECT_LT(p.differingPixels, 0.01) << c.name;
         EXPECT_LT(p.meanAbs, 0.1) << c.name;
     }
@@ -181,7 +153,7 @@ TEST(VoxelPhysicalGpu, GivenVisibilityEqualsTheBuiltOneAndEditsRebuild) {
     ASSERT_TRUE(after.ok()) << after.error().message();
     const Parity p =
         compareDisplay(*after, render(scene.world, scene.camera, scene.shading, &scene.textures));
-    print("garden, sdf after an edit", p);
+    printParity("garden, sdf after an edit", p);
     EXPECT_LT(p.differingPixels, 0.01);
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
 }
