@@ -5,12 +5,14 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <system_error>
 
 #include "core/json_source_map.h"
+#include "luxel/core/memory.h"
 
 namespace luxel::json {
 
@@ -191,7 +193,65 @@ std::string boundMessage(std::string_view message) {
 
 namespace {
 
-struct TooDeep {};
+// Bytes a document costs per value, measured roughly for ordered_json: the 16-byte value, its
+// slot in the parent (a key string and a pair for object members) and allocator overhead.
+constexpr std::uint64_t kBytesPerJsonValue = 96;
+
+std::uint64_t maxJsonValues() {
+    const std::uint64_t available = availableMemoryBytes();
+    if (available == 0) return kMaxJsonValues;
+    return std::max<std::uint64_t>(1, std::min(kMaxJsonValues, available / kBytesPerJsonValue));
+}
+
+// The checking pass: counts values and nesting, builds nothing. Returning false stops the parse.
+struct BoundedSax final : nlohmann::json_sax<Json> {
+    explicit BoundedSax(std::uint64_t limit) : maxValues(limit) {}
+
+    bool value() { return ++values <= maxValues; }
+    bool open() {
+        if (++depth > kMaxNestingDepth) {
+            tooDeep = true;
+            return false;
+        }
+        return value();
+    }
+    bool close() {
+        --depth;
+        return true;
+    }
+
+    bool null() override { return value(); }
+    bool boolean(bool) override { return value(); }
+    bool number_integer(number_integer_t) override { return value(); }
+    bool number_unsigned(number_unsigned_t) override { return value(); }
+    bool number_float(number_float_t, const string_t&) override { return value(); }
+    bool string(string_t&) override { return value(); }
+    bool binary(binary_t&) override { return value(); }
+    bool start_object(std::size_t) override { return open(); }
+    bool key(string_t&) override { return true; }
+    bool end_object() override { return close(); }
+    bool start_array(std::size_t) override { return open(); }
+    bool end_array() override { return close(); }
+    bool parse_error(std::size_t, const std::string&,
+                     const nlohmann::detail::exception& e) override {
+        // Kept as nlohmann's own type (a parse_error, or out_of_range for 1e999), so parse()
+        // words it like a failed document parse.
+        if (const auto* syntax = dynamic_cast<const Json::parse_error*>(&e)) {
+            failure = std::make_exception_ptr(*syntax);
+        } else if (const auto* range = dynamic_cast<const Json::out_of_range*>(&e)) {
+            failure = std::make_exception_ptr(*range);
+        } else {
+            failure = std::make_exception_ptr(Json::other_error::create(599, e.what(), nullptr));
+        }
+        return false;
+    }
+
+    std::uint64_t maxValues;
+    std::uint64_t values = 0;
+    int depth = 0;
+    bool tooDeep = false;
+    std::exception_ptr failure;
+};
 
 Error locatedError(const std::string& sourceName, std::string_view text, std::size_t offset,
                    const std::string& message) {
@@ -225,21 +285,24 @@ Result<Json> parse(std::string_view text, const std::string& sourceName) {
     SourceLocation file;
     file.file = sourceName;
     try {
-        // Refuse deep nesting while parsing, before the document is built (depth 0 is the root).
-        const Json::parser_callback_t limitDepth = [](int depth, Json::parse_event_t event, Json&) {
-            if ((event == Json::parse_event_t::object_start ||
-                 event == Json::parse_event_t::array_start) &&
-                depth >= kMaxNestingDepth) {
-                throw TooDeep{};
+        // A first pass without a document checks the syntax, the depth and the number of values
+        // (nlohmann's parser is iterative, so deep nesting costs no stack here). Only text that
+        // passes every check is built into a document, so refusals cost no memory.
+        const std::uint64_t limit = maxJsonValues();
+        BoundedSax sax(limit);
+        if (!Json::sax_parse(text.begin(), text.end(), &sax)) {
+            if (sax.failure) std::rethrow_exception(sax.failure);
+            if (sax.tooDeep) {
+                if (auto error = structureError(text, sourceName)) return *error;
+                return Error(file, tooDeepMessage());
             }
-            return true;
-        };
-        Json root = Json::parse(text.begin(), text.end(), limitDepth);
+            return Error(file, "invalid JSON: more than " + std::to_string(limit) +
+                                   " values (the limit for one file" +
+                                   (limit < kMaxJsonValues ? " in the memory available" : "") +
+                                   ")");
+        }
         if (auto error = structureError(text, sourceName)) return *error;
-        return root;
-    } catch (const TooDeep&) {
-        if (auto error = structureError(text, sourceName)) return *error;
-        return Error(file, tooDeepMessage());
+        return Json::parse(text.begin(), text.end());
     } catch (const Json::parse_error& e) {
         const TextPosition pos = jsonParseErrorPosition(text, e.byte);
         SourceLocation where = file;
@@ -255,7 +318,7 @@ Result<Json> parse(std::string_view text, const std::string& sourceName) {
 }
 
 Error locate(const Invalid& invalid, std::string_view text, const std::string& sourceName) {
-    const JsonSourceMap map = JsonSourceMap::build(text);
+    const JsonSourceMap map = JsonSourceMap::build(text, std::string_view(invalid.field));
     SourceLocation where = invalid.atKey ? map.locateKey(invalid.field) : map.locate(invalid.field);
     where.file = sourceName;
     where.field = clip(where.field);

@@ -63,6 +63,10 @@ std::vector<double> readNumbers(const Json& v, const std::string& path, std::siz
 // Nesting deeper than this is refused by parse(): readers and nlohmann's own copy and dump walk
 // documents recursively, so unbounded nesting would overflow the stack.
 inline constexpr int kMaxNestingDepth = 256;
+// A file holding more values (numbers, strings, arrays, ...) than this is refused by parse() before
+// a document is built; the limit is lower when the memory available cannot hold the document.
+// Shipped scenes hold a few hundred values; a 64 MiB file can hold 30 million.
+inline constexpr std::uint64_t kMaxJsonValues = std::uint64_t{1} << 22;
 // Input text quoted in an error message is cut to this many bytes (then "...").
 inline constexpr std::size_t kMaxQuotedBytes = 200;
 // A whole error message is cut to this many bytes, so that one refusal stays one readable line.
@@ -75,7 +79,8 @@ std::string clip(std::string_view text, std::size_t maxBytes = kMaxQuotedBytes);
 std::string boundMessage(std::string_view message);
 
 // Parses JSON text; errors are located ("file:line:col: invalid JSON: ..."), including numbers
-// too large for a double (1e999), nesting deeper than kMaxNestingDepth and duplicate keys.
+// too large for a double (1e999), nesting deeper than kMaxNestingDepth and duplicate keys. Text
+// with more than kMaxJsonValues values is refused. Time and memory are linear in the text.
 Result<Json> parse(std::string_view text, const std::string& sourceName);
 
 // The Error for a validation failure, located in `text` at the failing field.

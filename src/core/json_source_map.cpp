@@ -237,7 +237,23 @@ std::optional<JsonStructureProblem> findJsonStructureProblem(std::string_view te
     return std::nullopt;
 }
 
+namespace {
+
+// Whether `path` is `focus` or one of its parents ("shapes" and "shapes[2]" for
+// "shapes[2].radius").
+bool leadsTo(std::string_view path, std::string_view focus) {
+    if (focus.substr(0, path.size()) != path) return false;
+    return path.size() == focus.size() || path.empty() || focus[path.size()] == '.' ||
+           focus[path.size()] == '[';
+}
+
+}  // namespace
+
 JsonSourceMap JsonSourceMap::build(std::string_view text) {
+    return build(text, std::nullopt);
+}
+
+JsonSourceMap JsonSourceMap::build(std::string_view text, std::optional<std::string_view> focus) {
     JsonSourceMap map;
     // An open array or object; `path` is empty when it lies deeper than kMaxRecordedDepth.
     struct Frame {
@@ -263,6 +279,10 @@ JsonSourceMap JsonSourceMap::build(std::string_view text) {
             path = parent.path + "[" + key + "]";
         } else {
             path = parent.path.empty() ? key : parent.path + "." + key;
+        }
+        if (record && focus && !leadsTo(path, *focus)) {
+            record = false;
+            path.clear();
         }
     };
     // Reads `"key":` and prepares the member's value; false on malformed text.

@@ -55,6 +55,9 @@ class JsonSourceMap {
     static constexpr int kMaxRecordedDepth = 64;
 
     static JsonSourceMap build(std::string_view text);
+    // Records only `focus` and its parents: what locating one field needs, in time linear in the
+    // text and memory independent of it.
+    static JsonSourceMap build(std::string_view text, std::optional<std::string_view> focus);
 
     // The start of the value at `fieldPath` (for a missing path: of its nearest recorded parent).
     // The result names `fieldPath` as the field; its file is left empty for the caller to fill.

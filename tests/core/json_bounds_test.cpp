@@ -2,6 +2,7 @@
 // tokens. Runs in-process, so a stack overflow would fail the whole suite.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <string>
 
 #include "core/json_fields.h"
@@ -113,6 +114,43 @@ TEST(JsonBounds, InputQuotedByTheSceneReadersIsClipped) {
     EXPECT_LE(shape.error().message().size(), kMaxMessageBytes + 3);
     EXPECT_NE(shape.error().message().find("(known: "), std::string::npos)
         << shape.error().message();
+}
+
+double secondsToParse2D(const std::string& text) {
+    const auto start = std::chrono::steady_clock::now();
+    auto scene = gi2d::parseScene2D(text, "big.json", ".");
+    EXPECT_FALSE(scene.ok());
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+TEST(JsonBounds, MoreValuesThanTheLimitAreRefusedBeforeADocumentIsBuilt) {
+    const std::string text = "{\"canvas\": [8, 8], \"x\": [" + repeat("0,", kMaxJsonValues) + "0]}";
+    const std::string message = parseError(text);
+    EXPECT_EQ(message.rfind("t.json: invalid JSON: more than ", 0), 0u) << message;
+    EXPECT_NE(message.find(" values (the limit for one file"), std::string::npos) << message;
+}
+
+// nlohmann's callback parser erases discarded values by scanning the parent array at every
+// closing brace: quadratic on an array of objects (a 2 MB file took 85 s). Both passes of parse()
+// are linear, so 400,000 objects take well under a second; the bound leaves room for slow runners.
+TEST(JsonBounds, ArraysOfManyObjectsParseInLinearTime) {
+    const std::string text = "{\"canvas\": [8, 8], \"shapes\": [" + repeat("{},", 400000) + "{}]}";
+    EXPECT_LT(secondsToParse2D(text), 10.0);
+}
+
+// Locating an error records only the path to the failing field, not every value of the file (a
+// 63 MiB file of numbers used to cost 3.4 GiB and a minute before its one-line refusal).
+TEST(JsonBounds, LocatingAnErrorInAFileOfMillionsOfValuesIsFast) {
+    const std::string text = "{\"canvas\": [8, 8],\n \"shapes\": [" +
+                             repeat("{\"a\": [1, 2]},", 1000000) + "{}],\n \"x\": 1}";
+    const auto start = std::chrono::steady_clock::now();
+    auto scene = gi2d::parseScene2D(text, "big.json", ".");
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_FALSE(scene.ok());
+    EXPECT_EQ(scene.error().message().rfind("big.json:3:2: x: unknown field 'x'", 0), 0u)
+        << scene.error().message();
+    EXPECT_LT(seconds, 20.0);
 }
 
 TEST(JsonBounds, ClipKeepsWholeUtf8CodePoints) {
