@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <exception>
 #include <memory>
+#include <span>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -157,11 +158,9 @@ int alphaChannel(int channels) {
     return channels == 2 ? 1 : (channels == 4 ? 3 : -1);
 }
 
-Result<Image> readPngImpl(const std::string& path, PngEncoding encoding) {
-    auto opened = openRegularFile(path);
-    if (!opened) return Error("cannot open '" + path + "': " + opened.error().message());
-    FilePtr file = std::move(*opened);
-
+// Reads a PNG from an open stream; `path` names it in messages. The file reader and the
+// in-memory reader (a stream over the bytes) share it, so both see the same checks.
+Result<Image> readPngImpl(const FilePtr& file, const std::string& path, PngEncoding encoding) {
     std::array<png_byte, 8> signature{};
     if (std::fread(signature.data(), 1, signature.size(), file.get()) != signature.size()) {
         if (std::ferror(file.get())) return openError(path, errno);
@@ -291,11 +290,30 @@ Status writePngImpl(AtomicFile& file, const Image& image, PngEncoding encoding) 
 
 Result<Image> readPng(const std::string& path, PngEncoding encoding) {
     try {
-        return readPngImpl(path, encoding);
+        auto opened = openRegularFile(path);
+        if (!opened) return Error("cannot open '" + path + "': " + opened.error().message());
+        return readPngImpl(*opened, path, encoding);
     } catch (const std::exception& e) {
         return readError(path, e.what());
     } catch (...) {
         return readError(path, "unknown error");
+    }
+}
+
+Result<Image> decodePng(std::span<const std::uint8_t> bytes, const std::string& name,
+                        PngEncoding encoding) {
+    // fmemopen refuses an empty buffer; such input is simply too short.
+    if (bytes.size() < 8) return readError(name, "not a PNG file (too short)");
+    try {
+        // A read-only stream over the caller's bytes (fmemopen does not write in mode "rb").
+        FilePtr file(::fmemopen(const_cast<std::uint8_t*>(bytes.data()), bytes.size(), "rb"),
+                     &std::fclose);
+        if (!file) return readError(name, std::generic_category().message(errno));
+        return readPngImpl(file, name, encoding);
+    } catch (const std::exception& e) {
+        return readError(name, e.what());
+    } catch (...) {
+        return readError(name, "unknown error");
     }
 }
 
