@@ -13,12 +13,14 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 #include <vector>
 
+#include "core/exr_header_check.h"
 #include "image_writers.h"
 #include "luxel/core/file_io.h"
 #include "luxel/core/image_io.h"
@@ -127,9 +129,12 @@ class MemoryStream final : public Imf::IStream {
     std::uint64_t at_ = 0;
 };
 
-// Reads an EXR from `stream`; `path` names it in messages. The file reader and the in-memory
-// reader share it, so both see the same checks.
-Result<Image> readExrImpl(Imf::IStream& stream, const std::string& path) {
+// Reads an EXR of `totalBytes` from `stream`; `path` names it in messages. The file reader and
+// the in-memory reader share it, so both see the same checks.
+Result<Image> readExrImpl(Imf::IStream& stream, std::uint64_t totalBytes, const std::string& path) {
+    if (Status s = detail::checkExrAttributeSizes(stream, totalBytes); !s) {
+        return readError(path, s.error().message());
+    }
     Imf::InputFile file(stream);
     const Imf::Header& header = file.header();
     const Imath::Box2i window = header.dataWindow();
@@ -203,7 +208,9 @@ Result<Image> readExr(const std::string& path) {
     if (Status s = canOpen(path); !s) return s.error();
     try {
         Imf::StdIFStream stream(path.c_str());
-        return readExrImpl(stream, path);
+        std::error_code error;
+        const std::uintmax_t size = std::filesystem::file_size(path, error);
+        return readExrImpl(stream, error ? ~std::uint64_t{0} : size, path);
     } catch (const std::exception& e) {
         return readError(path, e.what());
     } catch (...) {
@@ -214,7 +221,7 @@ Result<Image> readExr(const std::string& path) {
 Result<Image> decodeExr(std::span<const std::uint8_t> bytes, const std::string& name) {
     try {
         MemoryStream stream(bytes, name);
-        return readExrImpl(stream, name);
+        return readExrImpl(stream, bytes.size(), name);
     } catch (const std::exception& e) {
         return readError(name, e.what());
     } catch (...) {

@@ -38,7 +38,9 @@ bool checkInput(const std::string& bytes, const std::string& label) {
         // Version 1 is written as version 2, which reads back to itself.
         const Result<Octree> again = parseOctree(written, "written.lxo");
         EXPECT_TRUE(again.ok()) << label;
-        if (again.ok()) EXPECT_EQ(serializeOctree(*again), written) << label;
+        if (again.ok()) {
+            EXPECT_EQ(serializeOctree(*again), written) << label;
+        }
     }
     const OctreeStats stats = measure(*tree);
     EXPECT_LE(stats.solidVoxels, stats.totalVoxels) << label;
