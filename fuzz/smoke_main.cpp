@@ -1,9 +1,10 @@
 // A standalone driver for a fuzz target's LLVMFuzzerTestOneInput, so that every target gets a
 // short, deterministic smoke run in the normal build (ctest FuzzSmoke.*) without clang or
-// libFuzzer. It replays the seed corpus, then mutants of the seeds (bit flips, byte insertions
-// and deletions, truncations, splices of two seeds, repeated ranges, extreme integers and, for
-// text targets, dictionary tokens, repeated brackets and extreme numbers), until a time or a
-// count limit. A crash kills the process, which fails the test; the count of inputs run is printed.
+// libFuzzer. It replays a target's starting corpus, then mutants of those inputs (bit flips, byte
+// insertions and deletions, truncations, splices of two inputs, repeated ranges, extreme integers
+// and, for text targets, dictionary tokens, repeated brackets and extreme numbers), until a time
+// or a count limit. A crash kills the process, which fails the test; the count of inputs run is
+// printed.
 //
 //   fuzz_smoke_<target> [--seconds S] [--max-inputs N] [--text] [--dict FILE]
 //                       [--crash-file FILE] SEED...

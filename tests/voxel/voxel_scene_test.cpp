@@ -182,7 +182,7 @@ TEST(VoxelScene, TextureErrorsAreLocated) {
 // parseVoxelScene reads from text (the fuzz target uses it): the same scene as loading the file,
 // files resolved next to the given path, errors located in that path.
 TEST(VoxelScene, ParsesFromTextLikeTheFile) {
-    const std::string path = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/fence.json";
+    const std::string path = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/garden.json";
     std::ifstream in(path);
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     auto fromFile = loadVoxelScene(path);
