@@ -3,6 +3,10 @@
 
 #include <immintrin.h>
 
+#if defined(__clang__)
+#include <cpuid.h>
+#endif
+
 namespace luxel {
 namespace {
 
@@ -26,10 +30,23 @@ namespace {
     for (; i < count; ++i) out[i] = static_cast<std::uint16_t>(_cvtss_sh(in[i], 0));
 }
 
+#if defined(__clang__)
+// clang (16) has no "f16c" name for __builtin_cpu_supports: CPUID leaf 1 holds both feature
+// bits, and XGETBV says whether the OS saves the AVX registers.
+const bool kF16c = [] {
+    unsigned a = 0, b = 0, c = 0, d = 0;
+    if (__get_cpuid(1, &a, &b, &c, &d) == 0) return false;
+    if ((c & bit_F16C) == 0 || (c & bit_AVX) == 0 || (c & bit_OSXSAVE) == 0) return false;
+    unsigned lo = 0, hi = 0;
+    __asm__("xgetbv" : "=a"(lo), "=d"(hi) : "c"(0));
+    return (lo & 6u) == 6u;  // XMM and YMM state enabled
+}();
+#else
 const bool kF16c = [] {
     __builtin_cpu_init();  // static initialisers may run before libgcc's own
     return __builtin_cpu_supports("f16c") && __builtin_cpu_supports("avx");
 }();
+#endif
 
 }  // namespace
 

@@ -6,16 +6,21 @@
 #include <ImfIO.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStdIO.h>
 
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <filesystem>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 #include <vector>
 
+#include "core/exr_header_check.h"
 #include "image_writers.h"
 #include "luxel/core/file_io.h"
 #include "luxel/core/image_io.h"
@@ -98,8 +103,39 @@ std::string listChannels(const Imf::ChannelList& list) {
     return out.empty() ? "none" : out;
 }
 
-Result<Image> readExrImpl(const std::string& path) {
-    Imf::InputFile file(path.c_str());
+// OpenEXR's input stream over bytes in memory (decodeExr). Reads past the end throw, as
+// OpenEXR's own file stream does on a truncated file.
+class MemoryStream final : public Imf::IStream {
+  public:
+    MemoryStream(std::span<const std::uint8_t> bytes, const std::string& name)
+        : Imf::IStream(name.c_str()), bytes_(bytes) {}
+
+    bool read(char c[], int n) override {
+        if (n < 0 || static_cast<std::uint64_t>(n) > bytes_.size() - at_) {
+            throw std::runtime_error("unexpected end of file (truncated?)");
+        }
+        std::memcpy(c, bytes_.data() + at_, static_cast<std::size_t>(n));
+        at_ += static_cast<std::uint64_t>(n);
+        return at_ < bytes_.size();
+    }
+    std::uint64_t tellg() override { return at_; }
+    void seekg(std::uint64_t pos) override {
+        if (pos > bytes_.size()) throw std::runtime_error("seek past the end of the file");
+        at_ = pos;
+    }
+
+  private:
+    std::span<const std::uint8_t> bytes_;
+    std::uint64_t at_ = 0;
+};
+
+// Reads an EXR of `totalBytes` from `stream`; `path` names it in messages. The file reader and
+// the in-memory reader share it, so both see the same checks.
+Result<Image> readExrImpl(Imf::IStream& stream, std::uint64_t totalBytes, const std::string& path) {
+    if (Status s = detail::checkExrAttributeSizes(stream, totalBytes); !s) {
+        return readError(path, s.error().message());
+    }
+    Imf::InputFile file(stream);
     const Imf::Header& header = file.header();
     const Imath::Box2i window = header.dataWindow();
     const std::int64_t width = std::int64_t{window.max.x} - window.min.x + 1;
@@ -171,11 +207,25 @@ Status writeExrImpl(AtomicFile& out, const Image& image) {
 Result<Image> readExr(const std::string& path) {
     if (Status s = canOpen(path); !s) return s.error();
     try {
-        return readExrImpl(path);
+        Imf::StdIFStream stream(path.c_str());
+        std::error_code error;
+        const std::uintmax_t size = std::filesystem::file_size(path, error);
+        return readExrImpl(stream, error ? ~std::uint64_t{0} : size, path);
     } catch (const std::exception& e) {
         return readError(path, e.what());
     } catch (...) {
         return readError(path, "unknown error");
+    }
+}
+
+Result<Image> decodeExr(std::span<const std::uint8_t> bytes, const std::string& name) {
+    try {
+        MemoryStream stream(bytes, name);
+        return readExrImpl(stream, bytes.size(), name);
+    } catch (const std::exception& e) {
+        return readError(name, e.what());
+    } catch (...) {
+        return readError(name, "unknown error");
     }
 }
 

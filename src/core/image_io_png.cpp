@@ -4,6 +4,7 @@
 // the setjmp and holds only C data, so a jump never skips a C++ destructor; buffers and cleanup
 // live in the calling frame, which has no setjmp.
 #include <png.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <array>
@@ -11,6 +12,7 @@
 #include <cstdio>
 #include <exception>
 #include <memory>
+#include <span>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -157,11 +159,19 @@ int alphaChannel(int channels) {
     return channels == 2 ? 1 : (channels == 4 ? 3 : -1);
 }
 
-Result<Image> readPngImpl(const std::string& path, PngEncoding encoding) {
-    auto opened = openRegularFile(path);
-    if (!opened) return Error("cannot open '" + path + "': " + opened.error().message());
-    FilePtr file = std::move(*opened);
+// Whether `streamBytes` of PNG could hold pixel rows of `rowBytes` x `height` once decoded. zlib
+// inflates at most 1032:1, and libpng's expansion to 8 bits per channel and RGBA multiplies that
+// by at most 32 (1-bit palette to RGBA8), so a short file declaring a huge image is refused before
+// its rows are allocated (and zeroed) rather than when the data runs out.
+bool couldHold(std::uint64_t streamBytes, std::size_t rowBytes, png_uint_32 height) {
+    constexpr std::uint64_t kMaxInflate = 1032, kMaxExpansion = 32;
+    return std::uint64_t{rowBytes} * height / (kMaxInflate * kMaxExpansion) <= streamBytes;
+}
 
+// Reads a PNG of `streamBytes` from an open stream; `path` names it in messages. The file reader
+// and the in-memory reader (a stream over the bytes) share it, so both see the same checks.
+Result<Image> readPngImpl(const FilePtr& file, std::uint64_t streamBytes, const std::string& path,
+                          PngEncoding encoding) {
     std::array<png_byte, 8> signature{};
     if (std::fread(signature.data(), 1, signature.size(), file.get()) != signature.size()) {
         if (std::ferror(file.get())) return openError(path, errno);
@@ -198,6 +208,12 @@ Result<Image> readPngImpl(const std::string& path, PngEncoding encoding) {
                                    " channels of " + std::to_string(header.bitDepth) + " bits)");
     }
 
+    if (!couldHold(streamBytes, header.rowBytes, header.height)) {
+        return readError(path, "the file (" + std::to_string(streamBytes) +
+                                   " bytes) is far too short for its declared " +
+                                   std::to_string(header.width) + "x" +
+                                   std::to_string(header.height) + " image (truncated?)");
+    }
     std::vector<png_byte> bytes(header.rowBytes * header.height);
     std::vector<png_bytep> rows(header.height);
     for (png_uint_32 y = 0; y < header.height; ++y) rows[y] = bytes.data() + y * header.rowBytes;
@@ -291,11 +307,34 @@ Status writePngImpl(AtomicFile& file, const Image& image, PngEncoding encoding) 
 
 Result<Image> readPng(const std::string& path, PngEncoding encoding) {
     try {
-        return readPngImpl(path, encoding);
+        auto opened = openRegularFile(path);
+        if (!opened) return Error("cannot open '" + path + "': " + opened.error().message());
+        struct stat status {};
+        const std::uint64_t size = ::fstat(::fileno(opened->get()), &status) == 0
+                                       ? std::uint64_t(status.st_size)
+                                       : ~std::uint64_t{0};  // no bound
+        return readPngImpl(*opened, size, path, encoding);
     } catch (const std::exception& e) {
         return readError(path, e.what());
     } catch (...) {
         return readError(path, "unknown error");
+    }
+}
+
+Result<Image> decodePng(std::span<const std::uint8_t> bytes, const std::string& name,
+                        PngEncoding encoding) {
+    // fmemopen refuses an empty buffer; such input is simply too short.
+    if (bytes.size() < 8) return readError(name, "not a PNG file (too short)");
+    try {
+        // A read-only stream over the caller's bytes (fmemopen does not write in mode "rb").
+        FilePtr file(::fmemopen(const_cast<std::uint8_t*>(bytes.data()), bytes.size(), "rb"),
+                     &std::fclose);
+        if (!file) return readError(name, std::generic_category().message(errno));
+        return readPngImpl(file, bytes.size(), name, encoding);
+    } catch (const std::exception& e) {
+        return readError(name, e.what());
+    } catch (...) {
+        return readError(name, "unknown error");
     }
 }
 

@@ -407,9 +407,14 @@ bool isVoxelScene(const json::Json& root) {
 Result<VoxelScene> loadVoxelScene(const std::string& path, int width, int height) {
     auto text = readFileBytes(path, "scene");
     if (!text) return text.error();
-    auto root = json::parse(*text, path);
+    return parseVoxelScene(*text, path, width, height);
+}
+
+Result<VoxelScene> parseVoxelScene(std::string_view text, const std::string& path, int width,
+                                   int height) {
+    auto root = json::parse(text, path);
     if (!root) return root.error();
-    return voxelSceneFromJson(*root, *text, path, width, height);
+    return voxelSceneFromJson(*root, text, path, width, height);
 }
 
 Result<VoxelScene> voxelSceneFromJson(const json::Json& root, std::string_view text,

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <limits>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -418,6 +419,31 @@ TEST_F(ImageIoTest, AbsurdPngDimensionsAreRejected) {
     EXPECT_TRUE(contains(many.error().message(), "too large")) << many.error().message();
 }
 
+// Found by fuzz/png_fuzz.cpp: a 69-byte PNG declaring 16384x16384 RGBA at 16 bits (within the
+// size limits) made the reader allocate and zero 2 GiB of rows before libpng found that the data
+// was missing. No deflate stream that short can hold such an image, so it is refused up front.
+const unsigned char kHugeButShortPng[] = {
+    0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48,
+    0x44, 0x52, 0x00, 0x00, 0x40, 0x00, 0x00, 0x00, 0x40, 0x00, 0x10, 0x06, 0x00, 0x00,
+    0x00, 0xf9, 0x58, 0xcc, 0xc7, 0x00, 0x00, 0x00, 0x0c, 0x49, 0x44, 0x41, 0x54, 0x78,
+    0x9c, 0x63, 0x60, 0xa0, 0x0c, 0x00, 0x00, 0x00, 0x40, 0x00, 0x01, 0xb7, 0x34, 0x7c,
+    0xef, 0x00, 0x00, 0x00, 0x00, 0x49, 0x45, 0x4e, 0x44, 0xae, 0x42, 0x60, 0x82,
+};
+
+TEST_F(ImageIoTest, PngTooShortForItsDeclaredSizeIsRefusedBeforeDecoding) {
+    const std::string file = writeBytes("short.png", kHugeButShortPng, sizeof kHugeButShortPng);
+    const Result<Image> read = readPng(file);
+    ASSERT_FALSE(read.ok());
+    EXPECT_TRUE(contains(read.error().message(),
+                         "69 bytes) is far too short for its declared "
+                         "16384x16384 image"))
+        << read.error().message();
+    const Result<Image> decoded = decodePng(
+        std::span<const std::uint8_t>(kHugeButShortPng, sizeof kHugeButShortPng), "short.png");
+    ASSERT_FALSE(decoded.ok());
+    EXPECT_TRUE(contains(decoded.error().message(), "far too short")) << decoded.error().message();
+}
+
 // A scanline EXR header (one FLOAT "Y" channel, no compression) and a one-entry offset table.
 std::vector<unsigned char> exrHeader(int width, int height) {
     std::vector<unsigned char> out = {0x76, 0x2f, 0x31, 0x01, 2, 0, 0, 0};
@@ -470,6 +496,25 @@ TEST_F(ImageIoTest, AbsurdExrDimensionsAreRejected) {
     const Result<Image> read = readExr(writeBytes("wide.exr", header.data(), header.size()));
     ASSERT_FALSE(read.ok());
     EXPECT_TRUE(contains(read.error().message(), "too large")) << read.error().message();
+}
+
+// Found by fuzz/exr_fuzz.cpp: 24 bytes whose first attribute declares a value of 1.9 GB. OpenEXR
+// allocated that much before finding the file too short (about 0.3 s per read under the address
+// sanitizer). The header pass refuses such a size first, naming the attribute.
+TEST_F(ImageIoTest, ExrAttributeLargerThanTheFileIsRefusedBeforeOpenExrReadsIt) {
+    const unsigned char bytes[] = {0x76, 0x2f, 0x31, 0x01, 0x02, 0x02, 0x00, 0x00,
+                                   0x0b, 0x6a, 0x61, 0x6e, 0x6e, 0x65, 0x6c, 0x73,
+                                   0x00, 0x63, 0x00, 0x00, 0x76, 0xd9, 0x76, 0xcf};
+    const Result<Image> read = readExr(writeBytes("attribute.exr", bytes, sizeof bytes));
+    ASSERT_FALSE(read.ok());
+    EXPECT_TRUE(contains(read.error().message(),
+                         "attribute '?jannels' declares 1993963008 bytes, but only 1 are left"))
+        << read.error().message();
+    const Result<Image> decoded =
+        decodeExr(std::span<const std::uint8_t>(bytes, sizeof bytes), "attribute.exr");
+    ASSERT_FALSE(decoded.ok());
+    EXPECT_TRUE(contains(decoded.error().message(), "declares 1993963008 bytes"))
+        << decoded.error().message();
 }
 
 TEST_F(ImageIoTest, WritingIntoAMissingDirectoryIsAnError) {

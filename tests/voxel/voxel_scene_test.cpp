@@ -3,6 +3,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include "luxel/voxel/voxel_scene.h"
 
@@ -175,6 +177,26 @@ TEST(VoxelScene, TextureErrorsAreLocated) {
         EXPECT_NE(scene.error().message().find(path + ":"), std::string::npos)
             << scene.error().message();
     }
+}
+
+// parseVoxelScene reads from text (the fuzz target uses it): the same scene as loading the file,
+// files resolved next to the given path, errors located in that path.
+TEST(VoxelScene, ParsesFromTextLikeTheFile) {
+    const std::string path = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/garden.json";
+    std::ifstream in(path);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    auto fromFile = loadVoxelScene(path);
+    auto fromText = parseVoxelScene(text, path);
+    ASSERT_TRUE(fromFile.ok()) << fromFile.error().message();
+    ASSERT_TRUE(fromText.ok()) << fromText.error().message();
+    EXPECT_EQ(fromText->world.size(), fromFile->world.size());
+    EXPECT_EQ(fromText->world.solidCount(), fromFile->world.solidCount());
+    EXPECT_EQ(fromText->textures.size(), fromFile->textures.size());
+    EXPECT_GT(fromText->textures.size(), 0);
+
+    auto bad = parseVoxelScene(R"({"type": "voxel", "world": {"source": "empty"}})", "t/x.json");
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.error().message().rfind("t/x.json:1:", 0), 0u) << bad.error().message();
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ constexpr std::uint64_t kMaxImagePixels = std::uint64_t{1} << 28;
 // Reads any PNG (grey, grey+alpha, palette, RGB, RGBA; 8 or 16 bit). The result has 1 (grey),
 // 2 (grey+alpha), 3 (RGB) or 4 (RGBA) channels; alpha is always linear.
 Result<Image> readPng(const std::string& path, PngEncoding encoding = PngEncoding::Srgb);
+// The same from the bytes of a PNG file in memory; `name` is used in messages.
+Result<Image> decodePng(std::span<const std::uint8_t> bytes, const std::string& name,
+                        PngEncoding encoding = PngEncoding::Srgb);
 // Writes 8-bit PNG with 1, 3 or 4 channels (2 is written as grey+alpha). Values are clamped to
 // [0, 1] after encoding; NaN writes as 0.
 Status writePng(const std::string& path, const Image& image,
@@ -31,6 +35,8 @@ Status writePng(const std::string& path, const Image& image,
 
 // Reads an EXR as linear float: R,G,B(,A) channels (Y alone as 1 channel).
 Result<Image> readExr(const std::string& path);
+// The same from the bytes of an EXR file in memory; `name` is used in messages.
+Result<Image> decodeExr(std::span<const std::uint8_t> bytes, const std::string& name);
 // Writes 32-bit float EXR with channels R,G,B (3), R,G,B,A (4) or Y (1).
 Status writeExr(const std::string& path, const Image& image);
 

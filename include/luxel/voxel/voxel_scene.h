@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "luxel/core/error.h"
 #include "luxel/post/post_options.h"
@@ -25,6 +26,10 @@ struct VoxelScene {
 // Reads a scene, builds its world (generators run here) and validates everything. Errors name the
 // file, line:column and field. `width`/`height` > 0 override the camera's image size.
 Result<VoxelScene> loadVoxelScene(const std::string& path, int width = 0, int height = 0);
+// The same from the scene's text; `path` is used in messages and resolves the files the scene
+// names (textures, .vox worlds) relative to its folder.
+Result<VoxelScene> parseVoxelScene(std::string_view text, const std::string& path, int width = 0,
+                                   int height = 0);
 // (A file of either kind: luxel/scene/scene_file.h reads it once and picks the reader.)
 
 }  // namespace luxel::voxel
