@@ -4,6 +4,7 @@
 // the setjmp and holds only C data, so a jump never skips a C++ destructor; buffers and cleanup
 // live in the calling frame, which has no setjmp.
 #include <png.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <array>
@@ -18,6 +19,7 @@
 #include "image_writers.h"
 #include "luxel/core/file_io.h"
 #include "luxel/core/image_io.h"
+#include "luxel/core/memory.h"
 #include "luxel/core/tonemap.h"
 
 namespace luxel {
@@ -37,7 +39,8 @@ struct PngHeader {
     png_uint_32 height = 0;
     int bitDepth = 0;
     int channels = 0;
-    std::size_t rowBytes = 0;
+    std::size_t rowBytes = 0;        // per decoded row, after expansion
+    std::size_t storedRowBytes = 0;  // per row as the file stores it, before expansion
 };
 
 // Frees libpng's structures on every way out of the calling function.
@@ -102,6 +105,7 @@ bool readPngHeader(png_structp png, png_infop info, PngHeader* header) {
     png_set_sig_bytes(png, 8);
     png_set_user_limits(png, kMaxImageSide, kMaxImageSide);
     png_read_info(png, info);
+    header->storedRowBytes = png_get_rowbytes(png, info);
     // Palette -> RGB, grey below 8 bits -> 8 bits, tRNS -> an alpha channel.
     png_set_expand(png);
     png_set_interlace_handling(png);
@@ -153,6 +157,37 @@ std::string describeFailure(const PngContext& context) {
     return message;
 }
 
+// Deflate expands by at most about 1032:1, so the filtered pixel data a header declares (a filter
+// byte and the stored bytes per row) cannot come out of a much smaller file. A header claiming more
+// is corrupt or truncated, and is refused before the decode buffer is allocated.
+constexpr std::uint64_t kMaxDeflateRatio = 1100;
+constexpr std::uint64_t kPngSlackBytes = 4096;
+
+Status checkPngPlausible(const std::string& path, std::FILE* file, const PngHeader& header) {
+    struct stat info {};
+    if (fstat(fileno(file), &info) != 0 || info.st_size < 0) return Ok{};
+    const std::uint64_t fileBytes = static_cast<std::uint64_t>(info.st_size);
+    const std::uint64_t stored = (std::uint64_t{header.storedRowBytes} + 1) * header.height;
+    if (stored > fileBytes * kMaxDeflateRatio + kPngSlackBytes) {
+        return readError(path, "the header declares " + std::to_string(header.width) + "x" +
+                                   std::to_string(header.height) + " pixels (" +
+                                   formatBytes(stored) + " of pixel data), which a file of " +
+                                   std::to_string(fileBytes) +
+                                   " bytes cannot hold (truncated or corrupt)");
+    }
+    // The decode buffer and the float image exist together.
+    const std::uint64_t decoded = std::uint64_t{header.rowBytes} * header.height;
+    const std::uint64_t floats = std::uint64_t{header.width} * header.height *
+                                 static_cast<std::uint64_t>(header.channels) * sizeof(float);
+    if (Status s = checkMemory(decoded + floats, "decoding PNG '" + path + "' (" +
+                                                     std::to_string(header.width) + "x" +
+                                                     std::to_string(header.height) + ")");
+        !s) {
+        return s.error();
+    }
+    return Ok{};
+}
+
 int alphaChannel(int channels) {
     return channels == 2 ? 1 : (channels == 4 ? 3 : -1);
 }
@@ -197,6 +232,7 @@ Result<Image> readPngImpl(const std::string& path, PngEncoding encoding) {
         return readError(path, "unsupported layout (" + std::to_string(header.channels) +
                                    " channels of " + std::to_string(header.bitDepth) + " bits)");
     }
+    if (Status s = checkPngPlausible(path, file.get(), header); !s) return s.error();
 
     std::vector<png_byte> bytes(header.rowBytes * header.height);
     std::vector<png_bytep> rows(header.height);
