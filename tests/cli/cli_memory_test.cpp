@@ -86,8 +86,8 @@ TEST_F(CliMemory, TwoDimensionalRenderAndInfoRefuseTheSameSizeForEverySolver) {
 }
 
 TEST_F(CliMemory, OctreeRenderAndInfoRefuseTheSameSize) {
-    const std::string scene = std::string(LUXEL_SOURCE_DIR) + "/scenes/octree/terrain.json";
-    if (!std::filesystem::exists(scene)) GTEST_SKIP() << "no shipped octree terrain scene";
+    const std::string scene = std::string(LUXEL_SOURCE_DIR) + "/scenes/octree/world.json";
+    if (!std::filesystem::exists(scene)) GTEST_SKIP() << "no shipped octree world scene";
     const std::string line = "luxel: error: rendering 65536x65536 needs ";
     expectRefusal(
         runLimited(kLimitKiB,
