@@ -41,6 +41,7 @@ struct PngHeader {
     int channels = 0;
     std::size_t rowBytes = 0;        // per decoded row, after expansion
     std::size_t storedRowBytes = 0;  // per row as the file stores it, before expansion
+    bool interlaced = false;         // Adam7: rows arrive in passes, so all are decoded at once
 };
 
 // Frees libpng's structures on every way out of the calling function.
@@ -106,6 +107,7 @@ bool readPngHeader(png_structp png, png_infop info, PngHeader* header) {
     png_set_user_limits(png, kMaxImageSide, kMaxImageSide);
     png_read_info(png, info);
     header->storedRowBytes = png_get_rowbytes(png, info);
+    header->interlaced = png_get_interlace_type(png, info) != PNG_INTERLACE_NONE;
     // Palette -> RGB, grey below 8 bits -> 8 bits, tRNS -> an alpha channel.
     png_set_expand(png);
     png_set_interlace_handling(png);
@@ -121,7 +123,18 @@ bool readPngHeader(png_structp png, png_infop info, PngHeader* header) {
 bool readPngRows(png_structp png, png_bytepp rows) {
     if (setjmp(png_jmpbuf(png))) return false;
     png_read_image(png, rows);
-    // Reading to IEND also catches files truncated after the pixel data.
+    return true;
+}
+
+bool readPngRow(png_structp png, png_bytep row) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_read_row(png, row, nullptr);
+    return true;
+}
+
+// Reading to IEND also catches files truncated after the pixel data.
+bool readPngEnd(png_structp png) {
+    if (setjmp(png_jmpbuf(png))) return false;
     png_read_end(png, nullptr);
     return true;
 }
@@ -175,8 +188,10 @@ Status checkPngPlausible(const std::string& path, std::FILE* file, const PngHead
                                    std::to_string(fileBytes) +
                                    " bytes cannot hold (truncated or corrupt)");
     }
-    // The decode buffer and the float image exist together.
-    const std::uint64_t decoded = std::uint64_t{header.rowBytes} * header.height;
+    // The decode buffer (one row, or every row of an interlaced image) and the float image exist
+    // together.
+    const std::uint64_t decoded =
+        std::uint64_t{header.rowBytes} * (header.interlaced ? header.height : 1);
     const std::uint64_t floats = std::uint64_t{header.width} * header.height *
                                  static_cast<std::uint64_t>(header.channels) * sizeof(float);
     if (Status s = checkMemory(decoded + floats, "decoding PNG '" + path + "' (" +
@@ -234,42 +249,52 @@ Result<Image> readPngImpl(const std::string& path, PngEncoding encoding) {
     }
     if (Status s = checkPngPlausible(path, file.get(), header); !s) return s.error();
 
-    std::vector<png_byte> bytes(header.rowBytes * header.height);
-    std::vector<png_bytep> rows(header.height);
-    for (png_uint_32 y = 0; y < header.height; ++y) rows[y] = bytes.data() + y * header.rowBytes;
-    if (!readPngRows(structs.png, rows.data())) return readError(path, describeFailure(context));
-
     const int width = static_cast<int>(header.width);
     const int height = static_cast<int>(header.height);
     const int channels = header.channels;
     const int alpha = alphaChannel(channels);
     const bool srgb = encoding == PngEncoding::Srgb;
+    std::array<float, 256> linearLut{}, srgbLut{};
+    for (int v = 0; v < 256; ++v) {
+        linearLut[v] = static_cast<float>(v) / 255.0f;
+        srgbLut[v] = srgbToLinear(linearLut[v]);
+    }
     Image image(width, height, channels);
-    float* out = image.data();
-    if (header.bitDepth == 8) {
-        std::array<float, 256> linearLut{}, srgbLut{};
-        for (int v = 0; v < 256; ++v) {
-            linearLut[v] = static_cast<float>(v) / 255.0f;
-            srgbLut[v] = srgbToLinear(linearLut[v]);
-        }
-        for (int y = 0; y < height; ++y) {
-            const png_byte* row = rows[y];
-            for (int i = 0; i < width * channels; ++i) {
-                const bool colour = srgb && i % channels != alpha;
+    // One decoded row -> floats in image row y.
+    auto convert = [&](const png_byte* row, int y) {
+        float* out = image.data() + static_cast<std::size_t>(y) * width * channels;
+        for (int i = 0; i < width * channels; ++i) {
+            const bool colour = srgb && i % channels != alpha;
+            if (header.bitDepth == 8) {
                 *out++ = colour ? srgbLut[row[i]] : linearLut[row[i]];
-            }
-        }
-    } else {
-        for (int y = 0; y < height; ++y) {
-            const png_byte* row = rows[y];
-            for (int i = 0; i < width * channels; ++i) {
+            } else {
                 // 16-bit PNG samples are big-endian.
                 const int value = (row[2 * i] << 8) | row[2 * i + 1];
                 const float v = static_cast<float>(value) / 65535.0f;
-                *out++ = srgb && i % channels != alpha ? srgbToLinear(v) : v;
+                *out++ = colour ? srgbToLinear(v) : v;
             }
         }
+    };
+    if (header.interlaced) {
+        std::vector<png_byte> bytes(header.rowBytes * header.height);
+        std::vector<png_bytep> rows(header.height);
+        for (png_uint_32 y = 0; y < header.height; ++y)
+            rows[y] = bytes.data() + y * header.rowBytes;
+        if (!readPngRows(structs.png, rows.data())) {
+            return readError(path, describeFailure(context));
+        }
+        for (int y = 0; y < height; ++y) convert(rows[y], y);
+    } else {
+        // Row by row: no buffer of the whole decoded image next to the floats.
+        std::vector<png_byte> row(header.rowBytes);
+        for (int y = 0; y < height; ++y) {
+            if (!readPngRow(structs.png, row.data())) {
+                return readError(path, describeFailure(context));
+            }
+            convert(row.data(), y);
+        }
     }
+    if (!readPngEnd(structs.png)) return readError(path, describeFailure(context));
     return image;
 }
 
