@@ -5,6 +5,7 @@
 #include <map>
 
 #include "commands/command.h"
+#include "common/last_resort.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"luxel: real-time light transport in 2D and voxel worlds"};
@@ -47,7 +48,10 @@ int main(int argc, char** argv) {
         return app.exit(e);
     }
     for (auto& [sub, run] : runners) {
-        if (sub->parsed()) return run();
+        if (sub->parsed()) {
+            return luxel::options::runUntilOutOfMemory("luxel", "running '" + sub->get_name() + "'",
+                                                       run);
+        }
     }
     return 0;
 }

@@ -7,10 +7,13 @@
 #include <optional>
 
 #include "app.h"
+#include "common/last_resort.h"
+#include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
 #include "luxel/gi2d/scene2d_json.h"
 #include "luxel/gpu/backend_policy.h"
 #include "luxel/gpu/context.h"
+#include "luxel/post/frame_memory.h"
 #include "luxel/scene/scene_file.h"
 #include "luxel/voxel/voxel_scene.h"
 #include "mode_2d.h"
@@ -57,13 +60,28 @@ bool hasHardwareGpu() {
     return false;
 }
 
+// The frames the viewer keeps on the host: the internal render and its post-processing at the
+// window size (luxel/post/frame_memory.h), a GPU frame's download, and the window's RGBA texture
+// and screenshot. Refused in one line before any is allocated.
+Status checkFrameMemory(std::pair<int, int> internal, int windowW, int windowH) {
+    const ImageSize frame{internal.first, internal.second}, window{windowW, windowH};
+    const std::uint64_t internalPixels =
+        static_cast<std::uint64_t>(frame.width) * static_cast<std::uint64_t>(frame.height);
+    const std::uint64_t windowPixels =
+        static_cast<std::uint64_t>(window.width) * static_cast<std::uint64_t>(window.height);
+    const std::uint64_t needed = post::finishedFrameBytes(frame, window, post::PostOptions{}) +
+                                 post::kGpuDownloadBytesPerPixel * internalPixels +
+                                 windowPixels * 4 * 2;
+    return checkMemory(
+        needed, "viewing at " + std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                    " in a " + std::to_string(windowW) + "x" + std::to_string(windowH) + " window");
+}
+
 std::string defaultSavePath(const std::string& scenePath) {
     return std::filesystem::path(scenePath).stem().string() + ".painted.json";
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int runViewer(int argc, char** argv) {
     auto parsed = parseViewerOptions(std::vector<std::string>(argv + 1, argv + argc));
     if (!parsed) return fail(parsed.error().message());
     if (parsed->helpRequested) {
@@ -115,6 +133,9 @@ int main(int argc, char** argv) {
             source->hardwareGpu() ? std::pair{windowW, windowH}
                                   : std::pair{std::max(1, windowW / 4), std::max(1, windowH / 4)};
         const auto internal = internalSize(o, windowW, windowH, fallback);
+        if (Status s = checkFrameMemory(internal, windowW, windowH); !s) {
+            return fail(s.error().message());
+        }
         mode = std::make_unique<ModeVoxel>(std::move(*scene), internal.first, internal.second,
                                            o.exposure, std::move(source));
     } else if (file->kind() == scene::SceneKind::Octree) {
@@ -142,6 +163,9 @@ int main(int argc, char** argv) {
             source->hardwareGpu() ? std::pair{windowW, windowH}
                                   : std::pair{std::max(1, windowW / 4), std::max(1, windowH / 4)};
         const auto internal = internalSize(o, windowW, windowH, fallback);
+        if (Status s = checkFrameMemory(internal, windowW, windowH); !s) {
+            return fail(s.error().message());
+        }
         mode = std::make_unique<ModeOctree>(std::move(*scene), internal.first, internal.second,
                                             o.exposure, std::move(source));
     } else {
@@ -153,6 +177,9 @@ int main(int argc, char** argv) {
         const int side = o.backend != gpu::Backend::Cpu && hasHardwareGpu() ? 512 : 128;
         const auto internal = internalSize(o, scene->width, scene->height,
                                            fitWithin(scene->width, scene->height, side, side));
+        if (Status s = checkFrameMemory(internal, windowW, windowH); !s) {
+            return fail(s.error().message());
+        }
         Mode2DSettings settings;
         settings.view.solver = o.solver;
         settings.view.merge = o.merge;
@@ -165,4 +192,11 @@ int main(int argc, char** argv) {
         mode = std::make_unique<Mode2D>(std::move(*scene), settings);
     }
     return runApp(o, *mode, std::move(script), windowW, windowH);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    return luxel::options::runUntilOutOfMemory("luxel-view", "viewing the scene",
+                                               [&] { return runViewer(argc, argv); });
 }

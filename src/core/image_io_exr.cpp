@@ -24,6 +24,7 @@
 #include "image_writers.h"
 #include "luxel/core/file_io.h"
 #include "luxel/core/image_io.h"
+#include "luxel/core/memory.h"
 
 namespace luxel {
 
@@ -162,6 +163,16 @@ Result<Image> readExrImpl(Imf::IStream& stream, std::uint64_t totalBytes, const 
     }
 
     const int channels = static_cast<int>(names.size());
+    // The float image, plus OpenEXR's decode of one chunk at a time (small next to it). Unlike
+    // PNG's deflate, EXR's codecs (PIZ, DWA) have no useful bound on their expansion, so the
+    // declared size is checked against memory only.
+    const std::uint64_t bytes =
+        static_cast<std::uint64_t>(width * height) * static_cast<std::uint64_t>(channels) * 4;
+    if (Status s = checkMemory(bytes, "decoding EXR '" + path + "' (" + std::to_string(width) +
+                                          "x" + std::to_string(height) + ")");
+        !s) {
+        return s.error();
+    }
     Image image(static_cast<int>(width), static_cast<int>(height), channels);
     const std::size_t xStride = sizeof(float) * channels;
     const std::size_t yStride = xStride * static_cast<std::size_t>(width);

@@ -20,6 +20,7 @@
 #include "image_writers.h"
 #include "luxel/core/file_io.h"
 #include "luxel/core/image_io.h"
+#include "luxel/core/memory.h"
 #include "luxel/core/tonemap.h"
 
 namespace luxel {
@@ -39,7 +40,9 @@ struct PngHeader {
     png_uint_32 height = 0;
     int bitDepth = 0;
     int channels = 0;
-    std::size_t rowBytes = 0;
+    std::size_t rowBytes = 0;        // per decoded row, after expansion
+    std::size_t storedRowBytes = 0;  // per row as the file stores it, before expansion
+    bool interlaced = false;         // Adam7: rows arrive in passes, so all are decoded at once
 };
 
 // Frees libpng's structures on every way out of the calling function.
@@ -104,6 +107,8 @@ bool readPngHeader(png_structp png, png_infop info, PngHeader* header) {
     png_set_sig_bytes(png, 8);
     png_set_user_limits(png, kMaxImageSide, kMaxImageSide);
     png_read_info(png, info);
+    header->storedRowBytes = png_get_rowbytes(png, info);
+    header->interlaced = png_get_interlace_type(png, info) != PNG_INTERLACE_NONE;
     // Palette -> RGB, grey below 8 bits -> 8 bits, tRNS -> an alpha channel.
     png_set_expand(png);
     png_set_interlace_handling(png);
@@ -119,7 +124,18 @@ bool readPngHeader(png_structp png, png_infop info, PngHeader* header) {
 bool readPngRows(png_structp png, png_bytepp rows) {
     if (setjmp(png_jmpbuf(png))) return false;
     png_read_image(png, rows);
-    // Reading to IEND also catches files truncated after the pixel data.
+    return true;
+}
+
+bool readPngRow(png_structp png, png_bytep row) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_read_row(png, row, nullptr);
+    return true;
+}
+
+// Reading to IEND also catches files truncated after the pixel data.
+bool readPngEnd(png_structp png) {
+    if (setjmp(png_jmpbuf(png))) return false;
     png_read_end(png, nullptr);
     return true;
 }
@@ -155,17 +171,39 @@ std::string describeFailure(const PngContext& context) {
     return message;
 }
 
-int alphaChannel(int channels) {
-    return channels == 2 ? 1 : (channels == 4 ? 3 : -1);
+// Deflate expands by at most about 1032:1, so the filtered pixel data a header declares (a filter
+// byte and the stored bytes per row) cannot come out of a much smaller file. A header claiming more
+// is corrupt or truncated, and is refused before the decode buffer is allocated.
+constexpr std::uint64_t kMaxDeflateRatio = 1100;
+constexpr std::uint64_t kPngSlackBytes = 4096;
+
+Status checkPngPlausible(const std::string& path, std::uint64_t fileBytes,
+                         const PngHeader& header) {
+    const std::uint64_t stored = (std::uint64_t{header.storedRowBytes} + 1) * header.height;
+    if (stored > fileBytes * kMaxDeflateRatio + kPngSlackBytes) {
+        return readError(path, "the header declares " + std::to_string(header.width) + "x" +
+                                   std::to_string(header.height) + " pixels (" +
+                                   formatBytes(stored) + " of pixel data), which a file of " +
+                                   std::to_string(fileBytes) +
+                                   " bytes cannot hold (truncated or corrupt)");
+    }
+    // The decode buffer (one row, or every row of an interlaced image) and the float image exist
+    // together.
+    const std::uint64_t decoded =
+        std::uint64_t{header.rowBytes} * (header.interlaced ? header.height : 1);
+    const std::uint64_t floats = std::uint64_t{header.width} * header.height *
+                                 static_cast<std::uint64_t>(header.channels) * sizeof(float);
+    if (Status s = checkMemory(decoded + floats, "decoding PNG '" + path + "' (" +
+                                                     std::to_string(header.width) + "x" +
+                                                     std::to_string(header.height) + ")");
+        !s) {
+        return s.error();
+    }
+    return Ok{};
 }
 
-// Whether `streamBytes` of PNG could hold pixel rows of `rowBytes` x `height` once decoded. zlib
-// inflates at most 1032:1, and libpng's expansion to 8 bits per channel and RGBA multiplies that
-// by at most 32 (1-bit palette to RGBA8), so a short file declaring a huge image is refused before
-// its rows are allocated (and zeroed) rather than when the data runs out.
-bool couldHold(std::uint64_t streamBytes, std::size_t rowBytes, png_uint_32 height) {
-    constexpr std::uint64_t kMaxInflate = 1032, kMaxExpansion = 32;
-    return std::uint64_t{rowBytes} * height / (kMaxInflate * kMaxExpansion) <= streamBytes;
+int alphaChannel(int channels) {
+    return channels == 2 ? 1 : (channels == 4 ? 3 : -1);
 }
 
 // Reads a PNG of `streamBytes` from an open stream; `path` names it in messages. The file reader
@@ -207,49 +245,54 @@ Result<Image> readPngImpl(const FilePtr& file, std::uint64_t streamBytes, const 
         return readError(path, "unsupported layout (" + std::to_string(header.channels) +
                                    " channels of " + std::to_string(header.bitDepth) + " bits)");
     }
-
-    if (!couldHold(streamBytes, header.rowBytes, header.height)) {
-        return readError(path, "the file (" + std::to_string(streamBytes) +
-                                   " bytes) is far too short for its declared " +
-                                   std::to_string(header.width) + "x" +
-                                   std::to_string(header.height) + " image (truncated?)");
-    }
-    std::vector<png_byte> bytes(header.rowBytes * header.height);
-    std::vector<png_bytep> rows(header.height);
-    for (png_uint_32 y = 0; y < header.height; ++y) rows[y] = bytes.data() + y * header.rowBytes;
-    if (!readPngRows(structs.png, rows.data())) return readError(path, describeFailure(context));
+    if (Status s = checkPngPlausible(path, streamBytes, header); !s) return s.error();
 
     const int width = static_cast<int>(header.width);
     const int height = static_cast<int>(header.height);
     const int channels = header.channels;
     const int alpha = alphaChannel(channels);
     const bool srgb = encoding == PngEncoding::Srgb;
+    std::array<float, 256> linearLut{}, srgbLut{};
+    for (int v = 0; v < 256; ++v) {
+        linearLut[v] = static_cast<float>(v) / 255.0f;
+        srgbLut[v] = srgbToLinear(linearLut[v]);
+    }
     Image image(width, height, channels);
-    float* out = image.data();
-    if (header.bitDepth == 8) {
-        std::array<float, 256> linearLut{}, srgbLut{};
-        for (int v = 0; v < 256; ++v) {
-            linearLut[v] = static_cast<float>(v) / 255.0f;
-            srgbLut[v] = srgbToLinear(linearLut[v]);
-        }
-        for (int y = 0; y < height; ++y) {
-            const png_byte* row = rows[y];
-            for (int i = 0; i < width * channels; ++i) {
-                const bool colour = srgb && i % channels != alpha;
+    // One decoded row -> floats in image row y.
+    auto convert = [&](const png_byte* row, int y) {
+        float* out = image.data() + static_cast<std::size_t>(y) * width * channels;
+        for (int i = 0; i < width * channels; ++i) {
+            const bool colour = srgb && i % channels != alpha;
+            if (header.bitDepth == 8) {
                 *out++ = colour ? srgbLut[row[i]] : linearLut[row[i]];
-            }
-        }
-    } else {
-        for (int y = 0; y < height; ++y) {
-            const png_byte* row = rows[y];
-            for (int i = 0; i < width * channels; ++i) {
+            } else {
                 // 16-bit PNG samples are big-endian.
                 const int value = (row[2 * i] << 8) | row[2 * i + 1];
                 const float v = static_cast<float>(value) / 65535.0f;
-                *out++ = srgb && i % channels != alpha ? srgbToLinear(v) : v;
+                *out++ = colour ? srgbToLinear(v) : v;
             }
         }
+    };
+    if (header.interlaced) {
+        std::vector<png_byte> bytes(header.rowBytes * header.height);
+        std::vector<png_bytep> rows(header.height);
+        for (png_uint_32 y = 0; y < header.height; ++y)
+            rows[y] = bytes.data() + y * header.rowBytes;
+        if (!readPngRows(structs.png, rows.data())) {
+            return readError(path, describeFailure(context));
+        }
+        for (int y = 0; y < height; ++y) convert(rows[y], y);
+    } else {
+        // Row by row: no buffer of the whole decoded image next to the floats.
+        std::vector<png_byte> row(header.rowBytes);
+        for (int y = 0; y < height; ++y) {
+            if (!readPngRow(structs.png, row.data())) {
+                return readError(path, describeFailure(context));
+            }
+            convert(row.data(), y);
+        }
     }
+    if (!readPngEnd(structs.png)) return readError(path, describeFailure(context));
     return image;
 }
 

@@ -1,5 +1,7 @@
-// Available-memory queries (Linux /proc and cgroup v2/v1) for allocation estimates.
+// Available-memory queries (Linux /proc, cgroup v2/v1 and rlimits) for allocation estimates.
 #include "luxel/core/memory.h"
+
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -45,14 +47,44 @@ std::uint64_t readCgroupHeadroom() {
     return limit > usage ? limit - usage : 1;
 }
 
+// A "Key:   1234 kB" line of /proc/self/status in bytes, or 0 when missing.
+std::uint64_t readStatusBytes(const std::string& wanted) {
+    std::ifstream in("/proc/self/status");
+    std::string line;
+    while (std::getline(in, line)) {
+        if (line.compare(0, wanted.size(), wanted) != 0) continue;
+        std::istringstream fields(line.substr(wanted.size()));
+        std::uint64_t kib = 0;
+        if (fields >> kib) return kib * 1024;
+    }
+    return 0;
+}
+
+// The soft limit `resource` minus what the process already uses of it (`statusKey` in
+// /proc/self/status), or 0 when there is no limit. malloc fails at the soft limit whatever the
+// machine has free, so `ulimit -v` and `ulimit -d` count like a cgroup limit.
+std::uint64_t readRlimitHeadroom(int resource, const std::string& statusKey) {
+    rlimit limit{};
+    if (getrlimit(resource, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return 0;
+    const std::uint64_t used = readStatusBytes(statusKey);
+    const std::uint64_t cap = static_cast<std::uint64_t>(limit.rlim_cur);
+    return cap > used ? cap - used : 1;
+}
+
+// The smallest of the known limits; 0 (unknown) never wins.
+std::uint64_t smallestKnown(std::uint64_t a, std::uint64_t b) {
+    if (a == 0) return b;
+    if (b == 0) return a;
+    return std::min(a, b);
+}
+
 }  // namespace
 
 std::uint64_t availableMemoryBytes() {
-    const std::uint64_t available = readMemAvailable();
-    const std::uint64_t headroom = readCgroupHeadroom();
-    if (available == 0) return headroom;
-    if (headroom == 0) return available;
-    return std::min(available, headroom);
+    std::uint64_t available = smallestKnown(readMemAvailable(), readCgroupHeadroom());
+    available = smallestKnown(available, readRlimitHeadroom(RLIMIT_AS, "VmSize:"));
+    // Since Linux 4.7 RLIMIT_DATA bounds the private writable mappings (VmData).
+    return smallestKnown(available, readRlimitHeadroom(RLIMIT_DATA, "VmData:"));
 }
 
 std::string formatBytes(std::uint64_t bytes) {

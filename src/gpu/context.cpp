@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "gpu/embedded_shaders.h"
+#include "gpu/resident_libraries.h"
 #include "gpu/spirv_reflect.h"
 #include "luxel/core/memory.h"
 
@@ -189,6 +190,7 @@ Result<std::vector<DeviceInfo>> listDevices() {
         for (const vk::raii::PhysicalDevice& d : vk::raii::PhysicalDevices(instance)) {
             out.push_back(describe(d, index++));
         }
+        keepLoadedLibrariesResident();
         if (out.empty()) return Error("Vulkan: the loader reports no device");
         return out;
     });
@@ -221,6 +223,7 @@ Result<std::unique_ptr<Context>> Context::create(const ContextOptions& options) 
 
         // Pick the device.
         vk::raii::PhysicalDevices devices(impl->instance);
+        keepLoadedLibrariesResident();
         if (devices.empty()) return Error("Vulkan: the loader reports no device");
         std::vector<DeviceInfo> infos;
         for (std::size_t i = 0; i < devices.size(); ++i) {
@@ -317,6 +320,8 @@ Status Context::upload(Buffer& buffer, std::span<const std::byte> data, std::uin
     LUXEL_CHECK_LE(offset + data.size(), buffer.bytes);
     LUXEL_CHECK_EQ(offset % 4, 0u);
     if (data.empty()) return Ok{};
+    // The host-visible staging buffer lives in host memory on most devices.
+    if (Status s = checkMemory(data.size(), "a GPU staging buffer"); !s) return s;
     return guarded([&]() -> Status {
         using M = vk::MemoryPropertyFlagBits;
         auto staging = impl_->makeBuffer(data.size(), vk::BufferUsageFlagBits::eTransferSrc,
@@ -334,6 +339,7 @@ Status Context::upload(Buffer& buffer, std::span<const std::byte> data, std::uin
 
 Status Context::download(const Buffer& buffer, std::span<std::byte> data) {
     LUXEL_CHECK_LE(data.size(), buffer.bytes);
+    if (Status s = checkMemory(data.size(), "a GPU staging buffer"); !s) return s;
     return guarded([&]() -> Status {
         using M = vk::MemoryPropertyFlagBits;
         auto staging = impl_->makeBuffer(data.size(), vk::BufferUsageFlagBits::eTransferDst,

@@ -524,6 +524,13 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
     }
 
     Stopwatch download;
+    // The RGBA copy, its staging buffer and the RGB image exist together on the host.
+    const std::uint64_t pixels = static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h);
+    if (Status st = checkMemory(pixels * (16 + 16 + 12), "downloading a " + std::to_string(w) +
+                                                             "x" + std::to_string(h) + " frame");
+        !st) {
+        return st.error();
+    }
     std::vector<float> rgba(static_cast<std::size_t>(w) * h * 4);
     if (Status st = s.context->download(*s.output, std::as_writable_bytes(std::span(rgba))); !st) {
         return st.error();

@@ -435,13 +435,13 @@ TEST_F(ImageIoTest, PngTooShortForItsDeclaredSizeIsRefusedBeforeDecoding) {
     const Result<Image> read = readPng(file);
     ASSERT_FALSE(read.ok());
     EXPECT_TRUE(contains(read.error().message(),
-                         "69 bytes) is far too short for its declared "
-                         "16384x16384 image"))
+                         "the header declares 16384x16384 pixels (2.0 GiB of pixel data), "
+                         "which a file of 69 bytes cannot hold"))
         << read.error().message();
     const Result<Image> decoded = decodePng(
         std::span<const std::uint8_t>(kHugeButShortPng, sizeof kHugeButShortPng), "short.png");
     ASSERT_FALSE(decoded.ok());
-    EXPECT_TRUE(contains(decoded.error().message(), "far too short")) << decoded.error().message();
+    EXPECT_TRUE(contains(decoded.error().message(), "cannot hold")) << decoded.error().message();
 }
 
 // A scanline EXR header (one FLOAT "Y" channel, no compression) and a one-entry offset table.

@@ -5,6 +5,7 @@
 
 #include "commands/command.h"
 #include "luxel/core/image_io.h"
+#include "luxel/core/memory.h"
 #include "luxel/core/metrics.h"
 
 namespace luxel::cli {
@@ -49,6 +50,11 @@ int runCompare(const CompareArgs& args) {
     std::printf("relative L1   %.6g\n", errors->relativeL1);
     std::printf("max abs error %.6g\n", errors->maxAbsError);
     if (!args.diff.empty()) {
+        // The RGB difference and the PNG encoder's 8-bit copy of it.
+        const std::uint64_t diffBytes = imageBytes(a->width(), a->height(), 3) * 5 / 4;
+        if (Status s = checkMemory(diffBytes, "the difference image"); !s) {
+            return reportError(s.error());
+        }
         const double scale = args.diffScale > 0        ? args.diffScale
                              : errors->maxAbsError > 0 ? errors->maxAbsError
                                                        : 1.0;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "commands/command.h"
+#include "commands/render_memory.h"
 #include "luxel/core/image_size.h"
 #include "luxel/core/timer.h"
 
@@ -24,6 +25,11 @@ int benchFrames(const VoxelBenchRequest& request, const std::vector<ImageSize>& 
         auto sized = voxel::Camera::lookAt(camera.position(), camera.position() + camera.forward(),
                                            camera.fovYDegrees(), width, height);
         if (!sized) return reportError(sized.error());
+        if (Status s = checkRenderMemory(width, height,
+                                         frameBytes(width, height, post::PostOptions{}, onGpu));
+            !s) {
+            return reportError(s.error());
+        }
         double best = 1e300, bestDispatch = 0;
         for (int r = 0; r < request.repeat + (onGpu ? 1 : 0); ++r) {  // GPU: one warm-up run
             std::vector<gpu::PassTiming> timings;

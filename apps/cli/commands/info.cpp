@@ -4,9 +4,9 @@
 #include <memory>
 
 #include "commands/command.h"
+#include "commands/render_memory.h"
 #include "luxel/core/memory.h"
 #include "luxel/gi2d/hrc_solver.h"
-#include "luxel/gi2d/ray_march.h"
 #include "luxel/gi2d/rc_solver.h"
 #include "luxel/gi2d/reference_solver.h"
 #include "luxel/gi2d/scene2d_json.h"
@@ -54,38 +54,35 @@ int runInfo(const InfoArgs& args) {
                     gi2d::geometryTypeName(s.geometry), s.name.c_str(), e.r, e.g, e.b, a.r, a.g,
                     a.b);
     }
-    const std::uint64_t medium = gi2d::mediumBytes(w, h);
-    std::uint64_t needed = medium;
+    gi2d::RcOptions rc;
+    rc.merge = *merge;
+    const Memory2D memory = estimate2D(w, h, *solver, rc);
     switch (*solver) {
         case gi2d::Solver2D::Reference:
-            needed += gi2d::RayMarcher::bytesFor(w, h) + imageBytes(w, h, 3) * 2;
             std::printf("  reference solver: %.3g rays at %d rays/pixel\n",
                         static_cast<double>(gi2d::referenceRayCount(w, h, args.rays)), args.rays);
             break;
         case gi2d::Solver2D::Hrc: {
             const gi2d::HrcMemory m = gi2d::estimateHrcMemory(w, h);
-            needed += m.total();
             std::printf("  hrc: %d cascades; ray tables %s, cone buffers %s, frame %s, output %s\n",
                         gi2d::hrcCascadeCount(w, h), formatBytes(m.rayTables).c_str(),
                         formatBytes(m.coneBuffers).c_str(), formatBytes(m.frame).c_str(),
                         formatBytes(m.output).c_str());
             break;
         }
-        case gi2d::Solver2D::Rc: {
-            gi2d::RcOptions options;
-            options.merge = *merge;
-            const std::uint64_t rc = gi2d::estimateRcMemory(w, h, options);
-            needed += rc;
+        case gi2d::Solver2D::Rc:
             std::printf("  rc (%s merge): %zu cascades, %s\n", gi2d::mergeName(*merge),
-                        gi2d::rcCascades(w, h, options).size(), formatBytes(rc).c_str());
+                        gi2d::rcCascades(w, h, rc).size(), formatBytes(memory.solver).c_str());
             break;
-        }
     }
-    std::printf("  memory: medium %s, %s in all with the %s solver (available %s)\n",
-                formatBytes(medium).c_str(), formatBytes(needed).c_str(), gi2d::solverName(*solver),
-                formatBytes(availableMemoryBytes()).c_str());
-    if (Status s = checkMemory(needed, "rendering " + std::to_string(w) + "x" + std::to_string(h) +
-                                           " with " + gi2d::solverName(*solver));
+    std::printf(
+        "  memory: medium %s, %s in all with the %s solver and the images written "
+        "(available %s)\n",
+        formatBytes(memory.medium).c_str(), formatBytes(memory.total()).c_str(),
+        gi2d::solverName(*solver), formatBytes(availableMemoryBytes()).c_str());
+    // The same estimate and refusal as `luxel render`.
+    if (Status s = checkRenderMemory(w, h, memory.total(),
+                                     std::string(" with ") + gi2d::solverName(*solver));
         !s) {
         return reportError(s.error());
     }

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "commands/command.h"
+#include "commands/render_memory.h"
 #include "luxel/core/memory.h"
 #include "luxel/voxel/voxel_gpu.h"
 #include "luxel/voxel/voxel_scene.h"
@@ -31,16 +32,20 @@ int infoVoxelScene(const voxel::VoxelScene& loaded) {
                     : "running-average");
     std::printf("  shadows, textures  %s, %s\n", shading.shadows ? "on" : "off",
                 shading.textures ? "on" : "off");
-    const std::uint64_t image =
-        static_cast<std::uint64_t>(camera.width()) * camera.height() * 3 * sizeof(float);
+    // The world is loaded already; a render then allocates its frames (render_memory.h).
+    const std::uint64_t frame = frameBytes(camera.width(), camera.height(), scene->post, false);
     const std::uint64_t worldBytes = voxel::VoxelWorld::bytesFor(s, world.chunkSize());
-    std::printf("  memory (cpu)       %s (world %s, image %s)\n",
-                formatBytes(worldBytes + image).c_str(), formatBytes(worldBytes).c_str(),
-                formatBytes(image).c_str());
+    std::printf("  memory (cpu)       %s (world %s, frames %s; available %s)\n",
+                formatBytes(worldBytes + frame).c_str(), formatBytes(worldBytes).c_str(),
+                formatBytes(frame).c_str(), formatBytes(availableMemoryBytes()).c_str());
     std::printf("  memory (gpu)       %s\n",
                 formatBytes(voxel::estimateVoxelGpuMemory(s, world.chunkSize(), &scene->textures,
                                                           camera.width(), camera.height()))
                     .c_str());
+    // The same refusal as `luxel render` on the CPU path.
+    if (Status st = checkRenderMemory(camera.width(), camera.height(), frame); !st) {
+        return reportError(st.error());
+    }
     return 0;
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "commands/command.h"
+#include "commands/render_memory.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/timer.h"
@@ -50,6 +51,12 @@ int renderOctreeScene(const VoxelRenderRequest& request, scene::OctreeScene load
             ? post::resizedCamera(scene->camera, post::internalSide(width, post.internalScale),
                                   post::internalSide(height, post.internalScale))
             : scene->camera;
+    // Refuse before the first frame buffer (`luxel info` reports the same estimate).
+    if (Status s =
+            checkRenderMemory(width, height, frameBytes(width, height, post, *context != nullptr));
+        !s) {
+        return reportError(s.error());
+    }
     Stopwatch renderTime;
     Result<Image> radiance = Image();
     if (*context) {
@@ -96,6 +103,12 @@ int infoOctreeScene(const scene::OctreeScene& scene) {
                 p.x, p.y, p.z, f.x, f.y, f.z, scene.camera.fovYDegrees());
     std::printf("  image              %dx%d, %s mode\n", scene.camera.width(),
                 scene.camera.height(), octree::octreeModeName(scene.render.mode));
+    // What `luxel render` checks on the CPU path (octree scenes have no "post" section).
+    const int w = scene.camera.width(), h = scene.camera.height();
+    const std::uint64_t frame = frameBytes(w, h, post::PostOptions{}, false);
+    std::printf("  memory (cpu)       %s for the frame (available %s)\n",
+                formatBytes(frame).c_str(), formatBytes(availableMemoryBytes()).c_str());
+    if (Status s = checkRenderMemory(w, h, frame); !s) return reportError(s.error());
     return 0;
 }
 

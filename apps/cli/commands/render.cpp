@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "commands/command.h"
+#include "commands/render_memory.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
@@ -267,13 +268,14 @@ int runRender(const RenderArgs& args) {
 
     auto sized = sizeScene(std::move(file->twoD()), args.size);
     if (!sized) return reportError(sized.error());
-    // Refuse before allocating anything when the medium plus the solver cannot fit.
-    if (args.solver == gi2d::Solver2D::Hrc) {
-        const std::uint64_t needed = gi2d::mediumBytes(sized->width, sized->height) +
-                                     gi2d::estimateHrcMemory(sized->width, sized->height).total();
-        const std::string what =
-            "HRC at " + std::to_string(sized->width) + "x" + std::to_string(sized->height);
-        if (Status s = checkMemory(needed, what); !s) return reportError(s.error());
+    // Refuse before allocating anything when the medium, the solver and the images written
+    // cannot fit (`luxel info` reports the same estimate).
+    Memory2D memory = estimate2D(sized->width, sized->height, args.solver, rcOptions(args));
+    if (args.view == "nogi") memory.solver = 0;
+    if (Status s = checkRenderMemory(sized->width, sized->height, memory.total(),
+                                     std::string(" with ") + gi2d::solverName(args.solver));
+        !s) {
+        return reportError(s.error());
     }
     Stopwatch rasterTime;
     auto medium = rasterizeSized(*sized, args.scene, args.supersample);

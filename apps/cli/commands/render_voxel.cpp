@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "commands/command.h"
+#include "commands/render_memory.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/timer.h"
 #include "luxel/gpu/context.h"
@@ -128,6 +129,12 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
             ? post::resizedCamera(scene->camera, post::internalSide(width, post.internalScale),
                                   post::internalSide(height, post.internalScale))
             : scene->camera;
+    // Refuse before the first frame buffer (`luxel info` reports the same estimate).
+    if (Status s =
+            checkRenderMemory(width, height, frameBytes(width, height, post, *context != nullptr));
+        !s) {
+        return reportError(s.error());
+    }
     Stopwatch renderTime;
     Image internal;
     if (*context) {

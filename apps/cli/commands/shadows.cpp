@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "commands/command.h"
+#include "commands/render_memory.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/parallel.h"
 #include "luxel/core/timer.h"
@@ -191,6 +192,17 @@ int runScene(const ShadowsArgs& args, const std::string& path) {
     const double radius = args.sunRadius >= 0.0 ? args.sunRadius * std::numbers::pi / 180.0
                                                 : scene.shading.sunAngularRadius;
     const int w = scene.camera.width(), h = scene.camera.height();
+    // Per pixel: the primary hit and its mask, then per frame the truth, a mask and one
+    // visibility per method; and one written image.
+    const std::uint64_t perPixel =
+        sizeof(voxel::ShadowQuery) + 1 +
+        static_cast<std::uint64_t>(args.frames) * (sizeof(float) + 1 + variants->size() * 4) +
+        sizeof(float);
+    if (Status s = checkRenderMemory(
+            w, h, perPixel * static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h));
+        !s) {
+        return reportError(s.error());
+    }
     const Primary primary = primaryHits(scene);
 
     ShadowSettings truthSettings = base;

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "commands/command.h"
+#include "commands/render_memory.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/image_quality.h"
 #include "luxel/core/timer.h"
@@ -40,6 +41,11 @@ int runUpscale(const UpscaleArgs& args) {
     const int w = s.camera.width(), h = s.camera.height();
     const voxel::Camera low = post::resizedCamera(s.camera, post::internalSide(w, args.scale),
                                                   post::internalSide(h, args.scale));
+    // The native render and up to five display rows, an upscaled and a sharpened image, and the
+    // temporal upscaler's history, output and depth, at the output size; the internal render.
+    const std::uint64_t needed =
+        imageBytes(w, h, 3) * 11 + imageBytes(low.width(), low.height(), 3) * 3;
+    if (Status st = checkRenderMemory(w, h, needed); !st) return reportError(st.error());
     std::vector<Row> rows;
     Stopwatch nativeTime;
     const Image native = voxel::render(s.world, s.camera, s.shading, &s.textures);

@@ -9,7 +9,9 @@
 namespace luxel {
 
 // Bytes this process may still allocate: MemAvailable from /proc/meminfo, capped by a cgroup
-// memory limit when there is one. Returns 0 when unknown (then checks pass).
+// memory limit and by the soft RLIMIT_AS (`ulimit -v`) and RLIMIT_DATA (`ulimit -d`) less what the
+// process already maps, when there are such limits. Returns 0 when unknown (then checks pass).
+// Every check before a large allocation goes through this one function (via checkMemory).
 std::uint64_t availableMemoryBytes();
 
 // "1.5 GiB", "320 MiB", "12 KiB"

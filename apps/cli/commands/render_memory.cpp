@@ -1,0 +1,54 @@
+// Render memory estimates shared by `luxel render` and `luxel info` (render_memory.h).
+#include "commands/render_memory.h"
+
+#include <string>
+
+#include "luxel/core/image.h"
+#include "luxel/core/memory.h"
+#include "luxel/gi2d/hrc_solver.h"
+#include "luxel/gi2d/medium2d.h"
+#include "luxel/gi2d/ray_march.h"
+#include "luxel/post/frame_memory.h"
+#include "luxel/post/upscale.h"
+
+namespace luxel::cli {
+
+Memory2D estimate2D(int width, int height, gi2d::Solver2D solver, const gi2d::RcOptions& rc) {
+    Memory2D m;
+    m.medium = gi2d::mediumBytes(width, height);
+    switch (solver) {
+        case gi2d::Solver2D::Reference:
+            m.solver = gi2d::RayMarcher::bytesFor(width, height) + imageBytes(width, height, 3);
+            break;
+        case gi2d::Solver2D::Hrc:
+            m.solver = gi2d::estimateHrcMemory(width, height).total();
+            break;
+        case gi2d::Solver2D::Rc:
+            m.solver = gi2d::estimateRcMemory(width, height, rc);
+            break;
+    }
+    // The fluence (or its tone-mapped copy) and the display image, and a PNG encoder's rows.
+    m.outputs = imageBytes(width, height, 3) * 2 + imageBytes(width, height, 3) / sizeof(float);
+    return m;
+}
+
+std::uint64_t frameBytes(int width, int height, const post::PostOptions& post, bool gpu) {
+    const ImageSize output{width, height};
+    const ImageSize internal = post.internalScale < 1.0f
+                                   ? ImageSize{post::internalSide(width, post.internalScale),
+                                               post::internalSide(height, post.internalScale)}
+                                   : output;
+    std::uint64_t bytes = post::finishedFrameBytes(internal, output, post);
+    if (gpu) {
+        bytes += post::kGpuDownloadBytesPerPixel * static_cast<std::uint64_t>(internal.width) *
+                 static_cast<std::uint64_t>(internal.height);
+    }
+    return bytes;
+}
+
+Status checkRenderMemory(int width, int height, std::uint64_t needed, const std::string& detail) {
+    return checkMemory(
+        needed, "rendering " + std::to_string(width) + "x" + std::to_string(height) + detail);
+}
+
+}  // namespace luxel::cli

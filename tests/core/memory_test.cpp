@@ -1,0 +1,54 @@
+// availableMemoryBytes honours the soft RLIMIT_AS and RLIMIT_DATA (less what the process already
+// maps), and checkMemory refuses in one line what does not fit. Limits are lowered in a forked
+// child (support/memory_limit.h), so the test process keeps its own.
+#include "luxel/core/memory.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+
+#include "support/memory_limit.h"
+
+namespace {
+
+constexpr std::uint64_t kMiB = 1024 * 1024;
+
+// 0 when availableMemoryBytes and checkMemory see `headroom`, else the failed expectation.
+int expectHeadroom(std::uint64_t headroom) {
+    const std::uint64_t available = luxel::availableMemoryBytes();
+    if (available == 0 || available > headroom) return 1;
+    // Reading the status again may find a few MiB more mapped.
+    if (available + 32 * kMiB < headroom) return 2;
+    const luxel::Status refused = luxel::checkMemory(headroom + 64 * kMiB, "rendering 9x9");
+    if (refused.ok()) return 3;
+    const std::string message = refused.error().message();
+    if (message.rfind("rendering 9x9 needs ", 0) != 0) return 4;
+    if (message.find(", only ") == std::string::npos) return 5;
+    if (!luxel::checkMemory(headroom / 4, "a small buffer").ok()) return 6;
+    return 0;
+}
+
+TEST(Memory, AddressSpaceLimitCapsAvailableMemory) {
+    EXPECT_EQ(
+        luxel::test::runUnderMemoryLimit(256 * kMiB, [] { return expectHeadroom(256 * kMiB); }), 0);
+}
+
+TEST(Memory, DataLimitCapsAvailableMemory) {
+    EXPECT_EQ(luxel::test::runUnderMemoryLimit(
+                  256 * kMiB, [] { return expectHeadroom(256 * kMiB); }, RLIMIT_DATA),
+              0);
+}
+
+TEST(Memory, WithoutLimitsTheMachineCounts) {
+    // No rlimit in the way: what /proc/meminfo (or a cgroup) says, far above the 256 MiB above.
+    EXPECT_GT(luxel::availableMemoryBytes(), 256 * kMiB);
+}
+
+TEST(Memory, FormatBytes) {
+    EXPECT_EQ(luxel::formatBytes(12), "12 B");
+    EXPECT_EQ(luxel::formatBytes(1536), "1.5 KiB");
+    EXPECT_EQ(luxel::formatBytes(48ull << 30), "48.0 GiB");
+}
+
+}  // namespace
