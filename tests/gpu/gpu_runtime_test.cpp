@@ -13,19 +13,10 @@
 #include "luxel/core/half.h"
 #include "luxel/core/rng.h"
 #include "luxel/gpu/context.h"
+#include "support/gpu_test_context.h"
 
 namespace luxel::gpu {
 namespace {
-
-std::unique_ptr<Context> makeContext() {
-    auto context = Context::create({.device = "", .validation = true});
-    if (!context) return nullptr;
-    return std::move(*context);
-}
-
-#define LUXEL_REQUIRE_GPU(context) \
-    auto context = makeContext();  \
-    if (!context) GTEST_SKIP() << "no Vulkan device: " << Context::create().error().message()
 
 TEST(GpuRuntime, EmbedsEveryShader) {
     const std::vector<std::string> names = embeddedShaders();

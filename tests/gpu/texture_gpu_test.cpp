@@ -4,41 +4,21 @@
 // so a few pixels may see another voxel or texel; the bounds say how few.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <cstdio>
 
-#include "luxel/core/tonemap.h"
 #include "luxel/voxel/generators.h"
 #include "luxel/voxel/render_image.h"
 #include "luxel/voxel/voxel_gpu.h"
 #include "luxel/voxel/voxel_scene.h"
+#include "support/display_parity.h"
 #include "support/gpu_test_context.h"
 
 namespace luxel::voxel {
 namespace {
 
-struct Difference {
-    double differing = 0;  // share of pixels with a display channel off by more than 2/255
-    double meanAbs = 0;    // mean |difference| over channels, in 1/255
-};
-
-Difference compare(const Image& a, const Image& b) {
-    const Image ta = toneMap(a, {}), tb = toneMap(b, {});
-    long differing = 0;
-    double sum = 0;
-    for (int y = 0; y < a.height(); ++y) {
-        for (int x = 0; x < a.width(); ++x) {
-            int worst = 0;
-            for (int c = 0; c < 3; ++c) {
-                const int d = std::abs(int(std::lround(linearToSrgb(ta.at(x, y, c)) * 255)) -
-                                       int(std::lround(linearToSrgb(tb.at(x, y, c)) * 255)));
-                worst = std::max(worst, d);
-                sum += d;
-            }
-            differing += worst > 2;
-        }
-    }
-    return {double(differing) / a.pixelCount(), sum / (3.0 * a.pixelCount())};
+// Pixels agree when no display channel is off by more than 2/255: the GPU traces in float.
+test::Parity compare(const Image& a, const Image& b) {
+    return test::compareDisplay(a, b, 2);
 }
 
 // A fine checkerboard lawn under a grazing camera (antialias_test.cpp's view).
@@ -70,9 +50,9 @@ TEST(TextureGpu, FilteredLawnMatchesTheCpu) {
     // The filters do change the image (so agreement is not agreement on nearest texels).
     ShadeOptions nearest, aniso;
     aniso.textureFilter = TextureFilter::Anisotropic;
-    EXPECT_GT(
-        compare(gpu->render(camera, nearest).value(), gpu->render(camera, aniso).value()).differing,
-        0.2);
+    EXPECT_GT(compare(gpu->render(camera, nearest).value(), gpu->render(camera, aniso).value())
+                  .differingPixels,
+              0.2);
     for (TextureFilter filter :
          {TextureFilter::Nearest, TextureFilter::Trilinear, TextureFilter::Anisotropic}) {
         for (int samples : {1, 4, 6}) {
@@ -84,10 +64,10 @@ TEST(TextureGpu, FilteredLawnMatchesTheCpu) {
             o.maxAnisotropy = 8;
             const Image cpu = render(l.world, camera, o, &l.textures);
             const Image image = gpu->render(camera, o).value();
-            const Difference d = compare(image, cpu);
+            const test::Parity d = compare(image, cpu);
             std::printf("lawn %s, %d spp: %.3f%% pixels differ by > 2/255, mean %.4f/255\n",
-                        textureFilterName(filter), samples, 100 * d.differing, d.meanAbs);
-            EXPECT_LT(d.differing, 0.01) << textureFilterName(filter) << " " << samples;
+                        textureFilterName(filter), samples, 100 * d.differingPixels, d.meanAbs);
+            EXPECT_LT(d.differingPixels, 0.01) << textureFilterName(filter) << " " << samples;
             EXPECT_LT(d.meanAbs, 0.2) << textureFilterName(filter) << " " << samples;
         }
     }
@@ -107,11 +87,11 @@ TEST(TextureGpu, FilteredGardenWithSamplesMatchesTheCpu) {
     ShadeOptions o = scene->shading;
     o.textureFilter = TextureFilter::Anisotropic;
     o.samplesPerPixel = 4;
-    const Difference d = compare(gpu->render(scene->camera, o).value(),
-                                 render(scene->world, scene->camera, o, &scene->textures));
+    const test::Parity d = compare(gpu->render(scene->camera, o).value(),
+                                   render(scene->world, scene->camera, o, &scene->textures));
     std::printf("garden anisotropic, 4 spp: %.3f%% pixels differ by > 2/255, mean %.4f/255\n",
-                100 * d.differing, d.meanAbs);
-    EXPECT_LT(d.differing, 0.01);
+                100 * d.differingPixels, d.meanAbs);
+    EXPECT_LT(d.differingPixels, 0.01);
     EXPECT_LT(d.meanAbs, 0.2);
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
 }

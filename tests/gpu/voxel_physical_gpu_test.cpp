@@ -17,19 +17,10 @@
 #include "luxel/voxel/voxel_gpu.h"
 #include "luxel/voxel/voxel_scene.h"
 #include "support/display_parity.h"
+#include "support/gpu_test_context.h"
 
 namespace luxel::voxel {
 namespace {
-
-std::unique_ptr<gpu::Context> makeContext() {
-    auto context = gpu::Context::create({.device = "", .validation = true});
-    if (!context) return nullptr;
-    return std::move(*context);
-}
-
-#define LUXEL_REQUIRE_GPU(context) \
-    auto context = makeContext();  \
-    if (!context) GTEST_SKIP() << "no Vulkan device: " << gpu::Context::create().error().message()
 
 using test::compareDisplay;
 using test::Parity;

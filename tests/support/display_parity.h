@@ -14,12 +14,13 @@
 namespace luxel::test {
 
 struct Parity {
-    double differingPixels = 0;  // share of pixels with a channel off by more than 1/255
+    double differingPixels = 0;  // share of pixels with a channel off by more than the tolerance
     double meanAbs = 0;          // mean |difference| over all channels, in 1/255 units
     int maxAbs = 0;              // largest channel difference, in 1/255 units
 };
 
-inline Parity compareDisplay(const Image& a, const Image& b) {
+// `tolerance` is the channel difference, in 1/255 units, that a pixel may show and still agree.
+inline Parity compareDisplay(const Image& a, const Image& b, int tolerance = 1) {
     const Image ta = toneMap(a, {}), tb = toneMap(b, {});
     Parity p;
     long differing = 0;
@@ -35,7 +36,7 @@ inline Parity compareDisplay(const Image& a, const Image& b) {
                 worst = std::max(worst, d);
                 sum += d;
             }
-            differing += worst > 1;
+            differing += worst > tolerance;
             p.maxAbs = std::max(p.maxAbs, worst);
         }
     }

@@ -17,4 +17,17 @@ inline gpu::Context* sharedGpuContext() {
     return context.get();
 }
 
+// A context of its own for a test that counts validation messages from a clean start; null where
+// there is no Vulkan device.
+inline std::unique_ptr<gpu::Context> freshGpuContext() {
+    auto context = gpu::Context::create({.device = "", .validation = true});
+    return context ? std::move(*context) : nullptr;
+}
+
 }  // namespace luxel::test
+
+// Declares `context`, a fresh context, or skips the test with the reason there is none.
+#define LUXEL_REQUIRE_GPU(context)                   \
+    auto context = ::luxel::test::freshGpuContext(); \
+    if (!context)                                    \
+    GTEST_SKIP() << "no Vulkan device: " << ::luxel::gpu::Context::create().error().message()
