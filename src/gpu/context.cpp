@@ -316,12 +316,25 @@ Result<std::shared_ptr<Buffer>> Context::createBuffer(std::uint64_t bytes) {
     });
 }
 
+namespace {
+
+// Staging buffers below this size are not checked: a check reads /proc and the cgroup files (about
+// 30 us), and solvers upload dozens of small tables and parameter blocks per frame.
+constexpr std::size_t kCheckedStagingBytes = std::size_t{16} << 20;
+
+// The host-visible staging buffer lives in host memory on most devices.
+Status checkStagingMemory(std::size_t bytes) {
+    if (bytes < kCheckedStagingBytes) return Ok{};
+    return checkMemory(bytes, "a GPU staging buffer");
+}
+
+}  // namespace
+
 Status Context::upload(Buffer& buffer, std::span<const std::byte> data, std::uint64_t offset) {
     LUXEL_CHECK_LE(offset + data.size(), buffer.bytes);
     LUXEL_CHECK_EQ(offset % 4, 0u);
     if (data.empty()) return Ok{};
-    // The host-visible staging buffer lives in host memory on most devices.
-    if (Status s = checkMemory(data.size(), "a GPU staging buffer"); !s) return s;
+    if (Status s = checkStagingMemory(data.size()); !s) return s;
     return guarded([&]() -> Status {
         using M = vk::MemoryPropertyFlagBits;
         auto staging = impl_->makeBuffer(data.size(), vk::BufferUsageFlagBits::eTransferSrc,
@@ -339,7 +352,7 @@ Status Context::upload(Buffer& buffer, std::span<const std::byte> data, std::uin
 
 Status Context::download(const Buffer& buffer, std::span<std::byte> data) {
     LUXEL_CHECK_LE(data.size(), buffer.bytes);
-    if (Status s = checkMemory(data.size(), "a GPU staging buffer"); !s) return s;
+    if (Status s = checkStagingMemory(data.size()); !s) return s;
     return guarded([&]() -> Status {
         using M = vk::MemoryPropertyFlagBits;
         auto staging = impl_->makeBuffer(data.size(), vk::BufferUsageFlagBits::eTransferDst,
