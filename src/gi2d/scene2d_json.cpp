@@ -81,6 +81,26 @@ Rgb readRgb(const Json& v, const std::string& path) {
             readNonNegative(v[2], element(path, 2))};
 }
 
+// An albedo: one number or [r, g, b], each in [0, 1) (1 would keep light forever in a closed room).
+Rgb readAlbedo(const Json& v, const std::string& path) {
+    auto readOne = [](const Json& x, const std::string& where) {
+        const double a = readNumber(x, where);
+        if (!(a >= 0 && a < 1)) fail(where, "must be in [0, 1), got " + formatNumber(a));
+        return static_cast<float>(a);
+    };
+    if (v.is_number()) return Rgb(readOne(v, path));
+    if (!v.is_array() || v.size() != 3) {
+        fail(path, "must be [r, g, b] or one number, got " + describe(v));
+    }
+    return {readOne(v[0], element(path, 0)), readOne(v[1], element(path, 1)),
+            readOne(v[2], element(path, 2))};
+}
+
+Rgb readOptionalAlbedo(const Json& object, const std::string& path, const char* key) {
+    const Json* v = find(object, key);
+    return v ? readAlbedo(*v, member(path, key)) : Rgb();
+}
+
 int readCanvasSize(const Json& v, const std::string& path) {
     const double x = readNumber(v, path);
     if (x != std::floor(x)) fail(path, "must be a whole number, got " + formatNumber(x));
@@ -105,11 +125,12 @@ float readOptionalNonNegative(const Json& object, const std::string& path, const
 
 const std::vector<const char*> kTopLevelFields = {"type",       "description",       "canvas",
                                                   "background", "boundary_radiance", "shapes"};
-const std::vector<const char*> kBackgroundFields = {"emission", "absorption"};
-const std::vector<const char*> kMaterialFields = {"emission", "absorption", "opaque", "intensity"};
+const std::vector<const char*> kBackgroundFields = {"emission", "absorption", "albedo"};
+const std::vector<const char*> kMaterialFields = {"emission", "absorption", "opaque", "intensity",
+                                                  "albedo"};
 const std::vector<const char*> kImageFields = {
-    "type",     "name",       "comment",          "position", "size",
-    "emission", "absorption", "absorption_scale", "intensity"};
+    "type",     "name",       "comment",          "position",  "size",
+    "emission", "absorption", "absorption_scale", "intensity", "albedo"};
 
 // type, name, comment, the geometry's fields, then the material's.
 std::vector<const char*> shapeFields(std::vector<const char*> geometryFields) {
@@ -148,6 +169,7 @@ class SceneReader {
             checkFields(*v, "background", kBackgroundFields, "in background");
             scene_.background.emission = readOptionalRgb(*v, "background", "emission");
             scene_.background.absorption = readOptionalRgb(*v, "background", "absorption");
+            scene_.background.albedo = readOptionalAlbedo(*v, "background", "albedo");
         }
         scene_.boundaryRadiance = readOptionalRgb(root, "", "boundary_radiance");
 
@@ -259,6 +281,7 @@ class SceneReader {
         Material material;
         material.emission = readOptionalRgb(j, path, "emission");
         material.intensity = readOptionalNonNegative(j, path, "intensity", 1.0f);
+        material.albedo = readOptionalAlbedo(j, path, "albedo");
         const Json* opaque = find(j, "opaque");
         const Json* absorption = find(j, "absorption");
         const bool isOpaque = opaque && readBool(*opaque, member(path, "opaque"));
@@ -287,6 +310,7 @@ class SceneReader {
         layer.absorptionScale = readOptionalNonNegative(j, path, "absorption_scale", 1.0f);
         const Json* emission = find(j, "emission");
         const Json* absorption = find(j, "absorption");
+        const Json* albedo = find(j, "albedo");
         if (!emission && !absorption) {
             fail(path, "an image layer needs \"emission\" and/or \"absorption\" (PNG paths)");
         }
@@ -295,6 +319,7 @@ class SceneReader {
         if (absorption) {
             layer.absorptionPath = readImagePath(*absorption, member(path, "absorption"));
         }
+        if (albedo) layer.albedoPath = readImagePath(*albedo, member(path, "albedo"));
         if (emission) {
             layer.emission =
                 loadImage(layer.emissionPath, member(path, "emission"), PngEncoding::Srgb);
@@ -302,6 +327,9 @@ class SceneReader {
         if (absorption) {
             layer.absorption =
                 loadImage(layer.absorptionPath, member(path, "absorption"), PngEncoding::Linear);
+        }
+        if (albedo) {
+            layer.albedo = loadImage(layer.albedoPath, member(path, "albedo"), PngEncoding::Linear);
         }
         return layer;
     }
@@ -373,6 +401,7 @@ Json shapeJson(const Shape& shape, std::size_t index) {
         j["size"] = pointJson(image->size);
         if (!image->emissionPath.empty()) j["emission"] = image->emissionPath;
         if (!image->absorptionPath.empty()) j["absorption"] = image->absorptionPath;
+        if (!image->albedoPath.empty()) j["albedo"] = image->albedoPath;
         if (image->absorptionScale != 1.0f)
             j["absorption_scale"] = floatJson(image->absorptionScale);
         if (shape.material.intensity != 1.0f) j["intensity"] = floatJson(shape.material.intensity);
@@ -402,6 +431,7 @@ Json shapeJson(const Shape& shape, std::size_t index) {
         j["absorption"] = rgbJson(m.absorption);  // always written: the default is opaque
     }
     if (m.intensity != 1.0f) j["intensity"] = floatJson(m.intensity);
+    if (m.albedo != Rgb()) j["albedo"] = rgbJson(m.albedo);
     return j;
 }
 
@@ -474,9 +504,12 @@ Result<Scene2D> loadScene2D(const std::string& path) {
 std::string sceneToJson(const Scene2D& scene) {
     Json root = Json::object();
     root["canvas"] = Json::array({scene.width, scene.height});
-    if (scene.background.emission != Rgb() || scene.background.absorption != Rgb()) {
+    if (scene.background.emission != Rgb() || scene.background.absorption != Rgb() ||
+        scene.background.albedo != Rgb()) {
         root["background"] = {{"emission", rgbJson(scene.background.emission)},
                               {"absorption", rgbJson(scene.background.absorption)}};
+        if (scene.background.albedo != Rgb())
+            root["background"]["albedo"] = rgbJson(scene.background.albedo);
     }
     if (scene.boundaryRadiance != Rgb())
         root["boundary_radiance"] = rgbJson(scene.boundaryRadiance);

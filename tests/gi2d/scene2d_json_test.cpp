@@ -209,6 +209,19 @@ TEST(Scene2DJson, IntegralFloatCanvasIsAccepted) {
     EXPECT_EQ(parseOk(R"({"canvas": [64.0, 32]})").width, 64);
 }
 
+TEST(Scene2DJson, AlbedoForShapesAndBackground) {
+    const Scene2D scene = parseOk(R"({"canvas": [16, 16],
+        "background": {"absorption": 0.1, "albedo": [0.5, 0.6, 0.7]},
+        "shapes": [{"type": "circle", "center": [8, 8], "radius": 2, "albedo": 0.8}]})");
+    EXPECT_EQ(scene.background.albedo, Rgb(0.5f, 0.6f, 0.7f));
+    EXPECT_EQ(scene.shapes[0].material.albedo, Rgb(0.8f));
+    EXPECT_TRUE(scene.shapes[0].material.isOpaque());
+    // Written back and read again unchanged.
+    const Scene2D again = parseOk(sceneToJson(scene));
+    EXPECT_EQ(again.background.albedo, scene.background.albedo);
+    EXPECT_EQ(again.shapes[0].material.albedo, scene.shapes[0].material.albedo);
+}
+
 // ---- Errors ---------------------------------------------------------------------------------
 
 // Parses `text` expecting an error on `line` whose message contains `part`.
@@ -265,7 +278,11 @@ TEST(Scene2DJsonErrors, UnknownFields) {
          "radiuss": 2}]})",
                 3,
                 "shapes[0].radiuss: unknown field 'radiuss' (allowed for circle: type, name, "
-                "comment, center, radius, emission, absorption, opaque, intensity)");
+                "comment, center, radius, emission, absorption, opaque, intensity, albedo)");
+    expectError(R"({"canvas": [10, 10], "shapes": [
+        {"type": "circle", "center": [1, 1], "radius": 1,
+         "albedo": [0.5, 1, 0]}]})",
+                3, "shapes[0].albedo[1]: must be in [0, 1), got 1");
     expectError("{\"canvas\": [10, 10],\n \"background\": {\"emision\": 1}}", 2,
                 "unknown field 'emision'");
     expectError(R"({"canvas": [10, 10], "shapes": [

@@ -21,9 +21,18 @@ struct Medium2D {
     Image emission;        // 3 channels, radiance
     Image absorption;      // 3 channels, per pixel length, in [0, kMaxAbsorption]
     Rgb boundaryRadiance;  // radiance arriving from outside the canvas
+    // Light that bounces (docs/algorithms/scattering-2d.md); both 3 channels in [0, 1), or empty
+    // (0x0) when nothing in the scene re-emits light.
+    //  - scattering: single-scattering albedo of the medium; a pixel re-emits scattering * fluence
+    //    isotropically.
+    //  - reflectance: diffuse reflectance of opaque surfaces; an opaque pixel re-emits reflectance
+    //    times the radiance arriving at it from its transparent neighbours.
+    Image scattering = {};
+    Image reflectance = {};
 
     int width() const { return emission.width(); }
     int height() const { return emission.height(); }
+    bool bounces() const { return !scattering.empty() || !reflectance.empty(); }
 };
 
 // Bytes a Medium2D of this size holds.

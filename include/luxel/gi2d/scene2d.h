@@ -26,8 +26,13 @@ struct Material {
     Rgb emission;    // radiance emitted where the material is optically thick (times intensity)
     Rgb absorption;  // per pixel length; kOpaqueAbsorption when "opaque": true
     float intensity = 1.0f;
+    // Fraction of the light arriving that is re-emitted diffusely, per channel, in [0, 1)
+    // (docs/algorithms/scattering-2d.md). For an opaque material it is the surface's diffuse
+    // reflectance; otherwise the single-scattering albedo of the medium (isotropic scattering).
+    Rgb albedo = {};
 
     Rgb scaledEmission() const { return emission * intensity; }
+    bool isOpaque() const { return absorption.minComponent() >= kOpaqueAbsorption; }
 };
 
 struct Circle {
@@ -61,8 +66,10 @@ struct ImageLayer {
     Vec2d size;      // extent on the canvas; the images are stretched to it (nearest texel)
     std::shared_ptr<const Image> emission;    // may be null; linear RGB(A)
     std::shared_ptr<const Image> absorption;  // may be null; linear data, channels 0..2 used
+    // May be null; linear data in [0, 1), channels 0..2: per-texel albedo (Material::albedo).
+    std::shared_ptr<const Image> albedo;
     float absorptionScale = 1.0f;
-    std::string emissionPath, absorptionPath;  // as written in the scene, for messages
+    std::string emissionPath, absorptionPath, albedoPath;  // as written in the scene
 };
 
 using Geometry = std::variant<Circle, Box, Capsule, Polygon, ImageLayer>;
@@ -76,6 +83,7 @@ struct Shape {
 struct Medium {
     Rgb emission;
     Rgb absorption;
+    Rgb albedo = {};  // single-scattering albedo of the background medium (fog that glows when lit)
 };
 
 struct Scene2D {
