@@ -19,7 +19,7 @@ namespace luxel::viewer {
 
 struct View2D {
     gi2d::Solver2D solver = gi2d::Solver2D::Hrc;
-    gi2d::RcMerge merge = gi2d::RcMerge::Vanilla;  // RC only
+    gi2d::RcMerge merge = gi2d::RcMerge::BilinearFix;  // RC only
     gpu::Backend backend = gpu::Backend::Auto;
     std::string device;     // Vulkan device choice (ContextOptions::device)
     bool gi = true;         // false: emission only (the raylib demo's R)

@@ -17,7 +17,7 @@ Result<std::pair<int, int>> parseWindowSize(const std::string& text, const std::
 Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
     ParsedOptions parsed;
     ViewerOptions& o = parsed.options;
-    std::string size, internalSize, backend = "auto", solver = "hrc", merge = "vanilla";
+    std::string size, internalSize, backend = "auto", solver = "hrc", merge = "bilinear-fix";
     CLI::App app{"luxel-view: interactive 2D radiance cascades, voxel and octree viewer",
                  "luxel-view"};
     app.add_option("scene", o.scene,

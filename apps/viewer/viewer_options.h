@@ -18,13 +18,13 @@ struct ViewerOptions {
     int internalHeight = 0;
     float internalScale =
         0.0f;  // 0: the mode's default (2D: of the canvas; voxel, octree: of the window)
-    gpu::Backend backend = gpu::Backend::Auto;     // --backend auto | cpu | gpu
-    std::string device;                            // Vulkan device index or name part
-    gi2d::Solver2D solver = gi2d::Solver2D::Hrc;   // 2D: --solver hrc | rc | reference
-    gi2d::RcMerge merge = gi2d::RcMerge::Vanilla;  // 2D RC: --merge vanilla | bilinear-fix
-    float exposure = 0.0f;                         // stops
-    std::string script;                            // timed input events (docs/viewer.md)
-    int recordFrames = 0;                          // --record N
+    gpu::Backend backend = gpu::Backend::Auto;         // --backend auto | cpu | gpu
+    std::string device;                                // Vulkan device index or name part
+    gi2d::Solver2D solver = gi2d::Solver2D::Hrc;       // 2D: --solver hrc | rc | reference
+    gi2d::RcMerge merge = gi2d::RcMerge::BilinearFix;  // 2D RC: --merge vanilla | bilinear-fix
+    float exposure = 0.0f;                             // stops
+    std::string script;                                // timed input events (docs/viewer.md)
+    int recordFrames = 0;                              // --record N
     std::string recordDir = "frames";
     std::string savePath;  // paint mode saves here (default: SCENE stem + ".painted.json")
     int threads = 0;       // solver threads (0: all)

@@ -169,7 +169,7 @@ TEST_F(Cli, RcVariantsMarchersAndViews) {
     const std::string scene = write("small.json", kSmallScene);  // has a faint medium: DDA only
     RunResult r = runLuxel("render " + scene + " --solver rc --out " + path("v.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find("merge vanilla, march dda"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("merge bilinear-fix, march dda"), std::string::npos) << r.output;
     r = runLuxel("render " + scene + " --solver rc --merge bilinear-fix --out " + path("f.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     auto f = luxel::readExr(path("f.exr"));

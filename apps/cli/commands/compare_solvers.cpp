@@ -1,6 +1,7 @@
 // `luxel compare-solvers`: every 2D solver on one scene, each in its own process so its peak
 // memory can be measured: solve time, error against the reference solver, peak RSS; optionally a
-// side-by-side image grid of the display images.
+// side-by-side image grid of the display images and one of each solver's signed error
+// (docs/solver-errors.md). With --move, how each solver's image changes when the light moves.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
@@ -15,6 +16,8 @@
 #include <vector>
 
 #include "commands/command.h"
+#include "commands/compare_moving_light.h"
+#include "commands/error_image.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/metrics.h"
@@ -27,8 +30,9 @@ namespace luxel::cli {
 namespace {
 
 struct CompareSolversArgs {
-    std::string scene, size, grid;
+    std::string scene, size, grid, errorImage, move;
     int rays = 1024;
+    double errorScalePercent = 10;
 };
 
 struct SolverRun {
@@ -93,20 +97,6 @@ Result<RunOutcome> runSolver(const CompareSolversArgs& args, const SolverRun& so
     return out;
 }
 
-// The display images side by side with 4 px dark gaps.
-Image sideBySide(const std::vector<Image>& images) {
-    const int gap = 4, w = images[0].width(), h = images[0].height();
-    const int n = static_cast<int>(images.size());
-    Image grid(n * w + (n - 1) * gap, h, 3);
-    grid.fill(0.05f);
-    for (int i = 0; i < n; ++i) {
-        for (int y = 0; y < h; ++y) {
-            for (int x = 0; x < w; ++x) grid.setRgb(i * (w + gap) + x, y, images[i].rgb(x, y));
-        }
-    }
-    return grid;
-}
-
 int runCompareSolvers(const CompareSolversArgs& args) {
     if (access(args.scene.c_str(), R_OK) != 0) {
         return reportError(Error("cannot open scene '" + args.scene + "'"));
@@ -119,13 +109,27 @@ int runCompareSolvers(const CompareSolversArgs& args) {
                                  "; compare-solvers compares the 2D "
                                  "solvers"));
     }
-    const std::vector<SolverRun> solvers = {
+    if (!args.move.empty()) {
+        return runCompareMovingLight(
+            {args.scene, args.size, args.move, args.errorImage, args.rays, args.errorScalePercent});
+    }
+    // The CPU paths, so peak memory is the solver's own (no Vulkan driver loaded); RC marches the
+    // pixel medium as the reference does.
+    std::vector<SolverRun> solvers = {
         {"reference", {"--solver", "reference", "--rays", std::to_string(args.rays)}},
-        // The CPU paths, so peak memory is the solver's own (no Vulkan driver loaded).
         {"hrc", {"--solver", "hrc", "--backend", "cpu"}},
-        {"rc-vanilla", {"--solver", "rc", "--merge", "vanilla", "--backend", "cpu"}},
-        {"rc-bilinear-fix", {"--solver", "rc", "--merge", "bilinear-fix", "--backend", "cpu"}},
+        {"rc-vanilla",
+         {"--solver", "rc", "--merge", "vanilla", "--march", "dda", "--backend", "cpu"}},
+        {"rc-bilinear-fix",
+         {"--solver", "rc", "--merge", "bilinear-fix", "--march", "dda", "--backend", "cpu"}},
     };
+    // A second reference with other random directions: its difference from the first shows the
+    // reference's own noise (sqrt(2) times one image's).
+    if (!args.errorImage.empty()) {
+        solvers.push_back(
+            {"reference-seed2",
+             {"--solver", "reference", "--rays", std::to_string(args.rays), "--seed", "2"}});
+    }
     std::error_code ec;
     const std::filesystem::path dir =
         std::filesystem::temp_directory_path() / ("luxel-compare-" + std::to_string(getpid()));
@@ -165,6 +169,22 @@ int runCompareSolvers(const CompareSolversArgs& args) {
         std::printf("wrote %s (left to right: reference, hrc, rc vanilla, rc bilinear fix)\n",
                     args.grid.c_str());
     }
+    if (!args.errorImage.empty()) {
+        const double mean = compareImages(reference, reference)->meanReference;
+        const double scale = args.errorScalePercent / 100.0;
+        std::vector<Image> panels = {runs[0].display};
+        for (std::size_t i : {std::size_t{4}, std::size_t{1}, std::size_t{2}, std::size_t{3}}) {
+            panels.push_back(divergingColours(
+                signedRelativeDifference(runs[i].fluence, reference, mean), scale));
+        }
+        if (Status s = writePng(args.errorImage, sideBySide(panels)); !s) {
+            return reportError(s.error());
+        }
+        std::printf(
+            "wrote %s (left to right: reference, then the signed error of reference seed 2, hrc, "
+            "rc vanilla, rc bilinear fix; white 0, red +%g%%, blue -%g%% of the mean)\n",
+            args.errorImage.c_str(), args.errorScalePercent, args.errorScalePercent);
+    }
     return 0;
 }
 
@@ -178,6 +198,14 @@ Runner addCompareSolversCommand(CLI::App& app) {
         ->check(wholeIn(1, gi2d::kMaxReferenceRays))
         ->capture_default_str();
     app.add_option("--grid", args->grid, "write the display images side by side (.png)");
+    app.add_option("--error-image", args->errorImage,
+                   "write the reference and each solver's signed error side by side (.png)");
+    app.add_option("--error-scale", args->errorScalePercent,
+                   "error image: the error (% of the mean fluence) drawn fully red or blue")
+        ->check(CLI::Range(0.001, 1000.0))
+        ->capture_default_str();
+    app.add_option("--move", args->move,
+                   "move the brightest light by DX,DY px and compare each solver's change");
     return [args] { return runCompareSolvers(*args); };
 }
 

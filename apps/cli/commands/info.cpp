@@ -17,7 +17,7 @@ namespace luxel::cli {
 namespace {
 
 struct InfoArgs {
-    std::string scene, size, solverName = "reference", mergeName = "vanilla";
+    std::string scene, size, solverName = "reference", mergeName = "bilinear-fix";
     int rays = gi2d::ReferenceOptions{}.rays;
 };
 

@@ -44,8 +44,8 @@ struct RenderArgs {
     std::string frustum;  // debug: one of +x, +y, -x, -y
     int cascade = 0;      // debug: the cascade --view cascade|probes shows (hrc, rc)
     // RC
-    std::string mergeName = "vanilla", march = "auto", view = "gi";
-    gi2d::RcMerge merge = gi2d::RcMerge::Vanilla;  // parsed from mergeName
+    std::string mergeName = "bilinear-fix", march = "auto", view = "gi";
+    gi2d::RcMerge merge = gi2d::RcMerge::BilinearFix;  // parsed from mergeName
     int probeSpacing = gi2d::RcOptions{}.probeSpacing;
     int baseRays = gi2d::RcOptions{}.baseRays;
     double baseInterval = gi2d::RcOptions{}.baseInterval;

@@ -25,7 +25,8 @@ struct RcOptions {
     int baseRays = 4;           // cascade-0 directions per probe (x4 per cascade)
     double baseInterval = 1.0;  // cascade-0 interval length in pixels (x4 per cascade)
     int maxCascades = 0;        // cap on the cascade count; 0 = ceil(log4(diag / base)) + 1
-    RcMerge merge = RcMerge::Vanilla;
+    // The fix by default: vanilla leaks, rings and pops more (docs/solver-errors.md).
+    RcMerge merge = RcMerge::BilinearFix;
     // >= 0: show cascade n's merged radiance averaged over its directions (nearest probe) instead
     // of the fluence. Debug view.
     int debugCascade = -1;

@@ -85,6 +85,7 @@ TEST(RcSolver, BilinearFixReducesLightLeakingThroughAOnePixelWall) {
         return sum / n;
     };
     RcOptions o;
+    o.merge = RcMerge::Vanilla;
     const double vanilla = shadowLight(solveRc(medium, o).value());
     o.merge = RcMerge::BilinearFix;
     const double fixed = shadowLight(solveRc(medium, o).value());
