@@ -215,6 +215,25 @@ TEST_F(Cli, CompareSolversPrintsOneRowPerSolverAndAGrid) {
     expectError("compare-solvers " + path("none.json"), "none.json");
 }
 
+TEST_F(Cli, CompareSolversErrorImageAndMovingLight) {
+    const std::string scene = write("small.json", kSmallScene);
+    RunResult r =
+        runLuxel("compare-solvers " + scene + " --rays 32 --error-image " + path("e.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("\nreference-seed2 "), std::string::npos) << r.output;
+    auto errors = luxel::readPng(path("e.png"));
+    ASSERT_TRUE(errors.ok());
+    EXPECT_EQ(errors->width(), 5 * 48 + 4 * 4);  // reference, seed-2 noise, 3 solvers
+    r = runLuxel("compare-solvers " + scene + " --rays 32 --move 0.5,0 --error-image " +
+                 path("m.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("change by < 0.1%"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("\nrc-bilinear-fix "), std::string::npos) << r.output;
+    EXPECT_TRUE(luxel::readPng(path("m.png")).ok());
+    expectError("compare-solvers " + scene + " --move sideways", "--move 'sideways'");
+    expectError("compare-solvers " + scene + " --error-scale 0", "--error-scale");
+}
+
 TEST_F(Cli, DevicesListsVulkanDevicesOrSaysWhyNot) {
     RunResult r = runLuxel("devices");
     if (r.exitCode == 0) {

@@ -1,5 +1,6 @@
-// Moving-light stability of RC: a small light moved by a fraction of a pixel must not change the
-// image where the truth does not change (docs/solver-errors.md, "moving lights").
+// RC with its default merge where cascades are weakest: a small light moved by a pixel must not
+// change the image where the truth does not change, and light must pass thin slits as in the
+// truth (docs/solver-errors.md).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +14,8 @@
 namespace luxel::gi2d {
 namespace {
 
-// A small light left of a wall, a static wide light on the right that lights the wall's shadow.
+// A small light left of a wall; a static light on the right lights the wall's shadow, where the
+// truth does not change when the small light moves.
 Medium2D movingLightScene(double dx) {
     Scene2D scene{128, 128, {}, {}, {}, ""};
     scene.shapes.push_back({"light", Circle{{30.0 + dx, 40.0 + 0.5 * dx}, 2.5},
@@ -25,42 +27,87 @@ Medium2D movingLightScene(double dx) {
     return rasterize(scene).value();
 }
 
-double mean(const Image& f) {
+double meanRed(const Image& f) {
     double s = 0;
-    for (int y = 0; y < f.height(); ++y)
+    for (int y = 0; y < f.height(); ++y) {
         for (int x = 0; x < f.width(); ++x) s += f.at(x, y, 0);
+    }
     return s / (f.width() * f.height());
 }
 
-TEST(RcMovingLight, Explore) {
+TEST(RcMovingLight, DefaultMergeBarelyChangesWhereTheTruthDoesNot) {
     ReferenceOptions ro;
     ro.rays = 256;
-    for (double step : {0.25, 0.5, 1.0}) {
-        const Medium2D a = movingLightScene(0), b = movingLightScene(step);
-        const Image ra = solveReference(a, ro).value(), rb = solveReference(b, ro).value();
-        const double m = mean(ra);
-        for (RcMerge merge : {RcMerge::Vanilla, RcMerge::BilinearFix}) {
-            RcOptions o;
-            o.merge = merge;
-            const Image ca = solveRc(a, o).value(), cb = solveRc(b, o).value();
-            double worst = 0, sum = 0, worstRef = 0;
-            int n = 0;
-            for (int y = 0; y < 128; ++y) {
-                for (int x = 0; x < 128; ++x) {
-                    if (std::abs(rb.at(x, y, 0) - ra.at(x, y, 0)) >= 1e-3 * m) continue;
-                    const double d = std::abs(cb.at(x, y, 0) - ca.at(x, y, 0)) / m;
-                    worst = std::max(worst, d);
-                    worstRef =
-                        std::max(worstRef, double(std::abs(rb.at(x, y, 0) - ra.at(x, y, 0))) / m);
-                    sum += d;
-                    ++n;
-                }
-            }
-            std::printf(
-                "step %.2f %s: stable pixels %d, max change %.4f%% of mean, mean %.5f%% (ref max "
-                "%.4f%%)\n",
-                step, merge == RcMerge::Vanilla ? "vanilla" : "fix", n, 100 * worst, 100 * sum / n,
-                100 * worstRef);
+    const Medium2D a = movingLightScene(0), b = movingLightScene(1.0);
+    const Image ra = solveReference(a, ro).value(), rb = solveReference(b, ro).value();
+    const double m = meanRed(ra);
+    const Image ca = solveRc(a).value(), cb = solveRc(b).value();  // the default merge
+    double worst = 0, sum = 0;
+    int n = 0;
+    for (int y = 0; y < 128; ++y) {
+        for (int x = 0; x < 128; ++x) {
+            if (std::abs(rb.at(x, y, 0) - ra.at(x, y, 0)) >= 1e-3 * m) continue;
+            const double d = std::abs(cb.at(x, y, 0) - ca.at(x, y, 0)) / m;
+            worst = std::max(worst, d);
+            sum += d;
+            ++n;
+        }
+    }
+    std::printf(
+        "light moved 1 px: %d pixels where the truth changes < 0.1%%; RC changes there by "
+        "%.3f%% of the mean at most, %.4f%% on average\n",
+        n, 100 * worst, 100 * sum / n);
+    ASSERT_GT(n, 128 * 128 / 2);
+    // Measured: vanilla 15.8% at most, 0.068% on average; the bilinear fix 8.7%, 0.028%. The
+    // rays are still points: a light between two of them pops (docs/solver-errors.md).
+    EXPECT_LT(worst, 0.11);
+    EXPECT_LT(sum / n, 0.00045);
+}
+
+// Two walls 4 px thick, each with a 1.5 px slit off the light's axis; a wide light on the left.
+Medium2D slitScene() {
+    Scene2D scene{128, 128, {}, {}, {}, ""};
+    scene.shapes.push_back(
+        {"light", Box{{6, 64}, {8, 100}, 0.0}, Material{Rgb(4.0f), Rgb(kOpaqueAbsorption)}});
+    for (double x : {40.0, 80.0}) {
+        const double slit = x == 40.0 ? 50.0 : 58.0;
+        const double below = slit - 0.75, above = slit + 0.75;
+        scene.shapes.push_back(
+            {"wall", Box{{x, below / 2}, {4, below}, 0.0}, Material{{}, Rgb(kOpaqueAbsorption)}});
+        scene.shapes.push_back({"wall", Box{{x, (above + 128) / 2}, {4, 128 - above}, 0.0},
+                                Material{{}, Rgb(kOpaqueAbsorption)}});
+    }
+    return rasterize(scene).value();
+}
+
+double meanBetween(const Image& f, int x0, int x1) {
+    double s = 0;
+    for (int y = 0; y < f.height(); ++y) {
+        for (int x = x0; x < x1; ++x) s += f.at(x, y, 0);
+    }
+    return s / ((x1 - x0) * f.height());
+}
+
+TEST(RcSlits, DefaultMergePassesSlitsNearTheTruth) {
+    const Medium2D medium = slitScene();
+    ReferenceOptions ro;
+    ro.rays = 512;
+    const Image truth = solveReference(medium, ro).value();
+    RcOptions vanilla;
+    vanilla.merge = RcMerge::Vanilla;
+    const Image fixed = solveRc(medium).value(), plain = solveRc(medium, vanilla).value();
+    for (auto [x0, x1, name] :
+         {std::tuple{44, 78, "past the first wall"}, std::tuple{84, 128, "past the second wall"}}) {
+        const double t = meanBetween(truth, x0, x1);
+        const double f = meanBetween(fixed, x0, x1) / t, v = meanBetween(plain, x0, x1) / t;
+        std::printf("%s: reference %.6f; default merge %.3fx, vanilla %.3fx the truth\n", name, t,
+                    f, v);
+        ASSERT_GT(t, 0.0) << name;
+        // Measured past the first wall: the bilinear fix 0.85x; vanilla merges upper probes from
+        // the lit side of the wall and reads 3.5x. Past the second (two slits in line) both lose
+        // light (fix 0.52x, vanilla 0.26x): too few rays thread both slits; not bounded here.
+        if (x0 == 44) {
+            EXPECT_NEAR(f, 1.0, 0.25) << name;
         }
     }
 }
