@@ -32,6 +32,17 @@ Rgb arrivingRadiance(const Medium2D& medium, const Image& fluence, Rgb previous,
     return weight > 0 ? sum * static_cast<float>(1.0 / weight) : Rgb();
 }
 
+// Change of the bounced light alone: sum |next - previous| / sum |next - E|. Measured against
+// the whole source, a bright light would hide a room that is still filling up.
+double bouncedChange(const Image& next, const Image& previous, const Image& emission) {
+    double diff = 0, bounced = 0;
+    for (std::size_t i = 0; i < next.size(); ++i) {
+        diff += std::abs(static_cast<double>(next.data()[i]) - previous.data()[i]);
+        bounced += std::abs(static_cast<double>(next.data()[i]) - emission.data()[i]);
+    }
+    return bounced > 0 ? diff / bounced : 0.0;
+}
+
 }  // namespace
 
 Image bounceSource(const Medium2D& medium, const Image& fluence, const Image& previousSource) {
@@ -79,7 +90,7 @@ Result<BounceResult> solveWithBounces(const Medium2D& medium, const FluenceSolve
     }
     for (int k = 0; k < options.maxBounces; ++k) {
         Image next = bounceSource(medium, result.fluence, lit.emission);
-        result.change = relativeChange(next, lit.emission);
+        result.change = bouncedChange(next, lit.emission, medium.emission);
         lit.emission = std::move(next);
         auto f = solve(lit);
         if (!f) return f.error();

@@ -15,7 +15,7 @@ namespace {
 
 Image convergedReference(const Medium2D& medium) {
     ReferenceOptions ref;
-    ref.rays = 512;
+    ref.rays = 256;
     BounceOptions options;
     options.maxBounces = kMaxReferenceBounces;
     options.tolerance = kReferenceTolerance;

@@ -23,7 +23,8 @@ double relativeChange(const Image& a, const Image& b);
 
 struct BounceOptions {
     int maxBounces = 0;  // fluence fed back at most this many times (0: one plain solve)
-    // > 0: stop once the relative L1 change of the source is below this (converged).
+    // > 0: stop once the bounced light (source minus emission) changes by less than this,
+    // relative L1, in one bounce (converged).
     double tolerance = 0.0;
     // Called after each solve with (solves so far, relative change of the source that was used).
     std::function<void(int solve, double change)> onSolve;
@@ -34,7 +35,7 @@ struct BounceResult {
     Image source;            // the emission of the last solve (E plus bounced light)
     int bounces = 0;         // times the fluence was fed back
     bool converged = false;  // the tolerance was met (false for a fixed count)
-    double change = 0.0;     // relative change of the source in the last bounce
+    double change = 0.0;     // relative change of the bounced light in the last bounce
 };
 
 using FluenceSolve = std::function<Result<Image>(const Medium2D&)>;
