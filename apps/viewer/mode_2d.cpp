@@ -254,6 +254,10 @@ void Mode2D::drawPanel() {
     if (ImGui::Checkbox("GI (R)", &view_.gi)) viewChanged();
     ImGui::SameLine();
     if (ImGui::Checkbox("probes (SPACE)", &view_.probes)) viewChanged();
+    // Bounce light: one bounce per frame (renderer_2d.h).
+    if (ImGui::Checkbox("bounce light", &view_.bounce)) viewChanged();
+    ImGui::SameLine();
+    if (ImGui::SliderInt("bounces", &view_.bounces, 1, 64)) viewChanged();
     const int cascades = cascadeCount(view_);
     if (cascades > 0 && ImGui::SliderInt("cascade (C)", &view_.cascade, -1, cascades - 1,
                                          view_.cascade < 0 ? "fluence" : "cascade %d")) {

@@ -9,6 +9,8 @@
 #include "luxel/core/parallel.h"
 #include "luxel/core/timer.h"
 #include "luxel/core/tonemap.h"
+#include "luxel/gi2d/bounce.h"
+#include "luxel/gi2d/bounce_fill.h"
 #include "luxel/gi2d/display.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rasterize.h"
@@ -110,7 +112,8 @@ void Renderer2D::setState(State2D&& state) {
         mediumDirty_ = true;
     }
     if (mediumDirty_ || a.solver != b.solver || a.merge != b.merge || a.backend != b.backend ||
-        a.gi != b.gi || a.cascade != b.cascade || a.device != b.device) {
+        a.gi != b.gi || a.cascade != b.cascade || a.device != b.device || a.bounce != b.bounce ||
+        a.bounces != b.bounces) {
         fluenceDirty_ = true;
     }
     displayDirty_ = true;
@@ -120,8 +123,15 @@ void Renderer2D::setState(State2D&& state) {
 bool Renderer2D::hasMoreWork() const {
     if (!state_.scene) return false;
     if (mediumDirty_ || fluenceDirty_ || displayDirty_) return true;
+    if (bouncing() && bouncesDone_ < state_.view.bounces) return true;
     return state_.view.gi && state_.view.solver == gi2d::Solver2D::Reference &&
            reference_.passes() < referenceTargetPasses_;
+}
+
+bool Renderer2D::bouncing() const {
+    const View2D& v = state_.view;
+    return v.bounce && v.gi && v.cascade < 0 && v.solver != gi2d::Solver2D::Reference &&
+           medium_.bounces();
 }
 
 gpu::Context* Renderer2D::gpuFor(const View2D& view) {
@@ -172,18 +182,19 @@ Status Renderer2D::solve(Frame& frame) {
     Stopwatch clock;
     std::vector<gpu::PassTiming> timings;
     Result<Image> fluence = Image();
+    const gi2d::Medium2D& medium = bouncing() ? lit_ : medium_;
     switch (view.solver) {
         case gi2d::Solver2D::Hrc: {
             gi2d::HrcOptions options;
             options.debugCascade = view.cascade;
-            fluence = gpu ? gi2d::solveHrcOnGpu(*gpu, medium_, options, &timings)
-                          : gi2d::solveHrc(medium_, options);
+            fluence = gpu ? gi2d::solveHrcOnGpu(*gpu, medium, options, &timings)
+                          : gi2d::solveHrc(medium, options);
             break;
         }
         case gi2d::Solver2D::Rc: {
             const gi2d::RcOptions options = rcOptionsFor(view);
-            fluence = gpu ? gi2d::solveRcOnGpu(*gpu, medium_, options, &timings)
-                          : gi2d::solveRc(medium_, options);
+            fluence = gpu ? gi2d::solveRcOnGpu(*gpu, medium, options, &timings)
+                          : gi2d::solveRc(medium, options);
             break;
         }
         case gi2d::Solver2D::Reference: {
@@ -211,7 +222,13 @@ Frame Renderer2D::step() {
     note_.clear();
     if (mediumDirty_) {
         Stopwatch clock;
-        auto medium = gi2d::rasterize(*state_.scene, {view.width, view.height, kSupersample});
+        const gi2d::RasterOptions raster{view.width, view.height, kSupersample};
+        auto medium = gi2d::rasterize(*state_.scene, raster);
+        if (medium) {
+            if (Status f = gi2d::fillBounceImages(*state_.scene, raster, *medium); !f) {
+                medium = f.error();
+            }
+        }
         mediumDirty_ = false;
         if (!medium) {
             frame.note = medium.error().message();
@@ -225,7 +242,16 @@ Frame Renderer2D::step() {
     }
     const bool refining = view.gi && view.solver == gi2d::Solver2D::Reference &&
                           reference_.passes() < referenceTargetPasses_;
-    if (fluenceDirty_ || refining) {
+    // One bounce per frame: the last frame's fluence lights the next frame's source.
+    const bool bounceNow = !fluenceDirty_ && bouncing() && bouncesDone_ < view.bounces;
+    if (fluenceDirty_ && bouncing()) {
+        lit_ = medium_;
+        bouncesDone_ = 0;
+    } else if (bounceNow) {
+        lit_.emission = gi2d::bounceSource(medium_, fluence_, lit_.emission);
+        ++bouncesDone_;
+    }
+    if (fluenceDirty_ || refining || bounceNow) {
         if (fluenceDirty_) reference_.reset();
         fluenceDirty_ = false;
         Frame solved;
@@ -238,6 +264,10 @@ Frame Renderer2D::step() {
             referenceTargetPasses_ = 256;
         }
         if (solved.note.empty()) solved.note = note_;
+        if (bouncing()) {
+            solved.note += (solved.note.empty() ? "" : "; ") + std::string("bounce ") +
+                           std::to_string(bouncesDone_) + "/" + std::to_string(view.bounces);
+        }
         std::vector<PassTime> passes;
         for (const PassTime& p : last_.passes) {
             if (p.name == "raster") passes.push_back(p);

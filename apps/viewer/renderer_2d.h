@@ -26,6 +26,10 @@ struct View2D {
     bool probes = false;    // mark probe centres (the raylib demo's SPACE)
     int cascade = -1;       // >= 0: show that cascade instead of the fluence (the raylib demo's C)
     float exposure = 0.0f;  // stops
+    // Bounce light (HRC, RC; scenes with albedo): one bounce per frame, the previous frame's
+    // fluence fed back through gi2d::bounceSource, up to `bounces` frames after each change.
+    bool bounce = true;
+    int bounces = 16;
     int width = 256, height = 256;  // internal resolution
 };
 
@@ -52,11 +56,15 @@ class Renderer2D {
     // Whether to use the GPU for this view; creates the context on first use. Sets `note_`.
     gpu::Context* gpuFor(const View2D& view);
     Status solve(Frame& frame);
+    // Whether this view feeds fluence back, and whether a bounce is still to come.
+    bool bouncing() const;
 
     State2D state_;
     bool mediumDirty_ = true, fluenceDirty_ = true, displayDirty_ = true;
     gi2d::Medium2D medium_;
     Image fluence_;
+    gi2d::Medium2D lit_;   // medium_ with the bounced source as its emission (when bouncing)
+    int bouncesDone_ = 0;  // frames that fed fluence back since the last change
     ProgressiveReference reference_;
     int referenceTargetPasses_ = 256;  // 1024 rays per pixel, the reference solver's default
     std::unique_ptr<gpu::Context> gpu_;

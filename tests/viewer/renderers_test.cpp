@@ -59,6 +59,29 @@ TEST(Renderer2D, GiToggleChangesThePictureAndTheWorkSettles) {
     EXPECT_GT(meanOf(lit.picture), 2 * meanOf(dark.picture));
 }
 
+// In fog with albedo, each frame adds one bounce until the panel's count, then the work settles.
+TEST(Renderer2D, BounceLightAddsOneBouncePerFrame) {
+    State2D state = stateFor(gi2d::Solver2D::Hrc);
+    auto fog = std::make_shared<gi2d::Scene2D>(*state.scene);
+    fog->background.absorption = Rgb(0.05f);
+    fog->background.albedo = Rgb(0.8f);
+    state.scene = fog;
+    state.view.bounces = 3;
+    Renderer2D renderer;
+    renderer.setState(std::move(state));
+    const Frame first = renderer.step();
+    double previous = meanOf(first.picture);
+    for (int k = 1; k <= 3; ++k) {
+        ASSERT_TRUE(renderer.hasMoreWork()) << "bounce " << k;
+        const Frame frame = renderer.step();
+        EXPECT_NE(frame.note.find("bounce " + std::to_string(k) + "/3"), std::string::npos)
+            << frame.note;
+        EXPECT_GT(meanOf(frame.picture), previous) << "bounce " << k;
+        previous = meanOf(frame.picture);
+    }
+    EXPECT_FALSE(renderer.hasMoreWork());
+}
+
 TEST(Renderer2D, ReferenceAccumulatesProgressively) {
     Renderer2D renderer;
     renderer.setState(stateFor(gi2d::Solver2D::Reference));

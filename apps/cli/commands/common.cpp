@@ -4,6 +4,7 @@
 
 #include "commands/command.h"
 #include "luxel/core/image_size.h"
+#include "luxel/gi2d/bounce_fill.h"
 #include "luxel/gi2d/rasterize.h"
 #include "luxel/gi2d/scene2d_json.h"
 #include "luxel/gpu/backend_policy.h"
@@ -72,8 +73,12 @@ Result<SizedScene> sizeScene(gi2d::Scene2D scene, const std::string& size) {
 
 Result<gi2d::Medium2D> rasterizeSized(const SizedScene& sized, const std::string& scenePath,
                                       int supersample) {
-    auto medium = gi2d::rasterize(sized.scene, {sized.width, sized.height, supersample});
+    const gi2d::RasterOptions options{sized.width, sized.height, supersample};
+    auto medium = gi2d::rasterize(sized.scene, options);
     if (!medium) return Error(scenePath + ": " + medium.error().message());
+    if (Status s = gi2d::fillBounceImages(sized.scene, options, *medium); !s) {
+        return Error(scenePath + ": " + s.error().message());
+    }
     return medium;
 }
 

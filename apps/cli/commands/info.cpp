@@ -6,6 +6,7 @@
 #include "commands/command.h"
 #include "commands/render_memory.h"
 #include "luxel/core/memory.h"
+#include "luxel/gi2d/bounce_fill.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rc_solver.h"
 #include "luxel/gi2d/reference_solver.h"
@@ -53,6 +54,21 @@ int runInfo(const InfoArgs& args) {
         std::printf("    %2zu %-8s %-16s E (%g, %g, %g)  sigma (%g, %g, %g)\n", i,
                     gi2d::geometryTypeName(s.geometry), s.name.c_str(), e.r, e.g, e.b, a.r, a.g,
                     a.b);
+    }
+    // Bounce light: scattering fog (non-opaque albedo) and reflective surfaces (opaque albedo).
+    if (gi2d::sceneBounces(*scene)) {
+        int reflective = 0, scattering = 0;
+        for (const gi2d::Shape& s : scene->shapes) {
+            if (s.material.albedo == Rgb()) continue;
+            ++(s.material.isOpaque() ? reflective : scattering);
+        }
+        std::printf(
+            "  bounce light       yes: background albedo (%g, %g, %g), %d reflective and %d "
+            "scattering shapes\n",
+            scene->background.albedo.r, scene->background.albedo.g, scene->background.albedo.b,
+            reflective, scattering);
+    } else {
+        std::printf("  bounce light       no (no albedo anywhere)\n");
     }
     gi2d::RcOptions rc;
     rc.merge = *merge;

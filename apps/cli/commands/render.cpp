@@ -11,6 +11,7 @@
 #include "luxel/core/progress.h"
 #include "luxel/core/timer.h"
 #include "luxel/core/tonemap.h"
+#include "luxel/gi2d/bounce.h"
 #include "luxel/gi2d/display.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rc_solver.h"
@@ -50,6 +51,8 @@ struct RenderArgs {
     int baseRays = gi2d::RcOptions{}.baseRays;
     double baseInterval = gi2d::RcOptions{}.baseInterval;
     int maxCascades = 0;
+    // Bounce light: -1 = the solver's default when the scene bounces (gi2d/bounce.h)
+    int bounces = -1;
     // Voxel and octree post-processing (override the scene's "post")
     float bloom = 0.0f, internalScale = 1.0f, sharpness = 0.0f;
     std::string upscalerName;
@@ -139,7 +142,12 @@ Result<Image> solveRcFor(const RenderArgs& args, const SizedScene& sized,
     if (args.backend == gpu::Backend::Gpu && args.march == "sdf") {
         return Error("--backend gpu traces RC intervals with the DDA; use --march dda or auto");
     }
-    if (args.backend != gpu::Backend::Gpu && args.march != "dda") {
+    // Bounce light changes the medium's emission, which sphere tracing does not see.
+    if (medium.bounces() && args.bounces != 0 && args.march == "sdf") {
+        return Error("--march sdf cannot carry bounce light; use --march dda or --bounces 0");
+    }
+    if (args.backend != gpu::Backend::Gpu && args.march != "dda" &&
+        (!medium.bounces() || args.bounces == 0)) {
         auto sdf = gi2d::SdfScene::create(sized.scene, sized.width, sized.height);
         if (sdf) {
             detail = "merge " + merge + ", march sdf, cpu";
@@ -213,6 +221,44 @@ Result<Image> solve(const RenderArgs& args, const SizedScene& sized, const gi2d:
             return solveRcFor(args, sized, medium, detail);
     }
     return Error("unknown solver");
+}
+
+// The chosen solver with bounce light fed back (gi2d/bounce.h) when the medium bounces: the
+// reference converges unless --bounces caps it, HRC and RC run --bounces (default
+// kDefaultCascadeBounces) extra solves. `note` says what happened, for the summary line.
+Result<Image> solveBouncing(const RenderArgs& args, const SizedScene& sized,
+                            const gi2d::Medium2D& medium, double& rays, std::string& detail,
+                            std::string& note) {
+    if (!medium.bounces()) {
+        note = "no bounce light";
+        return solve(args, sized, medium, rays, detail);
+    }
+    if (args.view == "cascade") return Error("--view cascade shows one solve; use --bounces 0");
+    const bool reference = args.solver == gi2d::Solver2D::Reference;
+    gi2d::BounceOptions options;
+    options.maxBounces =
+        args.bounces >= 0 ? args.bounces
+                          : (reference ? gi2d::kMaxReferenceBounces : gi2d::kDefaultCascadeBounces);
+    if (reference && args.bounces < 0) options.tolerance = gi2d::kReferenceTolerance;
+    double totalRays = 0;
+    auto result = gi2d::solveWithBounces(
+        medium,
+        [&](const gi2d::Medium2D& lit) {
+            double r = 0;
+            auto f = solve(args, sized, lit, r, detail);
+            totalRays += r;
+            return f;
+        },
+        options);
+    if (!result) return result.error();
+    rays = totalRays;
+    char text[128];
+    std::snprintf(
+        text, sizeof text, "%d bounces%s (last change %.2g%s)", result->bounces,
+        options.tolerance > 0 ? (result->converged ? ", converged" : ", NOT converged") : "",
+        result->change, options.tolerance > 0 ? "" : ", fixed count");
+    note = text;
+    return std::move(result->fluence);
 }
 
 // Marks the probe centres of cascade --cascade (RC layout) on the display image.
@@ -290,8 +336,10 @@ int runRender(const RenderArgs& args) {
     Stopwatch solveTime;
     double rays = 0;
     std::string detail;
-    Result<Image> fluence = args.view == "nogi" ? Result<Image>(Image(w, h, 3))
-                                                : solve(args, *sized, *medium, rays, detail);
+    std::string bounceNote;
+    Result<Image> fluence = args.view == "nogi"
+                                ? Result<Image>(Image(w, h, 3))
+                                : solveBouncing(args, *sized, *medium, rays, detail, bounceNote);
     if (!fluence) return reportError(fluence.error());
     const double solveSeconds = solveTime.seconds();
 
@@ -313,9 +361,10 @@ int runRender(const RenderArgs& args) {
     if (Status s = writeImages(files); !s) return reportError(s.error());
     if (args.stats) std::printf("stats solve_seconds=%.6f\n", solveSeconds);
     if (!args.quiet) {
-        std::printf("%s: %dx%d, solver %s%s%s%s, %d threads\n", args.scene.c_str(), w, h,
+        std::printf("%s: %dx%d, solver %s%s%s%s, %s, %d threads\n", args.scene.c_str(), w, h,
                     gi2d::solverName(args.solver), detail.empty() ? "" : " (", detail.c_str(),
-                    detail.empty() ? "" : ")", args.threads > 0 ? args.threads : hardwareThreads());
+                    detail.empty() ? "" : ")", bounceNote.c_str(),
+                    args.threads > 0 ? args.threads : hardwareThreads());
         std::printf("  raster %.3f s, solve %.3f s (%.2f Mpixel/s", rasterSeconds, solveSeconds,
                     static_cast<double>(w) * h / solveSeconds * 1e-6);
         if (rays > 0) {
@@ -371,6 +420,11 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option("--max-cascades", args->maxCascades, "RC: cap on the cascade count (0 = none)")
         ->check(wholeIn(0, 16))
         ->capture_default_str();
+    app.add_option("--bounces", args->bounces,
+                   "bounce light (scenes with albedo): fluence fed back this many times; 0 = off "
+                   "(default: the reference converges, hrc and rc bounce " +
+                       std::to_string(gi2d::kDefaultCascadeBounces) + " times)")
+        ->check(wholeIn(0, gi2d::kMaxReferenceBounces));
     app.add_option("--view", args->view,
                    "gi (default), nogi (emission only), probes (RC probe grid of --cascade on the "
                    "--png image), cascade (the merged radiance of --cascade)")
@@ -409,7 +463,7 @@ Runner addRenderCommand(CLI::App& app) {
         for (const char* name :
              {"--solver", "--rays", "--seed", "--supersample", "--traced-levels", "--no-blur",
               "--frustum", "--cascade", "--merge", "--march", "--probe-spacing", "--base-rays",
-              "--base-interval", "--max-cascades", "--view"}) {
+              "--base-interval", "--max-cascades", "--view", "--bounces"}) {
             if (command->count(name) > 0) args->options2DGiven.push_back(name);
         }
         if (Status s = parseChoices(*args); !s) return reportError(s.error());
