@@ -1,0 +1,137 @@
+// HRC where cascades struggle (docs/algorithms/holographic-radiance-cascades.md §12): light through
+// 1 px diagonal slits, the error around a small very bright disk, and the image change when a
+// light moves by a fraction of a pixel. Each measures HRC against the reference solver and prints
+// the values. Slit transmission and the moving light hold the goals (10%, 0.1%); the star bound is
+// the measured value with headroom, far above the 2% goal (§12.2 says why).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "luxel/gi2d/hrc_solver.h"
+#include "luxel/gi2d/rasterize.h"
+#include "luxel/gi2d/reference_solver.h"
+#include "luxel/gi2d/scene2d_json.h"
+
+namespace luxel::gi2d {
+namespace {
+
+Medium2D mediumFrom(const std::string& json, int size) {
+    auto scene = parseScene2D(json, "test", ".");
+    EXPECT_TRUE(scene.ok()) << scene.error().message();
+    auto medium = rasterize(*scene, {size, size, 16});
+    EXPECT_TRUE(medium.ok()) << medium.error().message();
+    return std::move(medium).value();
+}
+
+double luminance(const Image& image, int x, int y) {
+    const Rgb c = image.rgb(x, y);
+    return (c.r + c.g + c.b) / 3.0;
+}
+
+// The shipped slit maze: mean fluence right of the first wall's far face, HRC over the reference.
+TEST(HrcHardCases, SlitMazeTransmissionPastTheFirstWall) {
+    auto scene = loadScene2D(std::string(LUXEL_SOURCE_DIR) + "/scenes/2d/hard/slit-maze.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    const Medium2D medium = rasterize(*scene, {256, 256, 16}).value();
+    ReferenceOptions ref;
+    ref.rays = 256;
+    const Image truth = solveReference(medium, ref).value();
+    const Image hrc = solveHrc(medium).value();
+    // First wall: centre line x = 68 + (y - 128) / tan(60 deg), 3 px thick; count from 3 px past
+    // its far face to 3 px before the second wall's near face (x = 134 - (y - 128) / tan(68 deg)).
+    double sumTruth = 0, sumHrc = 0;
+    for (int y = 0; y < 256; ++y) {
+        const double cy = y + 0.5 - 128;
+        const double first = 68 + cy / std::tan(60 * M_PI / 180) + 1.5 / std::sin(60 * M_PI / 180);
+        const double second = 134 + cy / std::tan(112 * M_PI / 180);
+        for (int x = 0; x < 256; ++x) {
+            const double cx = x + 0.5;
+            if (cx < first + 3 || cx > second - 4) continue;
+            if (medium.emission.rgb(x, y).r > 0) continue;
+            sumTruth += luminance(truth, x, y);
+            sumHrc += luminance(hrc, x, y);
+        }
+    }
+    ASSERT_GT(sumTruth, 0);
+    const double ratio = sumHrc / sumTruth;
+    std::printf("slit maze: HRC / reference past the first wall = %.3f\n", ratio);
+    EXPECT_NEAR(ratio, 1.0, 0.10);
+}
+
+// A disk of radius 1.6 px, 200 times brighter than the sky, in an empty 96 x 96 canvas: the RMSE
+// over the annulus 4-40 px from its centre, relative to the annulus mean (a 4-/8-fold star is
+// most of it).
+TEST(HrcHardCases, NoStarAroundASmallBrightDisk) {
+    const std::string json = R"({"canvas": [96, 96], "boundary_radiance": [0.01, 0.01, 0.01],
+        "shapes": [{"type": "circle", "center": [48.4, 45.7], "radius": 1.6,
+                    "emission": [1, 1, 1], "intensity": 200, "opaque": true}]})";
+    const Medium2D medium = mediumFrom(json, 96);
+    ReferenceOptions ref;
+    ref.rays = 2048;
+    const Image truth = solveReference(medium, ref).value();
+    const Image hrc = solveHrc(medium).value();
+    double sq = 0, sum = 0;
+    int count = 0;
+    for (int y = 0; y < 96; ++y) {
+        for (int x = 0; x < 96; ++x) {
+            const double r = std::hypot(x + 0.5 - 48.4, y + 0.5 - 45.7);
+            if (r < 4 || r > 40) continue;
+            const double d = luminance(hrc, x, y) - luminance(truth, x, y);
+            sq += d * d;
+            sum += luminance(truth, x, y);
+            ++count;
+        }
+    }
+    const double rmseOfMean = std::sqrt(sq / count) / (sum / count);
+    std::printf("bright disk: RMSE over the annulus %.2f%% of its mean\n", 100 * rmseOfMean);
+    // Measured 12.4%: the star is the method's (docs/algorithms/holographic-radiance-cascades.md
+    // §12.2); the bound catches it getting worse. The goal of 2% is not met.
+    EXPECT_LT(rmseOfMean, 0.15);
+}
+
+// A static lamp lights a room; a small second light behind a wall moves by 0.5 and 1 px. Where
+// the reference changes by less than 0.1%, the HRC image should not change either.
+TEST(HrcHardCases, MovingALightBySubpixelStepsChangesNothingElsewhere) {
+    auto scene = [](double x) {
+        return R"({"canvas": [96, 96], "shapes": [
+            {"type": "circle", "center": [20, 20], "radius": 4, "emission": [1, 1, 1],
+             "intensity": 4, "opaque": true},
+            {"type": "box", "center": [60, 48], "size": [3, 70], "opaque": true},
+            {"type": "circle", "center": [)" +
+               std::to_string(x) + R"(, 48.3], "radius": 1.2, "emission": [1, 0.8, 0.6],
+             "intensity": 30, "opaque": true}]})";
+    };
+    ReferenceOptions ref;
+    ref.rays = 1024;
+    const Medium2D at0 = mediumFrom(scene(75.2), 96);
+    const Image truth0 = solveReference(at0, ref).value();
+    const Image hrc0 = solveHrc(at0).value();
+    for (double step : {0.5, 1.0}) {
+        const Medium2D moved = mediumFrom(scene(75.2 + step), 96);
+        const Image truth1 = solveReference(moved, ref).value();
+        const Image hrc1 = solveHrc(moved).value();
+        double changeHrc = 0, base = 0;
+        int count = 0;
+        for (int y = 0; y < 96; ++y) {
+            for (int x = 0; x < 96; ++x) {
+                const double t0 = luminance(truth0, x, y), t1 = luminance(truth1, x, y);
+                if (!(t0 > 0) || std::abs(t1 - t0) >= 1e-3 * t0) continue;
+                changeHrc += std::abs(luminance(hrc1, x, y) - luminance(hrc0, x, y));
+                base += luminance(hrc0, x, y);
+                ++count;
+            }
+        }
+        ASSERT_GT(count, 96 * 96 / 4) << "the unchanged region should be a large part of the room";
+        const double change = changeHrc / base;
+        std::printf(
+            "light moved %.1f px: HRC changes %.3f%% where the reference changes < 0.1%% "
+            "(%d px)\n",
+            step, 100 * change, count);
+        EXPECT_LT(change, 1e-3);
+    }
+}
+
+}  // namespace
+}  // namespace luxel::gi2d
