@@ -181,9 +181,16 @@ TEST_F(Cli, RcVariantsMarchersAndViews) {
                 "--view");
     const std::string shapes = write("shapes.json", R"({"canvas": [40, 30], "shapes": [
         {"type": "circle", "center": [10, 15], "radius": 4, "emission": 2, "opaque": true}]})");
+    // All shapes opaque: auto still traces the shared pixel medium; sdf only when asked, and says
+    // so.
     r = runLuxel("render " + shapes + " --solver rc --out " + path("s.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find("march sdf"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("march dda"), std::string::npos) << r.output;
+    r = runLuxel("render " + shapes + " --solver rc --march sdf --out " + path("s.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("march sdf (exact shapes, not the rasterised medium"),
+              std::string::npos)
+        << r.output;
     r = runLuxel("render " + shapes + " --solver rc --view probes --cascade 1 --quiet --out " +
                  path("p.exr") + " --png " + path("p.png"));
     ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -130,8 +130,9 @@ Result<std::unique_ptr<gpu::Context>> chooseGpu(const RenderArgs& args, bool gpu
     return chooseGpuBackend(args.backend, args.device, args.quiet);
 }
 
-// RC: sphere tracing when the scene allows it (--march auto) or is told to, else the DDA through
-// the medium, on the GPU when one is chosen.
+// RC: the DDA through the pixel medium every solver shares (--march auto or dda), on the GPU when
+// one is chosen; sphere tracing of the exact shapes only when asked for (--march sdf), which solves
+// a different problem than the rasterised medium the reference and HRC see.
 Result<Image> solveRcFor(const RenderArgs& args, const SizedScene& sized,
                          const gi2d::Medium2D& medium, std::string& detail) {
     const gi2d::RcOptions options = rcOptions(args);
@@ -146,14 +147,12 @@ Result<Image> solveRcFor(const RenderArgs& args, const SizedScene& sized,
     if (medium.bounces() && args.bounces != 0 && args.march == "sdf") {
         return Error("--march sdf cannot carry bounce light; use --march dda or --bounces 0");
     }
-    if (args.backend != gpu::Backend::Gpu && args.march != "dda" &&
-        (!medium.bounces() || args.bounces == 0)) {
+    if (args.march == "sdf") {
         auto sdf = gi2d::SdfScene::create(sized.scene, sized.width, sized.height);
-        if (sdf) {
-            detail = "merge " + merge + ", march sdf, cpu";
-            return gi2d::solveRc(*sdf, sized.scene.boundaryRadiance, options);
-        }
-        if (args.march == "sdf") return Error("--march sdf: " + sdf.error().message());
+        if (!sdf) return Error("--march sdf: " + sdf.error().message());
+        detail = "merge " + merge +
+                 ", march sdf (exact shapes, not the rasterised medium the other solvers use), cpu";
+        return gi2d::solveRc(*sdf, sized.scene.boundaryRadiance, options);
     }
     auto context = chooseGpu(args, true);
     if (!context) return context.error();
@@ -406,7 +405,9 @@ Runner addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     app.add_option("--merge", args->mergeName, "RC: vanilla or bilinear-fix")
         ->capture_default_str();
-    app.add_option("--march", args->march, "RC: interval tracing: auto, dda (medium), sdf (shapes)")
+    app.add_option("--march", args->march,
+                   "RC: interval tracing: auto = dda (the pixel medium all solvers share), sdf "
+                   "(exact shapes)")
         ->capture_default_str();
     app.add_option("--probe-spacing", args->probeSpacing, "RC: cascade-0 probe spacing (px)")
         ->check(wholeIn(1, 64))
