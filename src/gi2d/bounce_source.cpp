@@ -106,4 +106,14 @@ Result<BounceResult> solveWithBounces(const Medium2D& medium, const FluenceSolve
     return result;
 }
 
+Result<BounceResult> solveReferenceWithBounces(const Medium2D& medium,
+                                               const ReferenceOptions& reference,
+                                               double tolerance) {
+    BounceOptions options;
+    options.maxBounces = kMaxReferenceBounces;
+    options.tolerance = tolerance;
+    return solveWithBounces(
+        medium, [&](const Medium2D& m) { return solveReference(m, reference); }, options);
+}
+
 }  // namespace luxel::gi2d

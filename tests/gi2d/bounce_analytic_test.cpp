@@ -11,11 +11,7 @@ namespace {
 BounceResult convergedReference(const Medium2D& medium, int rays, double tolerance) {
     ReferenceOptions ref;
     ref.rays = rays;
-    BounceOptions options;
-    options.maxBounces = kMaxReferenceBounces;
-    options.tolerance = tolerance;
-    auto result = solveWithBounces(
-        medium, [&](const Medium2D& m) { return solveReference(m, ref); }, options);
+    auto result = solveReferenceWithBounces(medium, ref, tolerance);
     EXPECT_TRUE(result.ok());
     return std::move(result).value();
 }

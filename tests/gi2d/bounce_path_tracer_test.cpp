@@ -18,11 +18,7 @@ constexpr int kBlock = 8;
 Image converged(const Medium2D& medium) {
     ReferenceOptions ref;
     ref.rays = 512;
-    BounceOptions options;
-    options.maxBounces = kMaxReferenceBounces;
-    options.tolerance = kReferenceTolerance;
-    auto r = solveWithBounces(
-        medium, [&](const Medium2D& m) { return solveReference(m, ref); }, options);
+    auto r = solveReferenceWithBounces(medium, ref);
     EXPECT_TRUE(r.ok() && r->converged);
     return std::move(r->fluence);
 }

@@ -16,11 +16,7 @@ namespace {
 Image convergedReference(const Medium2D& medium) {
     ReferenceOptions ref;
     ref.rays = 256;
-    BounceOptions options;
-    options.maxBounces = kMaxReferenceBounces;
-    options.tolerance = kReferenceTolerance;
-    auto r = solveWithBounces(
-        medium, [&](const Medium2D& m) { return solveReference(m, ref); }, options);
+    auto r = solveReferenceWithBounces(medium, ref);
     EXPECT_TRUE(r.ok());
     EXPECT_TRUE(r->converged);
     return std::move(r->fluence);

@@ -8,6 +8,7 @@
 #include "luxel/core/error.h"
 #include "luxel/core/image.h"
 #include "luxel/gi2d/medium2d.h"
+#include "luxel/gi2d/reference_solver.h"
 
 namespace luxel::gi2d {
 
@@ -50,5 +51,11 @@ Result<BounceResult> solveWithBounces(const Medium2D& medium, const FluenceSolve
 inline constexpr int kMaxReferenceBounces = 200;
 inline constexpr double kReferenceTolerance = 1e-3;
 inline constexpr int kDefaultCascadeBounces = 16;
+
+// The reference solver fed back until the bounced light changes by less than `tolerance` (at most
+// kMaxReferenceBounces solves); BounceResult::converged says whether it got there.
+Result<BounceResult> solveReferenceWithBounces(const Medium2D& medium,
+                                               const ReferenceOptions& reference,
+                                               double tolerance = kReferenceTolerance);
 
 }  // namespace luxel::gi2d
