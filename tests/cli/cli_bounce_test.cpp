@@ -62,6 +62,9 @@ TEST_F(CliBounce, InfoSaysWhetherASceneBounces) {
     const RunResult no = runLuxel("info " + write("plain.json", R"({"canvas": [8, 8]})"));
     ASSERT_EQ(no.exitCode, 0) << no.output;
     EXPECT_NE(no.output.find("bounce light       no"), std::string::npos) << no.output;
+    // The memory estimate counts what bouncing adds only where light bounces.
+    EXPECT_EQ(yes.output.find("bounce light 0 B"), std::string::npos) << yes.output;
+    EXPECT_NE(no.output.find("bounce light 0 B"), std::string::npos) << no.output;
 }
 
 TEST_F(CliBounce, SdfMarchCannotBounce) {

@@ -72,7 +72,7 @@ int runInfo(const InfoArgs& args) {
     }
     gi2d::RcOptions rc;
     rc.merge = *merge;
-    const Memory2D memory = estimate2D(w, h, *solver, rc);
+    const Memory2D memory = estimate2D(w, h, *solver, rc, gi2d::sceneBounces(*scene));
     switch (*solver) {
         case gi2d::Solver2D::Reference:
             std::printf("  reference solver: %.3g rays at %d rays/pixel\n",
@@ -92,10 +92,11 @@ int runInfo(const InfoArgs& args) {
             break;
     }
     std::printf(
-        "  memory: medium %s, %s in all with the %s solver and the images written "
-        "(available %s)\n",
-        formatBytes(memory.medium).c_str(), formatBytes(memory.total()).c_str(),
-        gi2d::solverName(*solver), formatBytes(availableMemoryBytes()).c_str());
+        "  memory: medium %s, bounce light %s, %s in all with the %s solver and the images "
+        "written (available %s)\n",
+        formatBytes(memory.medium).c_str(), formatBytes(memory.bounce).c_str(),
+        formatBytes(memory.total()).c_str(), gi2d::solverName(*solver),
+        formatBytes(availableMemoryBytes()).c_str());
     // The same estimate and refusal as `luxel render`.
     if (Status s = checkRenderMemory(w, h, memory.total(),
                                      std::string(" with ") + gi2d::solverName(*solver));

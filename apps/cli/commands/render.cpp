@@ -12,6 +12,7 @@
 #include "luxel/core/timer.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/gi2d/bounce.h"
+#include "luxel/gi2d/bounce_fill.h"
 #include "luxel/gi2d/display.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rc_solver.h"
@@ -315,7 +316,8 @@ int runRender(const RenderArgs& args) {
     if (!sized) return reportError(sized.error());
     // Refuse before allocating anything when the medium, the solver and the images written
     // cannot fit (`luxel info` reports the same estimate).
-    Memory2D memory = estimate2D(sized->width, sized->height, args.solver, rcOptions(args));
+    Memory2D memory = estimate2D(sized->width, sized->height, args.solver, rcOptions(args),
+                                 args.bounces != 0 && gi2d::sceneBounces(sized->scene));
     if (args.view == "nogi") memory.solver = 0;
     if (Status s = checkRenderMemory(sized->width, sized->height, memory.total(),
                                      std::string(" with ") + gi2d::solverName(args.solver));

@@ -13,7 +13,8 @@
 
 namespace luxel::cli {
 
-Memory2D estimate2D(int width, int height, gi2d::Solver2D solver, const gi2d::RcOptions& rc) {
+Memory2D estimate2D(int width, int height, gi2d::Solver2D solver, const gi2d::RcOptions& rc,
+                    bool bounces) {
     Memory2D m;
     m.medium = gi2d::mediumBytes(width, height);
     switch (solver) {
@@ -29,6 +30,9 @@ Memory2D estimate2D(int width, int height, gi2d::Solver2D solver, const gi2d::Rc
     }
     // The fluence (or its tone-mapped copy) and the display image, and a PNG encoder's rows.
     m.outputs = imageBytes(width, height, 3) * 2 + imageBytes(width, height, 3) / sizeof(float);
+    // solveWithBounces: scattering + reflectance, the re-lit medium copy, the next source and the
+    // previous fluence while the next one is solved.
+    if (bounces) m.bounce = 4 * imageBytes(width, height, 3) + gi2d::mediumBytes(width, height);
     return m;
 }
 

@@ -12,12 +12,14 @@
 
 namespace luxel::cli {
 
-// A 2D render at width x height: the medium, the solver's buffers, and the images written.
+// A 2D render at width x height: the medium, the solver's buffers, the images written, and with
+// bounce light the albedo images, the medium re-lit by the bounced source and the source images.
 struct Memory2D {
-    std::uint64_t medium = 0, solver = 0, outputs = 0;
-    std::uint64_t total() const { return medium + solver + outputs; }
+    std::uint64_t medium = 0, solver = 0, outputs = 0, bounce = 0;
+    std::uint64_t total() const { return medium + solver + outputs + bounce; }
 };
-Memory2D estimate2D(int width, int height, gi2d::Solver2D solver, const gi2d::RcOptions& rc);
+Memory2D estimate2D(int width, int height, gi2d::Solver2D solver, const gi2d::RcOptions& rc,
+                    bool bounces = false);
 
 // The host memory of a voxel or octree frame at the camera's width x height with `post` (its
 // internal scale included); `gpu` adds the download of a GPU frame. The scene itself is already
