@@ -10,7 +10,6 @@
 #include "luxel/core/timer.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/gi2d/bounce.h"
-#include "luxel/gi2d/bounce_fill.h"
 #include "luxel/gi2d/display.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rasterize.h"
@@ -224,11 +223,6 @@ Frame Renderer2D::step() {
         Stopwatch clock;
         const gi2d::RasterOptions raster{view.width, view.height, kSupersample};
         auto medium = gi2d::rasterize(*state_.scene, raster);
-        if (medium) {
-            if (Status f = gi2d::fillBounceImages(*state_.scene, raster, *medium); !f) {
-                medium = f.error();
-            }
-        }
         mediumDirty_ = false;
         if (!medium) {
             frame.note = medium.error().message();

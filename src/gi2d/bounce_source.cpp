@@ -67,15 +67,6 @@ Image bounceSource(const Medium2D& medium, const Image& fluence, const Image& pr
     return source;
 }
 
-double relativeChange(const Image& a, const Image& b) {
-    double diff = 0, total = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-        diff += std::abs(static_cast<double>(a.data()[i]) - b.data()[i]);
-        total += std::abs(static_cast<double>(b.data()[i]));
-    }
-    return total > 0 ? diff / total : (diff > 0 ? 1.0 : 0.0);
-}
-
 Result<BounceResult> solveWithBounces(const Medium2D& medium, const FluenceSolve& solve,
                                       const BounceOptions& options) {
     Medium2D lit = medium;  // the medium with the current source as its emission

@@ -11,7 +11,9 @@
 #include <cmath>
 #include <string>
 
-#include "gi2d/shape_geometry.h"
+#include "gi2d/albedo_raster.h"
+#include "gi2d/emitter_power.h"
+#include "gi2d/shape_coverage.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
 
@@ -74,37 +76,26 @@ PixelRange pixelRange(const Canvas& canvas, const detail::Bounds& b) {
             clampTo(std::ceil(b.y1 * canvas.sy) + 1, canvas.height)};
 }
 
-void drawAnalyticShape(Canvas& canvas, const Shape& shape, int supersample) {
-    const PixelMaterial m =
-        pixelMaterial(shape.material.scaledEmission(), shape.material.absorption, canvas.meanScale);
+void drawAnalyticShape(Canvas& canvas, const Shape& shape, const RasterOptions& options) {
+    const detail::PixelScale scale{canvas.sx, canvas.sy};
+    Rgb emission = shape.material.scaledEmission();
+    if (options.conserveEmitterPower) {
+        Rgb sigma;
+        for (int c = 0; c < 3; ++c) {
+            sigma[c] = scaleAbsorption(shape.material.absorption[c], canvas.meanScale);
+        }
+        emission = emission * detail::emitterPowerScale(shape, sigma, scale, options.supersample);
+    }
+    const PixelMaterial m = pixelMaterial(emission, shape.material.absorption, canvas.meanScale);
+    const bool thinRule = shape.material.isOpaque() && emission.maxComponent() <= 0.0f;
     const PixelRange range = pixelRange(canvas, detail::shapeBounds(shape.geometry));
     if (range.empty()) return;
-    // Half the pixel diagonal in scene units: farther than this from the edge, coverage is 0 or 1.
-    const double halfDiagonal = 0.5 * std::hypot(1.0 / canvas.sx, 1.0 / canvas.sy);
-    const int n = supersample;
-    const float sampleWeight = 1.0f / static_cast<float>(n * n);
-
     parallelForRange(range.y1 - range.y0, 4, [&](int begin, int end) {
         for (int y = range.y0 + begin; y < range.y0 + end; ++y) {
             for (int x = range.x0; x < range.x1; ++x) {
-                const Vec2d centre = canvas.toScene(x + 0.5, y + 0.5);
-                const double d = detail::signedDistance(shape.geometry, centre);
-                float c;
-                if (d > halfDiagonal) {
-                    continue;
-                } else if (d < -halfDiagonal) {
-                    c = 1.0f;
-                } else {
-                    int inside = 0;
-                    for (int j = 0; j < n; ++j) {
-                        for (int i = 0; i < n; ++i) {
-                            const Vec2d p = canvas.toScene(x + (i + 0.5) / n, y + (j + 0.5) / n);
-                            inside += detail::contains(shape.geometry, p) ? 1 : 0;
-                        }
-                    }
-                    if (inside == 0) continue;
-                    c = static_cast<float>(inside) * sampleWeight;
-                }
+                const float c = detail::drawnCoverage(shape.geometry, thinRule, scale, x, y,
+                                                      options.supersample);
+                if (c <= 0.0f) continue;
                 composite(canvas, x, y, c, m.opacity * c, m.radiance * c);
             }
         }
@@ -222,7 +213,7 @@ Result<Medium2D> rasterize(const Scene2D& scene, const RasterOptions& options) {
         if (std::holds_alternative<ImageLayer>(shape.geometry)) {
             drawImageLayer(canvas, shape, options.supersample);
         } else {
-            drawAnalyticShape(canvas, shape, options.supersample);
+            drawAnalyticShape(canvas, shape, options);
         }
     }
 
@@ -245,6 +236,10 @@ Result<Medium2D> rasterize(const Scene2D& scene, const RasterOptions& options) {
             }
         }
     });
+    // Light that bounces: the albedo images, rasterised by the same coverage rule.
+    if (sceneBounces(scene)) {
+        if (Status s = detail::rasterizeAlbedo(scene, options, medium); !s) return s.error();
+    }
     return medium;
 }
 

@@ -14,4 +14,15 @@ const char* geometryTypeName(const Geometry& geometry) {
     return std::visit(Namer{}, geometry);
 }
 
+bool sceneBounces(const Scene2D& scene) {
+    if (scene.background.albedo != Rgb()) return true;
+    for (const Shape& s : scene.shapes) {
+        if (s.material.albedo != Rgb()) return true;
+        if (const auto* layer = std::get_if<ImageLayer>(&s.geometry); layer && layer->albedo) {
+            return true;
+        }
+    }
+    return false;
+}
+
 }  // namespace luxel::gi2d

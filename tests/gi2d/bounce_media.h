@@ -1,10 +1,16 @@
 // Small media for the bounce tests, built pixel by pixel (no rasteriser involved).
 #pragma once
 
+#include "luxel/core/metrics.h"
 #include "luxel/gi2d/medium2d.h"
 #include "luxel/gi2d/scene2d.h"
 
 namespace luxel::gi2d::test {
+
+// Relative L1 of `a` against the reference `b` (compareImages).
+inline double relativeL1(const Image& a, const Image& b) {
+    return compareImages(a, b).value().relativeL1;
+}
 
 // An empty n x n medium with scattering and reflectance images (all zero).
 inline Medium2D emptyBounceMedium(int n) {

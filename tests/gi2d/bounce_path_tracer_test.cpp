@@ -68,8 +68,8 @@ Agreement compare(const char* name, const Medium2D& medium, int paths) {
     const Image reference = blockMeans(converged(medium), medium);
     const Image a = blockMeans(pathTraced(medium, paths, 1), medium);
     const Image b = blockMeans(pathTraced(medium, paths, 2), medium);
-    const double noise = relativeChange(a, b) / std::sqrt(2.0);
-    const double error = relativeChange(reference, a);
+    const double noise = test::relativeL1(a, b) / std::sqrt(2.0);
+    const double error = test::relativeL1(reference, a);
     std::printf(
         "%s: reference vs path tracer, %dx%d block means: rel-L1 %.4f (path tracer noise "
         "%.4f)\n",

@@ -38,8 +38,8 @@ const Image& fogReference() {
 
 void expectHrcClose(const char* name, const Medium2D& medium, const Image& reference) {
     const FluenceSolve hrc = [](const Medium2D& m) { return solveHrc(m); };
-    const double noBounce = relativeChange(bounced(medium, hrc, 0), reference);
-    const double multi = relativeChange(bounced(medium, hrc, kDefaultCascadeBounces), reference);
+    const double noBounce = test::relativeL1(bounced(medium, hrc, 0), reference);
+    const double multi = test::relativeL1(bounced(medium, hrc, kDefaultCascadeBounces), reference);
     std::printf(
         "%s: hrc rel-L1 against the converged reference: %.4f without bounces, %.4f with "
         "%d\n",
@@ -63,8 +63,8 @@ TEST(BounceSolvers, MultibounceRcApproachesReference) {
     const Medium2D medium = test::fogScene();
     const Image& reference = fogReference();
     const FluenceSolve rc = [](const Medium2D& m) { return solveRc(m); };
-    const double noBounce = relativeChange(bounced(medium, rc, 0), reference);
-    const double multi = relativeChange(bounced(medium, rc, kDefaultCascadeBounces), reference);
+    const double noBounce = test::relativeL1(bounced(medium, rc, 0), reference);
+    const double multi = test::relativeL1(bounced(medium, rc, kDefaultCascadeBounces), reference);
     std::printf("fog: rc rel-L1 %.4f without bounces, %.4f with %d\n", noBounce, multi,
                 kDefaultCascadeBounces);
     EXPECT_LT(multi, 0.5 * noBounce);

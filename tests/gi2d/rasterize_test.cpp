@@ -19,12 +19,21 @@ Shape box(Vec2d min, Vec2d max, Rgb e, Rgb a) {
     return {"b", Box{(min + max) * 0.5, max - min, 0.0}, Material{e, a}};
 }
 
+// The coverage rule of §1 alone, without the emitter power factor of §4 (emitter_power_test.cpp).
+RasterOptions coverageRuleOnly(int width = 0, int height = 0) {
+    RasterOptions o;
+    o.width = width;
+    o.height = height;
+    o.conserveEmitterPower = false;
+    return o;
+}
+
 TEST(Rasterize, OpaqueEmitterEdgesKeepFullRadiance) {
     // Half-covered pixels of an opaque emitter: E stays E_s and sigma = -ln(1 - c) (medium2d §1),
     // never the naive c * E_s.
     Scene2D scene{16, 8, {}, {}, {}, ""};
     scene.shapes.push_back(box({0, 0}, {8.5, 8}, Rgb(2.0f), Rgb(kOpaqueAbsorption)));
-    const Medium2D m = rasterize(scene).value();
+    const Medium2D m = rasterize(scene, coverageRuleOnly()).value();
     EXPECT_FLOAT_EQ(m.emission.at(8, 3, 0), 2.0f);                // half covered
     EXPECT_NEAR(m.absorption.at(8, 3, 0), std::log(2.0), 1e-4);   // T = 1 - 0.5
     EXPECT_FLOAT_EQ(m.emission.at(3, 3, 1), 2.0f);                // inside
@@ -48,7 +57,7 @@ TEST(Rasterize, LaterShapesOverwriteEarlierOnes) {
     scene.shapes.push_back(box({0, 0}, {32, 32}, Rgb(1.0f, 0.0f, 0.0f), Rgb(1.0f)));
     scene.shapes.push_back(box({8, 8}, {24, 24}, Rgb(0.0f, 3.0f, 0.0f), Rgb(2.0f)));
     scene.shapes.push_back(circle({16, 16}, 4, Rgb(0.0f), Rgb(0.0f)));  // a clear hole
-    const Medium2D m = rasterize(scene).value();
+    const Medium2D m = rasterize(scene, coverageRuleOnly()).value();
     EXPECT_EQ(m.emission.rgb(2, 2), Rgb(1.0f, 0.0f, 0.0f));
     EXPECT_NEAR(m.emission.at(10, 10, 1), 3.0f, 1e-5);
     EXPECT_NEAR(m.absorption.at(10, 10, 0), 2.0f, 1e-5);
@@ -123,7 +132,7 @@ TEST(Rasterize, MovingShapeChangesTheMediumSmoothly) {
 TEST(Rasterize, ScalingKeepsOpticalDepthAndOpacity) {
     Scene2D scene{40, 30, {Rgb(0.0f), Rgb(0.02f)}, {}, {}, ""};
     scene.shapes.push_back(box({10, 10}, {20, 20}, Rgb(1.0f), Rgb(kOpaqueAbsorption)));
-    const Medium2D m = rasterize(scene, {80, 60, 16}).value();
+    const Medium2D m = rasterize(scene, coverageRuleOnly(80, 60)).value();
     EXPECT_EQ(m.width(), 80);
     EXPECT_EQ(m.height(), 60);
     EXPECT_NEAR(m.absorption.at(1, 1, 0), 0.01f, 1e-6);             // sigma per pixel halves at 2x
@@ -134,7 +143,7 @@ TEST(Rasterize, ScalingKeepsOpticalDepthAndOpacity) {
 TEST(Rasterize, NonSquareNonPowerOfTwoCanvas) {
     Scene2D scene{37, 19, {}, {}, {}, ""};
     scene.shapes.push_back(circle({36, 18}, 3, Rgb(1.0f), Rgb(kOpaqueAbsorption)));
-    const Medium2D m = rasterize(scene).value();
+    const Medium2D m = rasterize(scene, coverageRuleOnly()).value();
     EXPECT_EQ(m.width(), 37);
     EXPECT_EQ(m.height(), 19);
     EXPECT_NEAR(m.emission.at(36, 18, 0), 1.0f, 1e-6);

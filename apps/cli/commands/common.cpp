@@ -4,7 +4,6 @@
 
 #include "commands/command.h"
 #include "luxel/core/image_size.h"
-#include "luxel/gi2d/bounce_fill.h"
 #include "luxel/gi2d/rasterize.h"
 #include "luxel/gi2d/scene2d_json.h"
 #include "luxel/gpu/backend_policy.h"
@@ -76,9 +75,6 @@ Result<gi2d::Medium2D> rasterizeSized(const SizedScene& sized, const std::string
     const gi2d::RasterOptions options{sized.width, sized.height, supersample};
     auto medium = gi2d::rasterize(sized.scene, options);
     if (!medium) return Error(scenePath + ": " + medium.error().message());
-    if (Status s = gi2d::fillBounceImages(sized.scene, options, *medium); !s) {
-        return Error(scenePath + ": " + s.error().message());
-    }
     return medium;
 }
 

@@ -6,7 +6,6 @@
 #include "commands/command.h"
 #include "commands/render_memory.h"
 #include "luxel/core/memory.h"
-#include "luxel/gi2d/bounce_fill.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rc_solver.h"
 #include "luxel/gi2d/reference_solver.h"

@@ -12,7 +12,6 @@
 #include "luxel/core/timer.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/gi2d/bounce.h"
-#include "luxel/gi2d/bounce_fill.h"
 #include "luxel/gi2d/display.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rc_solver.h"
@@ -135,7 +134,7 @@ Result<std::unique_ptr<gpu::Context>> chooseGpu(const RenderArgs& args, bool gpu
 // one is chosen; sphere tracing of the exact shapes only when asked for (--march sdf), which solves
 // a different problem than the rasterised medium the reference and HRC see.
 Result<Image> solveRcFor(const RenderArgs& args, const SizedScene& sized,
-                         const gi2d::Medium2D& medium, std::string& detail) {
+                         const gi2d::Medium2D& medium, gpu::Context* context, std::string& detail) {
     const gi2d::RcOptions options = rcOptions(args);
     const std::string merge = gi2d::mergeName(args.merge);
     if (args.march != "auto" && args.march != "dda" && args.march != "sdf") {
@@ -155,11 +154,9 @@ Result<Image> solveRcFor(const RenderArgs& args, const SizedScene& sized,
                  ", march sdf (exact shapes, not the rasterised medium the other solvers use), cpu";
         return gi2d::solveRc(*sdf, sized.scene.boundaryRadiance, options);
     }
-    auto context = chooseGpu(args, true);
-    if (!context) return context.error();
-    if (*context) {
-        detail = "merge " + merge + ", march dda, gpu: " + (*context)->device().name;
-        return gi2d::solveRcOnGpu(**context, medium, options);
+    if (context) {
+        detail = "merge " + merge + ", march dda, gpu: " + context->device().name;
+        return gi2d::solveRcOnGpu(*context, medium, options);
     }
     detail = "merge " + merge + ", march dda, cpu";
     return gi2d::solveRc(medium, options);
@@ -181,11 +178,9 @@ Result<Image> solveReferenceFor(const RenderArgs& args, const gi2d::Medium2D& me
 }
 
 Result<Image> solveHrcFor(const RenderArgs& args, const gi2d::Medium2D& medium,
-                          std::string& detail) {
+                          gpu::Context* context, std::string& detail) {
     auto mask = frustumMask(args.frustum);
     if (!mask) return mask.error();
-    auto context = chooseGpu(args, args.view != "cascade");
-    if (!context) return context.error();
     ProgressBar progress("hrc", 4, !args.quiet);
     gi2d::HrcOptions options;
     options.tracedLevels = args.tracedLevels;
@@ -193,10 +188,10 @@ Result<Image> solveHrcFor(const RenderArgs& args, const gi2d::Medium2D& medium,
     options.frustumMask = *mask;
     options.debugCascade = args.view == "cascade" ? std::max(args.cascade, 0) : -1;
     options.onProgress = [&](int, int) { progress.advance(); };
-    if (*context) {
-        detail = "gpu: " + (*context)->device().name;
+    if (context) {
+        detail = "gpu: " + context->device().name;
         std::vector<gpu::PassTiming> timings;
-        auto result = gi2d::solveHrcOnGpu(**context, medium, options, &timings);
+        auto result = gi2d::solveHrcOnGpu(*context, medium, options, &timings);
         double total = 0;
         for (const gpu::PassTiming& t : timings) total += t.milliseconds;
         detail += ", passes " + std::to_string(timings.size()) + ", " +
@@ -207,18 +202,36 @@ Result<Image> solveHrcFor(const RenderArgs& args, const gi2d::Medium2D& medium,
     return gi2d::solveHrc(medium, options);
 }
 
+// The GPU context the chosen solver runs on (nullptr: the CPU), chosen once per render so bounce
+// light does not probe the devices again for every solve. The reference and RC's sphere tracing
+// run on the CPU and report --backend gpu themselves; so does an RC with an unknown --march.
+Result<std::unique_ptr<gpu::Context>> chooseSolverGpu(const RenderArgs& args) {
+    switch (args.solver) {
+        case gi2d::Solver2D::Reference:
+            return std::unique_ptr<gpu::Context>();
+        case gi2d::Solver2D::Hrc:
+            // A bad --frustum is reported before any device is probed.
+            if (auto mask = frustumMask(args.frustum); !mask) return mask.error();
+            return chooseGpu(args, args.view != "cascade");
+        case gi2d::Solver2D::Rc:
+            if (args.march != "auto" && args.march != "dda") return std::unique_ptr<gpu::Context>();
+            return chooseGpu(args, true);
+    }
+    return Error("unknown solver");
+}
+
 // Runs the chosen solver with a progress bar; sets `rays` to the number of rays cast (0 when the
 // solver does not cast rays per pixel) and `detail` to how it ran.
 Result<Image> solve(const RenderArgs& args, const SizedScene& sized, const gi2d::Medium2D& medium,
-                    double& rays, std::string& detail) {
+                    gpu::Context* context, double& rays, std::string& detail) {
     rays = 0;
     switch (args.solver) {
         case gi2d::Solver2D::Reference:
             return solveReferenceFor(args, medium, rays);
         case gi2d::Solver2D::Hrc:
-            return solveHrcFor(args, medium, detail);
+            return solveHrcFor(args, medium, context, detail);
         case gi2d::Solver2D::Rc:
-            return solveRcFor(args, sized, medium, detail);
+            return solveRcFor(args, sized, medium, context, detail);
     }
     return Error("unknown solver");
 }
@@ -229,11 +242,15 @@ Result<Image> solve(const RenderArgs& args, const SizedScene& sized, const gi2d:
 Result<Image> solveBouncing(const RenderArgs& args, const SizedScene& sized,
                             const gi2d::Medium2D& medium, double& rays, std::string& detail,
                             std::string& note) {
+    if (medium.bounces() && args.view == "cascade") {
+        return Error("--view cascade shows one solve; use --bounces 0");
+    }
+    auto context = chooseSolverGpu(args);
+    if (!context) return context.error();
     if (!medium.bounces()) {
         note = "no bounce light";
-        return solve(args, sized, medium, rays, detail);
+        return solve(args, sized, medium, context->get(), rays, detail);
     }
-    if (args.view == "cascade") return Error("--view cascade shows one solve; use --bounces 0");
     const bool reference = args.solver == gi2d::Solver2D::Reference;
     gi2d::BounceOptions options;
     options.maxBounces =
@@ -245,7 +262,7 @@ Result<Image> solveBouncing(const RenderArgs& args, const SizedScene& sized,
         medium,
         [&](const gi2d::Medium2D& lit) {
             double r = 0;
-            auto f = solve(args, sized, lit, r, detail);
+            auto f = solve(args, sized, lit, context->get(), r, detail);
             totalRays += r;
             return f;
         },

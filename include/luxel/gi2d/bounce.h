@@ -19,9 +19,6 @@ namespace luxel::gi2d {
 // `previousSource` is the emission the fluence was solved with (medium.emission at first).
 Image bounceSource(const Medium2D& medium, const Image& fluence, const Image& previousSource);
 
-// Relative L1 change sum |a - b| / sum |b| (0 when both are zero).
-double relativeChange(const Image& a, const Image& b);
-
 struct BounceOptions {
     int maxBounces = 0;  // fluence fed back at most this many times (0: one plain solve)
     // > 0: stop once the bounced light (source minus emission) changes by less than this,

@@ -19,11 +19,16 @@ struct RasterOptions {
     // Samples per pixel side on shape edges (n x n). Interior and exterior pixels are found exactly
     // from the shape's distance field and need no samples. Image layers use min(n, 4).
     int supersample = 16;
+    // Scale each analytic emitter's emission so that its rasterisation emits the exact shape's
+    // power at any size and sub-pixel position (docs/algorithms/pixel-medium.md §4). Off only
+    // where the "emission" rasterised is not light (the albedo images).
+    bool conserveEmitterPower = true;
 };
 
 // Largest accepted canvas side, in pixels.
 inline constexpr int kMaxCanvasSide = 65536;
 
+// A scene with any albedo (sceneBounces) also gets Medium2D::scattering and ::reflectance.
 // Fails for absurd sizes (<= 0 or > kMaxCanvasSide) or when the medium would not fit in memory.
 Result<Medium2D> rasterize(const Scene2D& scene, const RasterOptions& options = {});
 

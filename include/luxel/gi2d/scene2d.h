@@ -97,4 +97,8 @@ struct Scene2D {
 // The type name used in scene files: "circle", "box", "capsule", "polygon", "image".
 const char* geometryTypeName(const Geometry& geometry);
 
+// Whether the background, any material or any image layer has a non-zero albedo: light bounces
+// in this scene, and its rasterised medium carries scattering / reflectance images.
+bool sceneBounces(const Scene2D& scene);
+
 }  // namespace luxel::gi2d

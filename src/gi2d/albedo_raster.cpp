@@ -1,36 +1,29 @@
-// Interim fill of the bounce images from the scene's albedo (see bounce_fill.h).
-#include "luxel/gi2d/bounce_fill.h"
+// The bounce images from the scene's albedo (albedo_raster.h).
+#include "gi2d/albedo_raster.h"
 
 #include <algorithm>
 #include <variant>
 
-namespace luxel::gi2d {
-
-bool sceneBounces(const Scene2D& scene) {
-    if (scene.background.albedo != Rgb()) return true;
-    for (const Shape& s : scene.shapes) {
-        if (s.material.albedo != Rgb()) return true;
-        if (const auto* layer = std::get_if<ImageLayer>(&s.geometry); layer && layer->albedo) {
-            return true;
-        }
-    }
-    return false;
-}
+namespace luxel::gi2d::detail {
 
 namespace {
 
-// The scene with each material's albedo as its emission, kept only where `opaque` matches.
+// The scene with each material's albedo as its emission, kept only where `opaque` matches. The
+// albedo itself is cleared, so rasterising this scene does not come back here.
 Scene2D albedoScene(const Scene2D& scene, bool opaque) {
     Scene2D s = scene;
     s.boundaryRadiance = Rgb();
     s.background.emission = opaque ? Rgb() : scene.background.albedo;
+    s.background.albedo = Rgb();
     for (Shape& shape : s.shapes) {
         const bool keep = shape.material.isOpaque() == opaque;
         shape.material.emission = keep ? shape.material.albedo : Rgb();
         shape.material.intensity = 1.0f;
+        shape.material.albedo = Rgb();
         if (auto* layer = std::get_if<ImageLayer>(&shape.geometry)) {
             // Without an absorption image a layer's emission decides its opacity: leave it out.
             layer->emission = opaque || !layer->absorption ? nullptr : layer->albedo;
+            layer->albedo = nullptr;
         }
     }
     return s;
@@ -53,10 +46,11 @@ Image clampAlbedo(Image image) {
 
 }  // namespace
 
-Status fillBounceImages(const Scene2D& scene, const RasterOptions& options, Medium2D& medium) {
-    if (medium.bounces() || !sceneBounces(scene)) return Ok{};
+Status rasterizeAlbedo(const Scene2D& scene, const RasterOptions& options, Medium2D& medium) {
+    RasterOptions albedoOptions = options;
+    albedoOptions.conserveEmitterPower = false;  // albedo is a fraction, not a power
     for (bool opaque : {true, false}) {
-        auto raster = rasterize(albedoScene(scene, opaque), options);
+        auto raster = rasterize(albedoScene(scene, opaque), albedoOptions);
         if (!raster) return raster.error();
         if (allZero(raster->emission)) continue;
         (opaque ? medium.reflectance : medium.scattering) =
@@ -65,4 +59,4 @@ Status fillBounceImages(const Scene2D& scene, const RasterOptions& options, Medi
     return Ok{};
 }
 
-}  // namespace luxel::gi2d
+}  // namespace luxel::gi2d::detail
