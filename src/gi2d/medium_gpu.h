@@ -9,13 +9,17 @@
 
 namespace luxel::gi2d {
 
-inline std::vector<gpu::shared::MediumTexel> packMediumForGpu(const Medium2D& medium) {
+// `transposed`: column-major instead (x * height + y), for passes whose threads walk columns.
+inline std::vector<gpu::shared::MediumTexel> packMediumForGpu(const Medium2D& medium,
+                                                              bool transposed = false) {
     std::vector<gpu::shared::MediumTexel> out(static_cast<std::size_t>(medium.width()) *
                                               medium.height());
     for (int y = 0; y < medium.height(); ++y) {
         for (int x = 0; x < medium.width(); ++x) {
             const Rgb s = medium.absorption.rgb(x, y), e = medium.emission.rgb(x, y);
-            out[static_cast<std::size_t>(y) * medium.width() + x] = {s.r, s.g, s.b, e.r, e.g, e.b};
+            const std::size_t i = transposed ? static_cast<std::size_t>(x) * medium.height() + y
+                                             : static_cast<std::size_t>(y) * medium.width() + x;
+            out[i] = {s.r, s.g, s.b, e.r, e.g, e.b};
         }
     }
     return out;

@@ -62,23 +62,26 @@ float worstRelativeHalves(std::span<const std::uint16_t> a, std::span<const std:
     return worst;
 }
 
-TEST_F(HrcPasses, TraceMatchesTraceLevel) {
-    // A frame medium carries no boundary radiance (frameMedium): the sky enters HRC in the merge,
+TEST_F(HrcPasses, TraceMatchesTraceLevelInEveryFrustum) {
+    // The GPU marches the canvas medium through each frustum's frame; the CPU marches the frame
+    // medium (frameMedium), which carries no boundary radiance: the sky enters HRC in the merge,
     // and hrc_trace, like the solver's marcher, treats the outside as empty space.
-    Medium2D medium = randomMedium(40, 28, 5);
-    medium.boundaryRadiance = Rgb();
-    const RayMarcher marcher(medium);
-    RayTables cpu, gpu;
-    cpu.reset(medium.width(), medium.height(), 4);
-    gpu.reset(medium.width(), medium.height(), 4);
-    for (int n = 0; n < 4; ++n) {
-        traceLevel(cpu, marcher, n);
-        auto ms = traceLevelOnGpu(*context_, medium, gpu, n);
-        ASSERT_TRUE(ms.ok()) << ms.error().message();
-        // The same exact DDA in float on both sides; the entries are binary16.
-        const float worst = worstRelativeHalves(cpu.levelHalves(n), gpu.levelHalves(n));
-        std::printf("trace T%d: worst relative difference %.2e\n", n, worst);
-        EXPECT_LT(worst, 2e-3f) << "level " << n;
+    const Medium2D medium = randomMedium(40, 28, 5);
+    for (int f = 0; f < 4; ++f) {
+        const FrustumFrame frame = makeFrame(static_cast<Frustum>(f), 40, 28);
+        const RayMarcher marcher(frameMedium(medium, frame));
+        RayTables cpu, gpu;
+        cpu.reset(frame.length, frame.rows, 4);
+        gpu.reset(frame.length, frame.rows, 4);
+        for (int n = 0; n < 4; ++n) {
+            traceLevel(cpu, marcher, n);
+            auto ms = traceLevelOnGpu(*context_, medium, frame, gpu, n);
+            ASSERT_TRUE(ms.ok()) << ms.error().message();
+            // The same exact DDA in float on both sides; the entries are binary16.
+            const float worst = worstRelativeHalves(cpu.levelHalves(n), gpu.levelHalves(n));
+            std::printf("frustum %d, trace T%d: worst relative difference %.2e\n", f, n, worst);
+            EXPECT_LT(worst, 2e-3f) << "frustum " << f << " level " << n;
+        }
     }
 }
 

@@ -126,7 +126,9 @@ TEST(GpuSharedLayout, HrcPushConstants) {
         "hrc_trace",
         {sizeof(HrcTraceParams),
          {LUXEL_MEMBER(HrcTraceParams, level), LUXEL_MEMBER(HrcTraceParams, rows),
-          LUXEL_MEMBER(HrcTraceParams, planes), LUXEL_MEMBER(HrcTraceParams, frameLength)}});
+          LUXEL_MEMBER(HrcTraceParams, planes), LUXEL_MEMBER(HrcTraceParams, frameLength),
+          LUXEL_MEMBER(HrcTraceParams, frustum), LUXEL_MEMBER(HrcTraceParams, canvasWidth),
+          LUXEL_MEMBER(HrcTraceParams, canvasHeight), LUXEL_MEMBER(HrcTraceParams, transposed)}});
     expectPushConstants(
         "hrc_merge",
         {sizeof(HrcMergeParams),

@@ -4,6 +4,7 @@
 // changes nothing.
 #pragma once
 
+#include "gpu/shaders/shared/hrc_kernels.h"
 #include "luxel/gi2d/medium2d.h"
 
 namespace luxel::gi2d::hrc {
@@ -16,22 +17,11 @@ struct FrustumFrame {
     int length;  // frame pixels along the axis
     int rows;    // frame pixels across it
 
-    // Canvas pixel shown at frame pixel (u, v).
+    // Canvas pixel shown at frame pixel (u, v); the GPU's trace pass maps its reads the same way.
     void toCanvas(int u, int v, int& x, int& y) const {
-        switch (frustum) {
-            case Frustum::PlusX:
-                x = u, y = v;
-                break;
-            case Frustum::MinusX:
-                x = canvasWidth - 1 - u, y = v;
-                break;
-            case Frustum::PlusY:
-                x = v, y = u;
-                break;
-            default:
-                x = v, y = canvasHeight - 1 - u;
-                break;  // MinusY
-        }
+        const gpu::shared::ivec2 c = gpu::shared::hrcFrameToCanvas(
+            static_cast<unsigned>(frustum), gpu::shared::ivec2(u, v), canvasWidth, canvasHeight);
+        x = c.x, y = c.y;
     }
 };
 

@@ -54,14 +54,21 @@ std::span<const std::byte> coneBytes(const ConeBuffer& c) {
 
 }  // namespace
 
-gpu::Dispatch makeTraceDispatch(gpu::Program* program, gpu::Buffer* frameMedium, gpu::Buffer* table,
-                                int n, int rows, int planes, int frameLength) {
+bool traceReadsTransposed(const FrustumFrame& frame) {
+    return frame.frustum == Frustum::PlusX || frame.frustum == Frustum::MinusX;
+}
+
+gpu::Dispatch makeTraceDispatch(gpu::Program* program, gpu::Buffer* medium, gpu::Buffer* table,
+                                int n, const FrustumFrame& frame, int planes) {
     gpu::Dispatch d;
     d.name = "trace T" + std::to_string(n);
     d.program = program;
-    d.buffers = {frameMedium, table};
-    d.setPush(shared::HrcTraceParams{u32(n), u32(rows), u32(planes), u32(frameLength)});
-    d.setThreads(u32(rows), pow2(n) + 1, u32(planes));
+    d.buffers = {medium, table};
+    d.setPush(shared::HrcTraceParams{u32(n), u32(frame.rows), u32(planes), u32(frame.length),
+                                     u32(static_cast<int>(frame.frustum)), u32(frame.canvasWidth),
+                                     u32(frame.canvasHeight),
+                                     traceReadsTransposed(frame) ? 1u : 0u});
+    d.setThreads(u32(frame.rows), pow2(n) + 1, u32(planes));
     return d;
 }
 
@@ -115,20 +122,20 @@ gpu::Dispatch makeFinishDispatch(gpu::Program* program, gpu::Buffer* canvasMediu
     return d;
 }
 
-Result<double> traceLevelOnGpu(gpu::Context& context, const Medium2D& frameMedium,
-                               RayTables& tables, int n) {
+Result<double> traceLevelOnGpu(gpu::Context& context, const Medium2D& medium,
+                               const FrustumFrame& frame, RayTables& tables, int n) {
     LUXEL_CHECK(n >= 0 && n < tables.levels());
     auto program = context.program("hrc_trace", 2, sizeof(shared::HrcTraceParams));
     if (!program) return program.error();
     Scratch scratch{context, {}};
-    const auto packed = packMediumForGpu(frameMedium);
-    auto medium = scratch.upload(std::as_bytes(std::span(packed)));
-    if (!medium) return medium.error();
+    const auto packed = packMediumForGpu(medium, traceReadsTransposed(frame));
+    auto canvasMedium = scratch.upload(std::as_bytes(std::span(packed)));
+    if (!canvasMedium) return canvasMedium.error();
     const std::span<std::uint16_t> table = tables.levelHalves(n);
     auto tableBuffer = scratch.create(table.size_bytes());
     if (!tableBuffer) return tableBuffer.error();
-    auto ms = runOne(context, makeTraceDispatch(*program, *medium, *tableBuffer, n, tables.rows(),
-                                                tables.planes(n), frameMedium.width()));
+    auto ms = runOne(context, makeTraceDispatch(*program, *canvasMedium, *tableBuffer, n, frame,
+                                                tables.planes(n)));
     if (!ms) return ms;
     if (Status s = context.download(**tableBuffer, std::as_writable_bytes(table)); !s) {
         return s.error();

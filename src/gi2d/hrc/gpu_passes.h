@@ -22,8 +22,12 @@
 namespace luxel::gi2d::hrc {
 
 // Dispatch builders: buffers in the order the shader binds them.
-gpu::Dispatch makeTraceDispatch(gpu::Program* program, gpu::Buffer* frameMedium, gpu::Buffer* table,
-                                int n, int rows, int planes, int frameLength);
+// The trace pass reads the canvas medium through `frame` (hrcFrameToCanvas): `medium` is the
+// row-major canvas medium for the +-y frustums and the transposed one for +-x
+// (traceReadsTransposed).
+gpu::Dispatch makeTraceDispatch(gpu::Program* program, gpu::Buffer* medium, gpu::Buffer* table,
+                                int n, const FrustumFrame& frame, int planes);
+bool traceReadsTransposed(const FrustumFrame& frame);
 gpu::Dispatch makeExtendDispatch(gpu::Program* program, gpu::Buffer* below, gpu::Buffer* table,
                                  int n, int rows, int planesBelow, int planes);
 // `upper` null at the top cascade.
@@ -36,9 +40,10 @@ gpu::Dispatch makeFinishDispatch(gpu::Program* program, gpu::Buffer* canvasMediu
                                  gpu::Buffer* beyond, gpu::Buffer* fluence, int width, int height,
                                  int frustums, bool blur);
 
-// T_n of `tables` marched through `frameMedium` (the medium in the frustum's frame).
-Result<double> traceLevelOnGpu(gpu::Context& context, const Medium2D& frameMedium,
-                               RayTables& tables, int n);
+// T_n of `tables` marched through `medium` seen in `frame` (CPU twin: traceLevel on
+// frameMedium(medium, frame)).
+Result<double> traceLevelOnGpu(gpu::Context& context, const Medium2D& medium,
+                               const FrustumFrame& frame, RayTables& tables, int n);
 // T_n from T_{n-1}.
 Result<double> extendLevelOnGpu(gpu::Context& context, RayTables& tables, int n);
 // R_n into `out` from T_n, T_{n+1} weights and `upper` (null at the top).

@@ -56,7 +56,7 @@ std::uint64_t estimateHrcGpuMemory(int width, int height) {
     }
     const std::uint64_t pixels = static_cast<std::uint64_t>(width) * height;
     bytes += 2 * coneEntries(width, height) * 12;  // two R buffers
-    bytes += 2 * pixels * 24;                      // canvas and frame media
+    bytes += 2 * pixels * 24;                      // the canvas medium, row- and column-major
     bytes += 2 * pixels * 12;                      // accumulator and fluence
     return bytes;
 }
@@ -112,26 +112,32 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
         if (!b) return b.error();
         c = *b;
     }
-    auto frameBuffer = context.createBuffer(pixels * 24);
     auto canvasMedium = context.createBuffer(pixels * 24);
+    auto transposedMedium = context.createBuffer(pixels * 24);
     auto beyond = context.createBuffer(pixels * 12);
     auto fluence = context.createBuffer(pixels * 12);
-    for (auto* b : {&frameBuffer, &canvasMedium, &beyond, &fluence}) {
+    for (auto* b : {&canvasMedium, &transposedMedium, &beyond, &fluence}) {
         if (!*b) return b->error();
     }
     {
         Stopwatch upload;
-        const auto packed = packMediumForGpu(medium);
-        if (Status s = context.upload(**canvasMedium, std::as_bytes(std::span(packed))); !s) {
-            return s.error();
+        for (bool transposed : {false, true}) {
+            const auto packed = packMediumForGpu(medium, transposed);
+            auto& buffer = transposed ? *transposedMedium : *canvasMedium;
+            if (Status s = context.upload(*buffer, std::as_bytes(std::span(packed))); !s) {
+                return s.error();
+            }
         }
         const std::vector<float> zeros(pixels * 3, 0.0f);
         if (Status s = context.upload(**beyond, std::as_bytes(std::span(zeros))); !s) {
             return s.error();
         }
-        record("upload canvas medium (CPU)", upload.milliseconds());
+        record("upload canvas media (CPU)", upload.milliseconds());
     }
 
+    auto traceMedium = [&](const FrustumFrame& frame) {
+        return traceReadsTransposed(frame) ? transposedMedium->get() : canvasMedium->get();
+    };
     const Rgb sky = medium.boundaryRadiance;
     int frustums = 0;
     for (int r = 0; r < 4; ++r) {
@@ -139,21 +145,13 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
         ++frustums;
         const FrustumFrame frame = makeFrame(static_cast<Frustum>(r), w, h);
         const int levels = cascadeCount(frame.length);
-        {
-            Stopwatch upload;
-            const auto packed = packMediumForGpu(frameMedium(medium, frame));
-            if (Status s = context.upload(**frameBuffer, std::as_bytes(std::span(packed))); !s) {
-                return s.error();
-            }
-            record("upload frame medium " + std::to_string(r) + " (CPU)", upload.milliseconds());
-        }
         std::vector<gpu::Dispatch> passes;
         const std::string tag = " f" + std::to_string(r);
         for (int n = 0; n < levels; ++n) {
             const int planes = planeCount(frame.length, n);
             passes.push_back(n < options.tracedLevels
-                                 ? makeTraceDispatch(*trace, frameBuffer->get(), tables[n].get(), n,
-                                                     frame.rows, planes, frame.length)
+                                 ? makeTraceDispatch(*trace, traceMedium(frame), tables[n].get(), n,
+                                                     frame, planes)
                                  : makeExtendDispatch(*extend, tables[n - 1].get(), tables[n].get(),
                                                       n, frame.rows,
                                                       planeCount(frame.length, n - 1), planes));

@@ -1,6 +1,6 @@
 // HRC base intervals (docs/algorithms/holographic-radiance-cascades.md §3; CPU twin: traceLevel in
 // src/gi2d/hrc/ray_tables.cpp): T_n(p, y, k) marched from (p 2^n, y + 0.5) over v_n(k) with the
-// exact DDA of march2d.glsl.
+// exact DDA of march2d.glsl, reading the canvas medium through the frustum's frame.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/hrc_layout.h"
@@ -11,6 +11,14 @@ layout(local_size_x = LUXEL_HRC_GROUP_SIZE) in;
 layout(std430, set = 0, binding = 0) readonly buffer Medium { MediumTexel medium[]; };
 layout(std430, set = 0, binding = 1) writeonly buffer Table { HrcTableEntry table[]; };
 layout(push_constant) uniform Push { HrcTraceParams params; };
+
+// Frame pixel (u, v) is canvas pixel hrcFrameToCanvas(...): the canvas medium serves all frustums.
+uint mediumIndex(ivec2 cell, uint width) {
+    const ivec2 c = hrcFrameToCanvas(params.frustum, cell, int(params.canvasWidth),
+                                     int(params.canvasHeight));
+    return params.transposed != 0u ? uint(c.x) * params.canvasHeight + uint(c.y)
+                                   : uint(c.y) * params.canvasWidth + uint(c.x);
+}
 
 #include "gi2d/march2d.glsl"
 

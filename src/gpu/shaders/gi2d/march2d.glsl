@@ -2,7 +2,9 @@
 // intervals, rc_cascade for the RC intervals): every crossed pixel contributes with its exact
 // segment length, L += T E (1 - exp(-sigma l)), T *= exp(-sigma l). The CPU counterpart is
 // RayMarcher (src/gi2d/ray_march.cpp), which skips uniform blocks; the parity tests of both passes
-// bound the difference. Needs `medium[]` (MediumTexel) declared by the includer.
+// bound the difference. Needs `medium[]` (MediumTexel) declared by the includer, and
+// `uint mediumIndex(ivec2 cell, uint width)`, the element of medium[] that holds pixel `cell` of the
+// width x height grid being marched.
 
 struct Marched {
     vec3 radiance;
@@ -28,7 +30,7 @@ Marched marchMedium(vec2 start, vec2 dir, float span, uint width, uint height, f
         if (cell.x < 0 || cell.y < 0 || cell.x >= int(width) || cell.y >= int(height)) break;
         if (max(s.transmittance.x, max(s.transmittance.y, s.transmittance.z)) < cutoff) break;
         const float exit = min(min(next.x, next.y), span);
-        const MediumTexel m = medium[uint(cell.y) * width + uint(cell.x)];
+        const MediumTexel m = medium[mediumIndex(cell, width)];
         const vec3 tr = exp(-mediumSigma(m) * (exit - t));
         s.radiance += s.transmittance * mediumEmission(m) * (vec3(1.0) - tr);
         s.transmittance *= tr;

@@ -16,6 +16,11 @@ layout(std430, set = 0, binding = 1) readonly buffer Upper { RgbTexel upper[]; }
 layout(std430, set = 0, binding = 2) writeonly buffer Current { RgbTexel current[]; };
 layout(push_constant) uniform Push { RcCascadeParams params; };
 
+// The cascade marches the canvas itself, row by row.
+uint mediumIndex(ivec2 cell, uint width) {
+    return uint(cell.y) * width + uint(cell.x);
+}
+
 #include "gi2d/march2d.glsl"
 
 struct Segment {

@@ -21,6 +21,16 @@ struct HrcInterval {
     vec3 transmittance;
 };
 
+// Canvas pixel shown at pixel `frame` (u, v) of the frame of frustum 0 (+x), 1 (+y), 2 (-x) or
+// 3 (-y) (§6.1): the +-y frames are reflections across the diagonal. FrustumFrame::toCanvas on the
+// CPU, hrc_trace's reads of the canvas medium on the GPU.
+LUXEL_FUNC ivec2 hrcFrameToCanvas(uint frustum, ivec2 frame, int canvasWidth, int canvasHeight) {
+    if (frustum == 0u) return frame;
+    if (frustum == 2u) return ivec2(canvasWidth - 1 - frame.x, frame.y);
+    if (frustum == 1u) return ivec2(frame.y, frame.x);
+    return ivec2(frame.y, canvasHeight - 1 - frame.x);
+}
+
 // Empty space: nothing emitted, everything transmitted.
 LUXEL_FUNC HrcInterval hrcEmptyInterval() {
     return HrcInterval(vec3(0.0f), vec3(1.0f));

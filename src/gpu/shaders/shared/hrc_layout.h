@@ -34,13 +34,21 @@ struct HrcExtendParams {
     uint planes;       // plane count of T_n
 };
 
-// Push constants of hrc_trace: marches T_level exactly through the frame medium.
-// Frame medium buffer: per pixel (v * length + u) six floats, sigma rgb then emission rgb.
+// Push constants of hrc_trace: marches T_level exactly through the canvas medium seen in the
+// frustum's frame. Medium buffer: per canvas pixel six floats, sigma rgb then emission rgb, at
+// y * canvasWidth + x, or at x * canvasHeight + y when `transposed`; frame pixel (u, v) reads
+// canvas pixel hrcFrameToCanvas (hrc_kernels.h). The two layouts are uploaded once for all four
+// frustums: the +-x frustums read the transposed one, so that neighbouring threads (neighbouring
+// frame rows) read neighbouring memory in every frustum.
 struct HrcTraceParams {
     uint level;
     uint rows;
     uint planes;
     uint frameLength;  // frame pixels along the axis
+    uint frustum;      // 0 +x, 1 +y, 2 -x, 3 -y (FrustumFrame)
+    uint canvasWidth;
+    uint canvasHeight;
+    uint transposed;  // 1: the buffer is column-major (x * canvasHeight + y)
 };
 
 // Push constants of hrc_merge: R_level from R_{level+1} (hasUpper = 0 at the top cascade).
@@ -76,7 +84,8 @@ struct HrcFinishParams {
 
 #ifdef __cplusplus
 static_assert(sizeof(HrcTableEntry) == LUXEL_HRC_ENTRY_WORDS * 4);
-static_assert(sizeof(HrcTraceParams) == 16);
+static_assert(sizeof(HrcTraceParams) == 32);
+static_assert(offsetof(HrcTraceParams, frustum) == 16);
 static_assert(sizeof(HrcMergeParams) == 32);
 static_assert(offsetof(HrcMergeParams, skyR) == 20);
 static_assert(sizeof(HrcReadoutParams) == 32);
