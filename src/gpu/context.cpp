@@ -57,6 +57,16 @@ struct Context::Impl {
     std::unique_ptr<Buffer> makeBuffer(std::uint64_t bytes, vk::BufferUsageFlags usage,
                                        vk::MemoryPropertyFlags flags) const;
     void submitAndWait(const std::function<void(vk::raii::CommandBuffer&)>& record);
+
+    // Host-visible staging kept mapped between transfers: allocating and mapping a fresh one per
+    // transfer cost about 30 ms per 24 MiB on an NVIDIA H100, more than the HRC passes of a 1024^2
+    // frame (docs/gpu.md). Transfers above kMaxKeptStagingBytes get a buffer of their own.
+    static constexpr std::uint64_t kMaxKeptStagingBytes = std::uint64_t{256} << 20;
+    std::unique_ptr<Buffer> keptStaging;
+    std::byte* keptMapped = nullptr;
+    // A mapped staging buffer of at least `bytes`: the kept one (grown as needed) or, for large
+    // transfers, `transient`.
+    std::byte* staging(std::uint64_t bytes, std::unique_ptr<Buffer>& transient, Buffer*& buffer);
 };
 
 namespace {
@@ -164,6 +174,30 @@ std::unique_ptr<Buffer> Context::Impl::makeBuffer(std::uint64_t bytes, vk::Buffe
     out->memory = vk::raii::DeviceMemory(device, vk::MemoryAllocateInfo(req.size, type));
     out->buffer.bindMemory(*out->memory, 0);
     return out;
+}
+
+std::byte* Context::Impl::staging(std::uint64_t bytes, std::unique_ptr<Buffer>& transient,
+                                  Buffer*& buffer) {
+    using M = vk::MemoryPropertyFlagBits;
+    using U = vk::BufferUsageFlagBits;
+    const auto usage = U::eTransferSrc | U::eTransferDst;
+    if (bytes > kMaxKeptStagingBytes) {
+        transient = makeBuffer(bytes, usage, M::eHostVisible | M::eHostCoherent);
+        buffer = transient.get();
+        return static_cast<std::byte*>(transient->memory.mapMemory(0, VK_WHOLE_SIZE));
+    }
+    if (!keptStaging || keptStaging->bytes < bytes) {
+        // Grow to the next power of two (at least 1 MiB), so a run of growing uploads allocates a
+        // handful of times.
+        std::uint64_t size = std::uint64_t{1} << 20;
+        while (size < bytes) size *= 2;
+        keptMapped = nullptr;
+        keptStaging.reset();
+        keptStaging = makeBuffer(size, usage, M::eHostVisible | M::eHostCoherent);
+        keptMapped = static_cast<std::byte*>(keptStaging->memory.mapMemory(0, VK_WHOLE_SIZE));
+    }
+    buffer = keptStaging.get();
+    return keptMapped;
 }
 
 void Context::Impl::submitAndWait(const std::function<void(vk::raii::CommandBuffer&)>& record) {
@@ -336,12 +370,10 @@ Status Context::upload(Buffer& buffer, std::span<const std::byte> data, std::uin
     if (data.empty()) return Ok{};
     if (Status s = checkStagingMemory(data.size()); !s) return s;
     return guarded([&]() -> Status {
-        using M = vk::MemoryPropertyFlagBits;
-        auto staging = impl_->makeBuffer(data.size(), vk::BufferUsageFlagBits::eTransferSrc,
-                                         M::eHostVisible | M::eHostCoherent);
-        void* mapped = staging->memory.mapMemory(0, data.size());
+        std::unique_ptr<Buffer> transient;
+        Buffer* staging = nullptr;
+        std::byte* mapped = impl_->staging(data.size(), transient, staging);
         std::memcpy(mapped, data.data(), data.size());
-        staging->memory.unmapMemory();
         impl_->submitAndWait([&](vk::raii::CommandBuffer& cmd) {
             cmd.copyBuffer(*staging->buffer, *buffer.buffer,
                            vk::BufferCopy(0, offset, data.size()));
@@ -354,15 +386,22 @@ Status Context::download(const Buffer& buffer, std::span<std::byte> data) {
     LUXEL_CHECK_LE(data.size(), buffer.bytes);
     if (Status s = checkStagingMemory(data.size()); !s) return s;
     return guarded([&]() -> Status {
-        using M = vk::MemoryPropertyFlagBits;
-        auto staging = impl_->makeBuffer(data.size(), vk::BufferUsageFlagBits::eTransferDst,
-                                         M::eHostVisible | M::eHostCoherent);
+        std::unique_ptr<Buffer> transient;
+        Buffer* staging = nullptr;
+        const std::byte* mapped = impl_->staging(data.size(), transient, staging);
         impl_->submitAndWait([&](vk::raii::CommandBuffer& cmd) {
             cmd.copyBuffer(*buffer.buffer, *staging->buffer, vk::BufferCopy(0, 0, data.size()));
         });
-        const void* mapped = staging->memory.mapMemory(0, data.size());
         std::memcpy(data.data(), mapped, data.size());
-        staging->memory.unmapMemory();
+        return Ok{};
+    });
+}
+
+Status Context::fill(Buffer& buffer, std::uint32_t word) {
+    return guarded([&]() -> Status {
+        impl_->submitAndWait([&](vk::raii::CommandBuffer& cmd) {
+            cmd.fillBuffer(*buffer.buffer, 0, VK_WHOLE_SIZE, word);
+        });
         return Ok{};
     });
 }

@@ -3,6 +3,8 @@
 // validation message fails the test.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cstring>
 #include <numeric>
 
@@ -42,6 +44,34 @@ TEST(GpuRuntime, ListsDevicesAndRoundTripsABuffer) {
     std::vector<std::uint32_t> back(data.size());
     ASSERT_TRUE(context->download(**buffer, std::as_writable_bytes(std::span(back))).ok());
     EXPECT_EQ(back, data);
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
+// Transfers share one kept staging buffer that grows: uploads and downloads of growing and
+// shrinking sizes, at offsets, must not see each other's bytes; fill sets every word.
+TEST(GpuRuntime, TransfersOfEverySizeRoundTripAndFillSetsEveryWord) {
+    LUXEL_REQUIRE_GPU(context);
+    const std::size_t words = (std::size_t{3} << 20) / 4 + 5;  // past the first 1 MiB and 2 MiB
+    auto buffer = context->createBuffer(words * 4);
+    ASSERT_TRUE(buffer.ok()) << buffer.error().message();
+    std::vector<std::uint32_t> expected(words, 0);
+    std::uint32_t next = 1;
+    for (std::size_t count : {std::size_t{4}, words / 3, words, std::size_t{17}, words / 2}) {
+        const std::size_t offset = (count * 7) % (words - count + 1);
+        std::vector<std::uint32_t> part(count);
+        for (auto& w : part) w = next++;
+        ASSERT_TRUE(context->upload(**buffer, std::as_bytes(std::span(part)), offset * 4).ok());
+        std::copy(part.begin(), part.end(), expected.begin() + static_cast<long>(offset));
+        std::vector<std::uint32_t> back(words);
+        ASSERT_TRUE(context->download(**buffer, std::as_writable_bytes(std::span(back))).ok());
+        ASSERT_EQ(back, expected) << "after an upload of " << count << " words at " << offset;
+    }
+    for (std::uint32_t word : {0u, 0x3f800000u}) {
+        ASSERT_TRUE(context->fill(**buffer, word).ok());
+        std::vector<std::uint32_t> back(words, 12345u);
+        ASSERT_TRUE(context->download(**buffer, std::as_writable_bytes(std::span(back))).ok());
+        EXPECT_EQ(back, std::vector<std::uint32_t>(words, word));
+    }
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
 }
 

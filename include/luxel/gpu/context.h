@@ -62,6 +62,8 @@ class Context {
     // Copies `data` into the buffer at byte `offset` (a multiple of 4).
     Status upload(Buffer& buffer, std::span<const std::byte> data, std::uint64_t offset = 0);
     Status download(const Buffer& buffer, std::span<std::byte> data);
+    // Sets every 32-bit word of the buffer to `word` on the device (0: zeroes it).
+    Status fill(Buffer& buffer, std::uint32_t word = 0);
 
     // The compute program of an embedded shader (cached by name). `storageBuffers` bindings
     // 0..n-1 in set 0 and a push-constant block of `pushBytes` (both checked at dispatch).

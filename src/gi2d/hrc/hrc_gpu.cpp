@@ -128,10 +128,7 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
                 return s.error();
             }
         }
-        const std::vector<float> zeros(pixels * 3, 0.0f);
-        if (Status s = context.upload(**beyond, std::as_bytes(std::span(zeros))); !s) {
-            return s.error();
-        }
+        if (Status s = context.fill(**beyond); !s) return s.error();
         record("upload canvas media (CPU)", upload.milliseconds());
     }
 
