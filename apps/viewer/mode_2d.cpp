@@ -258,6 +258,11 @@ void Mode2D::drawPanel() {
     if (ImGui::Checkbox("bounce light", &view_.bounce)) viewChanged();
     ImGui::SameLine();
     if (ImGui::SliderInt("bounces", &view_.bounces, 1, 64)) viewChanged();
+    // RC: jittered probe grids averaged over frames (renderer_2d.h).
+    if (view_.solver == gi2d::Solver2D::Rc &&
+        ImGui::SliderInt("RC probe grids", &view_.rcJitters, 1, 64)) {
+        viewChanged();
+    }
     const int cascades = cascadeCount(view_);
     if (cascades > 0 && ImGui::SliderInt("cascade (C)", &view_.cascade, -1, cascades - 1,
                                          view_.cascade < 0 ? "fluence" : "cascade %d")) {

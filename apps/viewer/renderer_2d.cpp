@@ -112,7 +112,7 @@ void Renderer2D::setState(State2D&& state) {
     }
     if (mediumDirty_ || a.solver != b.solver || a.merge != b.merge || a.backend != b.backend ||
         a.gi != b.gi || a.cascade != b.cascade || a.device != b.device || a.bounce != b.bounce ||
-        a.bounces != b.bounces) {
+        a.bounces != b.bounces || a.rcJitters != b.rcJitters) {
         fluenceDirty_ = true;
     }
     displayDirty_ = true;
@@ -123,8 +123,15 @@ bool Renderer2D::hasMoreWork() const {
     if (!state_.scene) return false;
     if (mediumDirty_ || fluenceDirty_ || displayDirty_) return true;
     if (bouncing() && bouncesDone_ < state_.view.bounces) return true;
+    if (jitteringRc() && rcJittersDone_ < state_.view.rcJitters) return true;
     return state_.view.gi && state_.view.solver == gi2d::Solver2D::Reference &&
            reference_.passes() < referenceTargetPasses_;
+}
+
+bool Renderer2D::jitteringRc() const {
+    const View2D& v = state_.view;
+    return v.gi && v.solver == gi2d::Solver2D::Rc && v.cascade < 0 && v.rcJitters > 1 &&
+           !bouncing();
 }
 
 bool Renderer2D::bouncing() const {
@@ -191,9 +198,27 @@ Status Renderer2D::solve(Frame& frame) {
             break;
         }
         case gi2d::Solver2D::Rc: {
-            const gi2d::RcOptions options = rcOptionsFor(view);
+            gi2d::RcOptions options = rcOptionsFor(view);
+            const bool jitter = jitteringRc();
+            if (jitter) gi2d::rcJitterShift(rcJittersDone_, options.jitterX, options.jitterY);
             fluence = gpu ? gi2d::solveRcOnGpu(*gpu, medium, options, &timings)
                           : gi2d::solveRc(medium, options);
+            if (!jitter || !fluence) break;
+            // The running mean of the jittered grids since the last change.
+            if (rcJittersDone_ == 0) {
+                rcSum_ = *fluence;
+            } else {
+                for (std::size_t i = 0; i < rcSum_.size(); ++i) {
+                    rcSum_.data()[i] += fluence->data()[i];
+                }
+            }
+            ++rcJittersDone_;
+            const float scale = 1.0f / static_cast<float>(rcJittersDone_);
+            for (std::size_t i = 0; i < fluence->size(); ++i) {
+                fluence->data()[i] = rcSum_.data()[i] * scale;
+            }
+            frame.note = "probe grids " + std::to_string(rcJittersDone_) + "/" +
+                         std::to_string(view.rcJitters);
             break;
         }
         case gi2d::Solver2D::Reference: {
@@ -238,6 +263,9 @@ Frame Renderer2D::step() {
                           reference_.passes() < referenceTargetPasses_;
     // One bounce per frame: the last frame's fluence lights the next frame's source.
     const bool bounceNow = !fluenceDirty_ && bouncing() && bouncesDone_ < view.bounces;
+    // One more jittered RC probe grid per frame until View2D::rcJitters.
+    const bool jitterNow = !fluenceDirty_ && jitteringRc() && rcJittersDone_ < view.rcJitters;
+    if (fluenceDirty_) rcJittersDone_ = 0;
     if (fluenceDirty_ && bouncing()) {
         lit_ = medium_;
         bouncesDone_ = 0;
@@ -245,7 +273,7 @@ Frame Renderer2D::step() {
         lit_.emission = gi2d::bounceSource(medium_, fluence_, lit_.emission);
         ++bouncesDone_;
     }
-    if (fluenceDirty_ || refining || bounceNow) {
+    if (fluenceDirty_ || refining || bounceNow || jitterNow) {
         if (fluenceDirty_) reference_.reset();
         fluenceDirty_ = false;
         Frame solved;
@@ -257,7 +285,7 @@ Frame Renderer2D::step() {
         } else if (view.solver == gi2d::Solver2D::Reference) {
             referenceTargetPasses_ = 256;
         }
-        if (solved.note.empty()) solved.note = note_;
+        if (!note_.empty()) solved.note = solved.note.empty() ? note_ : note_ + "; " + solved.note;
         if (bouncing()) {
             solved.note += (solved.note.empty() ? "" : "; ") + std::string("bounce ") +
                            std::to_string(bouncesDone_) + "/" + std::to_string(view.bounces);

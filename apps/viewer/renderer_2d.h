@@ -30,6 +30,10 @@ struct View2D {
     // fluence fed back through gi2d::bounceSource, up to `bounces` frames after each change.
     bool bounce = true;
     int bounces = 16;
+    // RC: after each change, this many frames each add one solve with the probe grids above
+    // cascade 0 shifted differently (gi2d::rcJitterShift) to a running mean; 1 = one fixed grid.
+    // Not while bounce light is being fed back.
+    int rcJitters = 16;
     int width = 256, height = 256;  // internal resolution
 };
 
@@ -58,6 +62,8 @@ class Renderer2D {
     Status solve(Frame& frame);
     // Whether this view feeds fluence back, and whether a bounce is still to come.
     bool bouncing() const;
+    // Whether RC frames add jittered probe grids to a running mean (View2D::rcJitters).
+    bool jitteringRc() const;
 
     State2D state_;
     bool mediumDirty_ = true, fluenceDirty_ = true, displayDirty_ = true;
@@ -65,6 +71,8 @@ class Renderer2D {
     Image fluence_;
     gi2d::Medium2D lit_;   // medium_ with the bounced source as its emission (when bouncing)
     int bouncesDone_ = 0;  // frames that fed fluence back since the last change
+    Image rcSum_;          // sum of the jittered RC solves since the last change
+    int rcJittersDone_ = 0;
     ProgressiveReference reference_;
     int referenceTargetPasses_ = 256;  // 1024 rays per pixel, the reference solver's default
     std::unique_ptr<gpu::Context> gpu_;

@@ -177,6 +177,13 @@ TEST_F(Cli, RcVariantsMarchersAndViews) {
     EXPECT_GT(f->at(16, 16, 0), f->at(40, 16, 0)) << "shadow behind the box";
     expectError("render " + scene + " --solver rc --march sdf --out " + path("x.exr"), "SDF");
     expectError("render " + scene + " --solver rc --merge magic --out " + path("x.exr"), "--merge");
+    r = runLuxel("render " + scene + " --solver rc --jitters 3 --out " + path("j.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("3 jittered probe grids"), std::string::npos) << r.output;
+    auto j = luxel::readExr(path("j.exr"));
+    ASSERT_TRUE(j.ok());
+    EXPECT_NE(j->at(20, 20, 0), f->at(20, 20, 0)) << "jittered grids change the image";
+    expectError("render " + scene + " --solver rc --jitters 0 --out " + path("x.exr"), "--jitters");
     expectError("render " + scene + " --solver rc --view sideways --out " + path("x.exr"),
                 "--view");
     const std::string shapes = write("shapes.json", R"({"canvas": [40, 30], "shapes": [

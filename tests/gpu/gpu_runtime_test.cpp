@@ -173,6 +173,26 @@ TEST(GpuRc, MatchesTheCpuSolverForBothMerges) {
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
 }
 
+// Jittered probe grids (shifted cascades above 0, averaged over several shifts) on both backends.
+TEST(GpuRc, JitteredProbeGridsMatchTheCpu) {
+    LUXEL_REQUIRE_GPU(context);
+    const gi2d::Medium2D medium = gi2d::testing_support::shippedScene("penumbra.json", 96, 72);
+    for (gi2d::RcMerge merge : {gi2d::RcMerge::Vanilla, gi2d::RcMerge::BilinearFix}) {
+        gi2d::RcOptions options;
+        options.merge = merge;
+        options.jitters = 3;
+        const Image cpu = gi2d::solveRc(medium, options).value();
+        const Image gpu = gi2d::solveRcOnGpu(*context, medium, options).value();
+        const ImageErrors e = compareImages(gpu, cpu).value();
+        EXPECT_LT(e.relativeL1, 1e-5);
+        options.jitters = 1;
+        const ImageErrors plain =
+            compareImages(gi2d::solveRc(medium, options).value(), cpu).value();
+        EXPECT_GT(plain.relativeL1, 1e-4) << "jitter must change the image";
+    }
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
 TEST(GpuRc, LargeCascadesFoldIntoTwoDimensionalDispatches) {
     LUXEL_REQUIRE_GPU(context);
     // 2100 x 2048 probes at cascade 0 need more than 65535 workgroups of 64 in x.

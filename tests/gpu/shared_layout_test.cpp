@@ -163,7 +163,9 @@ TEST(GpuSharedLayout, RcPushConstants) {
                      LUXEL_MEMBER(P, upperSpacing), LUXEL_MEMBER(P, intervalStart),
                      LUXEL_MEMBER(P, intervalEnd),  LUXEL_MEMBER(P, upperIntervalStart),
                      LUXEL_MEMBER(P, skyR),         LUXEL_MEMBER(P, skyG),
-                     LUXEL_MEMBER(P, skyB),         LUXEL_MEMBER(P, pad0)}});
+                     LUXEL_MEMBER(P, skyB),         LUXEL_MEMBER(P, offsetX),
+                     LUXEL_MEMBER(P, offsetY),      LUXEL_MEMBER(P, upperOffsetX),
+                     LUXEL_MEMBER(P, upperOffsetY), LUXEL_MEMBER(P, pad0)}});
 }
 
 TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {

@@ -2,10 +2,15 @@
 // progressive reference), the render worker, and voxel edits.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <thread>
 
+#include "luxel/core/tonemap.h"
+#include "luxel/gi2d/display.h"
 #include "luxel/gi2d/rasterize.h"
+#include "luxel/gi2d/rc_solver.h"
 #include "luxel/gi2d/reference_solver.h"
 #include "luxel/voxel/voxel_world.h"
 #include "progressive_reference.h"
@@ -80,6 +85,41 @@ TEST(Renderer2D, BounceLightAddsOneBouncePerFrame) {
         previous = meanOf(frame.picture);
     }
     EXPECT_FALSE(renderer.hasMoreWork());
+}
+
+// RC adds one jittered probe grid per frame to a running mean, which ends as solveRc's average
+// of the same shifts; a change starts over.
+TEST(Renderer2D, RcAveragesJitteredProbeGridsOverFrames) {
+    State2D state = stateFor(gi2d::Solver2D::Rc);
+    state.view.rcJitters = 4;
+    const State2D again = state;
+    Renderer2D renderer;
+    renderer.setState(std::move(state));
+    Frame frame;
+    for (int k = 1; k <= 4; ++k) {
+        frame = renderer.step();
+        EXPECT_NE(frame.note.find("probe grids " + std::to_string(k) + "/4"), std::string::npos)
+            << frame.note;
+        EXPECT_EQ(renderer.hasMoreWork(), k < 4) << "frame " << k;
+    }
+    const gi2d::Medium2D medium = gi2d::rasterize(*again.scene, {64, 64, 4}).value();
+    gi2d::RcOptions options;
+    options.jitters = 4;
+    const Image expected = gi2d::displayImage(medium, gi2d::solveRc(medium, options).value(),
+                                              {again.view.exposure, ToneCurve::Aces});
+    double worst = 0;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        worst = std::max<double>(worst, std::abs(expected.data()[i] - frame.picture.data()[i]));
+    }
+    EXPECT_LT(worst, 1e-5);
+    State2D changed = again;
+    changed.view.exposure = 1.0f;  // display only: the mean is kept
+    renderer.setState(std::move(changed));
+    EXPECT_EQ(renderer.step().note.find("probe grids 1/"), std::string::npos);
+    State2D edited = again;
+    edited.sceneVersion = 2;  // an edit starts over
+    renderer.setState(std::move(edited));
+    EXPECT_NE(renderer.step().note.find("probe grids 1/4"), std::string::npos);
 }
 
 TEST(Renderer2D, ReferenceAccumulatesProgressively) {

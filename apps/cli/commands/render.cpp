@@ -51,6 +51,7 @@ struct RenderArgs {
     int baseRays = gi2d::RcOptions{}.baseRays;
     double baseInterval = gi2d::RcOptions{}.baseInterval;
     int maxCascades = 0;
+    int jitters = 1;
     // Bounce light: -1 = the solver's default when the scene bounces (gi2d/bounce.h)
     int bounces = -1;
     // Voxel and octree post-processing (override the scene's "post")
@@ -109,6 +110,12 @@ Result<unsigned> frustumMask(const std::string& name) {
     return Error("--frustum '" + name + "' is not one of +x, +y, -x, -y");
 }
 
+// ", 16 jittered probe grids" in the summary line when RC averages several.
+std::string jitterNote(const gi2d::RcOptions& options) {
+    return options.jitters > 1 ? ", " + std::to_string(options.jitters) + " jittered probe grids"
+                               : "";
+}
+
 gi2d::RcOptions rcOptions(const RenderArgs& args) {
     gi2d::RcOptions options;
     options.merge = args.merge;
@@ -116,6 +123,7 @@ gi2d::RcOptions rcOptions(const RenderArgs& args) {
     options.baseRays = args.baseRays;
     options.baseInterval = args.baseInterval;
     options.maxCascades = args.maxCascades;
+    options.jitters = args.jitters;
     options.debugCascade = args.view == "cascade" ? std::max(args.cascade, 0) : -1;
     return options;
 }
@@ -155,10 +163,11 @@ Result<Image> solveRcFor(const RenderArgs& args, const SizedScene& sized,
         return gi2d::solveRc(*sdf, sized.scene.boundaryRadiance, options);
     }
     if (context) {
-        detail = "merge " + merge + ", march dda, gpu: " + context->device().name;
+        detail =
+            "merge " + merge + jitterNote(options) + ", march dda, gpu: " + context->device().name;
         return gi2d::solveRcOnGpu(*context, medium, options);
     }
-    detail = "merge " + merge + ", march dda, cpu";
+    detail = "merge " + merge + jitterNote(options) + ", march dda, cpu";
     return gi2d::solveRc(medium, options);
 }
 
@@ -436,6 +445,11 @@ Runner addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     app.add_option("--base-interval", args->baseInterval, "RC: cascade-0 interval length (px)")
         ->check(finiteIn(1e-3, 1e5))
+        ->capture_default_str();
+    app.add_option("--jitters", args->jitters,
+                   "RC: solves averaged, each with the probe grids above cascade 0 shifted "
+                   "differently (fewer blotches, less popping as lights move; N times the time)")
+        ->check(wholeIn(1, 256))
         ->capture_default_str();
     app.add_option("--max-cascades", args->maxCascades, "RC: cap on the cascade count (0 = none)")
         ->check(wholeIn(0, 16))

@@ -30,7 +30,19 @@ struct RcOptions {
     // >= 0: show cascade n's merged radiance averaged over its directions (nearest probe) instead
     // of the fluence. Debug view.
     int debugCascade = -1;
+    // Probe-grid jitter (docs/algorithms/radiance-cascades-2d.md §7): the probe grid of every
+    // cascade above 0 shifted by this fraction of its spacing, each in [0, 1). The viewer takes a
+    // new shift each frame and averages frames.
+    double jitterX = 0, jitterY = 0;
+    // Solves averaged, each with its own shift (a 2D low-discrepancy sequence; 1: one solve with
+    // jitterX/Y). A light no longer pops in blocks of one fixed grid's probe spacing as it moves.
+    int jitters = 1;
 };
+
+// Shift r (r >= 0) of the jittered probe grids (RcOptions::jitterX/Y): the R2 low-discrepancy
+// sequence, which spreads any number of shifts evenly over the unit square. solveRc with
+// `jitters` = N averages shifts 0..N-1; the viewer adds one per frame.
+void rcJitterShift(int r, double& x, double& y);
 
 // Cascade geometry for a canvas (the raylib demo's formulas): cascade i has probes every spacing *
 // 2^i px, baseRays * 4^i directions at angles 2 pi (k + 0.5) / rays, and covers distances [base
@@ -40,6 +52,8 @@ struct RcCascade {
     int probesX, probesY;
     int rays;
     double intervalStart, intervalEnd;
+    // Probe (px, py) sits at ((px + 0.5) spacing + offsetX, (py + 0.5) spacing + offsetY).
+    double offsetX = 0, offsetY = 0;
 };
 std::vector<RcCascade> rcCascades(int width, int height, const RcOptions& options);
 

@@ -33,6 +33,9 @@ gpu::Dispatch makeCascadeDispatch(gpu::Program* program, gpu::Buffer* medium, gp
     p.intervalEnd = static_cast<float>(c.intervalEnd);
     p.upperIntervalStart = static_cast<float>(up.intervalStart);
     p.skyR = sky.r, p.skyG = sky.g, p.skyB = sky.b;
+    p.offsetX = static_cast<float>(c.offsetX), p.offsetY = static_cast<float>(c.offsetY);
+    p.upperOffsetX = static_cast<float>(up.offsetX),
+    p.upperOffsetY = static_cast<float>(up.offsetY);
     gpu::Dispatch d;
     d.name = "rc cascade " + std::to_string(i);
     d.program = program;

@@ -50,8 +50,8 @@ std::vector<Rgb> cascadePass(const Tracer& tracer, const std::vector<RcCascade>&
             const RaySegment seg = tracer.segment(start, p + dir * c.intervalEnd);
             return seg.radiance + seg.transmittance * sky;
         }
-        const shared::RcBilinear b =
-            shared::rcBilinearAt({p.x, p.y}, up->spacing, up->probesX, up->probesY);
+        const shared::RcBilinear b = shared::rcBilinearAt({p.x - up->offsetX, p.y - up->offsetY},
+                                                          up->spacing, up->probesX, up->probesY);
         if (merge == RcMerge::Vanilla) {
             bool leaves = false;
             const RaySegment seg = tracer.segment(start, p + dir * c.intervalEnd, &leaves);
@@ -74,7 +74,8 @@ std::vector<Rgb> cascadePass(const Tracer& tracer, const std::vector<RcCascade>&
         for (int a = 0; a < 2; ++a) {
             for (int bb = 0; bb < 2; ++bb) {
                 const int ux = shared::rcBilinearX(b, a), uy = shared::rcBilinearY(b, bb);
-                const Vec2d q = vec(shared::rcProbeCentre(ux, uy, up->spacing));
+                const Vec2d q = vec(shared::rcProbeCentre(ux, uy, up->spacing)) +
+                                Vec2d{up->offsetX, up->offsetY};
                 bool leaves = false;
                 const RaySegment seg = tracer.segment(start, q + dir * up->intervalStart, &leaves);
                 const Rgb beyond = leaves ? sky : upperValue(ux, uy, k);
@@ -88,7 +89,8 @@ std::vector<Rgb> cascadePass(const Tracer& tracer, const std::vector<RcCascade>&
     parallelForRange(c.probesX * c.probesY, 16, [&](int begin, int end) {
         for (int index = begin; index < end; ++index) {
             const int px = index % c.probesX, py = index / c.probesX;
-            const Vec2d p = vec(shared::rcProbeCentre(px, py, c.spacing));
+            const Vec2d p =
+                vec(shared::rcProbeCentre(px, py, c.spacing)) + Vec2d{c.offsetX, c.offsetY};
             for (int s = 0; s < stored; ++s) {
                 Rgb sum;
                 for (int k = s * group; k < (s + 1) * group; ++k) sum += mergedRay(p, k);

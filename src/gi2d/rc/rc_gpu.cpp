@@ -15,9 +15,11 @@
 
 namespace luxel::gi2d {
 
-Result<Image> solveRcOnGpu(gpu::Context& context, const Medium2D& medium, const RcOptions& options,
-                           std::vector<gpu::PassTiming>* timings) {
-    if (Status s = rc::validate(options); !s) return s.error();
+namespace {
+
+// One solve: options.jitters is 1 here (solveRcOnGpu averages over jitters).
+Result<Image> solveOnceOnGpu(gpu::Context& context, const Medium2D& medium,
+                             const RcOptions& options, std::vector<gpu::PassTiming>* timings) {
     const int w = medium.width(), h = medium.height();
     const std::vector<RcCascade> cascades = rcCascades(w, h, options);
     const int count = static_cast<int>(cascades.size());
@@ -82,6 +84,16 @@ Result<Image> solveRcOnGpu(gpu::Context& context, const Medium2D& medium, const 
         return s.error();
     }
     return rc::readOut(c, lowest, values, w, h, options.debugCascade >= 0);
+}
+
+}  // namespace
+
+Result<Image> solveRcOnGpu(gpu::Context& context, const Medium2D& medium, const RcOptions& options,
+                           std::vector<gpu::PassTiming>* timings) {
+    if (Status s = rc::validate(options); !s) return s.error();
+    return rc::averageJitters(options, [&](const RcOptions& one) {
+        return solveOnceOnGpu(context, medium, one, timings);
+    });
 }
 
 }  // namespace luxel::gi2d

@@ -29,6 +29,13 @@ Status validate(const RcOptions& o) {
     if (o.maxCascades < 0 || o.maxCascades > 16) {
         return Error("RC max cascades must be in 0..16, got " + std::to_string(o.maxCascades));
     }
+    if (!(o.jitterX >= 0.0 && o.jitterX < 1.0 && o.jitterY >= 0.0 && o.jitterY < 1.0)) {
+        return Error("RC probe jitter must be in [0, 1) of a probe spacing, got " +
+                     std::to_string(o.jitterX) + ", " + std::to_string(o.jitterY));
+    }
+    if (o.jitters < 1 || o.jitters > 256) {
+        return Error("RC jitters must be in 1..256, got " + std::to_string(o.jitters));
+    }
     return Ok{};
 }
 
@@ -92,8 +99,8 @@ Image readOut(const RcCascade& c, int level, const std::vector<Rgb>& upper, int 
                     out.setRgb(x, y, probeMean(px, py));
                     continue;
                 }
-                const gpu::shared::RcBilinear b =
-                    gpu::shared::rcBilinearAt({pixel.x, pixel.y}, c.spacing, c.probesX, c.probesY);
+                const gpu::shared::RcBilinear b = gpu::shared::rcBilinearAt(
+                    {pixel.x - c.offsetX, pixel.y - c.offsetY}, c.spacing, c.probesX, c.probesY);
                 Rgb value;
                 for (int a = 0; a < 2; ++a) {
                     for (int bb = 0; bb < 2; ++bb) {
@@ -110,6 +117,11 @@ Image readOut(const RcCascade& c, int level, const std::vector<Rgb>& upper, int 
 }
 
 }  // namespace rc
+
+void rcJitterShift(int r, double& x, double& y) {
+    x = std::fmod(0.5 + r * 0.7548776662466927, 1.0);
+    y = std::fmod(0.5 + r * 0.5698402909980532, 1.0);
+}
 
 std::vector<RcCascade> rcCascades(int width, int height, const RcOptions& options) {
     const double diagonal = std::hypot(width, height);
@@ -128,6 +140,15 @@ std::vector<RcCascade> rcCascades(int width, int height, const RcOptions& option
         c.rays = options.baseRays * static_cast<int>(scale);
         c.intervalStart = options.baseInterval * (scale - 1.0) / 3.0;
         c.intervalEnd = c.intervalStart + options.baseInterval * scale;
+        // Jitter shifts the grids above cascade 0 back by up to one spacing, with one probe more
+        // per row and column so they still cover the canvas. Cascade 0 stays on the pixels: its
+        // probes are read out directly, and shifting them would blur the image.
+        if (i > 0 && (options.jitterX != 0 || options.jitterY != 0)) {
+            c.probesX += 1;
+            c.probesY += 1;
+            c.offsetX = (options.jitterX - 1.0) * spacing;
+            c.offsetY = (options.jitterY - 1.0) * spacing;
+        }
         out.push_back(c);
     }
     return out;
@@ -135,24 +156,33 @@ std::vector<RcCascade> rcCascades(int width, int height, const RcOptions& option
 
 std::uint64_t estimateRcMemory(int width, int height, const RcOptions& options) {
     std::uint64_t largest = 0;
-    const std::vector<RcCascade> cascades = rcCascades(width, height, options);
+    RcOptions shifted = options;  // jittered grids have one probe more per row and column
+    if (options.jitters > 1) shifted.jitterX = shifted.jitterY = 0.5;
+    const std::vector<RcCascade> cascades = rcCascades(width, height, shifted);
     for (std::size_t i = 0; i < cascades.size(); ++i) {
         const RcCascade& c = cascades[i];
         largest = std::max<std::uint64_t>(largest,
                                           static_cast<std::uint64_t>(c.probesX) * c.probesY *
                                               storedPerProbe(c, static_cast<int>(i)) * sizeof(Rgb));
     }
-    return 2 * largest + imageBytes(width, height, 3);
+    // The output, and the running sum when several jittered solves are averaged.
+    const std::uint64_t images = options.jitters > 1 ? 2 : 1;
+    return 2 * largest + images * imageBytes(width, height, 3);
 }
 
 Result<Image> solveRc(const Medium2D& medium, const RcOptions& options) {
     if (Status s = validate(options); !s) return s.error();
     const RayMarcher marcher(medium);
-    return solveWith(marcher, medium.width(), medium.height(), medium.boundaryRadiance, options);
+    return rc::averageJitters(options, [&](const RcOptions& one) {
+        return solveWith(marcher, medium.width(), medium.height(), medium.boundaryRadiance, one);
+    });
 }
 
 Result<Image> solveRc(const SdfScene& scene, Rgb boundaryRadiance, const RcOptions& options) {
-    return solveWith(scene, scene.width(), scene.height(), boundaryRadiance, options);
+    if (Status s = validate(options); !s) return s.error();
+    return rc::averageJitters(options, [&](const RcOptions& one) {
+        return solveWith(scene, scene.width(), scene.height(), boundaryRadiance, one);
+    });
 }
 
 }  // namespace luxel::gi2d

@@ -74,8 +74,9 @@ vec3 mergedRay(vec2 p, int k) {
         const Segment seg = traceSegment(start, p + dir * params.intervalEnd);
         return seg.radiance + seg.transmittance * sky();
     }
-    const RcBilinear f = rcBilinearAt(p, params.upperSpacing, int(params.upperProbesX),
-                                      int(params.upperProbesY));
+    const vec2 upperOffset = vec2(params.upperOffsetX, params.upperOffsetY);
+    const RcBilinear f = rcBilinearAt(p - upperOffset, params.upperSpacing,
+                                      int(params.upperProbesX), int(params.upperProbesY));
     if (params.bilinearFix == 0u) {
         const Segment seg = traceSegment(start, p + dir * params.intervalEnd);
         vec3 beyond = sky();
@@ -92,7 +93,7 @@ vec3 mergedRay(vec2 p, int k) {
     for (int a = 0; a < 2; ++a) {
         for (int b = 0; b < 2; ++b) {
             const int ux = rcBilinearX(f, a), uy = rcBilinearY(f, b);
-            const vec2 q = rcProbeCentre(ux, uy, params.upperSpacing);
+            const vec2 q = rcProbeCentre(ux, uy, params.upperSpacing) + upperOffset;
             const Segment seg = traceSegment(start, q + dir * params.upperIntervalStart);
             const vec3 beyond = seg.leaves ? sky() : upperValue(ux, uy, k);
             sum += (seg.radiance + seg.transmittance * beyond) * rcBilinearWeight(f, a, b);
@@ -109,7 +110,8 @@ void main() {
     if (index >= total) return;
     const uint probe = index / params.stored, s = index % params.stored;
     const uint px = probe % params.probesX, py = probe / params.probesX;
-    const vec2 p = rcProbeCentre(int(px), int(py), params.spacing);
+    const vec2 p = rcProbeCentre(int(px), int(py), params.spacing) +
+                   vec2(params.offsetX, params.offsetY);
     const uint group = uint(rcGroup(int(params.rays), int(params.stored)));
     vec3 sum = vec3(0.0);
     for (uint k = s * group; k < (s + 1u) * group; ++k) sum += mergedRay(p, int(k));

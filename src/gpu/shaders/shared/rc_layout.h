@@ -35,11 +35,15 @@ struct RcCascadeParams {
     float intervalEnd;
     float upperIntervalStart;
     float skyR, skyG, skyB;
+    // Probe grid offsets of this cascade and the one above (RcCascade::offsetX/Y; probe jitter).
+    float offsetX, offsetY;
+    float upperOffsetX, upperOffsetY;
     uint pad0;
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(RcCascadeParams) == 80);
+static_assert(sizeof(RcCascadeParams) == 96);
+static_assert(offsetof(RcCascadeParams, offsetX) == 76);
 static_assert(offsetof(RcCascadeParams, spacing) == 44);
 static_assert(offsetof(RcCascadeParams, skyR) == 64);
 }  // namespace luxel::gpu::shared
