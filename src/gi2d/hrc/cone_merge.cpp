@@ -29,6 +29,11 @@ void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb s
         if (upper != nullptr && upper->inRange(p, y)) return toVec3(upper->at(p, j, y));
         return toVec3(sky * weight[j]);
     };
+    // Cascade 0: the mean of row y and row y + second (§5.1); above it, row y alone.
+    auto upperRows = [&](int p, int y, int second, int j) -> gpu::shared::vec3 {
+        if (n != 0) return upperFluence(p, y, j);
+        return (upperFluence(p, y, j) + upperFluence(p, y + second, j)) * 0.5f;
+    };
     parallelForRange(out.planes() * cones, 1, [&](int begin, int end) {
         // Per-thread scratch: the two rays' table rows here and on the next plane.
         thread_local DecodedRow here[2], next[2];
@@ -43,17 +48,18 @@ void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb s
                 gpu::shared::vec3 sum(0.0f);
                 for (int s = 0; s < 2; ++s) {
                     const int k = i + s, j = 2 * i + s, dy = gpu::shared::hrcRayOffsetY(n, k);
+                    const int axis = gpu::shared::hrcTowardsAxis(s);
                     const float w = weight[j];
                     if (odd) {
                         // The ray ends exactly on upper plane (p + 1) / 2 (Eq 14).
                         sum += gpu::shared::hrcMergeOdd(here[s].at(y), w,
-                                                        upperFluence((p + 1) / 2, y + dy, j));
+                                                        upperRows((p + 1) / 2, y + dy, axis, j));
                     } else {
                         // Upper plane p / 2 is here: merge near, and far with a double-length
                         // ray to upper plane p / 2 + 1, then average (Eq 15-17).
-                        sum += gpu::shared::hrcMergeEven(upperFluence(p / 2, y, j),
+                        sum += gpu::shared::hrcMergeEven(upperRows(p / 2, y, dy, j),
                                                          over(here[s].at(y), next[s].at(y + dy)), w,
-                                                         upperFluence(p / 2 + 1, y + 2 * dy, j));
+                                                         upperRows(p / 2 + 1, y + 2 * dy, axis, j));
                     }
                 }
                 out.at(p, i, y) = toRgb(sum);

@@ -86,9 +86,10 @@ TEST(HrcHardCases, NoStarAroundASmallBrightDisk) {
     }
     const double rmseOfMean = std::sqrt(sq / count) / (sum / count);
     std::printf("bright disk: RMSE over the annulus %.2f%% of its mean\n", 100 * rmseOfMean);
-    // Measured 12.4%: the star is the method's (docs/algorithms/holographic-radiance-cascades.md
-    // §12.2); the bound catches it getting worse. The goal of 2% is not met.
-    EXPECT_LT(rmseOfMean, 0.15);
+    // Measured 9.3% (12.4% before cascade 0 read two rows, §5.1 of
+    // docs/algorithms/holographic-radiance-cascades.md); the rest of the star is §12.2's. The bound
+    // catches it getting worse; the goal of 2% is not met.
+    EXPECT_LT(rmseOfMean, 0.11);
 }
 
 // A static lamp lights a room; a small second light behind a wall moves by 0.5 and 1 px. Where

@@ -30,6 +30,12 @@ vec3 upperAt(int p, int y, int j) {
     return texelRgb(upper[(uint(p) * upperCones + uint(j)) * params.rows + uint(y)]);
 }
 
+// Cascade 0: the mean of row y and row y + second (§5.1); above it, row y alone.
+vec3 upperRows(int p, int y, int second, int j) {
+    if (params.level != 0u) return upperAt(p, y, j);
+    return (upperAt(p, y, j) + upperAt(p, y + second, j)) * 0.5;
+}
+
 void main() {
     const uint y = gl_GlobalInvocationID.x, i = gl_GlobalInvocationID.y;
     const uint p = gl_GlobalInvocationID.z;
@@ -39,13 +45,14 @@ void main() {
     for (int s = 0; s < 2; ++s) {
         const int k = int(i) + s, j = 2 * int(i) + s;
         const int dy = hrcRayOffsetY(int(params.level), k);
+        const int axis = hrcTowardsAxis(s);
         const float w = weight[j];
         if ((p & 1u) == 1u) {  // the ray ends on upper plane (p + 1) / 2 (Eq 14)
-            sum += hrcMergeOdd(tableAt(ip, iy, k), w, upperAt((ip + 1) / 2, iy + dy, j));
+            sum += hrcMergeOdd(tableAt(ip, iy, k), w, upperRows((ip + 1) / 2, iy + dy, axis, j));
         } else {  // near and far merged, then averaged (Eq 15-17)
-            sum += hrcMergeEven(upperAt(ip / 2, iy, j),
+            sum += hrcMergeEven(upperRows(ip / 2, iy, dy, j),
                                 hrcOver(tableAt(ip, iy, k), tableAt(ip + 1, iy + dy, k)), w,
-                                upperAt(ip / 2 + 1, iy + 2 * dy, j));
+                                upperRows(ip / 2 + 1, iy + 2 * dy, axis, j));
         }
     }
     cones[(p * (1u << params.level) + i) * params.rows + y] = rgbTexel(sum);

@@ -65,6 +65,13 @@ LUXEL_FUNC vec3 hrcMergeEven(vec3 upperNear, HrcInterval doubleRay, float weight
     return (upperNear + far) * 0.5f;
 }
 
+// Cascade 0 reads every upper cone as the mean of two neighbouring rows (§5.1): the row Eq 14-17
+// name and, for side s, the row one step towards the frustum axis (odd planes, and the far probe
+// of even planes) or one step along the side's ray (the near probe of even planes).
+LUXEL_FUNC int hrcTowardsAxis(int side) {
+    return side == 0 ? 1 : -1;
+}
+
 // The first plane of cascade `level` at or beyond u + 1: the read-out plane one pixel ahead.
 LUXEL_FUNC int hrcReadoutPlane(int u, int level) {
     return (u + 1 + (1 << level) - 1) >> level;
