@@ -29,10 +29,12 @@ void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb s
         if (upper != nullptr && upper->inRange(p, y)) return toVec3(upper->at(p, j, y));
         return toVec3(sky * weight[j]);
     };
-    // Cascade 0: the mean of row y and row y + second (§5.1); above it, row y alone.
+    // Row y blended with row y + second (§5.1); row y alone from cascade 2 up.
+    const float secondWeight = gpu::shared::hrcSecondRowWeight(n);
     auto upperRows = [&](int p, int y, int second, int j) -> gpu::shared::vec3 {
-        if (n != 0) return upperFluence(p, y, j);
-        return (upperFluence(p, y, j) + upperFluence(p, y + second, j)) * 0.5f;
+        if (secondWeight == 0.0f) return upperFluence(p, y, j);
+        return upperFluence(p, y, j) * (1.0f - secondWeight) +
+               upperFluence(p, y + second, j) * secondWeight;
     };
     parallelForRange(out.planes() * cones, 1, [&](int begin, int end) {
         // Per-thread scratch: the two rays' table rows here and on the next plane.

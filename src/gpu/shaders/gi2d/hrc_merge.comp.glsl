@@ -30,10 +30,11 @@ vec3 upperAt(int p, int y, int j) {
     return texelRgb(upper[(uint(p) * upperCones + uint(j)) * params.rows + uint(y)]);
 }
 
-// Cascade 0: the mean of row y and row y + second (§5.1); above it, row y alone.
+// Row y blended with row y + second (§5.1); row y alone from cascade 2 up.
 vec3 upperRows(int p, int y, int second, int j) {
-    if (params.level != 0u) return upperAt(p, y, j);
-    return (upperAt(p, y, j) + upperAt(p, y + second, j)) * 0.5;
+    const float a = hrcSecondRowWeight(int(params.level));
+    if (a == 0.0) return upperAt(p, y, j);
+    return upperAt(p, y, j) * (1.0 - a) + upperAt(p, y + second, j) * a;
 }
 
 void main() {

@@ -65,11 +65,16 @@ LUXEL_FUNC vec3 hrcMergeEven(vec3 upperNear, HrcInterval doubleRay, float weight
     return (upperNear + far) * 0.5f;
 }
 
-// Cascade 0 reads every upper cone as the mean of two neighbouring rows (§5.1): the row Eq 14-17
-// name and, for side s, the row one step towards the frustum axis (odd planes, and the far probe
-// of even planes) or one step along the side's ray (the near probe of even planes).
+// Cascades 0 and 1 read every upper cone as a blend of two neighbouring rows (§5.1): the row
+// Eq 14-17 name and, for side s, the row one step towards the frustum axis (odd planes, and the
+// far probe of even planes) or along the side's ray (the near probe of even planes).
 LUXEL_FUNC int hrcTowardsAxis(int side) {
     return side == 0 ? 1 : -1;
+}
+
+// The second row's weight: 1/2 at cascade 0, 1/4 at cascade 1, none above (chosen by measurement).
+LUXEL_FUNC float hrcSecondRowWeight(int level) {
+    return level == 0 ? 0.5f : (level == 1 ? 0.25f : 0.0f);
 }
 
 // The first plane of cascade `level` at or beyond u + 1: the read-out plane one pixel ahead.
