@@ -35,9 +35,9 @@ Window windowAround(const Geometry& geometry, const PixelScale& scale) {
     return {x0, y0, x1 - x0, y1 - y0};
 }
 
-// The shape alone rasterised into the window by the rules of docs/algorithms/pixel-medium.md §1,
-// §5: a pixel of coverage c transmits 1 - c (1 - t) and emits E there (L / A = E for one shape over
-// vacuum).
+// The shape alone rasterised into the window by the rule of docs/algorithms/pixel-medium.md §1
+// (emitters get no §5 gain): a pixel of coverage c transmits 1 - c (1 - t) and emits E there
+// (L / A = E for one shape over vacuum).
 Medium2D rasterAlone(const Geometry& geometry, Rgb emission, Rgb sigma, const PixelScale& scale,
                      int supersample, const Window& w) {
     Medium2D m{Image(w.width, w.height, 3), Image(w.width, w.height, 3), Rgb()};
@@ -110,8 +110,9 @@ Rgb exactRadiance(const Geometry& geometry, Rgb emission, Rgb sigma, const Pixel
 }
 
 // The shape's thickness in output pixels: exact for circles, boxes and capsules; for polygons twice
-// the largest depth inside over 4 x 4 points per window pixel. It must not depend on where the
-// shape lies on the pixel grid, or the factor would change as a shape moves.
+// the largest depth inside over 4 x 4 points per window pixel, or the first value found at or above
+// kNoPowerThickness (thicker gets no factor either way). It must not depend on where the shape lies
+// on the pixel grid, or the factor would change as a shape moves.
 double shapeThickness(const Geometry& geometry, const PixelScale& scale, const Window& w) {
     const double toOutput = std::min(scale.sx, scale.sy);
     if (const auto* c = std::get_if<Circle>(&geometry)) return 2 * c->radius * toOutput;
@@ -123,6 +124,7 @@ double shapeThickness(const Geometry& geometry, const PixelScale& scale, const W
         for (int x = 0; x < 4 * w.width; ++x) {
             const Vec2d p = scale.toScene(w.x0 + (x + 0.5) / 4, w.y0 + (y + 0.5) / 4);
             deepest = std::max(deepest, -signedDistance(geometry, p) * toOutput);
+            if (2 * deepest >= kNoPowerThickness) return 2 * deepest;
         }
     }
     return 2 * deepest;

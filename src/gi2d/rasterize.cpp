@@ -46,10 +46,8 @@ struct Canvas {
     Image& opacity;   // A, stored in the absorption image while drawing
     Image& radiance;  // L, stored in the emission image while drawing
     int width, height;
-    double sx, sy;  // output pixels per scene pixel
+    detail::PixelScale scale;  // output pixels per scene pixel
     double meanScale;
-
-    Vec2d toScene(double px, double py) const { return {px / sx, py / sy}; }
 };
 
 // Blends coverage c of (opacity, radiance) into pixel (x, y).
@@ -70,14 +68,15 @@ PixelRange pixelRange(const Canvas& canvas, const detail::Bounds& b) {
     auto clampTo = [](double v, int hi) {
         return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(hi)));
     };
-    return {clampTo(std::floor(b.x0 * canvas.sx) - 1, canvas.width),
-            clampTo(std::floor(b.y0 * canvas.sy) - 1, canvas.height),
-            clampTo(std::ceil(b.x1 * canvas.sx) + 1, canvas.width),
-            clampTo(std::ceil(b.y1 * canvas.sy) + 1, canvas.height)};
+    const detail::PixelScale& s = canvas.scale;
+    return {clampTo(std::floor(b.x0 * s.sx) - 1, canvas.width),
+            clampTo(std::floor(b.y0 * s.sy) - 1, canvas.height),
+            clampTo(std::ceil(b.x1 * s.sx) + 1, canvas.width),
+            clampTo(std::ceil(b.y1 * s.sy) + 1, canvas.height)};
 }
 
 void drawAnalyticShape(Canvas& canvas, const Shape& shape, const RasterOptions& options) {
-    const detail::PixelScale scale{canvas.sx, canvas.sy};
+    const detail::PixelScale& scale = canvas.scale;
     Rgb emission = shape.material.scaledEmission();
     if (options.conserveEmitterPower) {
         Rgb sigma;
@@ -155,7 +154,7 @@ void drawImageLayer(Canvas& canvas, const Shape& shape, int supersample) {
                 Rgb opacity, radiance;
                 for (int j = 0; j < n; ++j) {
                     for (int i = 0; i < n; ++i) {
-                        const Vec2d p = canvas.toScene(x + (i + 0.5) / n, y + (j + 0.5) / n);
+                        const Vec2d p = canvas.scale.toScene(x + (i + 0.5) / n, y + (j + 0.5) / n);
                         const LayerSample s = sampleLayer(layer, shape.material.intensity, p);
                         if (s.coverage <= 0.0f) continue;
                         const PixelMaterial m =
@@ -199,7 +198,8 @@ Result<Medium2D> rasterize(const Scene2D& scene, const RasterOptions& options) {
     Medium2D medium{Image(width, height, 3), Image(width, height, 3), scene.boundaryRadiance};
     const double sx = static_cast<double>(width) / scene.width;
     const double sy = static_cast<double>(height) / scene.height;
-    Canvas canvas{medium.absorption, medium.emission, width, height, sx, sy, std::sqrt(sx * sy)};
+    Canvas canvas{medium.absorption,          medium.emission,   width, height,
+                  detail::PixelScale(sx, sy), std::sqrt(sx * sy)};
 
     const PixelMaterial background =
         pixelMaterial(scene.background.emission, scene.background.absorption, canvas.meanScale);

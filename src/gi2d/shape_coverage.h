@@ -11,21 +11,23 @@ namespace luxel::gi2d::detail {
 
 // Output pixels per scene pixel along each axis.
 struct PixelScale {
-    double sx = 1, sy = 1;
+    PixelScale() = default;
+    PixelScale(double x, double y)
+        : sx(x), sy(y), halfDiagonal(0.5 * std::hypot(1.0 / x, 1.0 / y)) {}
 
     Vec2d toScene(double px, double py) const { return {px / sx, py / sy}; }
+
+    double sx = 1, sy = 1;
     // Half the pixel diagonal in scene units: farther than this from an edge, coverage is 0 or 1.
-    double halfDiagonal() const { return 0.5 * std::hypot(1.0 / sx, 1.0 / sy); }
-    double meanScale() const { return std::sqrt(sx * sy); }
+    double halfDiagonal = 0.5 * std::sqrt(2.0);
 };
 
 // Fraction of output pixel (x, y) inside `geometry`: exact 0 or 1 away from edges (distance field),
 // n x n samples near them.
 inline float pixelCoverage(const Geometry& geometry, const PixelScale& scale, int x, int y, int n) {
-    const double halfDiagonal = scale.halfDiagonal();
     const double d = signedDistance(geometry, scale.toScene(x + 0.5, y + 0.5));
-    if (d > halfDiagonal) return 0.0f;
-    if (d < -halfDiagonal) return 1.0f;
+    if (d > scale.halfDiagonal) return 0.0f;
+    if (d < -scale.halfDiagonal) return 1.0f;
     int inside = 0;
     for (int j = 0; j < n; ++j) {
         for (int i = 0; i < n; ++i) {

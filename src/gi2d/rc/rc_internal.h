@@ -1,7 +1,6 @@
 // Pieces of the RC solver shared by the CPU and GPU paths.
 #pragma once
 
-#include <cmath>
 #include <utility>
 #include <vector>
 
