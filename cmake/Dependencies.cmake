@@ -5,6 +5,8 @@ find_package(nlohmann_json 3.10 REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(PNG REQUIRED)
 find_package(OpenEXR 3 REQUIRED)
+# Highway: portable SIMD with run-time dispatch to the best target the CPU has.
+find_package(hwy REQUIRED)
 # Vulkan headers (Vulkan-Hpp) and glslc: the GPU backend. The loader is opened at run time.
 find_package(Vulkan REQUIRED)
 find_program(GLSLC_EXECUTABLE NAMES glslc REQUIRED)
