@@ -1,6 +1,10 @@
 // Thread-count control for the oneTBB loops.
 #include "luxel/core/parallel.h"
 
+#include <algorithm>
+
+#include "luxel/core/thread_team.h"
+
 #include <thread>
 
 namespace luxel {
@@ -15,6 +19,12 @@ ThreadLimit::ThreadLimit(int threads) {
 int hardwareThreads() {
     const unsigned n = std::thread::hardware_concurrency();
     return n == 0 ? 1 : static_cast<int>(n);
+}
+
+int ThreadTeam::defaultSize() {
+    const auto allowed = static_cast<int>(
+        tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+    return std::max(1, std::min(allowed, hardwareThreads()));
 }
 
 }  // namespace luxel

@@ -21,6 +21,15 @@ inline int floorToInt(double x) {
     return i - (x < i ? 1 : 0);
 }
 
+// The cell recomputed from an exit point, never behind the current one: at a corner, rounding can
+// put the point just behind a border the ray has already crossed, and stepping back there would
+// bounce between two cells forever.
+inline int forwardOnly(int current, int recomputed, double direction) {
+    if (direction > 0) return std::max(current, recomputed);
+    if (direction < 0) return std::min(current, recomputed);
+    return recomputed;
+}
+
 // Bitwise hash of the six floats of a material.
 struct MaterialBits {
     std::uint32_t words[6];
@@ -210,15 +219,15 @@ RaySegment RayMarcher::marchImpl(Vec2d origin, Vec2d direction, double maxDistan
             cx = direction.x > 0 ? bx0 + size : bx0 - 1;
         } else {
             const double x = origin.x + t * direction.x;
-            cx = floorToInt(x);
-            if (direction.x < 0 && x == cx) --cx;
+            cx = forwardOnly(cx, floorToInt(x) - (direction.x < 0 && x == floorToInt(x) ? 1 : 0),
+                             direction.x);
         }
         if (stepY) {
             cy = direction.y > 0 ? by0 + size : by0 - 1;
         } else {
             const double y = origin.y + t * direction.y;
-            cy = floorToInt(y);
-            if (direction.y < 0 && y == cy) --cy;
+            cy = forwardOnly(cy, floorToInt(y) - (direction.y < 0 && y == floorToInt(y) ? 1 : 0),
+                             direction.y);
         }
         if (cx < 0 || cy < 0 || cx >= width_ || cy >= height_) {
             leftCanvas = true;

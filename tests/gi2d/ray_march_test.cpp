@@ -76,6 +76,18 @@ TEST(RayMarch, RayAlongACellBorderSeesTheCellsItTouches) {
     EXPECT_EQ(out.transmittance, Rgb(1.0f));
 }
 
+TEST(RayMarch, ARayThroughABlockCornerKeepsGoing) {
+    // The ray reaches the corner (12, 3) where rounding puts x just below 12 and y just above 3;
+    // the DDA once stepped back and forth between (12, 3) and the vacuum block left of it forever.
+    Medium2D m = uniformMedium(50, 70, Rgb(), Rgb());
+    m.absorption.setRgb(12, 3, {1.0f, 1.0f, 1.0f});
+    const RayMarcher marcher(m);
+    const double len = std::hypot(16.0, 6.0);
+    const RaySegment s = marcher.march({0.0, 7.5}, {16.0 / len, -6.0 / len}, len, 0.0f);
+    // The ray touches (12, 3) only at its corner, and leaves through the bottom edge.
+    EXPECT_FLOAT_EQ(s.transmittance.r, 1.0f);
+}
+
 TEST(RayMarch, BoundaryRadianceArrivesThroughTheMedium) {
     Medium2D m = uniformMedium(20, 10, Rgb(0.0f), Rgb(0.1f));
     m.boundaryRadiance = Rgb(3.0f);

@@ -1,9 +1,12 @@
 // `luxel bench`: HRC frame times over canvas sizes, on the CPU or the GPU, with the GPU passes
 // (timestamp queries) summed by kind. Voxel scenes go to bench_voxel.cpp.
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <map>
 #include <memory>
 #include <sstream>
+#include <vector>
 
 #include "commands/command.h"
 #include "luxel/core/image_size.h"
@@ -25,6 +28,19 @@ struct BenchArgs {
 // "merge R3 f0" -> "merge"
 std::string passKind(const std::string& name) {
     return name.substr(0, name.find(' '));
+}
+
+// memcpy bandwidth (read + write bytes per second) of one thread over 256 MiB, best of 3.
+double measureCopyBandwidth() {
+    const std::size_t bytes = std::size_t{128} << 20;
+    std::vector<char> from(bytes, 1), to(bytes, 0);
+    double best = 1e300;
+    for (int r = 0; r < 3; ++r) {
+        Stopwatch clock;
+        std::memcpy(to.data(), from.data(), bytes);
+        best = std::min(best, clock.milliseconds());
+    }
+    return 2.0 * static_cast<double>(bytes) / best * 1e-6;
 }
 
 int runBench(const BenchArgs& args) {
@@ -55,10 +71,12 @@ int runBench(const BenchArgs& args) {
                 args.repeat);
     std::printf("%9s %10s %9s", "size", "ms", "Mpix/s");
     const char* kinds[] = {"trace", "extend", "merge", "readout", "finish", "upload", "download"};
-    if (context) {
-        for (const char* k : kinds) std::printf(" %9s", k);
-    }
+    const int kindCount = context ? 7 : 5;
+    for (int k = 0; k < kindCount; ++k) std::printf(" %9s", kinds[k]);
+    if (!context) std::printf(" %9s", "GB/s");
     std::printf("\n");
+    // The CPU's copy bandwidth, next to which the passes' bytes per second can be read.
+    const double copyGbps = context ? 0.0 : measureCopyBandwidth();
     for (const ImageSize& size : *sizes) {
         const int w = size.width, h = size.height;
         sized->width = w;
@@ -75,11 +93,13 @@ int runBench(const BenchArgs& args) {
         if (!medium) return reportError(medium.error());
         double best = 1e300;
         std::map<std::string, double> bestPasses;
+        std::uint64_t bestBytes = 0;
         for (int r = 0; r < args.repeat + (context ? 1 : 0); ++r) {  // GPU: one warm-up run
             std::vector<gpu::PassTiming> timings;
+            std::vector<gi2d::HrcCpuPass> cpuPasses;
             Stopwatch clock;
             auto result = context ? gi2d::solveHrcOnGpu(*context, *medium, {}, &timings)
-                                  : gi2d::solveHrc(*medium);
+                                  : gi2d::solveHrc(*medium, {}, &cpuPasses);
             const double ms = clock.milliseconds();
             if (!result) {
                 std::printf("%9s failed: %s\n", label.c_str(), result.error().message().c_str());
@@ -91,20 +111,31 @@ int runBench(const BenchArgs& args) {
                 bestPasses.clear();
                 for (const gpu::PassTiming& t : timings)
                     bestPasses[passKind(t.name)] += t.milliseconds;
+                bestBytes = 0;
+                for (const gi2d::HrcCpuPass& p : cpuPasses) {
+                    bestPasses[p.name] += p.milliseconds;
+                    bestBytes += p.bytes;
+                }
             }
         }
         if (best == 1e300) continue;
         std::printf("%9s %10.2f %9.2f", label.c_str(), best,
                     static_cast<double>(w) * h / best * 1e-3);
-        if (context) {
-            for (const char* k : kinds) std::printf(" %9.2f", bestPasses[k]);
-        }
+        for (int k = 0; k < kindCount; ++k) std::printf(" %9.2f", bestPasses[kinds[k]]);
+        if (!context) std::printf(" %9.2f", static_cast<double>(bestBytes) / best * 1e-6);
         std::printf("\n");
     }
     if (context) {
         std::printf(
             "pass columns: GPU time (timestamps) summed over the 4 frustums; upload and "
             "download are CPU-side copies\n");
+    } else {
+        std::printf(
+            "pass columns: wall ms on the calling thread summed over the 4 frustums (waits for "
+            "the other threads included); GB/s: bytes of intervals, cones, medium and images "
+            "the passes read and write, per second of the whole solve; memcpy on this machine: "
+            "%.1f GB/s (one thread, 256 MiB)\n",
+            copyGbps);
     }
     return 0;
 }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "luxel/core/error.h"
@@ -31,12 +32,14 @@ struct HrcOptions {
     std::function<void(int done, int total)> onProgress;
 };
 
+// The CPU solver sweeps each frustum from its far end and keeps two planes per cascade
+// (docs/algorithms/holographic-radiance-cascades.md §7.1).
 struct HrcMemory {
-    std::uint64_t rayTables = 0;    // T_0 .. T_{N_c - 1}, binary16, reused by the 4 frustums
-    std::uint64_t coneBuffers = 0;  // two R ping-pong buffers, float RGB
-    std::uint64_t frame = 0;        // the rotated medium and its ray marcher
-    std::uint64_t output = 0;       // fluence accumulator
-    std::uint64_t total() const { return rayTables + coneBuffers + frame + output; }
+    std::uint64_t rayIntervals = 0;   // two planes of intervals per cascade, binary16
+    std::uint64_t cones = 0;          // two planes of merged cones per cascade, float RGB
+    std::uint64_t mediumColumns = 0;  // the columns the traced cascades read
+    std::uint64_t output = 0;         // the fluence, accumulated and finished in place
+    std::uint64_t total() const { return rayIntervals + cones + mediumColumns + output; }
 };
 
 // Memory solveHrc needs for a canvas of this size (the input medium not counted).
@@ -45,9 +48,20 @@ HrcMemory estimateHrcMemory(int width, int height);
 // Number of cascades used for a canvas of this size.
 int hrcCascadeCount(int width, int height);
 
+// One pass of the CPU solver: wall milliseconds on the calling thread (waits for the other
+// threads included, so the passes add up to the solve) and the bytes of ray intervals, cones and
+// medium it reads and writes.
+struct HrcCpuPass {
+    std::string name;
+    double milliseconds = 0;
+    std::uint64_t bytes = 0;
+};
+
 // Fails with a clear message when the memory estimate exceeds the available memory, or for bad
-// options.
-Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options = {});
+// options. `passes`, when given, receives the time of each pass (trace, extend, merge, readout,
+// finish) summed over the frustums.
+Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options = {},
+                       std::vector<HrcCpuPass>* passes = nullptr);
 
 // The same on the GPU (Vulkan compute): the medium is rotated on the CPU and uploaded per frustum;
 // trace, extend, merge, read-out and finish run as named dispatches whose GPU times are appended

@@ -1,6 +1,10 @@
 #include "gi2d/hrc/finish.h"
 
+#include <algorithm>
+#include <vector>
+
 #include "gpu/shaders/shared/hrc_kernels.h"
+#include "luxel/core/check.h"
 #include "luxel/core/parallel.h"
 
 namespace luxel::gi2d::hrc {
@@ -8,42 +12,102 @@ namespace {
 
 namespace shared = gpu::shared;
 
-shared::vec3 toVec(Rgb c) {
-    return {c.r, c.g, c.b};
+constexpr int kBandRows = 16;
+
+shared::vec3 vec3At(const float* p) {
+    return {p[0], p[1], p[2]};
+}
+
+// The blur's gate per pixel of row y (paper Eq 21).
+void opacityRow(const Medium2D& medium, int y, std::vector<float>& out) {
+    const int w = medium.width();
+    out.resize(static_cast<std::size_t>(w));
+    const float* sigma = medium.absorption.data() + static_cast<std::size_t>(y) * w * 3;
+    for (int x = 0; x < w; ++x) out[x] = shared::hrcOpacity(vec3At(sigma + 3 * x));
 }
 
 }  // namespace
 
-Image finishFluence(const Medium2D& medium, const Image& beyond, int frustums, bool blur) {
-    const int w = beyond.width(), h = beyond.height();
-    auto opacity = [&](int x, int y) {
-        return shared::hrcOpacity(toVec(medium.absorption.rgb(x, y)));
-    };
-    Image out(w, h, 3);
-    parallelForRange(h, 8, [&](int begin, int end) {
-        for (int y = begin; y < end; ++y) {
-            for (int x = 0; x < w; ++x) {
-                Rgb arriving = beyond.rgb(x, y);
-                if (blur) {
-                    const float centre = opacity(x, y);
-                    Rgb sum = arriving * 4.0f;
-                    float weight = 4.0f;
-                    const int nx[4] = {x - 1, x + 1, x, x}, ny[4] = {y, y, y - 1, y + 1};
-                    for (int t = 0; t < 4; ++t) {
-                        if (!beyond.inside(nx[t], ny[t])) continue;
-                        if (!shared::hrcBlurTakes(centre, opacity(nx[t], ny[t]))) continue;
-                        sum += beyond.rgb(nx[t], ny[t]);
-                        weight += 1.0f;
-                    }
-                    arriving = sum * (1.0f / weight);
+void finishFluenceInPlace(const Medium2D& medium, Image& fluence, int frustums, bool blur) {
+    const int w = fluence.width(), h = fluence.height();
+    LUXEL_CHECK(fluence.channels() == 3 && medium.absorption.channels() == 3 &&
+                medium.emission.channels() == 3);
+    const std::size_t rowFloats = static_cast<std::size_t>(w) * 3;
+    float* data = fluence.data();
+    auto row = [&](int y) { return data + static_cast<std::size_t>(y) * rowFloats; };
+    // Each band overwrites its rows in order and keeps the original of the row above; the rows
+    // just outside a band belong to its neighbours, so they are copied before any band starts.
+    const int bands = (h + kBandRows - 1) / kBandRows;
+    std::vector<float> above(static_cast<std::size_t>(bands) * rowFloats),
+        below(static_cast<std::size_t>(bands) * rowFloats);
+    if (blur) {
+        for (int b = 0; b < bands; ++b) {
+            const int y0 = b * kBandRows, y1 = std::min(h, y0 + kBandRows);
+            if (y0 > 0) std::copy_n(row(y0 - 1), rowFloats, &above[b * rowFloats]);
+            if (y1 < h) std::copy_n(row(y1), rowFloats, &below[b * rowFloats]);
+        }
+    }
+    parallelForRange(bands, 1, [&](int begin, int end) {
+        std::vector<float> previous(rowFloats), current(rowFloats);
+        std::vector<float> opacityAbove, opacityHere, opacityBelow;
+        for (int b = begin; b < end; ++b) {
+            const int y0 = b * kBandRows, y1 = std::min(h, y0 + kBandRows);
+            if (blur) {
+                if (y0 > 0) {
+                    std::copy_n(&above[b * rowFloats], rowFloats, previous.data());
+                    opacityRow(medium, y0 - 1, opacityAbove);
                 }
-                const shared::vec3 f = shared::hrcFinishPixel(
-                    toVec(medium.absorption.rgb(x, y)), toVec(medium.emission.rgb(x, y)),
-                    toVec(arriving), static_cast<float>(frustums));
-                out.setRgb(x, y, {f.x, f.y, f.z});
+                opacityRow(medium, y0, opacityHere);
+            }
+            for (int y = y0; y < y1; ++y) {
+                std::copy_n(row(y), rowFloats, current.data());
+                const float* next = nullptr;
+                if (blur && y + 1 < h) {
+                    next = y + 1 < y1 ? row(y + 1) : &below[b * rowFloats];
+                    opacityRow(medium, y + 1, opacityBelow);
+                }
+                const float* sigma =
+                    medium.absorption.data() + static_cast<std::size_t>(y) * rowFloats;
+                const float* emission =
+                    medium.emission.data() + static_cast<std::size_t>(y) * rowFloats;
+                float* out = row(y);
+                for (int x = 0; x < w; ++x) {
+                    const std::size_t i = static_cast<std::size_t>(x) * 3;
+                    shared::vec3 arriving = vec3At(&current[i]);
+                    if (blur) {
+                        // Centre weight 4, neighbours 1 where the opacity gate lets them in.
+                        const float centre = opacityHere[x];
+                        shared::vec3 sum = arriving * 4.0f;
+                        float weight = 4.0f;
+                        auto take = [&](const float* pixel, float opacity) {
+                            if (!shared::hrcBlurTakes(centre, opacity)) return;
+                            sum += vec3At(pixel);
+                            weight += 1.0f;
+                        };
+                        if (x > 0) take(&current[i - 3], opacityHere[x - 1]);
+                        if (x + 1 < w) take(&current[i + 3], opacityHere[x + 1]);
+                        if (y > 0) take(&previous[i], opacityAbove[x]);
+                        if (next != nullptr) take(next + i, opacityBelow[x]);
+                        arriving = sum * (1.0f / weight);
+                    }
+                    const shared::vec3 f =
+                        shared::hrcFinishPixel(vec3At(sigma + i), vec3At(emission + i), arriving,
+                                               static_cast<float>(frustums));
+                    out[i] = f.x, out[i + 1] = f.y, out[i + 2] = f.z;
+                }
+                if (blur) {
+                    previous.swap(current);
+                    opacityAbove.swap(opacityHere);
+                    opacityHere.swap(opacityBelow);
+                }
             }
         }
     });
+}
+
+Image finishFluence(const Medium2D& medium, const Image& beyond, int frustums, bool blur) {
+    Image out = beyond;
+    finishFluenceInPlace(medium, out, frustums, blur);
     return out;
 }
 

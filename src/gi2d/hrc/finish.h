@@ -13,4 +13,7 @@ namespace luxel::gi2d::hrc {
 // wall next to it), then each pixel's own half-pixel segment in front, then / 2 pi.
 Image finishFluence(const Medium2D& medium, const Image& beyond, int frustums, bool blur);
 
+// The same, overwriting `fluence` (the light beyond) with the result: no second image.
+void finishFluenceInPlace(const Medium2D& medium, Image& fluence, int frustums, bool blur);
+
 }  // namespace luxel::gi2d::hrc

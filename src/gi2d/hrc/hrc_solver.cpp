@@ -1,31 +1,26 @@
-// HRC driver (docs/algorithms/holographic-radiance-cascades.md §7): per frustum, trace + extend
-// the ray tables, merge cones top-down, read out; then finish (cross blur, own segment).
+// HRC driver (docs/algorithms/holographic-radiance-cascades.md §7): the frustums swept one after
+// another (§7.1), or cascade by cascade for the debug views; then finish (cross blur, own
+// segment).
 #include "luxel/gi2d/hrc_solver.h"
 
 #include <algorithm>
 #include <bit>
+#include <chrono>
 #include <string>
 
-#include "gi2d/hrc/cone_merge.h"
 #include "gi2d/hrc/finish.h"
 #include "gi2d/hrc/frustum_frame.h"
 #include "gi2d/hrc/hrc_geometry.h"
-#include "gi2d/hrc/ray_tables.h"
-#include "gi2d/hrc/readout.h"
+#include "gi2d/hrc/level_by_level.h"
+#include "gi2d/hrc/sweep_buffers.h"
+#include "gi2d/hrc/sweep_solver.h"
 #include "luxel/core/memory.h"
+#include "luxel/core/thread_team.h"
 #include "luxel/gi2d/ray_march.h"
 
 namespace luxel::gi2d {
 
 using namespace hrc;
-
-namespace {
-
-FrustumFrame frameFor(int r, int w, int h) {
-    return makeFrame(static_cast<Frustum>(r), w, h);
-}
-
-}  // namespace
 
 int hrcCascadeCount(int width, int height) {
     return std::max(cascadeCount(width), cascadeCount(height));
@@ -34,24 +29,19 @@ int hrcCascadeCount(int width, int height) {
 HrcMemory estimateHrcMemory(int width, int height) {
     HrcMemory m;
     for (int r = 0; r < 2; ++r) {
-        const FrustumFrame f = frameFor(r, width, height);
+        const FrustumFrame f = makeFrame(static_cast<Frustum>(r), width, height);
         const int levels = cascadeCount(f.length);
-        m.rayTables = std::max(m.rayTables, RayTables::bytesFor(f.length, f.rows, levels));
-        std::uint64_t cones = 0;
-        for (int n = 0; n < levels; ++n) {
-            cones = std::max<std::uint64_t>(
-                cones, static_cast<std::uint64_t>(planeCount(f.length, n)) * pow2(n) * f.rows);
-        }
-        m.coneBuffers = std::max(m.coneBuffers, 2 * cones * sizeof(Rgb));
+        m.rayIntervals = std::max(m.rayIntervals, IntervalRing::bytesFor(levels, f.rows));
+        m.cones = std::max(m.cones, ConeRing::bytesFor(levels, f.rows));
     }
-    const std::uint64_t pixels = static_cast<std::uint64_t>(width) * height;
-    // The rotated medium lives while its marcher is built; the marcher lives for the frustum.
-    m.frame = mediumBytes(width, height) + RayMarcher::bytesFor(width, height);
-    m.output = 2 * pixels * 3 * sizeof(float);  // accumulator + blurred copy
+    m.mediumColumns =
+        sweepBytes(width, height, HrcOptions{}.tracedLevels) - m.rayIntervals - m.cones;
+    m.output = static_cast<std::uint64_t>(width) * height * 3 * sizeof(float);
     return m;
 }
 
-Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options) {
+Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
+                       std::vector<HrcCpuPass>* passes) {
     const int w = medium.width(), h = medium.height();
     if (options.tracedLevels < 1) {
         return Error("HRC traced levels must be >= 1, got " + std::to_string(options.tracedLevels));
@@ -61,45 +51,47 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options) {
         return Error("HRC supports at most 2^28 pixels, got " + std::to_string(w) + "x" +
                      std::to_string(h));
     }
-    if (Status s = checkMemory(estimateHrcMemory(w, h).total(),
-                               "HRC at " + std::to_string(w) + "x" + std::to_string(h));
-        !s) {
-        return s.error();
-    }
-
-    Image fluence(w, h, 3);
-    RayTables tables;
-    ConeBuffer buffers[2];
-    const int frustums = std::popcount(options.frustumMask & 0xFu);
-    int done = 0;
-    for (int r = 0; r < 4; ++r) {
+    const bool debug = options.debugCascade >= 0;
+    for (int r = 0; r < 4 && debug; ++r) {
         if (!(options.frustumMask & (1u << r))) continue;
-        const FrustumFrame frame = frameFor(r, w, h);
-        const int levels = cascadeCount(frame.length);
+        const int levels = cascadeCount(makeFrame(static_cast<Frustum>(r), w, h).length);
         if (options.debugCascade >= levels) {
             return Error("debug cascade " + std::to_string(options.debugCascade) +
                          " does not exist (this size has " + std::to_string(levels) + ")");
         }
-        {
-            const RayMarcher marcher(frameMedium(medium, frame));
-            tables.reset(frame.length, frame.rows, levels);
-            traceBaseLevels(tables, marcher, options.tracedLevels);
-        }
-        extendLevels(tables, options.tracedLevels);
-
-        const int lowest = std::max(options.debugCascade, 0);
-        const ConeBuffer* upper = nullptr;
-        int current = 0;
-        for (int n = levels - 1; n >= lowest; --n) {
-            mergeCascade(tables, n, upper, medium.boundaryRadiance, buffers[current]);
-            upper = &buffers[current];
-            current ^= 1;
-        }
-        readOut(frame, *upper, lowest, medium.boundaryRadiance, fluence);
-        if (options.onProgress) options.onProgress(++done, frustums);
+    }
+    const std::uint64_t needed =
+        debug ? levelByLevelBytes(w, h) + mediumBytes(w, h) / 2
+              : sweepBytes(w, h, options.tracedLevels) + estimateHrcMemory(w, h).output;
+    if (Status s = checkMemory(needed, "HRC at " + std::to_string(w) + "x" + std::to_string(h));
+        !s) {
+        return s.error();
     }
 
-    return finishFluence(medium, fluence, frustums, options.crossBlur && options.debugCascade < 0);
+    const int frustums = std::popcount(options.frustumMask & 0xFu);
+    if (debug) {
+        return finishFluence(medium, levelByLevelBeyond(medium, options), frustums, false);
+    }
+    SweepTimes times;
+    Image beyond(w, h, 3);
+    sweepFrustums(medium, options, ThreadTeam::defaultSize(), beyond,
+                  passes != nullptr ? &times : nullptr);
+    const auto start = std::chrono::steady_clock::now();
+    finishFluenceInPlace(medium, beyond, frustums, options.crossBlur);
+    if (passes != nullptr) {
+        const char* names[] = {"trace", "extend", "merge", "readout"};
+        passes->clear();
+        for (int p = 0; p < SweepTimes::Count; ++p) {
+            passes->push_back({names[p], times.milliseconds[p], times.bytes[p]});
+        }
+        const std::uint64_t pixels = static_cast<std::uint64_t>(w) * h;
+        passes->push_back(
+            {"finish",
+             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                 .count(),
+             pixels * (24 + 12 + 12 + 12)});
+    }
+    return beyond;
 }
 
 }  // namespace luxel::gi2d

@@ -1,0 +1,113 @@
+#include "gi2d/hrc/sweep_buffers.h"
+
+namespace luxel::gi2d::hrc {
+
+void ColumnWindow::reshape(int span, int rows) {
+    span_ = span;
+    rows_ = rows;
+    pad_ = span + 1;
+    stride_ = rows + 2 * (span + 1) + kSweepRowPad;
+    data_.assign(static_cast<std::size_t>(span) * 6 * stride_, 0.0f);
+}
+
+std::uint64_t ColumnWindow::bytesFor(int span, int rows) {
+    return static_cast<std::uint64_t>(span) * 6 * (rows + 2 * (span + 1) + kSweepRowPad) *
+           sizeof(float);
+}
+
+void ColumnWindow::load(const Medium2D& medium, const FrustumFrame& frame, int x, int v0, int v1) {
+    float* slot = data_.data() + static_cast<std::size_t>(x & (span_ - 1)) * 6 * stride_ + pad_;
+    const float* sigma = medium.absorption.data();
+    const float* emission = medium.emission.data();
+    const std::size_t width = static_cast<std::size_t>(medium.width());
+    for (int v = v0; v < v1; ++v) {
+        int cx, cy;
+        frame.toCanvas(x, v, cx, cy);
+        const std::size_t i = (static_cast<std::size_t>(cy) * width + cx) * 3;
+        for (int c = 0; c < 3; ++c) {
+            slot[static_cast<std::size_t>(c) * stride_ + v] = sigma[i + c];
+            slot[static_cast<std::size_t>(3 + c) * stride_ + v] = emission[i + c];
+        }
+    }
+}
+
+void ColumnWindow::at(int x, MediumColumn* out) const {
+    for (int du = 0; du < span_; ++du) {
+        const float* slot =
+            data_.data() + static_cast<std::size_t>((x + du) & (span_ - 1)) * 6 * stride_ + pad_;
+        for (int c = 0; c < 6; ++c) out[du].plane[c] = slot + static_cast<std::size_t>(c) * stride_;
+    }
+}
+
+namespace {
+
+// Start of each cascade's two planes in one buffer of `perLevel(n)` values per plane.
+template <typename PerLevel>
+std::vector<std::size_t> levelStarts(int levels, PerLevel perLevel, std::size_t& total) {
+    std::vector<std::size_t> starts(static_cast<std::size_t>(levels));
+    total = 0;
+    for (int n = 0; n < levels; ++n) {
+        starts[n] = total;
+        total += 2 * perLevel(n);
+    }
+    return starts;
+}
+
+}  // namespace
+
+void IntervalRing::reshape(int levels, int rows) {
+    rows_ = rows;
+    std::size_t total = 0;
+    levelStart_ = levelStarts(
+        levels, [&](int n) { return static_cast<std::size_t>(rays(n)) * 6 * rows; }, total);
+    data_.resize(total + kSweepRowPad);
+}
+
+std::uint64_t IntervalRing::bytesFor(int levels, int rows) {
+    std::uint64_t total = kSweepRowPad;
+    for (int n = 0; n < levels; ++n) total += 2ull * ((1ull << n) + 1) * 6 * rows;
+    return total * sizeof(std::uint16_t);
+}
+
+IntervalRows IntervalRing::read(int n, int p, int k, int offset) const {
+    IntervalRows r;
+    const std::uint16_t* base = data_.data() + index(n, p, k);
+    for (int c = 0; c < 6; ++c) r.plane[c] = base + static_cast<std::size_t>(c) * rows_;
+    r.offset = offset;
+    return r;
+}
+
+IntervalRowsOut IntervalRing::write(int n, int p, int k) {
+    IntervalRowsOut r;
+    std::uint16_t* base = data_.data() + index(n, p, k);
+    for (int c = 0; c < 6; ++c) r.plane[c] = base + static_cast<std::size_t>(c) * rows_;
+    return r;
+}
+
+void ConeRing::reshape(int levels, int rows) {
+    rows_ = rows;
+    std::size_t total = 0;
+    levelStart_ = levelStarts(
+        levels, [&](int n) { return (static_cast<std::size_t>(1) << n) * 3 * rows; }, total);
+    data_.resize(total + kSweepRowPad);
+}
+
+std::uint64_t ConeRing::bytesFor(int levels, int rows) {
+    std::uint64_t total = kSweepRowPad;
+    for (int n = 0; n < levels; ++n) total += 2ull * (1ull << n) * 3 * rows;
+    return total * sizeof(float);
+}
+
+ConeRows ConeRing::read(int n, int p, int i, int offset) const {
+    ConeRows r;
+    const float* base = data_.data() + index(n, p, i);
+    for (int c = 0; c < 3; ++c) r.plane[c] = base + static_cast<std::size_t>(c) * rows_;
+    r.offset = offset;
+    return r;
+}
+
+float* ConeRing::plane(int n, int p, int i, int channel) {
+    return data_.data() + index(n, p, i) + static_cast<std::size_t>(channel) * rows_;
+}
+
+}  // namespace luxel::gi2d::hrc

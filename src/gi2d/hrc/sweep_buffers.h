@@ -1,0 +1,85 @@
+// What the streaming HRC solver keeps while it sweeps a frustum from its far end to its near end
+// (docs/algorithms/holographic-radiance-cascades.md §7.1): per cascade the two most recent planes
+// of ray intervals (binary16) and of merged cones (float), and a window of medium columns for the
+// traced cascades. Everything a plane needs lies at most one plane ahead, so two suffice; memory
+// grows with the frame's rows times 2^levels, not with the rows times the planes of every cascade.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "gi2d/hrc/frustum_frame.h"
+#include "gi2d/hrc/sweep_kernels.h"
+#include "luxel/gi2d/medium2d.h"
+
+namespace luxel::gi2d::hrc {
+
+// The frame's medium columns x .. x + span - 1 as float planes (sigma rgb, E rgb), padded with
+// vacuum rows above and below; columns beyond the frame read as vacuum.
+class ColumnWindow {
+  public:
+    // Shapes the window for a frame (all vacuum); keeps the allocation when it is large enough.
+    void reshape(int span, int rows);
+
+    // Loads frame column x into its slot (rows [v0, v1) only: each team member loads its own).
+    void load(const Medium2D& medium, const FrustumFrame& frame, int x, int v0, int v1);
+    // Columns x .. x + span - 1 into out[0 .. span - 1].
+    void at(int x, MediumColumn* out) const;
+    int span() const { return span_; }
+
+    static std::uint64_t bytesFor(int span, int rows);
+
+  private:
+    int span_ = 1, rows_ = 0, pad_ = 0, stride_ = 0;
+    std::vector<float> data_;
+};
+
+// Two planes of intervals per cascade: plane p of cascade n lives in slot p & 1.
+class IntervalRing {
+  public:
+    // Shapes the ring for a frame; keeps the allocation when it is large enough.
+    void reshape(int levels, int rows);
+
+    int rays(int n) const { return (1 << n) + 1; }
+    IntervalRows read(int n, int p, int k, int offset = 0) const;
+    IntervalRowsOut write(int n, int p, int k);
+
+    static std::uint64_t bytesFor(int levels, int rows);
+
+  private:
+    std::size_t index(int n, int p, int k) const {
+        return levelStart_[n] + (static_cast<std::size_t>(p & 1) * rays(n) + k) * 6 * rows_;
+    }
+    int rows_ = 0;
+    std::vector<std::size_t> levelStart_;
+    std::vector<std::uint16_t> data_;
+};
+
+// Two planes of merged cones per cascade: plane p of cascade n lives in slot p & 1.
+class ConeRing {
+  public:
+    // Shapes the ring for a frame; keeps the allocation when it is large enough.
+    void reshape(int levels, int rows);
+
+    ConeRows read(int n, int p, int i, int offset = 0) const;
+    float* plane(int n, int p, int i, int channel);
+
+    static std::uint64_t bytesFor(int levels, int rows);
+
+  private:
+    std::size_t index(int n, int p, int i) const {
+        return levelStart_[n] + (static_cast<std::size_t>(p & 1) * (1u << n) + i) * 3 * rows_;
+    }
+    int rows_ = 0;
+    std::vector<std::size_t> levelStart_;
+    std::vector<float> data_;
+};
+
+// The buffers of one sweep, reused by the frustums.
+struct SweepBuffers {
+    ColumnWindow columns;
+    IntervalRing tables;
+    ConeRing cones;
+};
+
+}  // namespace luxel::gi2d::hrc

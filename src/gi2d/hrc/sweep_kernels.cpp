@@ -1,0 +1,221 @@
+// Highway implementations of the streaming HRC row loops, compiled once per SIMD target.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "gi2d/hrc/sweep_kernels.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// foreach_target.h re-includes this file per target; highway.h must follow it.
+#include <hwy/contrib/math/math-inl.h>
+#include <hwy/highway.h>
+
+#include <algorithm>
+#include <cstring>
+
+#include "gi2d/hrc/sweep_kernels.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace luxel::gi2d::hrc {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using DF = hn::ScalableTag<float>;
+using DH = hn::Rebind<hwy::float16_t, DF>;
+using VF = hn::Vec<DF>;
+
+// An interval per lane: L and T per channel.
+struct Lanes6 {
+    VF l[3], t[3];
+};
+
+HWY_INLINE VF LoadHalf(const std::uint16_t* p, int y) {
+    const DF df;
+    const DH dh;
+    return hn::PromoteTo(df, hn::LoadU(dh, reinterpret_cast<const hwy::float16_t*>(p + y)));
+}
+
+HWY_INLINE Lanes6 LoadInterval(const IntervalRows& rows, int y) {
+    const DF df;
+    Lanes6 v;
+    for (int c = 0; c < 3; ++c) {
+        if (rows.plane[0] == nullptr) {
+            v.l[c] = hn::Zero(df);
+            v.t[c] = hn::Set(df, 1.0f);
+        } else {
+            v.l[c] = LoadHalf(rows.plane[c], y + rows.offset);
+            v.t[c] = LoadHalf(rows.plane[3 + c], y + rows.offset);
+        }
+    }
+    return v;
+}
+
+// Front-to-back compositing, paper Eq 8 (hrcOver).
+HWY_INLINE Lanes6 Over(const Lanes6& near, const Lanes6& far) {
+    Lanes6 v;
+    for (int c = 0; c < 3; ++c) {
+        v.l[c] = hn::Add(near.l[c], hn::Mul(near.t[c], far.l[c]));
+        v.t[c] = hn::Mul(near.t[c], far.t[c]);
+    }
+    return v;
+}
+
+// Stores the first `count` lanes (all of them for whole vectors).
+HWY_INLINE void StoreHalves(VF v, std::uint16_t* p, int y, int count) {
+    const DF df;
+    const DH dh;
+    const auto h = hn::DemoteTo(dh, v);
+    if (count == static_cast<int>(hn::Lanes(df))) {
+        hn::StoreU(h, dh, reinterpret_cast<hwy::float16_t*>(p + y));
+        return;
+    }
+    HWY_ALIGN hwy::float16_t tmp[hn::MaxLanes(dh)];
+    hn::Store(h, dh, tmp);
+    std::memcpy(p + y, tmp, static_cast<std::size_t>(count) * sizeof(std::uint16_t));
+}
+
+HWY_INLINE void StoreFloats(VF v, float* p, int y, int count) {
+    const DF df;
+    if (count == static_cast<int>(hn::Lanes(df))) {
+        hn::StoreU(v, df, p + y);
+        return;
+    }
+    HWY_ALIGN float tmp[hn::MaxLanes(df)];
+    hn::Store(v, df, tmp);
+    std::memcpy(p + y, tmp, static_cast<std::size_t>(count) * sizeof(float));
+}
+
+HWY_INLINE void StoreInterval(const IntervalRowsOut& out, int y, const Lanes6& v, int count) {
+    for (int c = 0; c < 3; ++c) {
+        StoreHalves(v.l[c], out.plane[c], y, count);
+        StoreHalves(v.t[c], out.plane[3 + c], y, count);
+    }
+}
+
+void TraceRowsImpl(const StencilStep* steps, std::size_t stepCount, const MediumColumn* columns,
+                   IntervalRowsOut out, int y0, int y1) {
+    const DF df;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f);
+    for (int y = y0; y < y1; y += lanes) {
+        Lanes6 acc;
+        for (int c = 0; c < 3; ++c) acc.l[c] = zero, acc.t[c] = one;
+        for (std::size_t s = 0; s < stepCount; ++s) {
+            const MediumColumn& column = columns[steps[s].du];
+            const int row = y + steps[s].dv;
+            VF sigma[3];
+            for (int c = 0; c < 3; ++c) sigma[c] = hn::LoadU(df, column.plane[c] + row);
+            const VF any = hn::Max(sigma[0], hn::Max(sigma[1], sigma[2]));
+            if (hn::AllTrue(df, hn::Eq(any, zero))) continue;  // vacuum: T = 1, nothing emitted
+            const VF negLength = hn::Set(df, -steps[s].length);
+            // Vacuum lanes get T = 1 exactly, as the scalar marcher's skip gives.
+            VF t[3];
+            const bool grey =
+                hn::AllTrue(df, hn::And(hn::Eq(sigma[0], sigma[1]), hn::Eq(sigma[1], sigma[2])));
+            for (int c = 0; c < 3; ++c) {
+                if (c > 0 && grey) {
+                    t[c] = t[0];
+                    continue;
+                }
+                t[c] = hn::IfThenElse(hn::Eq(sigma[c], zero), one,
+                                      hn::Exp(df, hn::Mul(sigma[c], negLength)));
+            }
+            for (int c = 0; c < 3; ++c) {
+                const VF e = hn::LoadU(df, column.plane[3 + c] + row);
+                acc.l[c] = hn::Add(acc.l[c], hn::Mul(hn::Mul(acc.t[c], e), hn::Sub(one, t[c])));
+                acc.t[c] = hn::Mul(acc.t[c], t[c]);
+            }
+        }
+        StoreInterval(out, y, acc, std::min(lanes, y1 - y));
+    }
+}
+
+void ExtendRowsImpl(const IntervalRows& nearA, const IntervalRows& farA, const IntervalRows& nearB,
+                    const IntervalRows& farB, bool twoPaths, IntervalRowsOut out, int y0, int y1) {
+    const DF df;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    const VF half = hn::Set(df, 0.5f);
+    for (int y = y0; y < y1; y += lanes) {
+        Lanes6 v = Over(LoadInterval(nearA, y), LoadInterval(farA, y));
+        if (twoPaths) {
+            const Lanes6 b = Over(LoadInterval(nearB, y), LoadInterval(farB, y));
+            for (int c = 0; c < 3; ++c) {
+                v.l[c] = hn::Mul(hn::Add(v.l[c], b.l[c]), half);
+                v.t[c] = hn::Mul(hn::Add(v.t[c], b.t[c]), half);
+            }
+        }
+        StoreInterval(out, y, v, std::min(lanes, y1 - y));
+    }
+}
+
+HWY_INLINE VF LoadCone(const ConeRows& rows, int c, int y) {
+    const DF df;
+    if (rows.plane[0] == nullptr) return hn::Set(df, rows.fill[c]);
+    return hn::LoadU(df, rows.plane[c] + y + rows.offset);
+}
+
+// (1 - s) a + s b, or a alone when s = 0 (§5.1).
+HWY_INLINE VF UpperRows(const ConeRows& a, const ConeRows& b, int c, int y, float second) {
+    const DF df;
+    if (second == 0.0f) return LoadCone(a, c, y);
+    return hn::Add(hn::Mul(LoadCone(a, c, y), hn::Set(df, 1.0f - second)),
+                   hn::Mul(LoadCone(b, c, y), hn::Set(df, second)));
+}
+
+void MergeRowsImpl(bool odd, const MergeSide& side0, const MergeSide& side1, float secondWeight,
+                   float* const out[3], int y0, int y1) {
+    const DF df;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    const VF half = hn::Set(df, 0.5f);
+    const MergeSide* sides[2] = {&side0, &side1};
+    for (int y = y0; y < y1; y += lanes) {
+        VF sum[3] = {hn::Zero(df), hn::Zero(df), hn::Zero(df)};
+        for (const MergeSide* side : sides) {
+            const VF w = hn::Set(df, side->weight);
+            const Lanes6 here = LoadInterval(side->here, y);
+            if (odd) {  // Eq 14 (hrcMergeOdd)
+                for (int c = 0; c < 3; ++c) {
+                    const VF upper = UpperRows(side->upperA, side->upperA2, c, y, secondWeight);
+                    sum[c] =
+                        hn::Add(sum[c], hn::Add(hn::Mul(here.l[c], w), hn::Mul(here.t[c], upper)));
+                }
+                continue;
+            }
+            // Eq 15-17 (hrcMergeEven): the double-length ray to the far probe.
+            const Lanes6 ray = Over(here, LoadInterval(side->next, y));
+            for (int c = 0; c < 3; ++c) {
+                const VF upperFar = UpperRows(side->upperB, side->upperB2, c, y, secondWeight);
+                const VF far = hn::Add(hn::Mul(ray.l[c], w), hn::Mul(ray.t[c], upperFar));
+                const VF upperNear = UpperRows(side->upperA, side->upperA2, c, y, secondWeight);
+                sum[c] = hn::Add(sum[c], hn::Mul(hn::Add(upperNear, far), half));
+            }
+        }
+        const int count = std::min(lanes, y1 - y);
+        for (int c = 0; c < 3; ++c) StoreFloats(sum[c], out[c], y, count);
+    }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace luxel::gi2d::hrc
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace luxel::gi2d::hrc {
+
+HWY_EXPORT(TraceRowsImpl);
+HWY_EXPORT(ExtendRowsImpl);
+HWY_EXPORT(MergeRowsImpl);
+
+void traceRows(std::span<const StencilStep> steps, const MediumColumn* columns, IntervalRowsOut out,
+               int y0, int y1) {
+    HWY_DYNAMIC_DISPATCH(TraceRowsImpl)(steps.data(), steps.size(), columns, out, y0, y1);
+}
+
+void extendRows(const IntervalRows& nearA, const IntervalRows& farA, const IntervalRows& nearB,
+                const IntervalRows& farB, bool twoPaths, IntervalRowsOut out, int y0, int y1) {
+    HWY_DYNAMIC_DISPATCH(ExtendRowsImpl)(nearA, farA, nearB, farB, twoPaths, out, y0, y1);
+}
+
+void mergeRows(bool odd, const MergeSide& side0, const MergeSide& side1, float secondWeight,
+               float* const out[3], int y0, int y1) {
+    HWY_DYNAMIC_DISPATCH(MergeRowsImpl)(odd, side0, side1, secondWeight, out, y0, y1);
+}
+
+}  // namespace luxel::gi2d::hrc
+#endif

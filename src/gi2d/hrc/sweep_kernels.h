@@ -1,0 +1,69 @@
+// The row loops of the streaming HRC solver (docs/algorithms/holographic-radiance-cascades.md
+// §7.1), vectorised across the rows of a frame with Highway and dispatched at run time to the best
+// SIMD target of the CPU. Every row is computed by the same vector instructions whatever range it
+// is called with, so results do not depend on how rows are split between threads.
+//
+// Rows are planes of `rows` consecutive values, one plane per channel. Every plane a kernel reads
+// must stay readable for kSweepRowPad values past its last row (whole vectors are loaded; the
+// lanes beyond the range are never stored).
+#pragma once
+
+#include <cstdint>
+#include <span>
+
+#include "gi2d/hrc/trace_stencil.h"
+
+namespace luxel::gi2d::hrc {
+
+inline constexpr int kSweepRowPad = 64;
+
+// An interval row: six binary16 planes (L r, g, b, then T r, g, b) read at row y + offset;
+// `plane[0] == nullptr` reads as empty space (L = 0, T = 1).
+struct IntervalRows {
+    const std::uint16_t* plane[6] = {};
+    int offset = 0;
+};
+struct IntervalRowsOut {
+    std::uint16_t* plane[6] = {};
+};
+
+// A cone-fluence row: three float planes read at row y + offset; `plane[0] == nullptr` reads as
+// the constant `fill` (the sky beyond the frame, times the cone's width).
+struct ConeRows {
+    const float* plane[3] = {};
+    float fill[3] = {};
+    int offset = 0;
+};
+
+// A medium column of the frame: sigma r, g, b and E r, g, b, indexed by row (rows just outside
+// the frame must read as vacuum for the stencil's reach).
+struct MediumColumn {
+    const float* plane[6] = {};
+};
+
+// Rows [y0, y1) of a traced ray: the stencil's cells composited front to back (paper Eq 8), cell
+// (du, dv) of row y read from columns[du] at row y + dv.
+void traceRows(std::span<const StencilStep> steps, const MediumColumn* columns, IntervalRowsOut out,
+               int y0, int y1);
+
+// Rows [y0, y1) of an extended ray (paper Eq 18-20): over(nearA, farA), averaged with
+// over(nearB, farB) when `twoPaths`.
+void extendRows(const IntervalRows& nearA, const IntervalRows& farA, const IntervalRows& nearB,
+                const IntervalRows& farB, bool twoPaths, IntervalRowsOut out, int y0, int y1);
+
+// One side (ray) of a cone merge (§5, §5.1). Upper cones are blends (1 - s) a + s b of two rows,
+// s = the second-row weight.
+struct MergeSide {
+    IntervalRows here;         // T_n(p, k) at row y
+    IntervalRows next;         // even planes: T_n(p + 1, k) at row y + dy
+    ConeRows upperA, upperA2;  // odd: the ray's end probe; even: the near probe
+    ConeRows upperB, upperB2;  // even: the far probe, reached by the double-length ray
+    float weight = 0.0f;       // the upper cone's angular width
+};
+
+// Rows [y0, y1) of R_n(p, i): the sum over the cone's two rays of Eq 14 (odd planes) or Eq 15-17
+// (even planes), written to out[c][y].
+void mergeRows(bool odd, const MergeSide& side0, const MergeSide& side1, float secondWeight,
+               float* const out[3], int y0, int y1);
+
+}  // namespace luxel::gi2d::hrc

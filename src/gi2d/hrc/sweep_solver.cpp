@@ -1,0 +1,294 @@
+#include "gi2d/hrc/sweep_solver.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <optional>
+
+#include "gi2d/hrc/cone_merge.h"
+#include "gi2d/hrc/hrc_geometry.h"
+#include "gi2d/hrc/sweep_buffers.h"
+#include "gi2d/hrc/trace_stencil.h"
+#include "gpu/shaders/shared/hrc_kernels.h"
+#include "luxel/core/check.h"
+
+namespace luxel::gi2d::hrc {
+namespace {
+
+namespace shared = gpu::shared;
+
+// Traced cascades actually used for a frame with `levels` cascades.
+int tracedFor(int tracedLevels, int levels) {
+    return std::clamp(tracedLevels, 1, levels);
+}
+
+// Calls fn(a, b) for the pieces of rows [y0, y1) inside which every row y + offset lies either
+// inside [0, rows) for all rows of the piece or for none.
+template <std::size_t N, typename Fn>
+void forUniformRows(int y0, int y1, int rows, const std::array<int, N>& offsets, int count, Fn fn) {
+    std::array<int, 2 * N + 2> cuts{};
+    int n = 0;
+    cuts[n++] = y0;
+    for (int i = 0; i < count; ++i) {
+        for (int c : {-offsets[i], rows - offsets[i]}) {
+            if (c > y0 && c < y1) cuts[n++] = c;
+        }
+    }
+    cuts[n++] = y1;
+    for (int i = 1; i < n; ++i) {  // insertion sort: a handful of cuts
+        for (int j = i; j > 0 && cuts[j - 1] > cuts[j]; --j) std::swap(cuts[j - 1], cuts[j]);
+    }
+    for (int i = 0; i + 1 < n; ++i) {
+        if (cuts[i] < cuts[i + 1]) fn(cuts[i], cuts[i + 1]);
+    }
+}
+
+// Member 0's stopwatch: each lap is charged to one pass.
+class Laps {
+  public:
+    explicit Laps(SweepTimes* times) : times_(times), last_(Clock::now()) {}
+    void charge(SweepTimes::Pass pass, std::uint64_t bytes) {
+        if (times_ == nullptr) return;
+        const auto now = Clock::now();
+        times_->milliseconds[pass] +=
+            std::chrono::duration<double, std::milli>(now - last_).count();
+        times_->bytes[pass] += bytes;
+        last_ = now;
+    }
+
+  private:
+    using Clock = std::chrono::steady_clock;
+    SweepTimes* times_;
+    Clock::time_point last_;
+};
+
+class FrustumSweep {
+  public:
+    FrustumSweep(const Medium2D& medium, const FrustumFrame& frame, int tracedLevels,
+                 SweepBuffers& buffers, Image& beyondSum)
+        : medium_(medium),
+          frame_(frame),
+          rows_(frame.rows),
+          levels_(cascadeCount(frame.length)),
+          traced_(tracedFor(tracedLevels, levels_)),
+          columns_(buffers.columns),
+          tables_(buffers.tables),
+          cones_(buffers.cones),
+          beyond_(beyondSum) {
+        columns_.reshape(pow2(traced_ - 1), rows_);
+        tables_.reshape(levels_, rows_);
+        cones_.reshape(levels_, rows_);
+        for (int n = 0; n < levels_; ++n) {
+            planes_.push_back(planeCount(frame.length, n));
+            weights_.push_back(coneWeights(n));
+        }
+        for (int n = 0; n < traced_; ++n) {
+            stencils_.emplace_back();
+            for (int k = 0; k <= pow2(n); ++k) stencils_.back().push_back(traceStencil(n, k));
+        }
+    }
+
+    void run(ThreadTeam& team, int member, SweepTimes* times);
+
+  private:
+    bool insideRows(int y) const { return y >= 0 && y < rows_; }
+    IntervalRows clip(IntervalRows r, int y) const {
+        if (r.plane[0] != nullptr && !insideRows(y + r.offset)) r.plane[0] = nullptr;
+        return r;
+    }
+    ConeRows clip(ConeRows r, int y) const {
+        if (r.plane[0] != nullptr && !insideRows(y + r.offset)) r.plane[0] = nullptr;
+        return r;
+    }
+    // Cone j of upper plane q of cascade n + 1 at row y + offset; the sky beyond the frame.
+    ConeRows upper(int n, int q, int j, int offset) const {
+        ConeRows r;
+        if (n + 1 < levels_ && q < planes_[n + 1]) r = cones_.read(n + 1, q, j, offset);
+        r.offset = offset;
+        const Rgb fill = medium_.boundaryRadiance * weights_[n][j];
+        r.fill[0] = fill.r, r.fill[1] = fill.g, r.fill[2] = fill.b;
+        return r;
+    }
+
+    std::uint64_t trace(int x, int y0, int y1);
+    std::uint64_t extend(int n, int p, int y0, int y1);
+    std::uint64_t merge(int n, int p, int y0, int y1);
+    std::uint64_t readOut(int u, int plane, int y0, int y1);
+
+    const Medium2D& medium_;
+    FrustumFrame frame_;
+    int rows_, levels_, traced_;
+    std::vector<int> planes_;
+    std::vector<std::vector<float>> weights_;
+    std::vector<std::vector<std::vector<StencilStep>>> stencils_;
+    ColumnWindow& columns_;
+    IntervalRing& tables_;
+    ConeRing& cones_;
+    Image& beyond_;
+};
+
+std::uint64_t FrustumSweep::trace(int x, int y0, int y1) {
+    thread_local std::vector<MediumColumn> window;
+    window.resize(static_cast<std::size_t>(columns_.span()));
+    columns_.at(x, window.data());
+    std::uint64_t bytes = 0;
+    for (int n = 0; n < traced_ && (x & (pow2(n) - 1)) == 0; ++n) {
+        for (int k = 0; k <= pow2(n); ++k) {
+            traceRows(stencils_[n][k], window.data(), tables_.write(n, x >> n, k), y0, y1);
+            bytes += (stencils_[n][k].size() * 24 + 12) * static_cast<std::uint64_t>(rows_);
+        }
+    }
+    return bytes;
+}
+
+std::uint64_t FrustumSweep::extend(int n, int p, int y0, int y1) {
+    const bool farExists = 2 * p + 1 < planes_[n - 1];
+    for (int k = 0; k <= pow2(n); ++k) {
+        const int lo = k >> 1, hi = (k + 1) >> 1;
+        const bool twoPaths = lo != hi;
+        const IntervalRows nearA = tables_.read(n - 1, 2 * p, lo);
+        const IntervalRows nearB = tables_.read(n - 1, 2 * p, hi);
+        IntervalRows farA, farB;
+        if (farExists) {
+            farA = tables_.read(n - 1, 2 * p + 1, hi, shared::hrcRayOffsetY(n - 1, lo));
+            farB = tables_.read(n - 1, 2 * p + 1, lo, shared::hrcRayOffsetY(n - 1, hi));
+        }
+        const std::array<int, 2> offsets{farA.offset, farB.offset};
+        forUniformRows(y0, y1, rows_, offsets, farExists ? 2 : 0, [&](int a, int b) {
+            extendRows(nearA, clip(farA, a), nearB, clip(farB, a), twoPaths, tables_.write(n, p, k),
+                       a, b);
+        });
+    }
+    return static_cast<std::uint64_t>(pow2(n) + 1) * rows_ * 12 * 5;
+}
+
+std::uint64_t FrustumSweep::merge(int n, int p, int y0, int y1) {
+    const bool odd = (p & 1) != 0;
+    const float second = shared::hrcSecondRowWeight(n);
+    const bool nextExists = p + 1 < planes_[n];
+    for (int i = 0; i < pow2(n); ++i) {
+        MergeSide sides[2];
+        std::array<int, 12> offsets{};
+        int count = 0;
+        for (int s = 0; s < 2; ++s) {
+            const int k = i + s, j = 2 * i + s, dy = shared::hrcRayOffsetY(n, k);
+            const int axis = shared::hrcTowardsAxis(s);
+            MergeSide& side = sides[s];
+            side.weight = weights_[n][j];
+            side.here = tables_.read(n, p, k);
+            if (odd) {  // Eq 14: the ray ends on upper plane (p + 1) / 2
+                side.upperA = upper(n, (p + 1) / 2, j, dy);
+                side.upperA2 = upper(n, (p + 1) / 2, j, dy + axis);
+            } else {  // Eq 15-17: near upper plane p / 2, far p / 2 + 1
+                if (nextExists) side.next = tables_.read(n, p + 1, k, dy);
+                side.upperA = upper(n, p / 2, j, 0);
+                side.upperA2 = upper(n, p / 2, j, dy);
+                side.upperB = upper(n, p / 2 + 1, j, 2 * dy);
+                side.upperB2 = upper(n, p / 2 + 1, j, 2 * dy + axis);
+                if (nextExists) offsets[count++] = dy;
+                offsets[count++] = 2 * dy;
+                offsets[count++] = 2 * dy + axis;
+            }
+            offsets[count++] = side.upperA.offset;
+            offsets[count++] = side.upperA2.offset;
+        }
+        float* const out[3] = {cones_.plane(n, p, i, 0), cones_.plane(n, p, i, 1),
+                               cones_.plane(n, p, i, 2)};
+        forUniformRows(y0, y1, rows_, offsets, count, [&](int a, int b) {
+            MergeSide clipped[2] = {sides[0], sides[1]};
+            for (MergeSide& side : clipped) {
+                side.next = clip(side.next, a);
+                side.upperA = clip(side.upperA, a);
+                side.upperA2 = clip(side.upperA2, a);
+                side.upperB = clip(side.upperB, a);
+                side.upperB2 = clip(side.upperB2, a);
+            }
+            mergeRows(odd, clipped[0], clipped[1], second, out, a, b);
+        });
+    }
+    // Per cone: its two rays here (and on the next plane), 2 or 4 upper rows each, the output.
+    return static_cast<std::uint64_t>(pow2(n)) * rows_ *
+           (odd ? 2 * 12 + 4 * 12 + 12 : 4 * 12 + 8 * 12 + 12);
+}
+
+std::uint64_t FrustumSweep::readOut(int u, int plane, int y0, int y1) {
+    const float* r = plane >= 0 ? cones_.plane(0, plane, 0, 0) : nullptr;
+    const float* g = plane >= 0 ? cones_.plane(0, plane, 0, 1) : nullptr;
+    const float* b = plane >= 0 ? cones_.plane(0, plane, 0, 2) : nullptr;
+    const Rgb sky = medium_.boundaryRadiance * LUXEL_HRC_QUARTER_TURN;
+    float* sum = beyond_.data();
+    const std::size_t width = static_cast<std::size_t>(beyond_.width());
+    for (int v = y0; v < y1; ++v) {
+        int x, y;
+        frame_.toCanvas(u, v, x, y);
+        float* pixel = sum + (static_cast<std::size_t>(y) * width + x) * 3;
+        const Rgb add = r ? Rgb{r[v], g[v], b[v]} : sky;
+        for (int c = 0; c < 3; ++c) pixel[c] += add[c];
+    }
+    return static_cast<std::uint64_t>(rows_) * 36;
+}
+
+void FrustumSweep::run(ThreadTeam& team, int member, SweepTimes* times) {
+    const int y0 = team.bandBegin(member, rows_), y1 = team.bandBegin(member + 1, rows_);
+    Laps laps(times);
+    // The last pixel's read-out plane lies beyond the frame: it sees the sky (§6.2).
+    readOut(frame_.length - 1, -1, y0, y1);
+    for (int x = frame_.length - 1; x >= 0; --x) {
+        columns_.load(medium_, frame_, x, y0, y1);
+        team.sync();  // the window is complete and nobody reads the planes traced next
+        const std::uint64_t traced = trace(x, y0, y1);
+        team.sync();
+        laps.charge(SweepTimes::Trace, traced);
+        int top = 0;
+        for (int n = 1; n < levels_ && (x & (pow2(n) - 1)) == 0; ++n) {
+            top = n;
+            if (n < traced_) continue;
+            const std::uint64_t bytes = extend(n, x >> n, y0, y1);
+            team.sync();
+            laps.charge(SweepTimes::Extend, bytes);
+        }
+        for (int n = top; n >= 0; --n) {
+            const std::uint64_t bytes = merge(n, x >> n, y0, y1);
+            if (n > 0) team.sync();
+            laps.charge(SweepTimes::Merge, bytes);
+        }
+        if (x > 0) laps.charge(SweepTimes::Readout, readOut(x - 1, x, y0, y1));
+    }
+    team.sync();
+}
+
+}  // namespace
+
+void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int threads, Image& beyondSum,
+                   SweepTimes* times) {
+    LUXEL_CHECK(medium.absorption.channels() == 3 && medium.emission.channels() == 3 &&
+                beyondSum.channels() == 3);
+    const int frustums = std::popcount(options.frustumMask & 0xFu);
+    int done = 0;
+    SweepBuffers buffers;
+    for (int r = 0; r < 4; ++r) {
+        if (!(options.frustumMask & (1u << r))) continue;
+        const FrustumFrame frame =
+            makeFrame(static_cast<Frustum>(r), medium.width(), medium.height());
+        FrustumSweep sweep(medium, frame, options.tracedLevels, buffers, beyondSum);
+        ThreadTeam::run(std::min(threads, frame.rows), [&](int member, ThreadTeam& team) {
+            sweep.run(team, member, member == 0 ? times : nullptr);
+        });
+        if (options.onProgress) options.onProgress(++done, frustums);
+    }
+}
+
+std::uint64_t sweepBytes(int width, int height, int tracedLevels) {
+    std::uint64_t most = 0;
+    for (int r = 0; r < 2; ++r) {
+        const FrustumFrame frame = makeFrame(static_cast<Frustum>(r), width, height);
+        const int levels = cascadeCount(frame.length);
+        most = std::max(
+            most,
+            IntervalRing::bytesFor(levels, frame.rows) + ConeRing::bytesFor(levels, frame.rows) +
+                ColumnWindow::bytesFor(pow2(tracedFor(tracedLevels, levels) - 1), frame.rows));
+    }
+    return most;
+}
+
+}  // namespace luxel::gi2d::hrc

@@ -1,0 +1,33 @@
+// The CPU HRC solver as one sweep per frustum from the far end of the frame to the near end
+// (docs/algorithms/holographic-radiance-cascades.md §7.1): at each pixel column x the planes of
+// every cascade that lie there are traced or extended bottom-up, then merged top-down and read
+// out, so only two planes per cascade are ever held. The same arithmetic as the level-by-level
+// passes (ray_tables, cone_merge, readout), which stay as the reference of the GPU passes.
+#pragma once
+
+#include <cstdint>
+
+#include "gi2d/hrc/frustum_frame.h"
+#include "luxel/core/image.h"
+#include "luxel/core/thread_team.h"
+#include "luxel/gi2d/hrc_solver.h"
+
+namespace luxel::gi2d::hrc {
+
+// Wall time and the bytes of tables, cones and medium each pass reads and writes (member 0's
+// clock: barrier waits count towards the pass that waited).
+struct SweepTimes {
+    enum Pass { Trace, Extend, Merge, Readout, Count };
+    double milliseconds[Count] = {};
+    std::uint64_t bytes[Count] = {};
+};
+
+// Adds the angular fluence each pixel's read-out plane receives in every frustum of `mask` into
+// `beyondSum` (canvas space), using `threads` threads.
+void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int threads, Image& beyondSum,
+                   SweepTimes* times);
+
+// Peak bytes of sweepFrustums' buffers for a canvas of this size.
+std::uint64_t sweepBytes(int width, int height, int tracedLevels);
+
+}  // namespace luxel::gi2d::hrc
