@@ -11,6 +11,7 @@
 #include "commands/command.h"
 #include "luxel/core/image_size.h"
 #include "luxel/core/memory.h"
+#include "luxel/core/parallel.h"
 #include "luxel/core/timer.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rasterize.h"
@@ -23,6 +24,7 @@ namespace {
 struct BenchArgs {
     std::string scene = "scenes/2d/room.json", backend = "cpu", device, sizes;
     int repeat = 3;
+    int threads = 0;
 };
 
 // "merge R3 f0" -> "merge"
@@ -44,6 +46,7 @@ double measureCopyBandwidth() {
 }
 
 int runBench(const BenchArgs& args) {
+    const ThreadLimit limit(args.threads);
     auto file = loadScene(args.scene, "");
     if (!file) return reportError(file.error());
     auto backend = parseBenchBackend(args.backend);
@@ -153,6 +156,9 @@ Runner addBenchCommand(CLI::App& app) {
                    "voxel the scene's camera size)");
     app.add_option("--repeat", args->repeat, "runs per size (the best is printed)")
         ->check(wholeIn(1, 1000))
+        ->capture_default_str();
+    app.add_option("--threads", args->threads, "CPU worker threads (0 = all cores)")
+        ->check(wholeIn(0, 4096))
         ->capture_default_str();
     return [args] { return runBench(*args); };
 }

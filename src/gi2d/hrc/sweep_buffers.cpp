@@ -1,22 +1,36 @@
 #include "gi2d/hrc/sweep_buffers.h"
 
+#include <algorithm>
+#include <utility>
+
 namespace luxel::gi2d::hrc {
 
-void ColumnWindow::reshape(int span, int rows) {
+void ColumnWindow::reshape(int span, std::vector<float> lengths, int rows) {
     span_ = span;
     rows_ = rows;
+    lengths_ = std::move(lengths);
     pad_ = span + 1;
     stride_ = rows + 2 * (span + 1) + kSweepRowPad;
-    data_.assign(static_cast<std::size_t>(span) * 6 * stride_, 0.0f);
+    data_.resize(static_cast<std::size_t>(span) * lengths_.size() * 6 * stride_);
+    // Vacuum everywhere: t = 1, L = 0.
+    for (std::size_t p = 0; p < data_.size() / stride_; ++p) {
+        std::fill_n(data_.begin() + static_cast<std::ptrdiff_t>(p * stride_), stride_,
+                    p % 6 < 3 ? 1.0f : 0.0f);
+    }
 }
 
-std::uint64_t ColumnWindow::bytesFor(int span, int rows) {
-    return static_cast<std::uint64_t>(span) * 6 * (rows + 2 * (span + 1) + kSweepRowPad) *
+std::uint64_t ColumnWindow::bytesFor(int span, int lengths, int rows) {
+    return static_cast<std::uint64_t>(span) * lengths * 6 * (rows + 2 * (span + 1) + kSweepRowPad) *
            sizeof(float);
 }
 
 void ColumnWindow::load(const Medium2D& medium, const FrustumFrame& frame, int x, int v0, int v1) {
-    float* slot = data_.data() + static_cast<std::size_t>(x & (span_ - 1)) * 6 * stride_ + pad_;
+    if (v1 <= v0) return;
+    // The band's cells, de-interleaved, then one transfer per ray length.
+    thread_local std::vector<float> cells;
+    const int count = v1 - v0;
+    const std::size_t stride = static_cast<std::size_t>(count) + kSweepRowPad;
+    cells.resize(6 * stride);
     const float* sigma = medium.absorption.data();
     const float* emission = medium.emission.data();
     const std::size_t width = static_cast<std::size_t>(medium.width());
@@ -25,17 +39,30 @@ void ColumnWindow::load(const Medium2D& medium, const FrustumFrame& frame, int x
         frame.toCanvas(x, v, cx, cy);
         const std::size_t i = (static_cast<std::size_t>(cy) * width + cx) * 3;
         for (int c = 0; c < 3; ++c) {
-            slot[static_cast<std::size_t>(c) * stride_ + v] = sigma[i + c];
-            slot[static_cast<std::size_t>(3 + c) * stride_ + v] = emission[i + c];
+            cells[c * stride + (v - v0)] = sigma[i + c];
+            cells[(3 + c) * stride + (v - v0)] = emission[i + c];
         }
+    }
+    const float* const s[3] = {&cells[0], &cells[stride], &cells[2 * stride]};
+    const float* const e[3] = {&cells[3 * stride], &cells[4 * stride], &cells[5 * stride]};
+    const int slot = x & (span_ - 1);
+    for (int d = 0; d < lengths(); ++d) {
+        float* base = data_.data() + v0;
+        float* const t[3] = {base + offset(slot, d, 0), base + offset(slot, d, 1),
+                             base + offset(slot, d, 2)};
+        float* const l[3] = {base + offset(slot, d, 3), base + offset(slot, d, 4),
+                             base + offset(slot, d, 5)};
+        cellTransferRows(s, e, lengths_[d], t, l, count);
     }
 }
 
-void ColumnWindow::at(int x, MediumColumn* out) const {
+void ColumnWindow::at(int x, CellTransfer* out) const {
     for (int du = 0; du < span_; ++du) {
-        const float* slot =
-            data_.data() + static_cast<std::size_t>((x + du) & (span_ - 1)) * 6 * stride_ + pad_;
-        for (int c = 0; c < 6; ++c) out[du].plane[c] = slot + static_cast<std::size_t>(c) * stride_;
+        for (int d = 0; d < lengths(); ++d) {
+            CellTransfer& cell = out[du * lengths() + d];
+            for (int c = 0; c < 6; ++c)
+                cell.plane[c] = data_.data() + offset((x + du) & (span_ - 1), d, c);
+        }
     }
 }
 

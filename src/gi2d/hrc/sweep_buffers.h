@@ -14,23 +14,30 @@
 
 namespace luxel::gi2d::hrc {
 
-// The frame's medium columns x .. x + span - 1 as float planes (sigma rgb, E rgb), padded with
-// vacuum rows above and below; columns beyond the frame read as vacuum.
+// The frame's medium columns x .. x + span - 1 as cell transfers (sweep_kernels.h) for each ray
+// length the traced cascades use, padded with vacuum rows above and below; columns beyond the
+// frame read as vacuum.
 class ColumnWindow {
   public:
     // Shapes the window for a frame (all vacuum); keeps the allocation when it is large enough.
-    void reshape(int span, int rows);
+    void reshape(int span, std::vector<float> lengths, int rows);
 
     // Loads frame column x into its slot (rows [v0, v1) only: each team member loads its own).
     void load(const Medium2D& medium, const FrustumFrame& frame, int x, int v0, int v1);
-    // Columns x .. x + span - 1 into out[0 .. span - 1].
-    void at(int x, MediumColumn* out) const;
+    // Columns x .. x + span - 1 into out[du * lengths + length index].
+    void at(int x, CellTransfer* out) const;
     int span() const { return span_; }
+    int lengths() const { return static_cast<int>(lengths_.size()); }
 
-    static std::uint64_t bytesFor(int span, int rows);
+    static std::uint64_t bytesFor(int span, int lengths, int rows);
 
   private:
+    std::size_t offset(int slot, int length, int c) const {
+        return ((static_cast<std::size_t>(slot) * lengths_.size() + length) * 6 + c) * stride_ +
+               pad_;
+    }
     int span_ = 1, rows_ = 0, pad_ = 0, stride_ = 0;
+    std::vector<float> lengths_;
     std::vector<float> data_;
 };
 

@@ -88,41 +88,41 @@ HWY_INLINE void StoreInterval(const IntervalRowsOut& out, int y, const Lanes6& v
     }
 }
 
-void TraceRowsImpl(const StencilStep* steps, std::size_t stepCount, const MediumColumn* columns,
+void TraceRowsImpl(const TraceStep* steps, std::size_t stepCount, const CellTransfer* columns,
                    IntervalRowsOut out, int y0, int y1) {
     const DF df;
     const int lanes = static_cast<int>(hn::Lanes(df));
-    const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f);
     for (int y = y0; y < y1; y += lanes) {
         Lanes6 acc;
-        for (int c = 0; c < 3; ++c) acc.l[c] = zero, acc.t[c] = one;
+        for (int c = 0; c < 3; ++c) acc.l[c] = hn::Zero(df), acc.t[c] = hn::Set(df, 1.0f);
         for (std::size_t s = 0; s < stepCount; ++s) {
-            const MediumColumn& column = columns[steps[s].du];
+            const CellTransfer& cell = columns[steps[s].column];
             const int row = y + steps[s].dv;
-            VF sigma[3];
-            for (int c = 0; c < 3; ++c) sigma[c] = hn::LoadU(df, column.plane[c] + row);
-            const VF any = hn::Max(sigma[0], hn::Max(sigma[1], sigma[2]));
-            if (hn::AllTrue(df, hn::Eq(any, zero))) continue;  // vacuum: T = 1, nothing emitted
-            const VF negLength = hn::Set(df, -steps[s].length);
-            // Vacuum lanes get T = 1 exactly, as the scalar marcher's skip gives.
-            VF t[3];
-            const bool grey =
-                hn::AllTrue(df, hn::And(hn::Eq(sigma[0], sigma[1]), hn::Eq(sigma[1], sigma[2])));
             for (int c = 0; c < 3; ++c) {
-                if (c > 0 && grey) {
-                    t[c] = t[0];
-                    continue;
-                }
-                t[c] = hn::IfThenElse(hn::Eq(sigma[c], zero), one,
-                                      hn::Exp(df, hn::Mul(sigma[c], negLength)));
-            }
-            for (int c = 0; c < 3; ++c) {
-                const VF e = hn::LoadU(df, column.plane[3 + c] + row);
-                acc.l[c] = hn::Add(acc.l[c], hn::Mul(hn::Mul(acc.t[c], e), hn::Sub(one, t[c])));
-                acc.t[c] = hn::Mul(acc.t[c], t[c]);
+                const VF t = hn::LoadU(df, cell.plane[c] + row);
+                const VF l = hn::LoadU(df, cell.plane[3 + c] + row);
+                acc.l[c] = hn::Add(acc.l[c], hn::Mul(acc.t[c], l));
+                acc.t[c] = hn::Mul(acc.t[c], t);
             }
         }
         StoreInterval(out, y, acc, std::min(lanes, y1 - y));
+    }
+}
+
+void CellTransferRowsImpl(const float* const sigma[3], const float* const emission[3], float length,
+                          float* const t[3], float* const l[3], int count) {
+    const DF df;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f), negLength = hn::Set(df, -length);
+    for (int v = 0; v < count; v += lanes) {
+        const int n = std::min(lanes, count - v);
+        for (int c = 0; c < 3; ++c) {
+            const VF s = hn::LoadU(df, sigma[c] + v);
+            const VF tc = hn::IfThenElse(hn::Eq(s, zero), one, hn::Exp(df, hn::Mul(s, negLength)));
+            const VF lc = hn::Mul(hn::LoadU(df, emission[c] + v), hn::Sub(one, tc));
+            StoreFloats(tc, t[c], v, n);
+            StoreFloats(lc, l[c], v, n);
+        }
     }
 }
 
@@ -199,12 +199,18 @@ HWY_AFTER_NAMESPACE();
 namespace luxel::gi2d::hrc {
 
 HWY_EXPORT(TraceRowsImpl);
+HWY_EXPORT(CellTransferRowsImpl);
 HWY_EXPORT(ExtendRowsImpl);
 HWY_EXPORT(MergeRowsImpl);
 
-void traceRows(std::span<const StencilStep> steps, const MediumColumn* columns, IntervalRowsOut out,
+void traceRows(std::span<const TraceStep> steps, const CellTransfer* columns, IntervalRowsOut out,
                int y0, int y1) {
     HWY_DYNAMIC_DISPATCH(TraceRowsImpl)(steps.data(), steps.size(), columns, out, y0, y1);
+}
+
+void cellTransferRows(const float* const sigma[3], const float* const emission[3], float length,
+                      float* const t[3], float* const l[3], int count) {
+    HWY_DYNAMIC_DISPATCH(CellTransferRowsImpl)(sigma, emission, length, t, l, count);
 }
 
 void extendRows(const IntervalRows& nearA, const IntervalRows& farA, const IntervalRows& nearB,

@@ -35,16 +35,27 @@ struct ConeRows {
     int offset = 0;
 };
 
-// A medium column of the frame: sigma r, g, b and E r, g, b, indexed by row (rows just outside
-// the frame must read as vacuum for the stencil's reach).
-struct MediumColumn {
+// One medium column of the frame seen by rays of one length through its cells: per row the
+// transmittance t = exp(-sigma length) and the radiance E (1 - t) a cell gives that ray, planes
+// t r, g, b then L r, g, b (rows just outside the frame read as vacuum: t = 1, L = 0).
+struct CellTransfer {
     const float* plane[6] = {};
 };
 
-// Rows [y0, y1) of a traced ray: the stencil's cells composited front to back (paper Eq 8), cell
-// (du, dv) of row y read from columns[du] at row y + dv.
-void traceRows(std::span<const StencilStep> steps, const MediumColumn* columns, IntervalRowsOut out,
+// A stencil step with its column and length resolved: transfer columns[column] at row y + dv.
+struct TraceStep {
+    int column = 0;
+    int dv = 0;
+};
+
+// Rows [y0, y1) of a traced ray: the cells of `steps` composited front to back (paper Eq 8).
+void traceRows(std::span<const TraceStep> steps, const CellTransfer* columns, IntervalRowsOut out,
                int y0, int y1);
+
+// t = exp(-sigma length) (exactly 1 where sigma = 0) and L = E (1 - t) for `count` cells: the
+// per-cell part of tracing, done once per cell and ray length.
+void cellTransferRows(const float* const sigma[3], const float* const emission[3], float length,
+                      float* const t[3], float* const l[3], int count);
 
 // Rows [y0, y1) of an extended ray (paper Eq 18-20): over(nearA, farA), averaged with
 // over(nearB, farB) when `twoPaths`.

@@ -22,6 +22,21 @@ int tracedFor(int tracedLevels, int levels) {
     return std::clamp(tracedLevels, 1, levels);
 }
 
+// The distinct lengths of ray inside one cell over the traced cascades below `traced`.
+std::vector<float> stencilLengths(int traced) {
+    std::vector<float> lengths;
+    for (int n = 0; n < traced; ++n) {
+        for (int k = 0; k <= pow2(n); ++k) {
+            for (const StencilStep& step : traceStencil(n, k)) {
+                if (std::find(lengths.begin(), lengths.end(), step.length) == lengths.end()) {
+                    lengths.push_back(step.length);
+                }
+            }
+        }
+    }
+    return lengths;
+}
+
 // Calls fn(a, b) for the pieces of rows [y0, y1) inside which every row y + offset lies either
 // inside [0, rows) for all rows of the piece or for none.
 template <std::size_t N, typename Fn>
@@ -75,17 +90,27 @@ class FrustumSweep {
           tables_(buffers.tables),
           cones_(buffers.cones),
           beyond_(beyondSum) {
-        columns_.reshape(pow2(traced_ - 1), rows_);
         tables_.reshape(levels_, rows_);
         cones_.reshape(levels_, rows_);
         for (int n = 0; n < levels_; ++n) {
             planes_.push_back(planeCount(frame.length, n));
             weights_.push_back(coneWeights(n));
         }
+        // Each traced ray's cells, with the window column and ray length of each resolved.
+        std::vector<float> lengths = stencilLengths(traced_);
+        const int count = static_cast<int>(lengths.size());
+        steps_.resize(static_cast<std::size_t>(traced_));
         for (int n = 0; n < traced_; ++n) {
-            stencils_.emplace_back();
-            for (int k = 0; k <= pow2(n); ++k) stencils_.back().push_back(traceStencil(n, k));
+            for (int k = 0; k <= pow2(n); ++k) {
+                steps_[n].emplace_back();
+                for (const StencilStep& step : traceStencil(n, k)) {
+                    const auto d = std::find(lengths.begin(), lengths.end(), step.length);
+                    steps_[n].back().push_back(
+                        {step.du * count + static_cast<int>(d - lengths.begin()), step.dv});
+                }
+            }
         }
+        columns_.reshape(pow2(traced_ - 1), std::move(lengths), rows_);
     }
 
     void run(ThreadTeam& team, int member, SweepTimes* times);
@@ -120,7 +145,7 @@ class FrustumSweep {
     int rows_, levels_, traced_;
     std::vector<int> planes_;
     std::vector<std::vector<float>> weights_;
-    std::vector<std::vector<std::vector<StencilStep>>> stencils_;
+    std::vector<std::vector<std::vector<TraceStep>>> steps_;
     ColumnWindow& columns_;
     IntervalRing& tables_;
     ConeRing& cones_;
@@ -128,14 +153,14 @@ class FrustumSweep {
 };
 
 std::uint64_t FrustumSweep::trace(int x, int y0, int y1) {
-    thread_local std::vector<MediumColumn> window;
-    window.resize(static_cast<std::size_t>(columns_.span()));
+    thread_local std::vector<CellTransfer> window;
+    window.resize(static_cast<std::size_t>(columns_.span() * columns_.lengths()));
     columns_.at(x, window.data());
-    std::uint64_t bytes = 0;
+    std::uint64_t bytes = static_cast<std::uint64_t>(rows_) * 24;  // the column loaded
     for (int n = 0; n < traced_ && (x & (pow2(n) - 1)) == 0; ++n) {
         for (int k = 0; k <= pow2(n); ++k) {
-            traceRows(stencils_[n][k], window.data(), tables_.write(n, x >> n, k), y0, y1);
-            bytes += (stencils_[n][k].size() * 24 + 12) * static_cast<std::uint64_t>(rows_);
+            traceRows(steps_[n][k], window.data(), tables_.write(n, x >> n, k), y0, y1);
+            bytes += static_cast<std::uint64_t>(rows_) * 12;
         }
     }
     return bytes;
@@ -283,10 +308,11 @@ std::uint64_t sweepBytes(int width, int height, int tracedLevels) {
     for (int r = 0; r < 2; ++r) {
         const FrustumFrame frame = makeFrame(static_cast<Frustum>(r), width, height);
         const int levels = cascadeCount(frame.length);
-        most = std::max(
-            most,
-            IntervalRing::bytesFor(levels, frame.rows) + ConeRing::bytesFor(levels, frame.rows) +
-                ColumnWindow::bytesFor(pow2(tracedFor(tracedLevels, levels) - 1), frame.rows));
+        const int traced = tracedFor(tracedLevels, levels);
+        const auto lengths = static_cast<int>(stencilLengths(traced).size());
+        most = std::max(most, IntervalRing::bytesFor(levels, frame.rows) +
+                                  ConeRing::bytesFor(levels, frame.rows) +
+                                  ColumnWindow::bytesFor(pow2(traced - 1), lengths, frame.rows));
     }
     return most;
 }
