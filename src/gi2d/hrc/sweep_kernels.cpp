@@ -126,8 +126,11 @@ void CellTransferRowsImpl(const float* const sigma[3], const float* const emissi
     }
 }
 
-void ExtendRowsImpl(const IntervalRows& nearA, const IntervalRows& farA, const IntervalRows& nearB,
-                    const IntervalRows& farB, bool twoPaths, IntervalRowsOut out, int y0, int y1) {
+void ExtendRowsImpl(const IntervalRows& nearARef, const IntervalRows& farARef,
+                    const IntervalRows& nearBRef, const IntervalRows& farBRef, bool twoPaths,
+                    IntervalRowsOut out, int y0, int y1) {
+    // Local copies: stores through `out` cannot alias them, so their pointers stay in registers.
+    const IntervalRows nearA = nearARef, farA = farARef, nearB = nearBRef, farB = farBRef;
     const DF df;
     const int lanes = static_cast<int>(hn::Lanes(df));
     const VF half = hn::Set(df, 0.5f);
@@ -158,8 +161,11 @@ HWY_INLINE VF UpperRows(const ConeRows& a, const ConeRows& b, int c, int y, floa
                    hn::Mul(LoadCone(b, c, y), hn::Set(df, second)));
 }
 
-void MergeRowsImpl(bool odd, const MergeSide& side0, const MergeSide& side1, float secondWeight,
-                   float* const out[3], int y0, int y1) {
+void MergeRowsImpl(bool odd, const MergeSide& side0Ref, const MergeSide& side1Ref,
+                   float secondWeight, float* const outRef[3], int y0, int y1) {
+    // Local copies: stores through `out` cannot alias them, so their pointers stay in registers.
+    const MergeSide side0 = side0Ref, side1 = side1Ref;
+    float* const out[3] = {outRef[0], outRef[1], outRef[2]};
     const DF df;
     const int lanes = static_cast<int>(hn::Lanes(df));
     const VF half = hn::Set(df, 0.5f);
