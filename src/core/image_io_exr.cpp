@@ -7,6 +7,7 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfStdIO.h>
+#include <ImfThreading.h>
 
 #include <cerrno>
 #include <cstdint>
@@ -25,6 +26,7 @@
 #include "luxel/core/file_io.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
+#include "luxel/core/parallel.h"
 
 namespace luxel {
 
@@ -196,7 +198,12 @@ Status writeExrImpl(AtomicFile& out, const Image& image) {
     for (const std::string& name : names) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
     AtomicFileStream stream(out);
     {
-        Imf::OutputFile file(stream, header);
+        // ZIP compression of the line blocks runs on OpenEXR's thread pool, one thread per core.
+        static const int threads = [] {
+            Imf::setGlobalThreadCount(hardwareThreads());
+            return Imf::globalThreadCount();
+        }();
+        Imf::OutputFile file(stream, header, threads);
 
         const std::size_t xStride = sizeof(float) * image.channels();
         const std::size_t yStride = xStride * static_cast<std::size_t>(image.width());
