@@ -12,6 +12,7 @@ void ColumnWindow::reshape(int span, std::vector<float> lengths, int rows) {
     pad_ = span + 1;
     stride_ = rows + 2 * (span + 1) + kSweepRowPad;
     data_.resize(static_cast<std::size_t>(span) * lengths_.size() * 6 * stride_);
+    block_.resize(static_cast<std::size_t>(kColumnBlock) * 6 * (rows + kSweepRowPad));
     // Vacuum everywhere: t = 1, L = 0.
     for (std::size_t p = 0; p < data_.size() / stride_; ++p) {
         std::fill_n(data_.begin() + static_cast<std::ptrdiff_t>(p * stride_), stride_,
@@ -20,31 +21,48 @@ void ColumnWindow::reshape(int span, std::vector<float> lengths, int rows) {
 }
 
 std::uint64_t ColumnWindow::bytesFor(int span, int lengths, int rows) {
-    return static_cast<std::uint64_t>(span) * lengths * 6 * (rows + 2 * (span + 1) + kSweepRowPad) *
+    return (static_cast<std::uint64_t>(span) * lengths * 6 *
+                (rows + 2 * (span + 1) + kSweepRowPad) +
+            static_cast<std::uint64_t>(kColumnBlock) * 6 * (rows + kSweepRowPad)) *
            sizeof(float);
 }
 
 void ColumnWindow::load(const Medium2D& medium, const FrustumFrame& frame, int x, int v0, int v1) {
     if (v1 <= v0) return;
-    // The band's cells, de-interleaved, then one transfer per ray length.
-    thread_local std::vector<float> cells;
-    const int count = v1 - v0;
-    const std::size_t stride = static_cast<std::size_t>(count) + kSweepRowPad;
-    cells.resize(6 * stride);
-    const float* sigma = medium.absorption.data();
-    const float* emission = medium.emission.data();
-    const std::size_t width = static_cast<std::size_t>(medium.width());
-    for (int v = v0; v < v1; ++v) {
-        int cx, cy;
-        frame.toCanvas(x, v, cx, cy);
-        const std::size_t i = (static_cast<std::size_t>(cy) * width + cx) * 3;
-        for (int c = 0; c < 3; ++c) {
-            cells[c * stride + (v - v0)] = sigma[i + c];
-            cells[(3 + c) * stride + (v - v0)] = emission[i + c];
+    const std::size_t rowStride = static_cast<std::size_t>(rows_) + kSweepRowPad;
+    auto raw = [&](int column, int c) {
+        return block_.data() + (static_cast<std::size_t>(column) * 6 + c) * rowStride;
+    };
+    // The sweep runs x downwards: a block opens at its last column (or the frame's).
+    if (x % kColumnBlock == kColumnBlock - 1 || x == frame.length - 1) {
+        const int first = x - x % kColumnBlock;
+        const float* sigma = medium.absorption.data();
+        const float* emission = medium.emission.data();
+        const std::size_t width = static_cast<std::size_t>(medium.width());
+        auto copy = [&](int u, int v) {
+            int cx, cy;
+            frame.toCanvas(u, v, cx, cy);
+            const std::size_t i = (static_cast<std::size_t>(cy) * width + cx) * 3;
+            for (int c = 0; c < 3; ++c) {
+                raw(u - first, c)[v] = sigma[i + c];
+                raw(u - first, 3 + c)[v] = emission[i + c];
+            }
+        };
+        // Canvas rows are contiguous: along them for the ±x frames, down the frame column else.
+        const bool alongX = frame.frustum == Frustum::PlusX || frame.frustum == Frustum::MinusX;
+        if (alongX) {
+            for (int v = v0; v < v1; ++v) {
+                for (int u = first; u <= x; ++u) copy(u, v);
+            }
+        } else {
+            for (int u = first; u <= x; ++u) {
+                for (int v = v0; v < v1; ++v) copy(u, v);
+            }
         }
     }
-    const float* const s[3] = {&cells[0], &cells[stride], &cells[2 * stride]};
-    const float* const e[3] = {&cells[3 * stride], &cells[4 * stride], &cells[5 * stride]};
+    const int column = x % kColumnBlock;
+    const float* const s[3] = {raw(column, 0) + v0, raw(column, 1) + v0, raw(column, 2) + v0};
+    const float* const e[3] = {raw(column, 3) + v0, raw(column, 4) + v0, raw(column, 5) + v0};
     const int slot = x & (span_ - 1);
     for (int d = 0; d < lengths(); ++d) {
         float* base = data_.data() + v0;
@@ -52,7 +70,7 @@ void ColumnWindow::load(const Medium2D& medium, const FrustumFrame& frame, int x
                              base + offset(slot, d, 2)};
         float* const l[3] = {base + offset(slot, d, 3), base + offset(slot, d, 4),
                              base + offset(slot, d, 5)};
-        cellTransferRows(s, e, lengths_[d], t, l, count);
+        cellTransferRows(s, e, lengths_[d], t, l, v1 - v0);
     }
 }
 

@@ -22,7 +22,12 @@ class ColumnWindow {
     // Shapes the window for a frame (all vacuum); keeps the allocation when it is large enough.
     void reshape(int span, std::vector<float> lengths, int rows);
 
-    // Loads frame column x into its slot (rows [v0, v1) only: each team member loads its own).
+    // Frame columns are read from the canvas kColumnBlock at a time (a canvas row holds 16
+    // neighbouring pixels of a ±x frame's columns: one cache line read instead of 16).
+    static constexpr int kColumnBlock = 16;
+
+    // Loads frame column x into its slot (rows [v0, v1) only: each team member loads its own
+    // rows, and reads the canvas for the whole block of columns when x opens a block).
     void load(const Medium2D& medium, const FrustumFrame& frame, int x, int v0, int v1);
     // Columns x .. x + span - 1 into out[du * lengths + length index].
     void at(int x, CellTransfer* out) const;
@@ -39,6 +44,8 @@ class ColumnWindow {
     int span_ = 1, rows_ = 0, pad_ = 0, stride_ = 0;
     std::vector<float> lengths_;
     std::vector<float> data_;
+    // The raw sigma and E of the current block of columns: [column][6][row].
+    std::vector<float> block_;
 };
 
 // Two planes of intervals per cascade: plane p of cascade n lives in slot p & 1.

@@ -237,20 +237,40 @@ std::uint64_t FrustumSweep::merge(int n, int p, int y0, int y1) {
 }
 
 std::uint64_t FrustumSweep::readOut(int u, int plane, int y0, int y1) {
-    const float* r = plane >= 0 ? cones_.plane(0, plane, 0, 0) : nullptr;
-    const float* g = plane >= 0 ? cones_.plane(0, plane, 0, 1) : nullptr;
-    const float* b = plane >= 0 ? cones_.plane(0, plane, 0, 2) : nullptr;
+    // Each member gathers a block of read-out columns for its rows, then adds the block to the
+    // canvas along canvas rows (for the ±x frames a frame column is a canvas column).
+    constexpr int kBlock = ColumnWindow::kColumnBlock;
+    thread_local std::vector<float> pending;
+    const int band = y1 - y0;
+    pending.resize(static_cast<std::size_t>(kBlock) * 3 * band);
+    float* column = pending.data() + static_cast<std::size_t>(u % kBlock) * 3 * band;
     const Rgb sky = medium_.boundaryRadiance * LUXEL_HRC_QUARTER_TURN;
+    for (int c = 0; c < 3; ++c) {
+        const float* cones = plane >= 0 ? cones_.plane(0, plane, 0, c) : nullptr;
+        for (int v = y0; v < y1; ++v) column[c * band + (v - y0)] = cones ? cones[v] : sky[c];
+    }
+    if (u % kBlock != 0) return static_cast<std::uint64_t>(band) * 12;
+    const int last = std::min(u + kBlock - 1, frame_.length - 1);
     float* sum = beyond_.data();
     const std::size_t width = static_cast<std::size_t>(beyond_.width());
-    for (int v = y0; v < y1; ++v) {
+    auto add = [&](int w, int v) {
         int x, y;
-        frame_.toCanvas(u, v, x, y);
+        frame_.toCanvas(w, v, x, y);
         float* pixel = sum + (static_cast<std::size_t>(y) * width + x) * 3;
-        const Rgb add = r ? Rgb{r[v], g[v], b[v]} : sky;
-        for (int c = 0; c < 3; ++c) pixel[c] += add[c];
+        const float* from = pending.data() + static_cast<std::size_t>(w % kBlock) * 3 * band;
+        for (int c = 0; c < 3; ++c) pixel[c] += from[c * band + (v - y0)];
+    };
+    const bool alongX = frame_.frustum == Frustum::PlusX || frame_.frustum == Frustum::MinusX;
+    if (alongX) {
+        for (int v = y0; v < y1; ++v) {
+            for (int w = u; w <= last; ++w) add(w, v);
+        }
+    } else {
+        for (int w = u; w <= last; ++w) {
+            for (int v = y0; v < y1; ++v) add(w, v);
+        }
     }
-    return static_cast<std::uint64_t>(rows_) * 36;
+    return static_cast<std::uint64_t>(band) * (12 + (last - u + 1) * 24);
 }
 
 void FrustumSweep::run(ThreadTeam& team, int member, SweepTimes* times) {
