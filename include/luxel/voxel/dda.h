@@ -67,6 +67,15 @@ enum class ChunkSkip { Enabled, Disabled };
 Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax = kInfinity, int stepCap = 0,
             ChunkSkip skip = ChunkSkip::Enabled);
 
+// castRay's `hit` alone (an occlusion test, e.g. a shadow ray): the walk stops at the first solid
+// voxel and skips the hit's point and face coordinates.
+bool occluded(const VoxelWorld& world, const Ray& ray, double tMax = kInfinity, int stepCap = 0);
+
+// castRay run by the shared kernel (src/gpu/shaders/shared/voxel_dda.h) as written, in double:
+// the reference the CPU's own loop is tested against (castRay gives the same Hit, steps included).
+Hit castRayShared(const VoxelWorld& world, const Ray& ray, double tMax = kInfinity, int stepCap = 0,
+                  ChunkSkip skip = ChunkSkip::Enabled);
+
 // castRay for every ray (in parallel): the CPU twin of VoxelGpuRenderer::castRays.
 std::vector<Hit> castRays(const VoxelWorld& world, std::span<const Ray> rays,
                           double tMax = kInfinity, int stepCap = 0,
