@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "luxel/core/parallel.h"
+#include "voxel/cast_stream.h"
 #include "voxel/fast_walk.h"
 #include "voxel/voxel_world_access.h"
 
@@ -32,7 +33,54 @@ shared::VoxelTrace trace(const VoxelWorld& world, const Ray& ray, double tMax, i
                                  world.emptySpaceCurrent());
 }
 
+// The SIMD walk needs current distances (else castRay runs the shared kernel) and 8 bricks.
+bool streamable(const VoxelWorld& world) {
+    const Int3 b = world.brickCount();
+    return world.emptySpaceCurrent() && std::int64_t{b.x} * b.y * b.z >= 8;
+}
+
+// Runs the SIMD walk over `rays` in blocks, handing each block's traces to `take(first, traces)`.
+template <typename Take>
+void streamBlocks(const VoxelWorld& world, std::span<const Ray> rays, double tMax, int stepCap,
+                  Take&& take) {
+    constexpr std::size_t kBlock = 1024;
+    shared::VoxelTrace traces[kBlock];
+    const stream::Walk walk{&world, tMax, resolvedCap(world, stepCap)};
+    for (std::size_t first = 0; first < rays.size(); first += kBlock) {
+        const std::size_t n = std::min(kBlock, rays.size() - first);
+        stream::trace(walk, rays.subspan(first, n), traces);
+        take(first, std::span<const shared::VoxelTrace>(traces, n));
+    }
+}
+
 }  // namespace
+
+void castRayBatch(const VoxelWorld& world, std::span<const Ray> rays, std::span<Hit> hits,
+                  double tMax, int stepCap) {
+    if (!streamable(world)) {
+        for (std::size_t i = 0; i < rays.size(); ++i)
+            hits[i] = castRay(world, rays[i], tMax, stepCap);
+        return;
+    }
+    streamBlocks(world, rays, tMax, stepCap, [&](std::size_t first, auto traces) {
+        for (std::size_t i = 0; i < traces.size(); ++i) {
+            hits[first + i] = hitFromTrace(rays[first + i], traces[i]);
+        }
+    });
+}
+
+void occludedBatch(const VoxelWorld& world, std::span<const Ray> rays,
+                   std::span<std::uint8_t> occludedOut, double tMax, int stepCap) {
+    if (!streamable(world)) {
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            occludedOut[i] = occluded(world, rays[i], tMax, stepCap);
+        }
+        return;
+    }
+    streamBlocks(world, rays, tMax, stepCap, [&](std::size_t first, auto traces) {
+        for (std::size_t i = 0; i < traces.size(); ++i) occludedOut[first + i] = traces[i].hit;
+    });
+}
 
 Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap, ChunkSkip skip) {
     if (!finiteRay(ray) || !(tMax >= 0.0)) return Hit{};
@@ -60,6 +108,11 @@ std::vector<Hit> castRays(const VoxelWorld& world, std::span<const Ray> rays, do
                           int stepCap, ChunkSkip skip) {
     std::vector<Hit> hits(rays.size());
     parallelForRange(static_cast<int>(rays.size()), 1024, [&](int begin, int end) {
+        if (skip == ChunkSkip::Enabled) {
+            castRayBatch(world, rays.subspan(begin, end - begin),
+                         std::span<Hit>(hits).subspan(begin, end - begin), tMax, stepCap);
+            return;
+        }
         for (int i = begin; i < end; ++i) hits[i] = castRay(world, rays[i], tMax, stepCap, skip);
     });
     return hits;

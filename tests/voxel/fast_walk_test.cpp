@@ -1,10 +1,12 @@
 // castRay's CPU loop (src/voxel/fast_walk.h) against the shared kernel it stands in for
 // (castRayShared): the same Hit, field by field and loop count included, ray by ray, on worlds
 // and rays built to tie at edges and corners, to jump over boxes of every size and to run into
-// tMax and the step cap; and occluded() against castRay's hit.
+// tMax and the step cap; occluded() against castRay's hit; and the SIMD batch calls
+// (src/voxel/cast_stream.cpp) against castRay and occluded, ray by ray.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -50,11 +52,17 @@ struct Counts {
 Counts compare(const VoxelWorld& world, const std::vector<Ray>& rays, double tMax = kInfinity,
                int stepCap = 0) {
     Counts counts;
+    std::vector<Hit> batch(rays.size());
+    std::vector<std::uint8_t> blocked(rays.size());
+    castRayBatch(world, rays, batch, tMax, stepCap);
+    occludedBatch(world, rays, blocked, tMax, stepCap);
     for (int i = 0; i < static_cast<int>(rays.size()); ++i) {
         const Hit mine = castRay(world, rays[i], tMax, stepCap);
         const Hit reference = castRayShared(world, rays[i], tMax, stepCap);
         expectIdentical(mine, reference, i);
+        expectIdentical(batch[i], reference, i);
         EXPECT_EQ(occluded(world, rays[i], tMax, stepCap), reference.hit) << "ray " << i;
+        EXPECT_EQ(blocked[i] != 0, reference.hit) << "ray " << i;
         counts.hits += reference.hit;
         counts.capped += reference.capped;
     }
@@ -142,6 +150,42 @@ TEST(VoxelFastWalk, FarOriginsMatchTheSharedKernel) {
     }
     const Counts counts = compare(world, rays);
     EXPECT_GT(counts.hits, 1000);
+}
+
+// Worlds the batch calls leave to castRay (stale distances, fewer than 8 bricks), odd rays (NaN,
+// zero, denormal components, negative tMax) and batches of every size around the lane count.
+TEST(VoxelFastWalk, BatchEdgeCases) {
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const auto randomRays = [&](int n, double extent) {
+        std::vector<Ray> rays;
+        for (int i = 0; i < n; ++i) {
+            rays.push_back({{unit(rng) * extent, unit(rng) * extent, unit(rng) * extent},
+                            {unit(rng) - 0.5, unit(rng) - 0.5, unit(rng) - 0.5}});
+        }
+        return rays;
+    };
+    VoxelWorld tiny = VoxelWorld::create({4, 8, 4}, 4).value();  // 2 bricks
+    tiny.set(1, 2, 3, kStone);
+    tiny.set(2, 6, 1, kStone);
+    tiny.refreshEmptySpace();
+    compare(tiny, randomRays(3000, 8.0));
+
+    VoxelWorld stale = terrain({40, 40, 40}, 6);
+    stale.set(20, 38, 20, kStone);  // a brick gains its first voxel: distances stale
+    ASSERT_FALSE(stale.emptySpaceCurrent());
+    compare(stale, randomRays(3000, 40.0));
+
+    const VoxelWorld world = terrain({48, 40, 48}, 7);
+    std::vector<Ray> odd = randomRays(40, 48.0);
+    odd[3].direction = {};
+    odd[5].direction.x = std::nan("");
+    odd[7].origin.y = kInfinity;
+    odd[9].direction = {1e-310, -1.0, 0.5};
+    odd[11].direction = {0.0, -1.0, -0.0};
+    compare(world, odd);
+    compare(world, odd, -1.0);
+    for (int n = 0; n <= 40; ++n) compare(world, randomRays(n, 48.0));
 }
 
 }  // namespace
