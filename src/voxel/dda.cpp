@@ -1,31 +1,118 @@
 // castRay: the shared traversal kernel (src/gpu/shaders/shared/voxel_dda.h, the same code the GPU
-// runs) in double over a VoxelWorld; conventions in dda.h.
+// runs) in double over a VoxelWorld; conventions in dda.h. With the brick distances current (the
+// usual case) the CPU runs its own loop for that kernel (src/voxel/fast_walk.h), which visits and
+// jumps exactly as the shared one does.
 #include "luxel/voxel/dda.h"
 
 #include <bit>
 #include <cmath>
 
 #include "luxel/core/parallel.h"
+#include "voxel/cast_stream.h"
+#include "voxel/fast_walk.h"
 #include "voxel/voxel_world_access.h"
 
 namespace luxel::voxel {
 namespace shared = gpu::shared;
 
+namespace {
+
+int resolvedCap(const VoxelWorld& world, int stepCap) {
+    const Int3 size = world.size();
+    return stepCap > 0 ? stepCap : 3 * (size.x + size.y + size.z);
+}
+
+shared::VoxelTrace trace(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap,
+                         ChunkSkip skip) {
+    const Int3 size = world.size();
+    const int cap = resolvedCap(world, stepCap);
+    if (skip == ChunkSkip::Enabled) return fast::traverseAny(world, ray, tMax, cap);
+    const int chunkShift = std::countr_zero(static_cast<unsigned>(world.chunkSize()));
+    return shared::voxelTraverse(world, {size.x, size.y, size.z}, chunkShift, toShared(ray.origin),
+                                 toShared(ray.direction), tMax, cap, skip == ChunkSkip::Enabled,
+                                 world.emptySpaceCurrent());
+}
+
+// The SIMD walk needs current distances (else castRay runs the shared kernel) and 8 bricks.
+bool streamable(const VoxelWorld& world) {
+    const Int3 b = world.brickCount();
+    return world.emptySpaceCurrent() && std::int64_t{b.x} * b.y * b.z >= 8;
+}
+
+// Runs the SIMD walk over `rays` in blocks, handing each block's traces to `take(first, traces)`.
+template <typename Take>
+void streamBlocks(const VoxelWorld& world, std::span<const Ray> rays, double tMax, int stepCap,
+                  Take&& take) {
+    constexpr std::size_t kBlock = 1024;
+    shared::VoxelTrace traces[kBlock];
+    const stream::Walk walk{&world, tMax, resolvedCap(world, stepCap)};
+    for (std::size_t first = 0; first < rays.size(); first += kBlock) {
+        const std::size_t n = std::min(kBlock, rays.size() - first);
+        stream::trace(walk, rays.subspan(first, n), traces);
+        take(first, std::span<const shared::VoxelTrace>(traces, n));
+    }
+}
+
+}  // namespace
+
+void castRayBatch(const VoxelWorld& world, std::span<const Ray> rays, std::span<Hit> hits,
+                  double tMax, int stepCap) {
+    if (!streamable(world)) {
+        for (std::size_t i = 0; i < rays.size(); ++i)
+            hits[i] = castRay(world, rays[i], tMax, stepCap);
+        return;
+    }
+    streamBlocks(world, rays, tMax, stepCap, [&](std::size_t first, auto traces) {
+        for (std::size_t i = 0; i < traces.size(); ++i) {
+            hits[first + i] = hitFromTrace(rays[first + i], traces[i]);
+        }
+    });
+}
+
+void occludedBatch(const VoxelWorld& world, std::span<const Ray> rays,
+                   std::span<std::uint8_t> occludedOut, double tMax, int stepCap) {
+    if (!streamable(world)) {
+        for (std::size_t i = 0; i < rays.size(); ++i) {
+            occludedOut[i] = occluded(world, rays[i], tMax, stepCap);
+        }
+        return;
+    }
+    streamBlocks(world, rays, tMax, stepCap, [&](std::size_t first, auto traces) {
+        for (std::size_t i = 0; i < traces.size(); ++i) occludedOut[first + i] = traces[i].hit;
+    });
+}
+
 Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap, ChunkSkip skip) {
+    if (!finiteRay(ray) || !(tMax >= 0.0)) return Hit{};
+    return hitFromTrace(ray, trace(world, ray, tMax, stepCap, skip));
+}
+
+Hit castRayShared(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap,
+                  ChunkSkip skip) {
     const Int3 size = world.size();
     if (!finiteRay(ray) || !(tMax >= 0.0)) return Hit{};
     const int cap = stepCap > 0 ? stepCap : 3 * (size.x + size.y + size.z);
     const int chunkShift = std::countr_zero(static_cast<unsigned>(world.chunkSize()));
-    const shared::VoxelTrace trace = shared::voxelTraverse(
-        world, {size.x, size.y, size.z}, chunkShift, toShared(ray.origin), toShared(ray.direction),
-        tMax, cap, skip == ChunkSkip::Enabled, world.emptySpaceCurrent());
-    return hitFromTrace(ray, trace);
+    return hitFromTrace(
+        ray, shared::voxelTraverse(world, {size.x, size.y, size.z}, chunkShift,
+                                   toShared(ray.origin), toShared(ray.direction), tMax, cap,
+                                   skip == ChunkSkip::Enabled, world.emptySpaceCurrent()));
+}
+
+bool occluded(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap) {
+    if (!finiteRay(ray) || !(tMax >= 0.0)) return false;
+    return trace(world, ray, tMax, stepCap, ChunkSkip::Enabled).hit;
 }
 
 std::vector<Hit> castRays(const VoxelWorld& world, std::span<const Ray> rays, double tMax,
                           int stepCap, ChunkSkip skip) {
     std::vector<Hit> hits(rays.size());
     parallelForRange(static_cast<int>(rays.size()), 1024, [&](int begin, int end) {
+        if (skip == ChunkSkip::Enabled) {
+            castRayBatch(world, rays.subspan(begin, end - begin),
+                         std::span<Hit>(hits).subspan(begin, end - begin), tMax, stepCap);
+            return;
+        }
         for (int i = begin; i < end; ++i) hits[i] = castRay(world, rays[i], tMax, stepCap, skip);
     });
     return hits;

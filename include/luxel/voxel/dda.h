@@ -27,6 +27,7 @@
 //   and block jumps); reaching it returns hit = false, capped = true, steps == cap.
 #pragma once
 
+#include <cstdint>
 #include <limits>
 #include <span>
 #include <vector>
@@ -66,6 +67,23 @@ enum class ChunkSkip { Enabled, Disabled };
 // more than any traversal of the world needs (at most sx + sy + sz - 2 cells).
 Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax = kInfinity, int stepCap = 0,
             ChunkSkip skip = ChunkSkip::Enabled);
+
+// castRay's `hit` alone (an occlusion test, e.g. a shadow ray): the walk stops at the first solid
+// voxel and skips the hit's point and face coordinates.
+bool occluded(const VoxelWorld& world, const Ray& ray, double tMax = kInfinity, int stepCap = 0);
+
+// castRay and occluded for many rays on the calling thread, several at a time (one ray per SIMD
+// lane, coherent or not): hits[i] == castRay(world, rays[i], tMax, stepCap) field by field, steps
+// included, and occluded[i] == occluded(world, rays[i], tMax, stepCap). The spans have equal sizes.
+void castRayBatch(const VoxelWorld& world, std::span<const Ray> rays, std::span<Hit> hits,
+                  double tMax = kInfinity, int stepCap = 0);
+void occludedBatch(const VoxelWorld& world, std::span<const Ray> rays,
+                   std::span<std::uint8_t> occluded, double tMax = kInfinity, int stepCap = 0);
+
+// castRay run by the shared kernel (src/gpu/shaders/shared/voxel_dda.h) as written, in double:
+// the reference the CPU's own loop is tested against (castRay gives the same Hit, steps included).
+Hit castRayShared(const VoxelWorld& world, const Ray& ray, double tMax = kInfinity, int stepCap = 0,
+                  ChunkSkip skip = ChunkSkip::Enabled);
 
 // castRay for every ray (in parallel): the CPU twin of VoxelGpuRenderer::castRays.
 std::vector<Hit> castRays(const VoxelWorld& world, std::span<const Ray> rays,

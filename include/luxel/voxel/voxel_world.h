@@ -81,6 +81,10 @@ class VoxelWorld {
     }
     void refreshEmptySpace();
     Int3 brickCount() const { return brickCount_; }
+    // The masks and distances as arrays, brick-linear with x fastest (index (bz * by + y) * bx + x
+    // for brickCount() (bx, by, bz)), for traversal loops that gather them for several rays.
+    const std::uint64_t* brickMaskData() const { return bricks_.data(); }
+    const std::uint8_t* brickDistanceData() const { return brickDistance_.data(); }
 
     // Same size and the same voxel everywhere (the chunk size does not matter).
     bool operator==(const VoxelWorld& other) const;

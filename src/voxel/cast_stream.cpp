@@ -1,0 +1,503 @@
+// castRayBatch and occludedBatch: castRay's walk (src/voxel/fast_walk.h) run for several rays at
+// once, one ray per SIMD lane (Highway, the widest vector the CPU has: 8 doubles with AVX-512, 4
+// with AVX2), each lane with its own ray so coherent and incoherent rays alike fill the vector. A
+// lane whose ray ends (hit, miss, step cap) records it and, once half the lanes are idle, all idle
+// lanes take the next rays. Steps and jumps are one operation per lane: a voxel of a non-empty
+// brick is a box of one cell, left by the same exit test as an empty box of bricks (for one cell it
+// picks the A&W step, lowest axis on ties), so each lane follows its ray through the same cells
+// with the same double arithmetic as castRay and the results equal castRay's bit for bit, loop
+// count included (docs/algorithms/voxel-traversal.md §4).
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "voxel/cast_stream.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// clang-format off
+#include <hwy/highway.h>
+// clang-format on
+
+#include <cstddef>
+#include <cstdint>
+
+#include "voxel/cast_stream.h"
+#include "voxel/fast_walk.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace luxel::voxel::stream::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+namespace shared = gpu::shared;
+
+// Lane state, as arrays between refills (one value per lane).
+enum Field {
+    kOx,
+    kOy,
+    kOz,
+    kIx,
+    kIy,
+    kIz,
+    kDx,
+    kDy,
+    kDz,
+    kSx,
+    kSy,
+    kSz,
+    kKx,
+    kKy,
+    kKz,
+    kCx,
+    kCy,
+    kCz,
+    kNx,
+    kNy,
+    kNz,
+    kT,
+    kAxis,
+    kSteps,
+    kRay,
+    kFields
+};
+
+void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::VoxelTrace* out) {
+    using D = hn::ScalableTag<double>;
+    const D d;
+    const hn::RebindToSigned<D> di;
+    const hn::RebindToUnsigned<D> du;
+    using V = hn::Vec<D>;
+    using M = hn::Mask<D>;
+    const std::size_t lanes = hn::Lanes(d);
+    constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
+    HWY_ASSERT(lanes <= kMaxLanes);
+    // Two packets of lanes, stepped alternately so one's memory reads overlap the other's
+    // arithmetic (a step is one long dependency chain).
+    HWY_ALIGN double state[2][kFields][kMaxLanes] = {};
+    for (std::size_t l = 0; l < lanes; ++l) state[0][kRay][l] = state[1][kRay][l] = -1.0;
+
+    const VoxelWorld& world = *walk.world;
+    const Int3 size = world.size();
+    const Int3 bricks = world.brickCount();
+    const std::uint64_t* masks = world.brickMaskData();
+    const std::uint8_t* distances = world.brickDistanceData();
+    const std::int64_t brickTotal = std::int64_t{bricks.x} * bricks.y * bricks.z;
+    const double tMax = walk.tMax;
+
+    const V zero = hn::Zero(d), one = hn::Set(d, 1.0), four = hn::Set(d, 4.0);
+    const V quarter = hn::Set(d, 0.25), minusOne = hn::Set(d, -1.0);
+    const V inf = hn::Set(d, fast::kInf), vtMax = hn::Set(d, tMax);
+    const V cap = hn::Set(d, static_cast<double>(walk.cap));
+    const V sizeX = hn::Set(d, size.x), sizeY = hn::Set(d, size.y), sizeZ = hn::Set(d, size.z);
+    const V bricksX = hn::Set(d, bricks.x), bricksY = hn::Set(d, bricks.y);
+    const auto lastByte = hn::Set(di, brickTotal - 8);
+    const M none = hn::Lt(zero, zero);
+
+    // Rays started (voxelStart, one per lane) but not yet given a lane, as lane arrays.
+    HWY_ALIGN double pending[kFields][kMaxLanes];
+    std::size_t pendingCount = 0, pendingNext = 0;
+    std::size_t nextRay = 0;
+    // voxelStart for the next rays, a vector of them at once, into `pending`. Rays that end at
+    // the start (a miss, or rays the fast walk does not take) are recorded here.
+    const auto startRays = [&] {
+        HWY_ALIGN double ray[kFields][kMaxLanes] = {};
+        std::size_t m = 0;
+        while (m < lanes && nextRay < count) {
+            const std::size_t i = nextRay++;
+            const Ray& r = rays[i];
+            if (!finiteRay(r) || !(tMax >= 0.0)) {
+                out[i] = shared::voxelMiss(0, false);
+                continue;
+            }
+            if (!fast::eligible(world, r)) {
+                out[i] = fast::traverseAny(world, r, tMax, walk.cap);
+                continue;
+            }
+            for (int a = 0; a < 3; ++a) {
+                ray[kOx + a][m] = r.origin[a];
+                ray[kDx + a][m] = r.direction[a];
+            }
+            ray[kRay][m] = static_cast<double>(i);
+            ++m;
+        }
+        for (std::size_t l = m; l < lanes; ++l) {  // unused lanes: a harmless ray, dropped below
+            for (int a = 0; a < 3; ++a) {
+                ray[kOx + a][l] = 0.5;
+                ray[kDx + a][l] = 1.0;
+            }
+            ray[kRay][l] = -1.0;
+        }
+        const V sizes[3] = {sizeX, sizeY, sizeZ};
+        V o[3], dir[3], inv[3];
+        M flat[3];
+        M reject = hn::Lt(hn::Load(d, ray[kRay]), zero);
+        V tEnter = hn::Neg(inf), tExit = inf, enterAxis = minusOne;
+        for (int a = 0; a < 3; ++a) {
+            o[a] = hn::Load(d, ray[kOx + a]);
+            dir[a] = hn::Load(d, ray[kDx + a]);
+            inv[a] = hn::Div(one, dir[a]);
+            flat[a] = hn::Eq(dir[a], zero);
+            const M inside = hn::And(hn::Ge(o[a], zero), hn::Lt(o[a], sizes[a]));
+            reject = hn::Or(reject, hn::AndNot(inside, flat[a]));
+            V t0 = hn::Mul(hn::Sub(zero, o[a]), inv[a]);
+            V t1 = hn::Mul(hn::Sub(sizes[a], o[a]), inv[a]);
+            const M swap = hn::Gt(t0, t1);
+            const V near = hn::IfThenElse(swap, t1, t0);
+            t1 = hn::IfThenElse(swap, t0, t1);
+            t0 = near;
+            const M enter = hn::AndNot(flat[a], hn::Ge(t0, tEnter));
+            tEnter = hn::IfThenElse(enter, t0, tEnter);
+            enterAxis = hn::IfThenElse(enter, hn::Set(d, a), enterAxis);
+            tExit = hn::IfThenElse(hn::AndNot(flat[a], hn::Lt(t1, tExit)), t1, tExit);
+        }
+        const V t0 = hn::IfThenElse(hn::Lt(tEnter, zero), zero, tEnter);  // max(tEnter, 0)
+        reject = hn::Or(reject, hn::Or(hn::Gt(tEnter, tExit), hn::Lt(tExit, t0)));
+        reject = hn::Or(reject, hn::And(hn::Eq(tExit, t0), hn::Lt(tEnter, t0)));
+        reject = hn::Or(reject, hn::Gt(t0, vtMax));
+        const M fromOutside = hn::Ge(tEnter, zero);
+        const M atOrigin = hn::Eq(t0, zero);
+        V cell[3], stp[3];
+        for (int a = 0; a < 3; ++a) {
+            const M up = hn::Gt(dir[a], zero), down = hn::Lt(dir[a], zero);
+            stp[a] = hn::IfThenElse(up, one, hn::IfThenElseZero(down, minusOne));
+            const V p = hn::IfThenElse(atOrigin, o[a], hn::Add(o[a], hn::Mul(t0, dir[a])));
+            const V clamped =
+                hn::IfThenElse(hn::Lt(sizes[a], hn::IfThenElse(hn::Lt(p, minusOne), minusOne, p)),
+                               sizes[a], hn::IfThenElse(hn::Lt(p, minusOne), minusOne, p));
+            V f = hn::Floor(clamped);
+            f = hn::IfThenElse(hn::And(hn::Eq(p, f), down), hn::Sub(f, one), f);
+            f = hn::Min(hn::Max(f, zero), hn::Sub(sizes[a], one));
+            const M entered = hn::And(fromOutside, hn::Eq(enterAxis, hn::Set(d, a)));
+            cell[a] = hn::IfThenElse(entered, hn::IfThenElse(up, zero, hn::Sub(sizes[a], one)), f);
+        }
+        // The face the first cell is entered through (voxelStart's rule).
+        V best = hn::Neg(inf), inner = minusOne;
+        for (int a = 0; a < 3; ++a) {
+            const V k = hn::IfThenElseZero(hn::Lt(stp[a], zero), one);  // exitT(cell, -stp)
+            const V te = hn::Mul(hn::Sub(hn::Add(cell[a], k), o[a]), inv[a]);
+            const M better = hn::AndNot(flat[a], hn::Ge(te, best));
+            best = hn::IfThenElse(better, te, best);
+            inner = hn::IfThenElse(better, hn::Set(d, a), inner);
+        }
+        inner = hn::IfThenElse(hn::Ge(best, zero), inner, minusOne);
+        hn::Store(hn::IfThenElse(fromOutside, enterAxis, inner), d, ray[kAxis]);
+        hn::Store(t0, d, ray[kT]);
+        for (int a = 0; a < 3; ++a) {
+            const V k = hn::IfThenElseZero(hn::Gt(stp[a], zero), one);
+            hn::Store(inv[a], d, ray[kIx + a]);
+            hn::Store(stp[a], d, ray[kSx + a]);
+            hn::Store(k, d, ray[kKx + a]);
+            hn::Store(cell[a], d, ray[kCx + a]);
+            hn::Store(
+                hn::IfThenElse(flat[a], inf, hn::Mul(hn::Sub(hn::Add(cell[a], k), o[a]), inv[a])),
+                d, ray[kNx + a]);
+        }
+        HWY_ALIGN std::uint8_t rejected[8] = {};
+        hn::StoreMaskBits(d, reject, rejected);
+        pendingCount = pendingNext = 0;
+        for (std::size_t l = 0; l < m; ++l) {
+            if ((rejected[l / 8] >> (l % 8)) & 1) {
+                out[static_cast<std::size_t>(ray[kRay][l])] = shared::voxelMiss(0, false);
+                continue;
+            }
+            for (int f = 0; f < kFields; ++f) pending[f][pendingCount] = ray[f][l];
+            pending[kSteps][pendingCount] = 0.0;
+            ++pendingCount;
+        }
+    };
+    // Gives idle lanes the next started rays until every lane is busy or the rays run out.
+    const auto refill = [&](int p) {
+        for (std::size_t l = 0; l < lanes; ++l) {
+            if (state[p][kRay][l] >= 0.0) continue;
+            while (pendingNext == pendingCount && nextRay < count) startRays();
+            if (pendingNext == pendingCount) return;
+            for (int f = 0; f < kFields; ++f) state[p][f][l] = pending[f][pendingNext];
+            ++pendingNext;
+        }
+    };
+    const auto raysLeft = [&] { return nextRay < count || pendingNext < pendingCount; };
+
+    struct Packet {
+        V ox, oy, oz, ix, iy, iz, dx, dy, dz, sx, sy, sz, kx, ky, kz;
+        V cx, cy, cz, nx, ny, nz, t, axis, steps, ray;
+        M active;
+    };
+    const auto load = [&](Packet& P, int p) {
+        P.ox = hn::Load(d, state[p][kOx]);
+        P.oy = hn::Load(d, state[p][kOy]);
+        P.oz = hn::Load(d, state[p][kOz]);
+        P.ix = hn::Load(d, state[p][kIx]);
+        P.iy = hn::Load(d, state[p][kIy]);
+        P.iz = hn::Load(d, state[p][kIz]);
+        P.dx = hn::Load(d, state[p][kDx]);
+        P.dy = hn::Load(d, state[p][kDy]);
+        P.dz = hn::Load(d, state[p][kDz]);
+        P.sx = hn::Load(d, state[p][kSx]);
+        P.sy = hn::Load(d, state[p][kSy]);
+        P.sz = hn::Load(d, state[p][kSz]);
+        P.kx = hn::Load(d, state[p][kKx]);
+        P.ky = hn::Load(d, state[p][kKy]);
+        P.kz = hn::Load(d, state[p][kKz]);
+        P.cx = hn::Load(d, state[p][kCx]);
+        P.cy = hn::Load(d, state[p][kCy]);
+        P.cz = hn::Load(d, state[p][kCz]);
+        P.nx = hn::Load(d, state[p][kNx]);
+        P.ny = hn::Load(d, state[p][kNy]);
+        P.nz = hn::Load(d, state[p][kNz]);
+        P.t = hn::Load(d, state[p][kT]);
+        P.axis = hn::Load(d, state[p][kAxis]);
+        P.steps = hn::Load(d, state[p][kSteps]);
+        P.ray = hn::Load(d, state[p][kRay]);
+        P.active = hn::Ge(P.ray, zero);
+    };
+    const auto store = [&](const Packet& P, int p) {
+        hn::Store(P.ox, d, state[p][kOx]);
+        hn::Store(P.oy, d, state[p][kOy]);
+        hn::Store(P.oz, d, state[p][kOz]);
+        hn::Store(P.ix, d, state[p][kIx]);
+        hn::Store(P.iy, d, state[p][kIy]);
+        hn::Store(P.iz, d, state[p][kIz]);
+        hn::Store(P.dx, d, state[p][kDx]);
+        hn::Store(P.dy, d, state[p][kDy]);
+        hn::Store(P.dz, d, state[p][kDz]);
+        hn::Store(P.sx, d, state[p][kSx]);
+        hn::Store(P.sy, d, state[p][kSy]);
+        hn::Store(P.sz, d, state[p][kSz]);
+        hn::Store(P.kx, d, state[p][kKx]);
+        hn::Store(P.ky, d, state[p][kKy]);
+        hn::Store(P.kz, d, state[p][kKz]);
+        hn::Store(P.cx, d, state[p][kCx]);
+        hn::Store(P.cy, d, state[p][kCy]);
+        hn::Store(P.cz, d, state[p][kCz]);
+        hn::Store(P.nx, d, state[p][kNx]);
+        hn::Store(P.ny, d, state[p][kNy]);
+        hn::Store(P.nz, d, state[p][kNz]);
+        hn::Store(P.t, d, state[p][kT]);
+        hn::Store(P.axis, d, state[p][kAxis]);
+        hn::Store(P.steps, d, state[p][kSteps]);
+        hn::Store(P.ray, d, state[p][kRay]);
+    };
+
+    // One iteration of voxelTraverse's loop for every busy lane of P; true when P has ended
+    // rays and either half its lanes are idle with rays left to start, or all are idle.
+    const auto advance = [&](Packet & P) __attribute__((always_inline))->bool {
+        V &ox = P.ox, &oy = P.oy, &oz = P.oz, &ix = P.ix, &iy = P.iy, &iz = P.iz;
+        V &dx = P.dx, &dy = P.dy, &dz = P.dz, &sx = P.sx, &sy = P.sy, &sz = P.sz;
+        V &kx = P.kx, &ky = P.ky, &kz = P.kz, &cx = P.cx, &cy = P.cy, &cz = P.cz;
+        V &nx = P.nx, &ny = P.ny, &nz = P.nz, &t = P.t, &axis = P.axis;
+        V &steps = P.steps, &ray = P.ray;
+        M& active = P.active;
+        {
+            // The loop head of voxelTraverse: the step cap, then the current cell's brick.
+            const M capped = hn::And(active, hn::Ge(steps, cap));
+            const M go = hn::AndNot(capped, active);
+            steps = hn::IfThenElse(go, hn::Add(steps, one), steps);
+            const V bx = hn::Floor(hn::Mul(cx, quarter));
+            const V by = hn::Floor(hn::Mul(cy, quarter));
+            const V bz = hn::Floor(hn::Mul(cz, quarter));
+            const auto brick =
+                hn::ConvertTo(di, hn::MulAdd(hn::MulAdd(bz, bricksY, by), bricksX, bx));
+            const auto mask = hn::GatherIndex(du, masks, brick);
+            const V bit = hn::MulAdd(
+                hn::NegMulAdd(bz, four, cz), hn::Set(d, 16.0),
+                hn::MulAdd(hn::NegMulAdd(by, four, cy), four, hn::NegMulAdd(bx, four, cx)));
+            const auto bitU = hn::BitCast(du, hn::ConvertTo(di, bit));
+            const auto setBit = hn::And(mask >> bitU, hn::Set(du, 1));
+            const M hit = hn::And(go, hn::RebindMask(d, hn::Ne(setBit, hn::Zero(du))));
+            const M occupied = hn::RebindMask(d, hn::Ne(mask, hn::Zero(du)));
+            const M live = hn::AndNot(hit, go);
+
+            // The box to leave: the cell itself in a non-empty brick, else the empty box of bricks
+            // within distance - 1 (clipped to the world).
+            const auto offset = hn::Min(brick, lastByte);
+            const auto word =
+                hn::GatherOffset(di, reinterpret_cast<const std::int64_t*>(distances), offset);
+            const auto shift = hn::ShiftLeft<3>(hn::Sub(brick, offset));
+            const auto byte =
+                hn::And(hn::BitCast(di, hn::BitCast(du, word) >> hn::BitCast(du, shift)),
+                        hn::Set(di, 0xFF));
+            const V r = hn::Sub(hn::ConvertTo(d, byte), one);
+            const auto boxLo = [&](V b, V c) {
+                return hn::IfThenElse(occupied, c, hn::Max(hn::Mul(hn::Sub(b, r), four), zero));
+            };
+            const auto boxHi = [&](V b, V c, V n) {
+                return hn::IfThenElse(
+                    occupied, c,
+                    hn::Sub(hn::Min(hn::Mul(hn::Add(hn::Add(b, r), one), four), n), one));
+            };
+            const V lx = boxLo(bx, cx), ly = boxLo(by, cy), lz = boxLo(bz, cz);
+            const V hx = boxHi(bx, cx, sizeX), hy = boxHi(by, cy, sizeY), hz = boxHi(bz, cz, sizeZ);
+            // exitAt: (cell + k - o) * inv, the one boundary formula.
+            const auto exitAt = [&](V c, V k, V o, V inv) {
+                return hn::Mul(hn::Sub(hn::Add(c, k), o), inv);
+            };
+            const M upX = hn::Gt(sx, zero), upY = hn::Gt(sy, zero), upZ = hn::Gt(sz, zero);
+            const M flatX = hn::Eq(sx, zero), flatY = hn::Eq(sy, zero), flatZ = hn::Eq(sz, zero);
+            const V tx =
+                hn::IfThenElse(flatX, inf, exitAt(hn::IfThenElse(upX, hx, lx), kx, ox, ix));
+            const V ty =
+                hn::IfThenElse(flatY, inf, exitAt(hn::IfThenElse(upY, hy, ly), ky, oy, iy));
+            const V tz =
+                hn::IfThenElse(flatZ, inf, exitAt(hn::IfThenElse(upZ, hz, lz), kz, oz, iz));
+            // The exit axis: the first plane crossed, lowest axis on ties.
+            const M pickY = hn::Lt(ty, tx);
+            V tJump = hn::IfThenElse(pickY, ty, tx);
+            const M pickZ = hn::Lt(tz, tJump);
+            tJump = hn::IfThenElse(pickZ, tz, tJump);
+            const M selZ = pickZ;
+            const M selY = hn::AndNot(pickZ, pickY);
+            const M selX = hn::Not(hn::Or(pickY, pickZ));
+            const M escaped = hn::And(live, hn::Eq(tJump, inf));
+            const M move = hn::AndNot(escaped, live);
+
+            // The other axes: the first cell whose exit the per-voxel loop has not yet taken at
+            // tJump (taken: earlier, or tied and a lower axis than the exit axis).
+            const auto settle = [&](V& c, V& next, M sel, M flat, M up, V lo, V hi, V o, V dir,
+                                    V inv, V k, V n, M lower) {
+                const auto taken = [&](V tc) {
+                    return hn::Or(hn::Lt(tc, tJump), hn::And(hn::Eq(tc, tJump), lower));
+                };
+                const M need = hn::And(hn::AndNot(hn::Or(sel, flat), move), taken(next));
+                if (hn::AllFalse(d, need)) return;
+                const V s = hn::IfThenElse(up, one, minusOne);
+                const V first = c, last = hn::IfThenElse(up, hi, lo);
+                V g = hn::Floor(
+                    hn::Min(hn::Max(hn::MulAdd(tJump, dir, o), minusOne), hn::Add(n, one)));
+                g = hn::IfThenElse(up, hn::Min(hn::Max(g, first), last),
+                                   hn::Max(hn::Min(g, first), last));
+                // Usually the guess is the cell or one off: one correction each way, then loops
+                // only where a lane is still short of its cell.
+                const auto backOk = [&](V cell) {
+                    return hn::AndNot(taken(exitAt(hn::Sub(cell, s), k, o, inv)),
+                                      hn::Ne(cell, first));
+                };
+                const M back = hn::And(need, backOk(g));
+                g = hn::IfThenElse(back, hn::Sub(g, s), g);
+                V tc = exitAt(g, k, o, inv);
+                M forward = hn::And(need, hn::And(hn::Ne(g, last), taken(tc)));
+                g = hn::IfThenElse(forward, hn::Add(g, s), g);
+                tc = hn::IfThenElse(forward, exitAt(g, k, o, inv), tc);
+                M more = hn::Or(hn::And(back, backOk(g)),
+                                hn::And(forward, hn::And(hn::Ne(g, last), taken(tc))));
+                if (HWY_UNLIKELY(!hn::AllFalse(d, more))) {
+                    for (;;) {
+                        const M again = hn::And(need, backOk(g));
+                        if (hn::AllFalse(d, again)) break;
+                        g = hn::IfThenElse(again, hn::Sub(g, s), g);
+                    }
+                    tc = exitAt(g, k, o, inv);
+                    for (;;) {
+                        forward = hn::And(need, hn::And(hn::Ne(g, last), taken(tc)));
+                        if (hn::AllFalse(d, forward)) break;
+                        g = hn::IfThenElse(forward, hn::Add(g, s), g);
+                        tc = hn::IfThenElse(forward, exitAt(g, k, o, inv), tc);
+                    }
+                }
+                c = hn::IfThenElse(need, g, c);
+                next = hn::IfThenElse(need, tc, next);
+            };
+            const M lowerX = hn::Not(selX);  // a > 0
+            const M lowerY = selZ;           // a > 1
+            V ncx = cx, ncy = cy, ncz = cz;
+            settle(ncx, nx, selX, flatX, upX, lx, hx, ox, dx, ix, kx, sizeX, lowerX);
+            settle(ncy, ny, selY, flatY, upY, ly, hy, oy, dy, iy, ky, sizeY, lowerY);
+            settle(ncz, nz, selZ, flatZ, upZ, lz, hz, oz, dz, iz, kz, sizeZ, none);
+            // The exit axis crosses its box plane.
+            ncx = hn::IfThenElse(hn::And(move, selX),
+                                 hn::IfThenElse(upX, hn::Add(hx, one), hn::Sub(lx, one)), ncx);
+            ncy = hn::IfThenElse(hn::And(move, selY),
+                                 hn::IfThenElse(upY, hn::Add(hy, one), hn::Sub(ly, one)), ncy);
+            ncz = hn::IfThenElse(hn::And(move, selZ),
+                                 hn::IfThenElse(upZ, hn::Add(hz, one), hn::Sub(lz, one)), ncz);
+            const auto outsideAxis = [&](V c, V n) {
+                return hn::Or(hn::Lt(c, zero), hn::Ge(c, n));
+            };
+            const M outside = hn::Or(hn::Or(outsideAxis(ncx, sizeX), outsideAxis(ncy, sizeY)),
+                                     hn::Or(outsideAxis(ncz, sizeZ), hn::Gt(tJump, vtMax)));
+            const M left = hn::And(move, outside);
+            const M stepped = hn::AndNot(outside, move);
+            t = hn::IfThenElse(move, tJump, t);
+            axis = hn::IfThenElse(
+                move, hn::IfThenElse(selX, zero, hn::IfThenElse(selY, one, hn::Set(d, 2.0))), axis);
+            cx = hn::IfThenElse(stepped, ncx, cx);
+            cy = hn::IfThenElse(stepped, ncy, cy);
+            cz = hn::IfThenElse(stepped, ncz, cz);
+            nx = hn::IfThenElse(hn::And(stepped, selX), exitAt(cx, kx, ox, ix), nx);
+            ny = hn::IfThenElse(hn::And(stepped, selY), exitAt(cy, ky, oy, iy), ny);
+            nz = hn::IfThenElse(hn::And(stepped, selZ), exitAt(cz, kz, oz, iz), nz);
+
+            // Rays that ended: record them, free their lanes.
+            const M ended = hn::Or(hn::Or(capped, hit), hn::Or(escaped, left));
+            if (!hn::AllFalse(d, ended)) {
+                HWY_ALIGN double lane[8][kMaxLanes];
+                HWY_ALIGN std::uint8_t bits[(kMaxLanes + 7) / 8 + 8] = {};
+                hn::Store(cx, d, lane[0]);
+                hn::Store(cy, d, lane[1]);
+                hn::Store(cz, d, lane[2]);
+                hn::Store(t, d, lane[3]);
+                hn::Store(axis, d, lane[4]);
+                hn::Store(steps, d, lane[5]);
+                hn::Store(ray, d, lane[6]);
+                hn::Store(hn::IfThenElseZero(hit, one), d, lane[7]);
+                hn::StoreMaskBits(d, ended, bits);
+                HWY_ALIGN double cappedLane[kMaxLanes];
+                hn::Store(hn::IfThenElseZero(capped, one), d, cappedLane);
+                HWY_ALIGN double stepX[kMaxLanes], stepY[kMaxLanes], stepZ[kMaxLanes];
+                hn::Store(sx, d, stepX);
+                hn::Store(sy, d, stepY);
+                hn::Store(sz, d, stepZ);
+                for (std::size_t l = 0; l < lanes; ++l) {
+                    if (!((bits[l / 8] >> (l % 8)) & 1)) continue;
+                    const std::size_t i = static_cast<std::size_t>(lane[6][l]);
+                    const int n = static_cast<int>(lane[5][l]);
+                    if (lane[7][l] != 0.0) {
+                        out[i] = shared::VoxelTrace(
+                            true, false,
+                            shared::ivec3(int(lane[0][l]), int(lane[1][l]), int(lane[2][l])),
+                            lane[3][l], int(lane[4][l]),
+                            shared::ivec3(int(stepX[l]), int(stepY[l]), int(stepZ[l])), n);
+                    } else {
+                        out[i] = shared::voxelMiss(n, cappedLane[l] != 0.0);
+                    }
+                }
+                ray = hn::IfThenElse(ended, minusOne, ray);
+                active = hn::AndNot(ended, active);
+                const std::size_t idle = lanes - hn::CountTrue(d, active);
+                return (idle * 2 >= lanes && raysLeft()) || idle == lanes;
+            }
+        }
+        return false;
+    };
+
+    refill(0);
+    refill(1);
+    Packet A, B;
+    load(A, 0);
+    load(B, 1);
+    if (hn::AllFalse(d, A.active) && hn::AllFalse(d, B.active)) return;  // no ray got a lane
+    for (;;) {
+        const bool wantA = advance(A);
+        const bool wantB = advance(B);
+        if (HWY_LIKELY(!wantA && !wantB)) continue;
+        if (wantA) {
+            store(A, 0);
+            refill(0);
+            load(A, 0);
+        }
+        if (wantB) {
+            store(B, 1);
+            refill(1);
+            load(B, 1);
+        }
+        if (hn::AllFalse(d, A.active) && hn::AllFalse(d, B.active) && !raysLeft()) return;
+    }
+}
+
+}  // namespace luxel::voxel::stream::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace luxel::voxel::stream {
+
+HWY_EXPORT(TraceStream);
+
+void trace(const Walk& walk, std::span<const Ray> rays, gpu::shared::VoxelTrace* out) {
+    HWY_DYNAMIC_DISPATCH(TraceStream)(walk, rays.data(), rays.size(), out);
+}
+
+}  // namespace luxel::voxel::stream
+#endif

@@ -1,0 +1,198 @@
+// The CPU's own loop for the shared voxel traversal (src/gpu/shaders/shared/voxel_dda.h with the
+// brick distances current): the same visits and jumps, in the same order, with the same double
+// arithmetic, hence the same hit, t and loop count bit for bit, but written for a CPU
+// (docs/algorithms/voxel-traversal.md §4):
+// - the per-axis state lives in named scalars (three Axis values the compiler keeps in
+//   registers) instead of arrays indexed by a run-time axis;
+// - a step picks its axis with comparisons and conditional moves, no indexed store;
+// - a jump finds the cell on the other axes from floor(o + t d) and corrects it by the exit-t
+//   test (at most a step or two), whatever the size of the box.
+// The result equals the shared kernel's because every cell boundary uses the one formula
+// (voxelExitT), which is monotone in the cell index, so "the first cell whose exit the loop has not
+// yet taken" is one cell however it is searched for.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+
+#include "voxel/voxel_world_access.h"
+
+namespace luxel::voxel::fast {
+
+namespace shared = gpu::shared;
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// One axis of the walk: ray, cell and the t of the cell's exit boundary.
+struct Axis {
+    double o, d, inv;
+    int stp, size, cell;
+    double next;
+
+    // voxelExitT for this axis (the formula of every boundary).
+    double exitAt(int c) const { return (double(c + (stp > 0 ? 1 : 0)) - o) * inv; }
+};
+
+// Whether the fast loop takes this ray: the brick distances are current and every non-zero
+// direction component has a finite reciprocal (a denormal component's is inf, whose products the
+// shared kernel orders by its own rules; it keeps those rays).
+inline bool eligible(const VoxelWorld& world, const Ray& ray) {
+    if (!world.emptySpaceCurrent()) return false;
+    for (int a = 0; a < 3; ++a) {
+        const double d = ray.direction[a];
+        if (d != 0.0 && !std::isfinite(1.0 / d)) return false;
+    }
+    return true;
+}
+
+// The shared kernel's voxelTraverse(jumps = true, distancesCurrent = true) for an eligible ray
+// (finite, non-zero direction).
+inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, double tMax, int cap) {
+    shared::VoxelWalk w;
+    w.o = toShared(ray.origin);
+    w.d = toShared(ray.direction);
+    w.inv = shared::dvec3(1.0 / w.d.x, 1.0 / w.d.y, 1.0 / w.d.z);
+    const Int3 size = world.size();
+    w.size = shared::ivec3(size.x, size.y, size.z);
+    if (!shared::voxelStart(w, tMax)) return shared::voxelMiss(0, false);
+
+    Axis x{w.o.x, w.d.x, w.inv.x, w.stp[0], size.x, w.cell.x, w.next[0]};
+    Axis y{w.o.y, w.d.y, w.inv.y, w.stp[1], size.y, w.cell.y, w.next[1]};
+    Axis z{w.o.z, w.d.z, w.inv.z, w.stp[2], size.z, w.cell.z, w.next[2]};
+    double t = w.t;
+    int axis = w.axis;
+    int steps = 0;
+
+    const auto miss = [&](bool capped) { return shared::voxelMiss(steps, capped); };
+    const auto outside = [&] {
+        return static_cast<unsigned>(x.cell) >= static_cast<unsigned>(x.size) ||
+               static_cast<unsigned>(y.cell) >= static_cast<unsigned>(y.size) ||
+               static_cast<unsigned>(z.cell) >= static_cast<unsigned>(z.size);
+    };
+    constexpr int kShift = VoxelWorld::kBrickShift;
+    for (;;) {
+        if (steps >= cap) return miss(true);
+        ++steps;
+        const int bx = x.cell >> kShift, by = y.cell >> kShift, bz = z.cell >> kShift;
+        const std::uint64_t mask = world.brickMask(bx, by, bz);
+        if (mask != 0) {
+            // Voxels of this brick, one A&W step each, until one is solid or the walk leaves the
+            // brick (the mask stays in a register meanwhile).
+            for (;;) {
+                if ((mask >> VoxelWorld::brickBit(x.cell, y.cell, z.cell)) & 1u) {
+                    return shared::VoxelTrace(true, false, shared::ivec3(x.cell, y.cell, z.cell), t,
+                                              axis, shared::ivec3(x.stp, y.stp, z.stp), steps);
+                }
+                // One A&W step (voxelStepOne): the smallest next boundary, lowest axis on ties.
+                // Branches, not selects: along a ray the axis pattern is regular enough to
+                // predict, and a predicted branch does not wait for the comparison.
+                const auto step = [&](Axis& s, int a, int brick) {
+                    t = s.next;
+                    s.cell += s.stp;
+                    axis = a;
+                    if (static_cast<unsigned>(s.cell) >= static_cast<unsigned>(s.size) ||
+                        t > tMax) {
+                        return -1;
+                    }
+                    s.next = s.exitAt(s.cell);
+                    return (s.cell >> kShift) != brick ? 0 : 1;
+                };
+                int stayed;
+                if (x.next <= y.next ? x.next <= z.next : false) {
+                    if (x.next == kInf) return miss(false);
+                    stayed = step(x, 0, bx);
+                } else if (!(x.next <= y.next) && y.next <= z.next) {
+                    if (y.next == kInf) return miss(false);
+                    stayed = step(y, 1, by);
+                } else {
+                    if (z.next == kInf) return miss(false);
+                    stayed = step(z, 2, bz);
+                }
+                if (stayed < 0) return miss(false);
+                if (stayed == 0) break;  // into another brick: the outer loop reads its mask
+                // The loop head again, for a cell of the same brick.
+                if (steps >= cap) return miss(true);
+                ++steps;
+            }
+            continue;
+        }
+        // An empty brick: leave the empty box of bricks around it (voxelLeaveBox).
+        const int r = world.brickDistance(bx, by, bz) - 1;
+        const auto lo = [&](int b) { return std::max((b - r) << kShift, 0); };
+        const auto hi = [&](int b, int n) { return std::min((b + r + 1) << kShift, n) - 1; };
+        const int lx = lo(bx), ly = lo(by), lz = lo(bz);
+        const int hx = hi(bx, x.size), hy = hi(by, y.size), hz = hi(bz, z.size);
+        const double tx = x.stp != 0 ? x.exitAt(x.stp > 0 ? hx : lx) : kInf;
+        const double ty = y.stp != 0 ? y.exitAt(y.stp > 0 ? hy : ly) : kInf;
+        const double tz = z.stp != 0 ? z.exitAt(z.stp > 0 ? hz : lz) : kInf;
+        int a = 0;
+        double tJump = tx;
+        if (ty < tJump) a = 1, tJump = ty;
+        if (tz < tJump) a = 2, tJump = tz;
+        if (tJump == kInf) return miss(false);
+        // A crossing axis other than a: the first cell whose exit the per-voxel loop has not yet
+        // taken when it steps axis a at tJump (taken: earlier, or tied and a lower axis).
+        const auto settle = [&](Axis& s, int boxLo, int boxHi, bool lowerThanA) {
+            if (s.stp == 0) return;
+            const auto taken = [&](double tc) { return tc < tJump || (tc == tJump && lowerThanA); };
+            if (!taken(s.next)) return;
+            const int first = s.cell, last = s.stp > 0 ? boxHi : boxLo;
+            int c = first;
+            double tc = s.next;
+            if (std::abs(last - first) > LUXEL_VOXEL_SHORT_WALK) {
+                // A long way to go: start at the floor of where the ray is, step back if that
+                // overshot.
+                c = shared::voxelFloorToInt(
+                    std::clamp(s.o + tJump * s.d, -1.0, static_cast<double>(s.size + 1)));
+                c = s.stp > 0 ? std::clamp(c, first, last) : std::clamp(c, last, first);
+                while (c != first && !taken(s.exitAt(c - s.stp))) c -= s.stp;
+                tc = s.exitAt(c);
+            }
+            while (c != last && taken(tc)) {
+                c += s.stp;
+                tc = s.exitAt(c);
+            }
+            s.cell = c;
+            s.next = tc;
+        };
+        const auto cross = [&](Axis& s, int boxLo, int boxHi) {
+            s.cell = s.stp > 0 ? boxHi + 1 : boxLo - 1;
+        };
+        if (a == 0) {
+            settle(y, ly, hy, false);
+            settle(z, lz, hz, false);
+            cross(x, lx, hx);
+        } else if (a == 1) {
+            settle(x, lx, hx, true);
+            settle(z, lz, hz, false);
+            cross(y, ly, hy);
+        } else {
+            settle(x, lx, hx, true);
+            settle(y, ly, hy, true);
+            cross(z, lz, hz);
+        }
+        t = tJump;
+        axis = a;
+        if (outside() || t > tMax) return miss(false);
+        if (a == 0) x.next = x.exitAt(x.cell);
+        if (a == 1) y.next = y.exitAt(y.cell);
+        if (a == 2) z.next = z.exitAt(z.cell);
+    }
+}
+
+// voxelTraverse with jumps: the loop above for an eligible ray, the shared kernel for the others.
+inline shared::VoxelTrace traverseAny(const VoxelWorld& world, const Ray& ray, double tMax,
+                                      int cap) {
+    if (eligible(world, ray)) return traverse(world, ray, tMax, cap);
+    const Int3 size = world.size();
+    const int chunkShift = std::countr_zero(static_cast<unsigned>(world.chunkSize()));
+    return shared::voxelTraverse(world, {size.x, size.y, size.z}, chunkShift, toShared(ray.origin),
+                                 toShared(ray.direction), tMax, cap, true,
+                                 world.emptySpaceCurrent());
+}
+
+}  // namespace luxel::voxel::fast
