@@ -31,8 +31,9 @@ HrcMemory estimateHrcMemory(int width, int height) {
     for (int r = 0; r < 2; ++r) {
         const FrustumFrame f = makeFrame(static_cast<Frustum>(r), width, height);
         const int levels = cascadeCount(f.length);
-        m.rayIntervals = std::max(m.rayIntervals, IntervalRing::bytesFor(levels, f.rows));
-        m.cones = std::max(m.cones, ConeRing::bytesFor(levels, f.rows));
+        m.rayIntervals =
+            std::max(m.rayIntervals, IntervalRing::bytesFor(levels, f.rows, kSweepChunk));
+        m.cones = std::max(m.cones, ConeRing::bytesFor(levels, f.rows, kSweepChunk));
     }
     m.mediumColumns =
         sweepBytes(width, height, HrcOptions{}.tracedLevels) - m.rayIntervals - m.cones;

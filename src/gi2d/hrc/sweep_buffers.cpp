@@ -84,33 +84,51 @@ void ColumnWindow::at(int x, CellTransfer* out) const {
     }
 }
 
+int ringSlots(int n, int chunk) {
+    const int needed = std::max(2, (chunk >> n) + 1);
+    int slots = 1;
+    while (slots < needed) slots *= 2;
+    return slots;
+}
+
 namespace {
 
-// Start of each cascade's two planes in one buffer of `perLevel(n)` values per plane.
-template <typename PerLevel>
-std::vector<std::size_t> levelStarts(int levels, PerLevel perLevel, std::size_t& total) {
-    std::vector<std::size_t> starts(static_cast<std::size_t>(levels));
-    total = 0;
+// Slots per cascade and the start of each cascade's slots in one buffer of `perPlane(n)` values
+// per plane.
+template <typename PerPlane>
+std::size_t layOut(int levels, int chunk, PerPlane perPlane, std::vector<int>& slots,
+                   std::vector<std::size_t>& starts) {
+    slots.resize(static_cast<std::size_t>(levels));
+    starts.resize(static_cast<std::size_t>(levels));
+    std::size_t total = 0;
     for (int n = 0; n < levels; ++n) {
+        slots[n] = ringSlots(n, chunk);
         starts[n] = total;
-        total += 2 * perLevel(n);
+        total += static_cast<std::size_t>(slots[n]) * perPlane(n);
     }
-    return starts;
+    return total;
+}
+
+std::size_t intervalsPerPlane(int n, int rows) {
+    return ((static_cast<std::size_t>(1) << n) + 1) * 6 * rows;
+}
+
+std::size_t conesPerPlane(int n, int rows) {
+    return (static_cast<std::size_t>(1) << n) * 3 * rows;
 }
 
 }  // namespace
 
-void IntervalRing::reshape(int levels, int rows) {
+void IntervalRing::reshape(int levels, int rows, int chunk) {
     rows_ = rows;
-    std::size_t total = 0;
-    levelStart_ = levelStarts(
-        levels, [&](int n) { return static_cast<std::size_t>(rays(n)) * 6 * rows; }, total);
+    const std::size_t total = layOut(
+        levels, chunk, [&](int n) { return intervalsPerPlane(n, rows); }, slots_, levelStart_);
     data_.resize(total + kSweepRowPad);
 }
 
-std::uint64_t IntervalRing::bytesFor(int levels, int rows) {
+std::uint64_t IntervalRing::bytesFor(int levels, int rows, int chunk) {
     std::uint64_t total = kSweepRowPad;
-    for (int n = 0; n < levels; ++n) total += 2ull * ((1ull << n) + 1) * 6 * rows;
+    for (int n = 0; n < levels; ++n) total += ringSlots(n, chunk) * intervalsPerPlane(n, rows);
     return total * sizeof(std::uint16_t);
 }
 
@@ -129,17 +147,16 @@ IntervalRowsOut IntervalRing::write(int n, int p, int k) {
     return r;
 }
 
-void ConeRing::reshape(int levels, int rows) {
+void ConeRing::reshape(int levels, int rows, int chunk) {
     rows_ = rows;
-    std::size_t total = 0;
-    levelStart_ = levelStarts(
-        levels, [&](int n) { return (static_cast<std::size_t>(1) << n) * 3 * rows; }, total);
+    const std::size_t total = layOut(
+        levels, chunk, [&](int n) { return conesPerPlane(n, rows); }, slots_, levelStart_);
     data_.resize(total + kSweepRowPad);
 }
 
-std::uint64_t ConeRing::bytesFor(int levels, int rows) {
+std::uint64_t ConeRing::bytesFor(int levels, int rows, int chunk) {
     std::uint64_t total = kSweepRowPad;
-    for (int n = 0; n < levels; ++n) total += 2ull * (1ull << n) * 3 * rows;
+    for (int n = 0; n < levels; ++n) total += ringSlots(n, chunk) * conesPerPlane(n, rows);
     return total * sizeof(float);
 }
 

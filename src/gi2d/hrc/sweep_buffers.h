@@ -48,50 +48,60 @@ class ColumnWindow {
     std::vector<float> block_;
 };
 
-// Two planes of intervals per cascade: plane p of cascade n lives in slot p & 1.
+// Planes of cascade n the sweep keeps when it handles `chunk` pixel columns per step: one more
+// than the chunk holds (the plane ahead of it), at least 2, rounded up to a power of two
+// (docs/algorithms/holographic-radiance-cascades.md §7.1).
+int ringSlots(int n, int chunk);
+
+// The latest planes of intervals per cascade: plane p of cascade n lives in slot p mod slots(n).
 class IntervalRing {
   public:
     // Shapes the ring for a frame; keeps the allocation when it is large enough.
-    void reshape(int levels, int rows);
+    void reshape(int levels, int rows, int chunk);
 
     int rays(int n) const { return (1 << n) + 1; }
     IntervalRows read(int n, int p, int k, int offset = 0) const;
     IntervalRowsOut write(int n, int p, int k);
 
-    static std::uint64_t bytesFor(int levels, int rows);
+    static std::uint64_t bytesFor(int levels, int rows, int chunk);
 
   private:
     std::size_t index(int n, int p, int k) const {
-        return levelStart_[n] + (static_cast<std::size_t>(p & 1) * rays(n) + k) * 6 * rows_;
+        const auto slot = static_cast<std::size_t>(p & (slots_[n] - 1));
+        return levelStart_[n] + (slot * rays(n) + k) * 6 * rows_;
     }
     int rows_ = 0;
+    std::vector<int> slots_;
     std::vector<std::size_t> levelStart_;
     std::vector<std::uint16_t> data_;
 };
 
-// Two planes of merged cones per cascade: plane p of cascade n lives in slot p & 1.
+// The latest planes of merged cones per cascade: plane p of cascade n lives in slot
+// p mod slots(n).
 class ConeRing {
   public:
     // Shapes the ring for a frame; keeps the allocation when it is large enough.
-    void reshape(int levels, int rows);
+    void reshape(int levels, int rows, int chunk);
 
     ConeRows read(int n, int p, int i, int offset = 0) const;
     float* plane(int n, int p, int i, int channel);
 
-    static std::uint64_t bytesFor(int levels, int rows);
+    static std::uint64_t bytesFor(int levels, int rows, int chunk);
 
   private:
     std::size_t index(int n, int p, int i) const {
-        return levelStart_[n] + (static_cast<std::size_t>(p & 1) * (1u << n) + i) * 3 * rows_;
+        const auto slot = static_cast<std::size_t>(p & (slots_[n] - 1));
+        return levelStart_[n] + (slot * (1u << n) + i) * 3 * rows_;
     }
     int rows_ = 0;
+    std::vector<int> slots_;
     std::vector<std::size_t> levelStart_;
     std::vector<float> data_;
 };
 
-// The buffers of one sweep, reused by the frustums.
+// The buffers of one sweep, reused by the frustums: the rings, and a column window per thread.
 struct SweepBuffers {
-    ColumnWindow columns;
+    std::vector<ColumnWindow> columns;
     IntervalRing tables;
     ConeRing cones;
 };

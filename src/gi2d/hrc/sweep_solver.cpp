@@ -90,8 +90,8 @@ class FrustumSweep {
           tables_(buffers.tables),
           cones_(buffers.cones),
           beyond_(beyondSum) {
-        tables_.reshape(levels_, rows_);
-        cones_.reshape(levels_, rows_);
+        tables_.reshape(levels_, rows_, kSweepChunk);
+        cones_.reshape(levels_, rows_, kSweepChunk);
         for (int n = 0; n < levels_; ++n) {
             planes_.push_back(planeCount(frame.length, n));
             weights_.push_back(coneWeights(n));
@@ -110,7 +110,7 @@ class FrustumSweep {
                 }
             }
         }
-        columns_.reshape(pow2(traced_ - 1), std::move(lengths), rows_);
+        for (ColumnWindow& window : columns_) window.reshape(pow2(traced_ - 1), lengths, rows_);
     }
 
     void run(ThreadTeam& team, int member, SweepTimes* times);
@@ -135,7 +135,7 @@ class FrustumSweep {
         return r;
     }
 
-    std::uint64_t trace(int x, int y0, int y1);
+    std::uint64_t trace(const ColumnWindow& columns, int x, int y0, int y1);
     std::uint64_t extend(int n, int p, int y0, int y1);
     std::uint64_t merge(int n, int p, int y0, int y1);
     std::uint64_t readOut(int u, int plane, int y0, int y1);
@@ -146,16 +146,16 @@ class FrustumSweep {
     std::vector<int> planes_;
     std::vector<std::vector<float>> weights_;
     std::vector<std::vector<std::vector<TraceStep>>> steps_;
-    ColumnWindow& columns_;
+    std::vector<ColumnWindow>& columns_;  // one per team member
     IntervalRing& tables_;
     ConeRing& cones_;
     Image& beyond_;
 };
 
-std::uint64_t FrustumSweep::trace(int x, int y0, int y1) {
+std::uint64_t FrustumSweep::trace(const ColumnWindow& columns, int x, int y0, int y1) {
     thread_local std::vector<CellTransfer> window;
-    window.resize(static_cast<std::size_t>(columns_.span() * columns_.lengths()));
-    columns_.at(x, window.data());
+    window.resize(static_cast<std::size_t>(columns.span() * columns.lengths()));
+    columns.at(x, window.data());
     std::uint64_t bytes = static_cast<std::uint64_t>(rows_) * 24;  // the column loaded
     for (int n = 0; n < traced_ && (x & (pow2(n) - 1)) == 0; ++n) {
         for (int k = 0; k <= pow2(n); ++k) {
@@ -275,31 +275,49 @@ std::uint64_t FrustumSweep::readOut(int u, int plane, int y0, int y1) {
 
 void FrustumSweep::run(ThreadTeam& team, int member, SweepTimes* times) {
     const int y0 = team.bandBegin(member, rows_), y1 = team.bandBegin(member + 1, rows_);
+    // A member traces its own rows, so it loads the medium for them and the rows its stencils
+    // reach beyond them.
+    ColumnWindow& window = columns_[member];
+    const int reach = window.span();
+    const int h0 = std::max(0, y0 - reach), h1 = std::min(rows_, y1 + reach);
+    const int length = frame_.length;
     Laps laps(times);
     // The last pixel's read-out plane lies beyond the frame: it sees the sky (§6.2).
-    readOut(frame_.length - 1, -1, y0, y1);
-    for (int x = frame_.length - 1; x >= 0; --x) {
-        columns_.load(medium_, frame_, x, y0, y1);
-        team.sync();  // the window is complete and nobody reads the planes traced next
-        const std::uint64_t traced = trace(x, y0, y1);
+    readOut(length - 1, -1, y0, y1);
+    // Chunks of kSweepChunk columns from the far end; in each, cascade by cascade, so the team
+    // meets once per cascade and chunk rather than once per cascade and column (§7.1).
+    for (int x0 = (length - 1) / kSweepChunk * kSweepChunk; x0 >= 0; x0 -= kSweepChunk) {
+        const int x1 = std::min(length, x0 + kSweepChunk);
+        std::uint64_t traced = 0;
+        for (int x = x1 - 1; x >= x0; --x) {
+            window.load(medium_, frame_, x, h0, h1);
+            traced += trace(window, x, y0, y1);
+        }
         team.sync();
         laps.charge(SweepTimes::Trace, traced);
-        int top = 0;
-        for (int n = 1; n < levels_ && (x & (pow2(n) - 1)) == 0; ++n) {
-            top = n;
-            if (n < traced_) continue;
-            const std::uint64_t bytes = extend(n, x >> n, y0, y1);
+        // The planes of cascade n in the chunk: first (x1 - 1) >> n, down to ceil(x0 / 2^n).
+        auto lastPlane = [&](int n) { return (x1 - 1) >> n; };
+        auto firstPlane = [&](int n) { return (x0 + pow2(n) - 1) >> n; };
+        for (int n = traced_; n < levels_; ++n) {
+            if (lastPlane(n) < firstPlane(n)) continue;
+            std::uint64_t bytes = 0;
+            for (int p = lastPlane(n); p >= firstPlane(n); --p) bytes += extend(n, p, y0, y1);
             team.sync();
             laps.charge(SweepTimes::Extend, bytes);
         }
-        for (int n = top; n >= 0; --n) {
-            const std::uint64_t bytes = merge(n, x >> n, y0, y1);
+        for (int n = levels_ - 1; n >= 0; --n) {
+            if (lastPlane(n) < firstPlane(n)) continue;
+            std::uint64_t bytes = 0;
+            for (int p = lastPlane(n); p >= firstPlane(n); --p) bytes += merge(n, p, y0, y1);
             if (n > 0) team.sync();
             laps.charge(SweepTimes::Merge, bytes);
         }
-        if (x > 0) laps.charge(SweepTimes::Readout, readOut(x - 1, x, y0, y1));
+        std::uint64_t read = 0;
+        for (int x = x1 - 1; x >= std::max(x0, 1); --x) read += readOut(x - 1, x, y0, y1);
+        // The next chunk overwrites ring slots that other members may still be reading.
+        team.sync();
+        laps.charge(SweepTimes::Readout, read);
     }
-    team.sync();
 }
 
 }  // namespace
@@ -315,8 +333,10 @@ void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int thread
         if (!(options.frustumMask & (1u << r))) continue;
         const FrustumFrame frame =
             makeFrame(static_cast<Frustum>(r), medium.width(), medium.height());
+        const int members = std::min(threads, frame.rows);
+        buffers.columns.resize(static_cast<std::size_t>(members));
         FrustumSweep sweep(medium, frame, options.tracedLevels, buffers, beyondSum);
-        ThreadTeam::run(std::min(threads, frame.rows), [&](int member, ThreadTeam& team) {
+        ThreadTeam::run(members, [&](int member, ThreadTeam& team) {
             sweep.run(team, member, member == 0 ? times : nullptr);
         });
         if (options.onProgress) options.onProgress(++done, frustums);
@@ -330,9 +350,11 @@ std::uint64_t sweepBytes(int width, int height, int tracedLevels) {
         const int levels = cascadeCount(frame.length);
         const int traced = tracedFor(tracedLevels, levels);
         const auto lengths = static_cast<int>(stencilLengths(traced).size());
-        most = std::max(most, IntervalRing::bytesFor(levels, frame.rows) +
-                                  ConeRing::bytesFor(levels, frame.rows) +
-                                  ColumnWindow::bytesFor(pow2(traced - 1), lengths, frame.rows));
+        most =
+            std::max(most, IntervalRing::bytesFor(levels, frame.rows, kSweepChunk) +
+                               ConeRing::bytesFor(levels, frame.rows, kSweepChunk) +
+                               ThreadTeam::defaultSize() *
+                                   ColumnWindow::bytesFor(pow2(traced - 1), lengths, frame.rows));
     }
     return most;
 }

@@ -22,6 +22,9 @@ struct SweepTimes {
     std::uint64_t bytes[Count] = {};
 };
 
+// Pixel columns the sweep handles per step (§7.1).
+inline constexpr int kSweepChunk = 16;
+
 // Adds the angular fluence each pixel's read-out plane receives in every frustum of `mask` into
 // `beyondSum` (canvas space), using `threads` threads.
 void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int threads, Image& beyondSum,
