@@ -40,14 +40,15 @@ Vec2d vec(shared::dvec2 v) {
     return {v.x, v.y};
 }
 
-// The medium's absorption on a grid of planes, one per phase of the lane stride L: plane `phase`,
-// row y, column m holds pixel (m L + phase, y), and kStencilLanes vacuum cells separate each row
-// from the next. Lanes l of a group (probes L pixels apart) thus read consecutive floats, and a
-// group reaching past either end of a row reads vacuum. Grey media need one plane set, others
-// three; the first carries the sign bit where the cell emits.
+// The medium's absorption split by the phase of x modulo the lane stride L: row y, phase p,
+// column m holds pixel (m L + p, y); each such row of columns is followed by kStencilLanes vacuum
+// cells, and the L phase rows of a pixel row lie together (a ray along x stays near in memory).
+// Lanes l of a group (probes L pixels apart) thus read consecutive floats, and a group reaching
+// past either end of a row reads vacuum. Grey media need one plane set, others three; the first
+// carries the sign bit where the cell emits.
 struct Planes {
     int stride = 1, rowLen = 0, rowStride = 0;
-    std::int64_t planeSize = 0;
+    std::int64_t planeSize = 0;  // between pixel rows
     int channels = 1;
     std::vector<float> data[3];
 
@@ -61,7 +62,7 @@ struct Planes {
         const int w = medium.width(), h = medium.height();
         rowLen = (w + stride - 1) / stride;
         rowStride = rowLen + kStencilLanes;
-        planeSize = static_cast<std::int64_t>(h) * rowStride;
+        planeSize = static_cast<std::int64_t>(stride) * rowStride;
         channels = medium.grey() ? 1 : 3;
         for (int c = 0; c < channels; ++c) {
             data[c].assign(static_cast<std::size_t>(cells(w, h, stride)), 0.0f);
@@ -86,8 +87,8 @@ struct Planes {
     // Plane index of pixel (x, y).
     std::int64_t index(int x, int y) const {
         const int m = floorDiv(x, stride);
-        return kStencilLanes + (x - m * stride) * planeSize +
-               static_cast<std::int64_t>(y) * rowStride + m;
+        return kStencilLanes + static_cast<std::int64_t>(y) * planeSize +
+               (x - m * stride) * rowStride + m;
     }
 };
 
@@ -167,8 +168,8 @@ struct Stencil {
             }
             column[j] = col;
             offset[j] = static_cast<std::int32_t>(
-                kStencilLanes + phase * planes.planeSize +
-                static_cast<std::int64_t>(cellY[j]) * planes.rowStride + col);
+                kStencilLanes + static_cast<std::int64_t>(cellY[j]) * planes.planeSize +
+                phase * planes.rowStride + col);
         }
         if (n > 0) {
             minY = std::min(cellY[0], cellY[n - 1]), maxY = std::max(cellY[0], cellY[n - 1]);
@@ -609,7 +610,7 @@ std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedi
                                         : Stencil::where(st.column, xLo, xHi, st.signX);
                                 StencilGroup::Walk& walk = g.walk[corner];
                                 walk.base =
-                                    static_cast<std::int64_t>(shiftY) * planes.rowStride + gx;
+                                    static_cast<std::int64_t>(shiftY) * planes.planeSize + gx;
                                 walk.offset = st.offset.data();
                                 walk.length = st.length.data();
                                 walk.cellX = st.cellX.data();

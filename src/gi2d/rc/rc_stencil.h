@@ -111,7 +111,7 @@ struct StencilGroup {
 
 // A walk loads the cell of entry j + kStencilPrefetch into the cache while at entry j (the
 // offsets array holds that many more entries).
-inline constexpr int kStencilPrefetch = 12;
+inline constexpr int kStencilPrefetch = 32;
 
 // Lanes per group on this machine (at most kStencilLanes).
 int stencilWalkLanes();
