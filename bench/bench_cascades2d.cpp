@@ -3,6 +3,7 @@
 // writes the 512x512 one).
 //   build/release/bench/luxel_bench --benchmark_filter='hrc|rc'
 //   LUXEL_BENCH_LARGE=1 build/release/bench/luxel_bench --benchmark_filter=hrc   (adds 4096, 8192)
+//   LUXEL_THREADS=1 build/release/bench/luxel_bench --benchmark_filter=rc   (worker threads capped)
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
 
@@ -14,6 +15,7 @@
 #include "bench_scenes.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/metrics.h"
+#include "luxel/core/parallel.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rasterize.h"
 #include "luxel/gi2d/rc_solver.h"
@@ -32,7 +34,8 @@ enum class Solver { Hrc, RcVanilla, RcFix };
 luxel::Result<luxel::Image> solve(Solver solver, const luxel::gi2d::Medium2D& medium) {
     if (solver == Solver::Hrc) return luxel::gi2d::solveHrc(medium);
     luxel::gi2d::RcOptions options;
-    if (solver == Solver::RcFix) options.merge = luxel::gi2d::RcMerge::BilinearFix;
+    options.merge =
+        solver == Solver::RcFix ? luxel::gi2d::RcMerge::BilinearFix : luxel::gi2d::RcMerge::Vanilla;
     return luxel::gi2d::solveRc(medium, options);
 }
 
@@ -41,7 +44,14 @@ std::uint64_t memoryEstimate(Solver solver, int size) {
     return luxel::gi2d::estimateRcMemory(size, size, {});
 }
 
+// LUXEL_THREADS=n caps the solvers' worker threads (unset or 0: all hardware threads).
+int threadsFromEnvironment() {
+    const char* threads = std::getenv("LUXEL_THREADS");
+    return threads != nullptr ? std::atoi(threads) : 0;
+}
+
 void defaultScene(benchmark::State& state, Solver solver) {
+    const luxel::ThreadLimit threads(threadsFromEnvironment());
     const int size = static_cast<int>(state.range(0));
     const luxel::gi2d::Scene2D scene = luxel::bench::loadShipped2D("room.json");
     auto medium = luxel::gi2d::rasterize(scene, {size, size, 16});

@@ -57,7 +57,8 @@ struct RcCascade {
 };
 std::vector<RcCascade> rcCascades(int width, int height, const RcOptions& options);
 
-// Bytes solveRc needs (two cascade buffers, pre-averaged, float RGB, plus the output).
+// Bytes solveRc needs (two cascade buffers, pre-averaged, float RGB; the stencil walks' copy of
+// the medium; plus the output).
 std::uint64_t estimateRcMemory(int width, int height, const RcOptions& options);
 
 // Traces intervals through the pixel medium with the exact DDA (works for every medium).

@@ -8,6 +8,7 @@
 
 #include "gi2d/rc/rc_cascade_pass.h"
 #include "gi2d/rc/rc_internal.h"
+#include "gi2d/rc/rc_stencil.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
 #include "luxel/gi2d/ray_march.h"
@@ -50,8 +51,10 @@ using rc::validate;
 
 namespace {
 
-template <typename Tracer>
-Result<Image> solveWith(const Tracer& tracer, int w, int h, Rgb sky, const RcOptions& options) {
+// Solves with `pass(cascades, i, upper)`, top-down; the pass's stored values are probe-major
+// or, with `slotMajor`, slot-major.
+template <typename Pass>
+Result<Image> solveWith(int w, int h, const RcOptions& options, bool slotMajor, Pass&& pass) {
     if (Status s = validate(options); !s) return s.error();
     const std::vector<RcCascade> cascades = rcCascades(w, h, options);
     const int count = static_cast<int>(cascades.size());
@@ -67,9 +70,8 @@ Result<Image> solveWith(const Tracer& tracer, int w, int h, Rgb sky, const RcOpt
 
     std::vector<Rgb> upper;
     const int lowest = std::max(options.debugCascade, 0);
-    for (int i = count - 1; i >= lowest; --i) {
-        upper = rc::cascadePass(tracer, cascades, i, upper, sky, options.merge);
-    }
+    for (int i = count - 1; i >= lowest; --i) upper = pass(cascades, i, upper);
+    if (slotMajor) upper = rc::toProbeMajor(upper, storedPerProbe(cascades[lowest], lowest));
 
     return rc::readOut(cascades[lowest], lowest, upper, w, h, options.debugCascade >= 0);
 }
@@ -89,6 +91,18 @@ Image readOut(const RcCascade& c, int level, const std::vector<Rgb>& upper, int 
         return sum * (1.0f / static_cast<float>(stored));
     };
     Image out(w, h, 3);
+    if (!nearestProbe && stored == 1 && c.spacing == 1.0 && c.offsetX == 0 && c.offsetY == 0 &&
+        c.probesX == w && c.probesY == h) {
+        // A probe on every pixel centre: the bilinear weights are 1 and 0, the value the probe's.
+        parallelForRange(h, 8, [&](int begin, int end) {
+            for (int y = begin; y < end; ++y) {
+                for (int x = 0; x < w; ++x) {
+                    out.setRgb(x, y, upper[static_cast<std::size_t>(y) * w + x]);
+                }
+            }
+        });
+        return out;
+    }
     parallelForRange(h, 8, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {
             for (int x = 0; x < w; ++x) {
@@ -165,23 +179,47 @@ std::uint64_t estimateRcMemory(int width, int height, const RcOptions& options) 
                                           static_cast<std::uint64_t>(c.probesX) * c.probesY *
                                               storedPerProbe(c, static_cast<int>(i)) * sizeof(Rgb));
     }
+    // The stencil walks (docs/algorithms/radiance-cascades-2d.md §8): the medium's palette and
+    // the largest cascade's absorption planes.
+    std::uint64_t planes = 0;
+    for (std::size_t i = 0; i < cascades.size(); ++i) {
+        const bool fix = options.merge == RcMerge::BilinearFix && i + 1 < cascades.size();
+        planes = std::max(planes, rc::stencilPassBytes(width, height, cascades[i], fix));
+    }
+    const std::uint64_t stencils = rc::StencilMedium::bytesFor(width, height) + planes;
     // The output, and the running sum when several jittered solves are averaged.
     const std::uint64_t images = options.jitters > 1 ? 2 : 1;
-    return 2 * largest + images * imageBytes(width, height, 3);
+    return 2 * largest + stencils + images * imageBytes(width, height, 3);
 }
 
 Result<Image> solveRc(const Medium2D& medium, const RcOptions& options) {
     if (Status s = validate(options); !s) return s.error();
+    if (Status s = checkMemory(
+            estimateRcMemory(medium.width(), medium.height(), options),
+            "RC at " + std::to_string(medium.width()) + "x" + std::to_string(medium.height()));
+        !s) {
+        return s.error();
+    }
     const RayMarcher marcher(medium);
+    const rc::StencilMedium stencilMedium(medium);
     return rc::averageJitters(options, [&](const RcOptions& one) {
-        return solveWith(marcher, medium.width(), medium.height(), medium.boundaryRadiance, one);
+        return solveWith(
+            medium.width(), medium.height(), one, true,
+            [&](const std::vector<RcCascade>& cascades, int i, const std::vector<Rgb>& upper) {
+                return rc::cascadePassStencil(marcher, stencilMedium, cascades, i, upper,
+                                              medium.boundaryRadiance, one.merge);
+            });
     });
 }
 
 Result<Image> solveRc(const SdfScene& scene, Rgb boundaryRadiance, const RcOptions& options) {
     if (Status s = validate(options); !s) return s.error();
     return rc::averageJitters(options, [&](const RcOptions& one) {
-        return solveWith(scene, scene.width(), scene.height(), boundaryRadiance, one);
+        return solveWith(
+            scene.width(), scene.height(), one, false,
+            [&](const std::vector<RcCascade>& cascades, int i, const std::vector<Rgb>& upper) {
+                return rc::cascadePass(scene, cascades, i, upper, boundaryRadiance, one.merge);
+            });
     });
 }
 

@@ -1,0 +1,120 @@
+// Stencil tracing of RC intervals through the pixel medium (docs/algorithms/radiance-cascades-2d.md
+// §8). Every probe of a cascade sits on one grid, so for a direction k the interval of every probe
+// is one segment moved by whole pixels: it crosses the same cells with the same lengths. The cells
+// and lengths (the stencil) are found once per direction with the exact DDA; the probes then walk
+// the stencil, many probes of a row at once (SIMD lanes), adding up optical depth cell by cell.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "luxel/core/vec.h"
+#include "luxel/gi2d/medium2d.h"
+#include "luxel/gi2d/ray_march.h"
+#include "luxel/gi2d/rc_solver.h"
+
+namespace luxel::gi2d::rc {
+
+// The pixel medium as stencil walks read it: per pixel an id into a palette of the distinct
+// (sigma, E) pairs, kept as a structure of arrays.
+class StencilMedium {
+  public:
+    explicit StencilMedium(const Medium2D& medium);
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    std::uint32_t id(int x, int y) const { return ids_[static_cast<std::size_t>(y) * width_ + x]; }
+    const std::uint32_t* ids() const { return ids_.data(); }
+    // Every material has equal absorption in its three channels.
+    bool grey() const { return grey_; }
+    const float* sigma(int c) const { return sigma_[c].data(); }
+    const float* emission(int c) const { return emission_[c].data(); }
+    std::size_t paletteSize() const { return sigma_[0].size(); }
+    // Adds light to a ray: some channel both absorbs and emits.
+    bool emits(std::uint32_t id) const {
+        for (int c = 0; c < 3; ++c) {
+            if (sigma_[c][id] != 0.0f && emission_[c][id] != 0.0f) return true;
+        }
+        return false;
+    }
+
+    // Per pixel, row-major: absorption of channel c (only c = 0 for grey media), its sign bit
+    // set where the pixel emits (the planes of the walks are copies).
+    const float* planeSigma(int c) const { return planeSigma_[c].data(); }
+
+    // Bytes held for a medium of this size (at most: every pixel distinct).
+    static std::uint64_t bytesFor(std::uint64_t width, std::uint64_t height);
+
+  private:
+    int width_, height_;
+    bool grey_ = true;
+    std::vector<std::uint32_t> ids_;
+    std::vector<float> sigma_[3], emission_[3];
+    std::vector<float> planeSigma_[3];
+};
+
+// Cascade `i` as cascadePass(marcher, ...) computes it (gi2d/rc/rc_cascade_pass.h), to float
+// rounding, with stencil walks. Stored values are slot-major here, in and out:
+// (s * probesY + py) * probesX + px. Probes the stencils cannot serve (a bilinear-fix neighbour
+// clamped at the grid's edge, a direction along a pixel edge) take the marcher.
+std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedium& medium,
+                                    const std::vector<RcCascade>& cascades, int i,
+                                    const std::vector<Rgb>& upper, Rgb sky, RcMerge merge);
+
+// Probe-major ((p * stored + s), what cascadePass and readOut use) to slot-major ((s * probes + p))
+// and back.
+std::vector<Rgb> toSlotMajor(const std::vector<Rgb>& probeMajor, int stored);
+std::vector<Rgb> toProbeMajor(const std::vector<Rgb>& slotMajor, int stored);
+
+// Bytes cascadePassStencil holds for cascade i beyond its input and output.
+std::uint64_t stencilPassBytes(int width, int height, const RcCascade& cascade, bool fix);
+
+// ---- The SIMD walk (rc_stencil_walk.cpp, compiled for several instruction sets) ----
+
+// Most lanes a walk uses. A plane row has this many vacuum cells between it and the next, so a
+// group of lanes whose first lane lies left of the canvas (or last lane right of it) still loads
+// inside the planes and reads vacuum there.
+inline constexpr int kStencilLanes = 16;
+
+// One group of lanes: `lanes` probes of a row, L = laneStride pixels apart, each walking the
+// stencils of up to 4 corners (the bilinear fix's upper neighbours; 1 otherwise) and merging:
+// sum[ch][l] += sum over corners c of weight[c] * (L_c + T_c * beyond[c][ch][l]).
+struct StencilGroup {
+    // Absorption per plane cell (cascadePassStencil lays the planes out): grey media one plane
+    // (the three pointers equal), else one per channel; the first carries the sign bit where the
+    // cell emits.
+    const float* planes[3];
+    bool grey;
+    const StencilMedium* medium;
+    int laneStride;
+    int lanes;
+    int corners;
+    struct Walk {
+        // Lane l's cell of entry j lies at plane index base + offset[j] + l, and is the pixel
+        // (cellX[j] + shiftX + l * laneStride, cellY[j] + shiftY).
+        std::int64_t base;
+        const std::int32_t* offset;
+        const float* length;  // of the segment inside entry j's cell
+        const std::int32_t* cellX;
+        const std::int32_t* cellY;
+        int shiftX, shiftY;
+        int begin, end;  // the entries walked
+    } walk[4];
+    // Per corner and channel, lane l's value at [l] (kStencilLanes readable).
+    const float* beyond[4][3];
+    float weight[4];
+    // Null, or per corner c and lane l at [c * kStencilLanes + l]: the corner whose walk serves
+    // it (another where a neighbour is clamped at the grid's edge), or -1 for none.
+    const std::int32_t* source;
+    float* sum[3];  // kStencilLanes readable and writable
+};
+
+// A walk loads the cell of entry j + kStencilPrefetch into the cache while at entry j (the
+// offsets array holds that many more entries).
+inline constexpr int kStencilPrefetch = 32;
+
+// Lanes per group on this machine (at most kStencilLanes).
+int stencilWalkLanes();
+void walkStencilGroup(const StencilGroup& group);
+
+}  // namespace luxel::gi2d::rc

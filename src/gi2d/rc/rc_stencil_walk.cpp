@@ -1,0 +1,226 @@
+// The SIMD stencil walk of the CPU RC pass (docs/algorithms/radiance-cascades-2d.md §8): one lane
+// per probe, all lanes stepping through the same stencil entry at once, each adding its cell's
+// optical depth; then the merge with what lies beyond. Compiled for every instruction set Highway
+// targets; the best one runs.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "gi2d/rc/rc_stencil_walk.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+// foreach_target.h first: it includes this file once per target.
+#include <hwy/cache_control.h>
+#include <hwy/contrib/math/math-inl.h>
+#include <hwy/highway.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "gi2d/rc/rc_stencil.h"
+
+HWY_BEFORE_NAMESPACE();
+namespace luxel::gi2d::rc {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using D = hn::CappedTag<float, kStencilLanes>;
+using DI = hn::RebindToSigned<D>;
+using VF = hn::Vec<D>;
+using VI = hn::Vec<DI>;
+using MF = hn::Mask<D>;
+
+// -ln(1e-6): RayMarcher stops a ray once every channel's transmittance is below 1e-6.
+constexpr float kCutoffDepth = 13.815510557964274f;
+
+int LanesImpl() {
+    return static_cast<int>(hn::Lanes(D()));
+}
+
+// Light and transmittance of one walk.
+struct Segment {
+    VF light[3];
+    VF transmittance[3];
+};
+
+// The emitting cell a lane entered last and its optical depth before that cell. A lane adds
+// T E (1 - t) there (T = exp(-tau) before the cell, t = exp(-sigma l) across it), as RayMarcher
+// does per run, once the walk is over or the lane enters the next emitting cell: most lanes meet
+// one emitter (an opaque wall) and stop, so the gathers and exponentials run once per walk.
+template <bool kGrey>
+struct Pending {
+    VI pixel;  // y * width + x
+    VF length;
+    VF tau[kGrey ? 1 : 3];
+    MF any;
+};
+
+template <bool kGrey>
+HWY_NOINLINE void AddEmission(const StencilGroup& g, const Pending<kGrey>& pending, MF lanes,
+                              VF (&light)[3]) {
+    const D df;
+    const DI di;
+    const StencilMedium& m = *g.medium;
+    VF minTau = pending.tau[0];
+    for (int c = 1; c < (kGrey ? 1 : 3); ++c) minTau = hn::Min(minTau, pending.tau[c]);
+    lanes = hn::And(lanes, hn::Le(minTau, hn::Set(df, kCutoffDepth)));
+    const VI pixel = hn::IfThenElseZero(hn::RebindMask(di, lanes), pending.pixel);
+    const VI id = hn::GatherIndex(di, reinterpret_cast<const std::int32_t*>(m.ids()), pixel);
+    const VF length = pending.length;
+    VF before, across;
+    for (int c = 0; c < 3; ++c) {
+        if (!kGrey || c == 0) {
+            const VF sigma = hn::GatherIndex(df, m.sigma(c), id);
+            before = hn::Exp(df, hn::Neg(pending.tau[kGrey ? 0 : c]));
+            across = hn::Neg(hn::Expm1(df, hn::Neg(hn::Mul(sigma, length))));
+        }
+        const VF emission = hn::GatherIndex(df, m.emission(c), id);
+        light[c] = hn::IfThenElse(lanes, hn::MulAdd(hn::Mul(before, emission), across, light[c]),
+                                  light[c]);
+    }
+}
+
+template <bool kGrey>
+HWY_INLINE Segment WalkOne(const StencilGroup& g, const StencilGroup::Walk& w) {
+    const D df;
+    const DI di;
+    constexpr int kChannels = kGrey ? 1 : 3;
+    // Optical depth in two sums, of the even and the odd entries, so that consecutive cells do
+    // not wait on each other. Lanes past `lanes` start beyond the cutoff and never count.
+    const VF start = hn::IfThenElse(hn::FirstN(df, static_cast<std::size_t>(g.lanes)), hn::Zero(df),
+                                    hn::Set(df, HUGE_VALF));
+    VF even[kChannels], odd[kChannels];
+    for (int c = 0; c < kChannels; ++c) even[c] = start, odd[c] = hn::Zero(df);
+    auto depth = [&](int c) { return hn::Add(even[c], odd[c]); };
+    auto minDepth = [&] {
+        VF m = depth(0);
+        for (int c = 1; c < kChannels; ++c) m = hn::Min(m, depth(c));
+        return m;
+    };
+    Segment out;
+    for (VF& l : out.light) l = hn::Zero(df);
+    Pending<kGrey> pending;
+    pending.pixel = hn::Zero(di);
+    pending.length = hn::Zero(df);
+    for (VF& t : pending.tau) t = hn::Zero(df);
+    pending.any = hn::FirstN(df, 0);
+    // Lane l's pixel at entry j: laneX + cellX[j] + cellY[j] * width.
+    const int width = g.medium->width();
+    const VI laneX = hn::Add(hn::Mul(hn::Iota(di, 0), hn::Set(di, g.laneStride)),
+                             hn::Set(di, w.shiftX + w.shiftY * width));
+    const VF cutoff = hn::Set(df, kCutoffDepth);
+    const float* HWY_RESTRICT planes[3] = {g.planes[0], g.planes[1], g.planes[2]};
+    const std::int32_t* HWY_RESTRICT offset = w.offset;
+    const float* HWY_RESTRICT lengths = w.length;
+    const std::int64_t base = w.base;
+    MF done = hn::Gt(start, cutoff);  // lanes past the cutoff
+
+    // Lanes `emits` enter an emitting cell at entry j (optical depth before it `before`).
+    auto enter = [&](MF emits, int j, const VF(&before)[kChannels], VF length) {
+        const MF again = hn::And(emits, pending.any);
+        if (HWY_UNLIKELY(!hn::AllFalse(df, again))) {
+            AddEmission<kGrey>(g, pending, again, out.light);
+        }
+        const VI pixel = hn::Add(laneX, hn::Set(di, w.cellX[j] + w.cellY[j] * width));
+        pending.pixel = hn::IfThenElse(hn::RebindMask(di, emits), pixel, pending.pixel);
+        pending.length = hn::IfThenElse(emits, length, pending.length);
+        for (int c = 0; c < kChannels; ++c) {
+            pending.tau[c] = hn::IfThenElse(emits, before[c], pending.tau[c]);
+        }
+        pending.any = hn::Or(pending.any, emits);
+    };
+    // One entry into the sums `tau`; the sign bit of the first plane marks an emitting cell.
+    auto step = [&](int j, VF(&tau)[kChannels]) {
+        const std::int64_t o = base + offset[j];
+        hwy::Prefetch(planes[0] + (base + offset[j + kStencilPrefetch]));
+        const VF s0 = hn::LoadU(df, planes[0] + o);
+        const VF length = hn::Set(df, lengths[j]);
+        const MF emits =
+            hn::AndNot(done, hn::RebindMask(df, hn::Lt(hn::BitCast(di, s0), hn::Zero(di))));
+        if (HWY_UNLIKELY(!hn::AllFalse(df, emits))) {
+            // `done` is the pair's: leave out the lanes the entry before stopped.
+            VF before[kChannels];
+            for (int c = 0; c < kChannels; ++c) before[c] = depth(c);
+            const MF live = hn::AndNot(hn::Gt(minDepth(), cutoff), emits);
+            if (!hn::AllFalse(df, live)) enter(live, j, before, length);
+        }
+        tau[0] = hn::MulAdd(hn::Abs(s0), length, tau[0]);
+        for (int c = 1; c < kChannels; ++c) {
+            tau[c] = hn::MulAdd(hn::LoadU(df, planes[c] + o), length, tau[c]);
+        }
+    };
+    int j = w.begin;
+    for (; j + 1 < w.end; j += 2) {
+        step(j, even);
+        step(j + 1, odd);
+        done = hn::Gt(minDepth(), cutoff);
+        if (HWY_UNLIKELY(hn::AllTrue(df, done))) break;
+    }
+    if (j + 1 == w.end) step(j, even);
+    if (!hn::AllFalse(df, pending.any)) AddEmission<kGrey>(g, pending, pending.any, out.light);
+    for (int c = 0; c < 3; ++c) {
+        out.transmittance[c] =
+            (kGrey && c > 0) ? out.transmittance[0] : hn::Exp(df, hn::Neg(depth(kGrey ? 0 : c)));
+    }
+    return out;
+}
+
+template <bool kGrey>
+void Group(const StencilGroup& g) {
+    const D df;
+    const DI di;
+    Segment walks[4];
+    for (int c = 0; c < g.corners; ++c) walks[c] = WalkOne<kGrey>(g, g.walk[c]);
+    const MF lanes = hn::FirstN(df, static_cast<std::size_t>(g.lanes));
+    VF sum[3];
+    for (int ch = 0; ch < 3; ++ch) sum[ch] = hn::LoadU(df, g.sum[ch]);
+    for (int c = 0; c < g.corners; ++c) {
+        Segment s = walks[c];
+        MF use = lanes;
+        if (g.source != nullptr) {  // lanes whose corner another walk serves, or none
+            const VI source = hn::LoadU(di, g.source + c * kStencilLanes);
+            use = hn::And(use, hn::RebindMask(df, hn::Gt(source, hn::Set(di, -1))));
+            for (int other = 0; other < g.corners; ++other) {
+                if (other == c) continue;
+                const MF from = hn::RebindMask(df, hn::Eq(source, hn::Set(di, other)));
+                for (int ch = 0; ch < 3; ++ch) {
+                    s.light[ch] = hn::IfThenElse(from, walks[other].light[ch], s.light[ch]);
+                    s.transmittance[ch] =
+                        hn::IfThenElse(from, walks[other].transmittance[ch], s.transmittance[ch]);
+                }
+            }
+        }
+        const VF weight = hn::Set(df, g.weight[c]);
+        for (int ch = 0; ch < 3; ++ch) {
+            const VF beyond = hn::LoadU(df, g.beyond[c][ch]);
+            const VF merged = hn::MulAdd(s.transmittance[ch], beyond, s.light[ch]);
+            sum[ch] = hn::IfThenElse(use, hn::MulAdd(merged, weight, sum[ch]), sum[ch]);
+        }
+    }
+    for (int ch = 0; ch < 3; ++ch) hn::StoreU(sum[ch], df, g.sum[ch]);
+}
+
+void GroupImpl(const StencilGroup& g) {
+    if (g.grey) {
+        Group<true>(g);
+    } else {
+        Group<false>(g);
+    }
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace luxel::gi2d::rc
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace luxel::gi2d::rc {
+
+HWY_EXPORT(LanesImpl);
+HWY_EXPORT(GroupImpl);
+
+int stencilWalkLanes() {
+    return HWY_DYNAMIC_DISPATCH(LanesImpl)();
+}
+
+void walkStencilGroup(const StencilGroup& group) {
+    HWY_DYNAMIC_DISPATCH(GroupImpl)(group);
+}
+
+}  // namespace luxel::gi2d::rc
+#endif
