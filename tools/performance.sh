@@ -25,14 +25,22 @@ for build in "$new" "$base"; do
         "$build/apps/cli/luxel" render "$scene" --solver hrc --size 2048x2048 --out "$out/hrc.exr" \
         >/dev/null
 done
-rm -rf "$out"
-
-echo "== RC on one core: CPU ms per frame"
-for build in "$new" "$base"; do
-    echo "-- $build"
-    taskset -c 0 "$build/bench/luxel_bench" --benchmark_filter='^rc-.*/room/(512|1024)$' \
-        --benchmark_repetitions=3 --benchmark_report_aggregates_only=true 2>/dev/null
+echo "== RC on one core: solve seconds (luxel render --stats), best of 3"
+for merge in vanilla bilinear-fix; do
+    for size in 512 1024; do
+        for build in "$new" "$base"; do
+            best=
+            for run in 1 2 3; do
+                t=$(taskset -c 0 "$build/apps/cli/luxel" render "$scene" --solver rc --merge "$merge" \
+                    --size "${size}x${size}" --threads 1 --backend cpu --stats -q --out "$out/rc.exr" |
+                    sed -n 's/.*solve_seconds[^0-9]*\([0-9.]*\).*/\1/p')
+                best=$(printf '%s\n%s\n' "$best" "$t" | sed '/^$/d' | sort -g | head -1)
+            done
+            echo "rc $merge ${size}^2 $build: $best s"
+        done
+    done
 done
+rm -rf "$out"
 
 echo "== Voxel rays against Embree (one thread each, CPU time)"
 "$new/bench/luxel_bench" --benchmark_filter='^voxel/' --benchmark_counters_tabular=true \

@@ -90,7 +90,11 @@ namespace {
 
 // A scene next to a copy of the shipped textures, so relative paths resolve.
 std::string textureScene(const std::string& name, const std::string& body) {
-    const auto dir = std::filesystem::temp_directory_path() / "luxel_voxel_textures";
+    // One directory per test: ctest runs tests in parallel, and copying over a texture another
+    // test is reading would make it fail now and then.
+    const auto dir = std::filesystem::temp_directory_path() /
+                     (std::string("luxel_voxel_textures_") +
+                      testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::create_directories(dir / "textures");
     for (const char* t : {"bricks.png", "leaves.png"}) {
         std::filesystem::copy_file(std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/textures/" + t,
