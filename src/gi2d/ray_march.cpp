@@ -8,6 +8,7 @@
 #include <limits>
 #include <unordered_map>
 
+#include "gi2d/material_bits.h"
 #include "luxel/core/check.h"
 
 namespace luxel::gi2d {
@@ -30,18 +31,6 @@ inline int forwardOnly(int current, int recomputed, double direction) {
     return recomputed;
 }
 
-// Bitwise hash of the six floats of a material.
-struct MaterialBits {
-    std::uint32_t words[6];
-    bool operator==(const MaterialBits&) const = default;
-};
-struct MaterialBitsHash {
-    std::size_t operator()(const MaterialBits& m) const {
-        std::uint64_t h = 0x9e3779b97f4a7c15ull;
-        for (std::uint32_t w : m.words) h = (h ^ w) * 0x100000001b3ull;
-        return static_cast<std::size_t>(h ^ (h >> 29));
-    }
-};
 }  // namespace
 
 RayMarcher::RayMarcher(const Medium2D& medium)

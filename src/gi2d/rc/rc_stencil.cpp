@@ -9,6 +9,7 @@
 #include <limits>
 #include <unordered_map>
 
+#include "gi2d/material_bits.h"
 #include "gi2d/rc/rc_cascade_pass.h"
 #include "gi2d/rc/rc_internal.h"
 #include "luxel/core/parallel.h"
@@ -18,19 +19,6 @@ namespace luxel::gi2d::rc {
 namespace shared = gpu::shared;
 
 namespace {
-
-// Bitwise hash of the six floats of a material.
-struct MaterialBits {
-    std::uint32_t words[6];
-    bool operator==(const MaterialBits&) const = default;
-};
-struct MaterialBitsHash {
-    std::size_t operator()(const MaterialBits& m) const {
-        std::uint64_t h = 0x9e3779b97f4a7c15ull;
-        for (std::uint32_t w : m.words) h = (h ^ w) * 0x100000001b3ull;
-        return static_cast<std::size_t>(h ^ (h >> 29));
-    }
-};
 
 int floorDiv(int a, int b) {
     return a / b - ((a % b != 0 && (a < 0) != (b < 0)) ? 1 : 0);
