@@ -2,7 +2,8 @@
 // against a cached reference render where one exists (out/reference-cache/room_WxH.exr; `make demo`
 // writes the 512x512 one).
 //   build/release/bench/luxel_bench --benchmark_filter='hrc|rc'
-//   LUXEL_BENCH_LARGE=1 build/release/bench/luxel_bench --benchmark_filter=hrc   (adds 4096, 8192)
+//   LUXEL_BENCH_LARGE=1 build/release/bench/luxel_bench --benchmark_filter=hrc   (adds 4096, 8192;
+//   RC: 4096)
 //   LUXEL_THREADS=1 build/release/bench/luxel_bench --benchmark_filter=rc   (worker threads capped)
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
@@ -91,6 +92,7 @@ void hrcSizes(benchmark::internal::Benchmark* b) {
 
 void rcSizes(benchmark::internal::Benchmark* b) {
     for (int size : {256, 512, 1024, 2048}) b->Arg(size);
+    if (std::getenv("LUXEL_BENCH_LARGE") != nullptr) b->Arg(4096);
 }
 
 BENCHMARK_CAPTURE(defaultScene, hrc, Solver::Hrc)

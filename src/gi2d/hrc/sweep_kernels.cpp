@@ -116,11 +116,16 @@ void CellTransferRowsImpl(const float* const sigma[3], const float* const emissi
     const VF zero = hn::Zero(df), one = hn::Set(df, 1.0f), negLength = hn::Set(df, -length);
     for (int v = 0; v < count; v += lanes) {
         const int n = std::min(lanes, count - v);
+        VF s[3], tc[3];
+        for (int c = 0; c < 3; ++c) s[c] = hn::LoadU(df, sigma[c] + v);
+        // Grey absorption, the common case, needs one exp for the three channels.
+        const bool grey = hn::AllTrue(df, hn::And(hn::Eq(s[0], s[1]), hn::Eq(s[1], s[2])));
         for (int c = 0; c < 3; ++c) {
-            const VF s = hn::LoadU(df, sigma[c] + v);
-            const VF tc = hn::IfThenElse(hn::Eq(s, zero), one, hn::Exp(df, hn::Mul(s, negLength)));
-            const VF lc = hn::Mul(hn::LoadU(df, emission[c] + v), hn::Sub(one, tc));
-            StoreFloats(tc, t[c], v, n);
+            tc[c] = grey && c > 0 ? tc[0]
+                                  : hn::IfThenElse(hn::Eq(s[c], zero), one,
+                                                   hn::Exp(df, hn::Mul(s[c], negLength)));
+            const VF lc = hn::Mul(hn::LoadU(df, emission[c] + v), hn::Sub(one, tc[c]));
+            StoreFloats(tc[c], t[c], v, n);
             StoreFloats(lc, l[c], v, n);
         }
     }

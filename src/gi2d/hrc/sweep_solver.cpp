@@ -243,34 +243,46 @@ std::uint64_t FrustumSweep::readOut(int u, int plane, int y0, int y1) {
     thread_local std::vector<float> pending;
     const int band = y1 - y0;
     pending.resize(static_cast<std::size_t>(kBlock) * 3 * band);
-    float* column = pending.data() + static_cast<std::size_t>(u % kBlock) * 3 * band;
+    auto gathered = [&](int w, int c) {
+        return pending.data() + (static_cast<std::size_t>(w % kBlock) * 3 + c) * band;
+    };
     const Rgb sky = medium_.boundaryRadiance * LUXEL_HRC_QUARTER_TURN;
     for (int c = 0; c < 3; ++c) {
-        const float* cones = plane >= 0 ? cones_.plane(0, plane, 0, c) : nullptr;
-        for (int v = y0; v < y1; ++v) column[c * band + (v - y0)] = cones ? cones[v] : sky[c];
+        if (plane >= 0) {
+            std::copy_n(cones_.plane(0, plane, 0, c) + y0, band, gathered(u, c));
+        } else {
+            std::fill_n(gathered(u, c), band, sky[c]);
+        }
     }
-    if (u % kBlock != 0) return static_cast<std::uint64_t>(band) * 12;
+    if (u % kBlock != 0) return static_cast<std::uint64_t>(band) * 24;
     const int last = std::min(u + kBlock - 1, frame_.length - 1);
-    float* sum = beyond_.data();
-    const std::size_t width = static_cast<std::size_t>(beyond_.width());
-    auto add = [&](int w, int v) {
-        int x, y;
-        frame_.toCanvas(w, v, x, y);
-        float* pixel = sum + (static_cast<std::size_t>(y) * width + x) * 3;
-        const float* from = pending.data() + static_cast<std::size_t>(w % kBlock) * 3 * band;
-        for (int c = 0; c < 3; ++c) pixel[c] += from[c * band + (v - y0)];
+    const int width = beyond_.width(), height = beyond_.height();
+    auto pixel = [&](int x, int y) {
+        return beyond_.data() + (static_cast<std::size_t>(y) * width + x) * 3;
     };
-    const bool alongX = frame_.frustum == Frustum::PlusX || frame_.frustum == Frustum::MinusX;
-    if (alongX) {
-        for (int v = y0; v < y1; ++v) {
-            for (int w = u; w <= last; ++w) add(w, v);
-        }
-    } else {
-        for (int w = u; w <= last; ++w) {
-            for (int v = y0; v < y1; ++v) add(w, v);
-        }
+    // The canvas pixel of frame pixel (w, v), as FrustumFrame::toCanvas maps it.
+    switch (frame_.frustum) {
+        case Frustum::PlusX:
+        case Frustum::MinusX:
+            for (int v = y0; v < y1; ++v) {
+                for (int w = u; w <= last; ++w) {
+                    float* p = pixel(frame_.frustum == Frustum::PlusX ? w : width - 1 - w, v);
+                    for (int c = 0; c < 3; ++c) p[c] += gathered(w, c)[v - y0];
+                }
+            }
+            break;
+        case Frustum::PlusY:
+        case Frustum::MinusY:
+            for (int w = u; w <= last; ++w) {
+                float* row = pixel(0, frame_.frustum == Frustum::PlusY ? w : height - 1 - w);
+                const float* from[3] = {gathered(w, 0), gathered(w, 1), gathered(w, 2)};
+                for (int v = y0; v < y1; ++v) {
+                    for (int c = 0; c < 3; ++c) row[3 * v + c] += from[c][v - y0];
+                }
+            }
+            break;
     }
-    return static_cast<std::uint64_t>(band) * (12 + (last - u + 1) * 24);
+    return static_cast<std::uint64_t>(band) * (24 + (last - u + 1) * 24);
 }
 
 void FrustumSweep::run(ThreadTeam& team, int member, SweepTimes* times) {
