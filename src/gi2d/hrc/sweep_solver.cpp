@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <optional>
 
 #include "gi2d/hrc/cone_merge.h"
 #include "gi2d/hrc/hrc_geometry.h"
