@@ -16,6 +16,9 @@ namespace {
 
 namespace shared = gpu::shared;
 
+// Buffers up to this size are kept for the next solve on the same thread (1024^2 needs 48 MiB).
+constexpr std::uint64_t kKeptSweepBytes = std::uint64_t{64} << 20;
+
 // Traced cascades actually used for a frame with `levels` cascades.
 int tracedFor(int tracedLevels, int levels) {
     return std::clamp(tracedLevels, 1, levels);
@@ -339,7 +342,11 @@ void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int thread
                 beyondSum.channels() == 3);
     const int frustums = std::popcount(options.frustumMask & 0xFu);
     int done = 0;
-    SweepBuffers buffers;
+    // Small buffers stay with the calling thread for its next solve (a viewer solves every frame:
+    // fresh pages would cost a fault each); large ones are given back.
+    thread_local SweepBuffers kept;
+    SweepBuffers buffers = std::move(kept);
+    kept = {};
     for (int r = 0; r < 4; ++r) {
         if (!(options.frustumMask & (1u << r))) continue;
         const FrustumFrame frame =
@@ -351,6 +358,9 @@ void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int thread
             sweep.run(team, member, member == 0 ? times : nullptr);
         });
         if (options.onProgress) options.onProgress(++done, frustums);
+    }
+    if (sweepBytes(medium.width(), medium.height(), options.tracedLevels) <= kKeptSweepBytes) {
+        kept = std::move(buffers);
     }
 }
 
