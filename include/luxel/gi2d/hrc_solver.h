@@ -59,7 +59,8 @@ struct HrcCpuPass {
 
 // Fails with a clear message when the memory estimate exceeds the available memory, or for bad
 // options. `passes`, when given, receives the time of each pass (trace, extend, merge, readout,
-// finish) summed over the frustums.
+// finish) summed over the frustums; it stays empty for the debug views and for more than 5 traced
+// cascades, which run cascade by cascade.
 Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options = {},
                        std::vector<HrcCpuPass>* passes = nullptr);
 

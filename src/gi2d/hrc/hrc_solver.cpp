@@ -61,17 +61,23 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
                          " does not exist (this size has " + std::to_string(levels) + ")");
         }
     }
+    // The sweep's medium window grows with 2^tracedLevels times the distinct lengths inside cells
+    // (3 for the paper's 3 traced cascades): many traced cascades go cascade by cascade instead.
+    const bool levelByLevel = debug || options.tracedLevels > kSweepMaxTracedLevels;
     const std::uint64_t needed =
-        debug ? levelByLevelBytes(w, h) + mediumBytes(w, h) / 2
-              : sweepBytes(w, h, options.tracedLevels) + estimateHrcMemory(w, h).output;
+        levelByLevel ? levelByLevelBytes(w, h) + mediumBytes(w, h) / 2
+                     : sweepBytes(w, h, options.tracedLevels) + estimateHrcMemory(w, h).output;
     if (Status s = checkMemory(needed, "HRC at " + std::to_string(w) + "x" + std::to_string(h));
         !s) {
         return s.error();
     }
 
     const int frustums = std::popcount(options.frustumMask & 0xFu);
-    if (debug) {
-        return finishFluence(medium, levelByLevelBeyond(medium, options), frustums, false);
+    if (levelByLevel) {
+        if (passes != nullptr) passes->clear();
+        Image beyond = levelByLevelBeyond(medium, options);
+        finishFluenceInPlace(medium, beyond, frustums, options.crossBlur && !debug);
+        return beyond;
     }
     SweepTimes times;
     Image beyond(w, h, 3);

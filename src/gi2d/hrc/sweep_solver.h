@@ -25,6 +25,9 @@ struct SweepTimes {
 // Pixel columns the sweep handles per step (§7.1).
 inline constexpr int kSweepChunk = 16;
 
+// The most traced cascades the sweep takes; more are solved cascade by cascade.
+inline constexpr int kSweepMaxTracedLevels = 5;
+
 // Adds the angular fluence each pixel's read-out plane receives in every frustum of `mask` into
 // `beyondSum` (canvas space), using `threads` threads.
 void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int threads, Image& beyondSum,

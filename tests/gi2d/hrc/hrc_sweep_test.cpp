@@ -102,6 +102,9 @@ TEST(HrcSweep, MatchesTheLevelByLevelPasses) {
     traceFive.tracedLevels = 5;
     traceFive.crossBlur = false;
     cases.push_back({"random 50x70 t=5", randomMedium(50, 70, 10), traceFive});
+    HrcOptions traceSeven;  // beyond the sweep's limit: solved cascade by cascade
+    traceSeven.tracedLevels = 7;
+    cases.push_back({"random 150x40 t=7", randomMedium(150, 40, 13), traceSeven});
     HrcOptions twoFrustums;
     twoFrustums.frustumMask = 0x5;
     cases.push_back({"pinhole 160x90 +-x", shippedScene("pinhole.json", 160, 90), twoFrustums});
