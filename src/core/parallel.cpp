@@ -2,10 +2,9 @@
 #include "luxel/core/parallel.h"
 
 #include <algorithm>
+#include <thread>
 
 #include "luxel/core/thread_team.h"
-
-#include <thread>
 
 namespace luxel {
 

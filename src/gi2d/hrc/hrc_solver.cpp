@@ -12,7 +12,6 @@
 #include "gi2d/hrc/frustum_frame.h"
 #include "gi2d/hrc/hrc_geometry.h"
 #include "gi2d/hrc/level_by_level.h"
-#include "gi2d/hrc/sweep_buffers.h"
 #include "gi2d/hrc/sweep_solver.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/thread_team.h"
@@ -27,16 +26,11 @@ int hrcCascadeCount(int width, int height) {
 }
 
 HrcMemory estimateHrcMemory(int width, int height) {
+    const SweepMemory sweep = sweepMemory(width, height, HrcOptions{}.tracedLevels);
     HrcMemory m;
-    for (int r = 0; r < 2; ++r) {
-        const FrustumFrame f = makeFrame(static_cast<Frustum>(r), width, height);
-        const int levels = cascadeCount(f.length);
-        m.rayIntervals =
-            std::max(m.rayIntervals, IntervalRing::bytesFor(levels, f.rows, kSweepChunk));
-        m.cones = std::max(m.cones, ConeRing::bytesFor(levels, f.rows, kSweepChunk));
-    }
-    m.mediumColumns =
-        sweepBytes(width, height, HrcOptions{}.tracedLevels) - m.rayIntervals - m.cones;
+    m.rayIntervals = sweep.intervals;
+    m.cones = sweep.cones;
+    m.mediumColumns = sweep.columns;
     m.output = static_cast<std::uint64_t>(width) * height * 3 * sizeof(float);
     return m;
 }
@@ -64,9 +58,9 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
     // The sweep's medium window grows with 2^tracedLevels times the distinct lengths inside cells
     // (3 for the paper's 3 traced cascades): many traced cascades go cascade by cascade instead.
     const bool levelByLevel = debug || options.tracedLevels > kSweepMaxTracedLevels;
-    const std::uint64_t needed =
-        levelByLevel ? levelByLevelBytes(w, h) + mediumBytes(w, h) / 2
-                     : sweepBytes(w, h, options.tracedLevels) + estimateHrcMemory(w, h).output;
+    const std::uint64_t needed = levelByLevel ? levelByLevelBytes(w, h) + mediumBytes(w, h) / 2
+                                              : sweepMemory(w, h, options.tracedLevels).total() +
+                                                    estimateHrcMemory(w, h).output;
     if (Status s = checkMemory(needed, "HRC at " + std::to_string(w) + "x" + std::to_string(h));
         !s) {
         return s.error();

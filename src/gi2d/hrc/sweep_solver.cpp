@@ -24,19 +24,51 @@ int tracedFor(int tracedLevels, int levels) {
     return std::clamp(tracedLevels, 1, levels);
 }
 
-// The distinct lengths of ray inside one cell over the traced cascades below `traced`.
-std::vector<float> stencilLengths(int traced) {
-    std::vector<float> lengths;
+// The traced rays' stencils below `traced` cascades, with each step's window column and ray
+// length resolved (the window holds, per column, one transfer plane set per distinct length).
+struct TracedRays {
+    std::vector<float> lengths;                              // distinct lengths inside a cell
+    std::vector<std::vector<std::vector<TraceStep>>> steps;  // [n][k]
+};
+
+TracedRays buildTracedRays(int traced) {
+    TracedRays rays;
+    std::vector<std::vector<std::vector<StencilStep>>> stencils(static_cast<std::size_t>(traced));
     for (int n = 0; n < traced; ++n) {
         for (int k = 0; k <= pow2(n); ++k) {
-            for (const StencilStep& step : traceStencil(n, k)) {
-                if (std::find(lengths.begin(), lengths.end(), step.length) == lengths.end()) {
-                    lengths.push_back(step.length);
+            stencils[n].push_back(traceStencil(n, k));
+            for (const StencilStep& step : stencils[n].back()) {
+                if (std::find(rays.lengths.begin(), rays.lengths.end(), step.length) ==
+                    rays.lengths.end()) {
+                    rays.lengths.push_back(step.length);
                 }
             }
         }
     }
-    return lengths;
+    const auto count = static_cast<int>(rays.lengths.size());
+    rays.steps.resize(static_cast<std::size_t>(traced));
+    for (int n = 0; n < traced; ++n) {
+        for (const auto& stencil : stencils[n]) {
+            rays.steps[n].emplace_back();
+            for (const StencilStep& step : stencil) {
+                const auto d = std::find(rays.lengths.begin(), rays.lengths.end(), step.length);
+                rays.steps[n].back().push_back(
+                    {step.du * count + static_cast<int>(d - rays.lengths.begin()), step.dv});
+            }
+        }
+    }
+    return rays;
+}
+
+// Built once for every traced count the sweep takes.
+const TracedRays& tracedRays(int traced) {
+    static const std::vector<TracedRays> all = [] {
+        std::vector<TracedRays> built;
+        for (int t = 0; t <= kSweepMaxTracedLevels; ++t) built.push_back(buildTracedRays(t));
+        return built;
+    }();
+    LUXEL_CHECK(traced >= 1 && traced <= kSweepMaxTracedLevels);
+    return all[traced];
 }
 
 // Calls fn(a, b) for the pieces of rows [y0, y1) inside which every row y + offset lies either
@@ -98,21 +130,10 @@ class FrustumSweep {
             planes_.push_back(planeCount(frame.length, n));
             weights_.push_back(coneWeights(n));
         }
-        // Each traced ray's cells, with the window column and ray length of each resolved.
-        std::vector<float> lengths = stencilLengths(traced_);
-        const int count = static_cast<int>(lengths.size());
-        steps_.resize(static_cast<std::size_t>(traced_));
-        for (int n = 0; n < traced_; ++n) {
-            for (int k = 0; k <= pow2(n); ++k) {
-                steps_[n].emplace_back();
-                for (const StencilStep& step : traceStencil(n, k)) {
-                    const auto d = std::find(lengths.begin(), lengths.end(), step.length);
-                    steps_[n].back().push_back(
-                        {step.du * count + static_cast<int>(d - lengths.begin()), step.dv});
-                }
-            }
+        const TracedRays& rays = tracedRays(traced_);
+        for (ColumnWindow& window : columns_) {
+            window.reshape(pow2(traced_ - 1), rays.lengths, rows_);
         }
-        for (ColumnWindow& window : columns_) window.reshape(pow2(traced_ - 1), lengths, rows_);
     }
 
     void run(ThreadTeam& team, int member, SweepTimes* times);
@@ -147,7 +168,6 @@ class FrustumSweep {
     int rows_, levels_, traced_;
     std::vector<int> planes_;
     std::vector<std::vector<float>> weights_;
-    std::vector<std::vector<std::vector<TraceStep>>> steps_;
     std::vector<ColumnWindow>& columns_;  // one per team member
     IntervalRing& tables_;
     ConeRing& cones_;
@@ -161,7 +181,8 @@ std::uint64_t FrustumSweep::trace(const ColumnWindow& columns, int x, int y0, in
     std::uint64_t bytes = static_cast<std::uint64_t>(rows_) * 24;  // the column loaded
     for (int n = 0; n < traced_ && (x & (pow2(n) - 1)) == 0; ++n) {
         for (int k = 0; k <= pow2(n); ++k) {
-            traceRows(steps_[n][k], window.data(), tables_.write(n, x >> n, k), y0, y1);
+            traceRows(tracedRays(traced_).steps[n][k], window.data(), tables_.write(n, x >> n, k),
+                      y0, y1);
             bytes += static_cast<std::uint64_t>(rows_) * 12;
         }
     }
@@ -359,23 +380,26 @@ void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int thread
         });
         if (options.onProgress) options.onProgress(++done, frustums);
     }
-    if (sweepBytes(medium.width(), medium.height(), options.tracedLevels) <= kKeptSweepBytes) {
+    if (sweepMemory(medium.width(), medium.height(), options.tracedLevels).total() <=
+        kKeptSweepBytes) {
         kept = std::move(buffers);
     }
 }
 
-std::uint64_t sweepBytes(int width, int height, int tracedLevels) {
-    std::uint64_t most = 0;
+SweepMemory sweepMemory(int width, int height, int tracedLevels) {
+    SweepMemory most;
     for (int r = 0; r < 2; ++r) {
         const FrustumFrame frame = makeFrame(static_cast<Frustum>(r), width, height);
         const int levels = cascadeCount(frame.length);
         const int traced = tracedFor(tracedLevels, levels);
-        const auto lengths = static_cast<int>(stencilLengths(traced).size());
-        most =
-            std::max(most, IntervalRing::bytesFor(levels, frame.rows, kSweepChunk) +
-                               ConeRing::bytesFor(levels, frame.rows, kSweepChunk) +
-                               ThreadTeam::defaultSize() *
-                                   ColumnWindow::bytesFor(pow2(traced - 1), lengths, frame.rows));
+        SweepMemory m;
+        m.intervals = IntervalRing::bytesFor(levels, frame.rows, kSweepChunk);
+        m.cones = ConeRing::bytesFor(levels, frame.rows, kSweepChunk);
+        m.columns =
+            ThreadTeam::defaultSize() *
+            ColumnWindow::bytesFor(pow2(traced - 1),
+                                   static_cast<int>(tracedRays(traced).lengths.size()), frame.rows);
+        if (m.total() > most.total()) most = m;
     }
     return most;
 }

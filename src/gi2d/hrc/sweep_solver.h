@@ -1,8 +1,9 @@
 // The CPU HRC solver as one sweep per frustum from the far end of the frame to the near end
-// (docs/algorithms/holographic-radiance-cascades.md §7.1): at each pixel column x the planes of
-// every cascade that lie there are traced or extended bottom-up, then merged top-down and read
-// out, so only two planes per cascade are ever held. The same arithmetic as the level-by-level
-// passes (ray_tables, cone_merge, readout), which stay as the reference of the GPU passes.
+// (docs/algorithms/holographic-radiance-cascades.md §7.1): chunk by chunk of pixel columns, the
+// planes of every cascade that lie in the chunk are traced or extended bottom-up, then merged
+// top-down and read out, so each cascade holds only the chunk's planes and the one beyond. The
+// same arithmetic as the level-by-level passes (ray_tables, cone_merge, readout), which stay as
+// the reference of the GPU passes.
 #pragma once
 
 #include <cstdint>
@@ -33,7 +34,13 @@ inline constexpr int kSweepMaxTracedLevels = 5;
 void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int threads, Image& beyondSum,
                    SweepTimes* times);
 
-// Peak bytes of sweepFrustums' buffers for a canvas of this size.
-std::uint64_t sweepBytes(int width, int height, int tracedLevels);
+// Bytes of sweepFrustums' buffers for a canvas of this size, from the frame that needs most.
+struct SweepMemory {
+    std::uint64_t intervals = 0;  // the ring of ray intervals
+    std::uint64_t cones = 0;      // the ring of merged cones
+    std::uint64_t columns = 0;    // the medium windows, one per thread
+    std::uint64_t total() const { return intervals + cones + columns; }
+};
+SweepMemory sweepMemory(int width, int height, int tracedLevels);
 
 }  // namespace luxel::gi2d::hrc
