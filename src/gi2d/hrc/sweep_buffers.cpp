@@ -127,9 +127,11 @@ void IntervalRing::reshape(int levels, int rows, int chunk) {
 }
 
 std::uint64_t IntervalRing::bytesFor(int levels, int rows, int chunk) {
-    std::uint64_t total = kSweepRowPad;
-    for (int n = 0; n < levels; ++n) total += ringSlots(n, chunk) * intervalsPerPlane(n, rows);
-    return total * sizeof(std::uint16_t);
+    std::vector<int> slots;
+    std::vector<std::size_t> starts;
+    const std::size_t total = layOut(
+        levels, chunk, [&](int n) { return intervalsPerPlane(n, rows); }, slots, starts);
+    return (total + kSweepRowPad) * sizeof(std::uint16_t);
 }
 
 IntervalRows IntervalRing::read(int n, int p, int k, int offset) const {
@@ -155,9 +157,11 @@ void ConeRing::reshape(int levels, int rows, int chunk) {
 }
 
 std::uint64_t ConeRing::bytesFor(int levels, int rows, int chunk) {
-    std::uint64_t total = kSweepRowPad;
-    for (int n = 0; n < levels; ++n) total += ringSlots(n, chunk) * conesPerPlane(n, rows);
-    return total * sizeof(float);
+    std::vector<int> slots;
+    std::vector<std::size_t> starts;
+    const std::size_t total = layOut(
+        levels, chunk, [&](int n) { return conesPerPlane(n, rows); }, slots, starts);
+    return (total + kSweepRowPad) * sizeof(float);
 }
 
 ConeRows ConeRing::read(int n, int p, int i, int offset) const {
