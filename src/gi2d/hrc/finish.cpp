@@ -12,7 +12,8 @@ namespace {
 
 namespace shared = gpu::shared;
 
-constexpr int kBandRows = 16;
+// Rows per band: the two saved neighbour rows of each band are 1/32 of the image.
+constexpr int kBandRows = 64;
 
 shared::vec3 vec3At(const float* p) {
     return {p[0], p[1], p[2]};
@@ -38,9 +39,10 @@ void finishFluenceInPlace(const Medium2D& medium, Image& fluence, int frustums, 
     // Each band overwrites its rows in order and keeps the original of the row above; the rows
     // just outside a band belong to its neighbours, so they are copied before any band starts.
     const int bands = (h + kBandRows - 1) / kBandRows;
-    std::vector<float> above(static_cast<std::size_t>(bands) * rowFloats),
-        below(static_cast<std::size_t>(bands) * rowFloats);
+    std::vector<float> above, below;
     if (blur) {
+        above.resize(static_cast<std::size_t>(bands) * rowFloats);
+        below.resize(static_cast<std::size_t>(bands) * rowFloats);
         for (int b = 0; b < bands; ++b) {
             const int y0 = b * kBandRows, y1 = std::min(h, y0 + kBandRows);
             if (y0 > 0) std::copy_n(row(y0 - 1), rowFloats, &above[b * rowFloats]);
