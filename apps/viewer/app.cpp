@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 
+#include "adaptive_resolution.h"
 #include "frame_capture.h"
 #include "frame_texture.h"
 #include "overlay.h"
@@ -115,6 +117,13 @@ int runApp(const ViewerOptions& options, ViewerMode& mode, std::optional<Script>
     int framesRendered = 0;
     double renderMillisecondsSum = 0.0;
     double previous = now();
+    // Without --internal-size or --internal-scale, the internal size grows from the mode's cheap
+    // start to the largest that keeps --target-fps (adaptive_resolution.h).
+    std::optional<AdaptiveResolution> adaptive;
+    if (options.targetFps > 0.0 && options.internalWidth == 0 && options.internalScale <= 0.0f) {
+        adaptive.emplace(ImageSize{mode.internalWidth(), mode.internalHeight()},
+                         1000.0 / options.targetFps);
+    }
 
     while (!quit) {
         const double frameStart = now();
@@ -205,6 +214,14 @@ int runApp(const ViewerOptions& options, ViewerMode& mode, std::optional<Script>
             ++framesRendered;
             renderMillisecondsSum += frame->renderMilliseconds;
             texture.update(w.renderer, shown->picture);
+            if (adaptive) {
+                adaptive->setLargest({std::max(1, static_cast<int>(view.width + 0.5)),
+                                      std::max(1, static_cast<int>(view.height + 0.5))});
+                const ImageSize rendered{shown->picture.width(), shown->picture.height()};
+                if (auto next = adaptive->frameRendered(rendered, shown->renderMilliseconds, t)) {
+                    mode.setInternalSize(next->width, next->height);
+                }
+            }
             if (Status s = recorder.offer(*shown); !s) {
                 exitCode = fail(s.error().message(), kExitBadInput);
                 quit = true;
@@ -216,10 +233,16 @@ int runApp(const ViewerOptions& options, ViewerMode& mode, std::optional<Script>
         ImGui_ImplSDL2_NewFrame();
         ImGui::NewFrame();
         if (showPanels) {
-            OverlayInfo info{shown.get(), windowRate.perSecond(), renderRate.perSecond(), winW,
-                             winH,        lastScreenshot};
+            OverlayInfo info{shown.get(),
+                             windowRate.perSecond(),
+                             renderRate.perSecond(),
+                             winW,
+                             winH,
+                             lastScreenshot,
+                             adaptive ? options.targetFps : 0.0};
             drawOverlay(info, mode);
         }
+        mode.drawOverFrame();
         ImGui::Render();
         SDL_SetRenderDrawColor(w.renderer, 16, 16, 20, 255);
         SDL_RenderClear(w.renderer);

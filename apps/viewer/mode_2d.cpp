@@ -126,6 +126,7 @@ void Mode2D::handleKey(const SDL_KeyboardEvent& key) {
             break;
         case SDLK_p:
             paintMode_ = !paintMode_;
+            panelRequest_ = paintMode_;
             return;
         case SDLK_TAB:
             if (paintMode_)
@@ -138,6 +139,8 @@ void Mode2D::handleKey(const SDL_KeyboardEvent& key) {
 }
 
 void Mode2D::handleEvent(const SDL_Event& event, const ViewRect& view) {
+    lastView_ = view;
+    if (event.type == SDL_MOUSEMOTION) pointer_ = {double(event.motion.x), double(event.motion.y)};
     switch (event.type) {
         case SDL_KEYDOWN:
             handleKey(event.key);
@@ -235,6 +238,24 @@ Status Mode2D::save() {
     return Ok{};
 }
 
+void Mode2D::drawStats() {
+    if (!paintMode_) return;
+    static const char* kinds[] = {"wall", "emitter", "medium", "eraser"};
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.8f, 0.3f, 1.0f));
+    ImGui::TextWrapped("paint mode: %s brush, %.0f px (Tab, wheel); Ctrl+Z undo, Ctrl+S save",
+                       kinds[static_cast<int>(brush_.kind)], brush_.size);
+    ImGui::PopStyleColor();
+}
+
+void Mode2D::drawOverFrame() {
+    // The brush outline under the pointer, so paint mode is visible without the panel.
+    if (!paintMode_ || pointer_.x < 0 || scene_.width <= 0) return;
+    const double radius = 0.5 * brush_.size * lastView_.width / scene_.width;
+    ImGui::GetForegroundDrawList()->AddCircle(
+        ImVec2(static_cast<float>(pointer_.x), static_cast<float>(pointer_.y)),
+        static_cast<float>(std::max(radius, 2.0)), IM_COL32(255, 204, 77, 220), 0, 1.5f);
+}
+
 void Mode2D::drawPanel() {
     int solver = solverIndex(view_);
     const char* solverLabels[kSolverCount];
@@ -277,7 +298,7 @@ void Mode2D::drawPanel() {
         if (ImGui::ColorEdit3("colour (1-5)", &lit->material.emission.r)) sceneChanged();
     }
     ImGui::Separator();
-    ImGui::Checkbox("paint mode (P)", &paintMode_);
+    if (ImGui::Checkbox("paint mode (P)", &paintMode_) && paintMode_) panelRequest_ = true;
     if (paintMode_) {
         int kind = static_cast<int>(brush_.kind);
         const char* kinds[] = {"wall", "emitter", "medium", "eraser"};

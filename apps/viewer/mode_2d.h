@@ -26,11 +26,23 @@ class Mode2D : public ViewerMode {
     void handleEvent(const SDL_Event& event, const ViewRect& view) override;
     void update(double seconds) override;
     void drawPanel() override;
+    void drawStats() override;
+    void drawOverFrame() override;
+    bool takePanelRequest() override {
+        const bool wanted = panelRequest_;
+        panelRequest_ = false;
+        return wanted;
+    }
     std::shared_ptr<const Frame> latestFrame(bool* fresh) override;
     bool frameCurrent() override;
     bool frameConverged() override;
     int internalWidth() const override { return view_.width; }
     int internalHeight() const override { return view_.height; }
+    void setInternalSize(int width, int height) override {
+        view_.width = width;
+        view_.height = height;
+        viewChanged();
+    }
     std::string name() const override { return "2D"; }
 
     // Writes the scene as JSON to the save path; the result is shown in the panel.
@@ -53,6 +65,9 @@ class Mode2D : public ViewerMode {
     int dragIndex_ = -1;   // shape being dragged, -1 when none
     Vec2d dragLast_;
     bool paintMode_ = false;
+    bool panelRequest_ = false;  // paint mode was switched on: show its controls
+    Vec2d pointer_{-1, -1};      // last pointer position, window pixels
+    ViewRect lastView_;          // where the frame was drawn at the last input
     Brush brush_;
     PaintTool paint_;
     std::uint64_t sceneVersion_ = 1, generation_ = 0;

@@ -31,6 +31,11 @@ class ModeOctree : public ViewerMode {
     bool frameConverged() override;
     int internalWidth() const override { return width_; }
     int internalHeight() const override { return height_; }
+    void setInternalSize(int width, int height) override {
+        width_ = width;
+        height_ = height;
+        controls_.setSize(width, height);
+    }
     std::string name() const override { return "octree"; }
 
   private:

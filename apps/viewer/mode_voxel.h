@@ -25,6 +25,11 @@ class ModeVoxel : public ViewerMode {
     bool frameConverged() override { return frameCurrent(); }
     int internalWidth() const override { return state_.width; }
     int internalHeight() const override { return state_.height; }
+    void setInternalSize(int width, int height) override {
+        state_.width = width;
+        state_.height = height;
+        dirty_ = true;
+    }
     std::string name() const override { return "voxel"; }
 
   private:

@@ -198,6 +198,12 @@ void OctreeControls::setSun(double azimuthDegrees, double elevationDegrees) {
     changed();
 }
 
+void OctreeControls::setSize(int width, int height) {
+    state_.width = width;
+    state_.height = height;
+    changed();
+}
+
 void OctreeControls::setExposure(float stops) {
     if (!std::isfinite(stops)) return;
     state_.exposure = std::clamp(stops, -10.0f, 10.0f);

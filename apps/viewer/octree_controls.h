@@ -72,6 +72,7 @@ class OctreeControls {
     void setPhaseG(float g);       // clamped to [-kMaxPhaseG, kMaxPhaseG]
     void setSun(double azimuthDegrees, double elevationDegrees);
     void setExposure(float stops);
+    void setSize(int width, int height);  // internal resolution
 
     const OrbitFlyCamera& camera() const { return camera_; }
     const octree::OctreeRenderOptions& options() const { return state_.render; }

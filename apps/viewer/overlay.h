@@ -14,11 +14,14 @@ class RateMeter {
   public:
     // Records one event at `seconds` (monotonic).
     void tick(double seconds);
+    // Events per second: over the last half second, or since the first event until half a
+    // second has passed; 0 before the second event (unknown).
     double perSecond() const { return rate_; }
 
   private:
     double windowStart_ = -1.0, rate_ = 0.0;
     int count_ = 0;
+    bool windowsDone_ = false;
 };
 
 struct OverlayInfo {
@@ -27,6 +30,7 @@ struct OverlayInfo {
     double renderFps = 0.0;
     int windowWidth = 0, windowHeight = 0;
     std::string lastScreenshot;
+    double adaptiveTargetFps = 0.0;  // > 0: the internal size adapts to this frame rate
 };
 
 // Draws the "luxel-view" window: statistics, then the mode's panel.

@@ -34,6 +34,10 @@ class ViewerMode {
     virtual void drawPanel() = 0;
     // Lines always shown above the panel, under the frame statistics.
     virtual void drawStats() {}
+    // Drawn over the frame every UI frame, panels shown or not (e.g. the paint brush outline).
+    virtual void drawOverFrame() {}
+    // True once after the mode wants its controls seen (the overlay then opens "controls").
+    virtual bool takePanelRequest() { return false; }
 
     virtual std::shared_ptr<const Frame> latestFrame(bool* fresh) = 0;
     // The latest frame shows the current state (see ScriptClock).
@@ -42,6 +46,8 @@ class ViewerMode {
     // Internal resolution; the frame is scaled to the window.
     virtual int internalWidth() const = 0;
     virtual int internalHeight() const = 0;
+    // Renders at a new internal resolution from the next frame on (adaptive_resolution.h).
+    virtual void setInternalSize(int width, int height) = 0;
     // "2D", "voxel" or "octree", for the overlay and the exit summary.
     virtual std::string name() const = 0;
 };

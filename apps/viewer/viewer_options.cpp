@@ -40,6 +40,10 @@ Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
         ->check(CLI::Range(1, 1000000));
     app.add_option("--record-dir", o.recordDir, "folder for --record frames");
     app.add_option("--save", o.savePath, "where paint mode saves the scene (Ctrl+S)");
+    app.add_option("--target-fps", o.targetFps,
+                   "without --internal-size/--internal-scale, the internal size adapts to keep "
+                   "this frame rate (0: fixed)")
+        ->check(options::finiteIn(0.0, 1000.0));
     app.add_option("--threads", o.threads, "solver threads (0: all)")->check(CLI::Range(0, 1024));
     app.add_flag("--no-overlay", o.hideOverlay, "start with the panels hidden (F1 shows them)");
 

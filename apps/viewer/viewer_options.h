@@ -28,6 +28,9 @@ struct ViewerOptions {
     std::string recordDir = "frames";
     std::string savePath;  // paint mode saves here (default: SCENE stem + ".painted.json")
     int threads = 0;       // solver threads (0: all)
+    // Without --internal-size/--internal-scale the internal size adapts to keep this frame rate
+    // (0: keep the mode's default size).
+    double targetFps = 15.0;
     bool hideOverlay = false;
 };
 
