@@ -60,6 +60,32 @@ Medium2D rasterAlone(const Geometry& geometry, Rgb emission, Rgb sigma, const Pi
     return m;
 }
 
+// The fraction of the segment a -> b (scene coordinates) inside the box.
+double boxChord(const Box& box, Vec2d a, Vec2d b) {
+    const double angle = box.angleDegrees * std::numbers::pi / 180.0;
+    const double c = std::cos(angle), s = std::sin(angle);
+    auto local = [&](Vec2d p) {
+        const Vec2d d = p - box.center;
+        return Vec2d{c * d.x + s * d.y, -s * d.x + c * d.y};
+    };
+    const Vec2d p = local(a), q = local(b), d = q - p;
+    double t0 = 0.0, t1 = 1.0;
+    const double half[2] = {0.5 * box.size.x, 0.5 * box.size.y};
+    const double start[2] = {p.x, p.y}, step[2] = {d.x, d.y};
+    for (int axis = 0; axis < 2; ++axis) {
+        if (step[axis] == 0.0) {
+            if (std::abs(start[axis]) > half[axis]) return 0.0;
+            continue;
+        }
+        double enter = (-half[axis] - start[axis]) / step[axis];
+        double leave = (half[axis] - start[axis]) / step[axis];
+        if (enter > leave) std::swap(enter, leave);
+        t0 = std::max(t0, enter);
+        t1 = std::min(t1, leave);
+    }
+    return std::max(0.0, t1 - t0);
+}
+
 // Radiance the exact shape sends to `from` along the segment from -> to (window coordinates):
 // the inside intervals found by sphere tracing the distance field, composited front to back.
 Rgb exactRadiance(const Geometry& geometry, Rgb emission, Rgb sigma, const PixelScale& scale,
@@ -75,6 +101,19 @@ Rgb exactRadiance(const Geometry& geometry, Rgb emission, Rgb sigma, const Pixel
         const double h = std::abs(dir.x * rel.y - dir.y * rel.x);
         if (h >= r) return Rgb();
         const double chord = 2 * std::sqrt(r * r - h * h);
+        Rgb radiance;
+        for (int c = 0; c < 3; ++c) {
+            radiance[c] = emission[c] * static_cast<float>(-std::expm1(-sigma[c] * chord));
+        }
+        return radiance;
+    }
+    // A box: one chord, the segment's part between both pairs of slabs in the box's frame. The
+    // parameter along the segment is the same in scene and output pixels (an affine map), so this
+    // holds for any scale.
+    if (const auto* box = std::get_if<Box>(&geometry)) {
+        const double chord = boxChord(*box, scale.toScene(w.x0 + from.x, w.y0 + from.y),
+                                      scale.toScene(w.x0 + to.x, w.y0 + to.y)) *
+                             len;
         Rgb radiance;
         for (int c = 0; c < 3; ++c) {
             radiance[c] = emission[c] * static_cast<float>(-std::expm1(-sigma[c] * chord));
