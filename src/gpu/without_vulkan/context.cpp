@@ -24,9 +24,7 @@ const bool kShadersEmbedded = false;
 namespace {
 
 Error withoutBackend() {
-    return Error(
-        "luxel was built without the GPU backend (LUXEL_GPU=OFF); the GPU backend is "
-        "unavailable");
+    return Error("luxel was built without the GPU backend (LUXEL_GPU=OFF)");
 }
 
 }  // namespace

@@ -11,7 +11,8 @@ int main() {
     using namespace luxel;
     gi2d::Scene2D scene;
     scene.width = scene.height = 64;
-    gi2d::Shape light{.name = "light", .geometry = gi2d::Circle{{32.5, 32.5}, 6.0}};
+    gi2d::Shape light;
+    light.geometry = gi2d::Circle{{32.5, 32.5}, 6.0};
     light.material.emission = Rgb(1.0f);
     light.material.absorption = Rgb(gi2d::kOpaqueAbsorption);
     scene.shapes.push_back(light);
