@@ -6,8 +6,9 @@
 #      built and run: its HRC solve must match the analytic fluence of a disk light;
 #   4. the same main.cpp compiled with the flags of `pkg-config --static --cflags --libs luxel`.
 # The temporary directory is removed whether the test passes or fails.
-# Inputs: BUILD_DIR, CONSUMER_DIR, CXX_COMPILER, GENERATOR, LIBDIR (CMAKE_INSTALL_LIBDIR).
-foreach(input BUILD_DIR CONSUMER_DIR CXX_COMPILER GENERATOR LIBDIR)
+# Inputs: BUILD_DIR, CONSUMER_DIR, CXX_COMPILER, GENERATOR, LIBDIR (CMAKE_INSTALL_LIBDIR) and
+# CONSUMER_FLAGS (compile and link flags for the consumer: the sanitizers of a sanitizer build).
+foreach(input BUILD_DIR CONSUMER_DIR CXX_COMPILER GENERATOR LIBDIR CONSUMER_FLAGS)
   if(NOT DEFINED ${input})
     message(FATAL_ERROR "install_and_consume.cmake needs -D${input}=...")
   endif()
@@ -48,7 +49,9 @@ if(EXISTS ${prefix}/include/luxel/gpu/shaders OR EXISTS ${prefix}/${LIBDIR}/libl
 endif()
 
 set(configure_args -G ${GENERATOR} -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCMAKE_BUILD_TYPE=Release
-                   -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF)
+                   -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF
+                   "-DCMAKE_CXX_FLAGS=${CONSUMER_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${CONSUMER_FLAGS}")
+separate_arguments(consumer_flags UNIX_COMMAND "${CONSUMER_FLAGS}")
 
 # 2. find_package(luxel) as a user may call it: every component (every third-party package), a
 #    major version luxel is not (SameMajorVersion), a component luxel does not have.
@@ -105,7 +108,7 @@ if(NOT include_dir STREQUAL prefix_include_dir OR NOT flags MATCHES "-lluxel_gi2
 endif()
 separate_arguments(flags UNIX_COMMAND "${flags}")
 run("compiling the consumer with pkg-config's flags" ${CXX_COMPILER} -std=c++20 -O2
-    ${CONSUMER_DIR}/main.cpp -o ${work}/consumer-pkg-config ${flags})
+    ${consumer_flags} ${CONSUMER_DIR}/main.cpp -o ${work}/consumer-pkg-config ${flags})
 run("running the pkg-config consumer" ${work}/consumer-pkg-config)
 message(STATUS "pkg-config consumer: ${output}")
 
