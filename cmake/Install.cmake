@@ -14,7 +14,8 @@ configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/luxelConfig.cmake.in
                               INSTALL_DESTINATION ${LUXEL_CMAKE_DIR})
 # SameMajorVersion: find_package(luxel 1.2) accepts 1.2 and any later 1.x, whose API only grows,
 # but not 2.x, which may break it; an older 1.x may lack what the caller uses, so it is refused too
-# (AnyNewerVersion would also accept the next major version, and with it a broken build).
+# (AnyNewerVersion would also accept the next major version, and with it a broken build). While
+# luxel is 0.x, CMake treats every 0.y as the same major version.
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/luxelConfigVersion.cmake
                                  COMPATIBILITY SameMajorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/luxelConfig.cmake ${PROJECT_BINARY_DIR}/luxelConfigVersion.cmake

@@ -18,7 +18,8 @@ fail() {
     exit 1
 }
 
-log=$(cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DLUXEL_WERROR=ON \
+# --fresh: a new cache, so nothing found by an earlier configure of this directory counts.
+log=$(cmake --fresh -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DLUXEL_WERROR=ON \
     -DLUXEL_GPU=OFF -DLUXEL_BUILD_VIEWER=OFF -DLUXEL_BUILD_BENCH=OFF \
     -DGLSLC_EXECUTABLE=/nonexistent/glslc 2>&1) || fail "configure: $log"
 # CMake lists GLSLC_EXECUTABLE among the variables the project did not use; nothing else may
@@ -26,6 +27,11 @@ log=$(cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DLUXEL_WERROR=
 grep -q '^ *GLSLC_EXECUTABLE$' <<<"$log" || fail "the configure step used GLSLC_EXECUTABLE: $log"
 if grep -Ei 'vulkan|glslc|sdl2|imgui' <<<"$log" | grep -v '^ *GLSLC_EXECUTABLE$'; then
     fail "the configure step looked for a GPU or viewer dependency (lines above)"
+fi
+# (The glslc path given above is in the cache as an UNINITIALIZED entry: set, never used.)
+if grep -Ei '^(vulkan|glslc|sdl2|imgui)[^:]*:' "$build/CMakeCache.txt" | grep -v ':UNINITIALIZED='
+then
+    fail "the cache holds GPU or viewer dependencies (lines above)"
 fi
 echo "check-cpu-only: configured without Vulkan, glslc, SDL2 or ImGui"
 
