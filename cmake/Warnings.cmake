@@ -18,8 +18,9 @@ if(LUXEL_SANITIZE)
   endif()
 endif()
 
-# Common settings for every luxel target.
+# Common settings for every luxel target. Build-tree only: the installed libraries do not make
+# their users compile with luxel's warnings or sanitizers.
 function(luxel_target_defaults target)
-  target_link_libraries(${target} PRIVATE luxel_warnings)
-  target_link_libraries(${target} PUBLIC luxel_sanitizers)
+  target_link_libraries(${target} PRIVATE $<BUILD_INTERFACE:luxel_warnings>)
+  target_link_libraries(${target} PUBLIC $<BUILD_INTERFACE:luxel_sanitizers>)
 endfunction()

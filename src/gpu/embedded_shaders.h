@@ -14,6 +14,8 @@ struct EmbeddedShader {
 
 extern const EmbeddedShader kEmbeddedShaders[];
 extern const int kEmbeddedShaderCount;
+// False in a build without the GPU backend (LUXEL_GPU=OFF), which compiles and embeds no shader.
+extern const bool kShadersEmbedded;
 
 // Words of the shader called `name` (file name without .comp.glsl); empty when there is none.
 inline std::span<const std::uint32_t> embeddedShader(std::string_view name) {

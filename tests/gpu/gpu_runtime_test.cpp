@@ -10,6 +10,7 @@
 
 #include "gi2d/hrc/hrc_geometry.h"
 #include "gi2d/hrc/ray_tables.h"
+#include "gpu/layout_check.h"
 #include "gpu/shaders/shared/hrc_layout.h"
 #include "gpu/shaders/shared/rc_layout.h"
 #include "luxel/core/half.h"
@@ -21,6 +22,7 @@ namespace luxel::gpu {
 namespace {
 
 TEST(GpuRuntime, EmbedsEveryShader) {
+    LUXEL_REQUIRE_EMBEDDED_SHADERS();
     const std::vector<std::string> names = embeddedShaders();
     for (const char* shader :
          {"hrc_trace", "hrc_extend", "hrc_merge", "hrc_readout", "hrc_finish", "rc_cascade"}) {

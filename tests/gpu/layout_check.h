@@ -13,6 +13,12 @@
 #include "gpu/embedded_shaders.h"
 #include "gpu/spirv_reflect.h"
 
+// Skips a test that reads the compiled shaders in a build without the GPU backend (LUXEL_GPU=OFF),
+// which compiles none; with the backend, a missing shader still fails the test.
+#define LUXEL_REQUIRE_EMBEDDED_SHADERS()         \
+    if (!::luxel::gpu::detail::kShadersEmbedded) \
+    GTEST_SKIP() << "luxel was built without the GPU backend (LUXEL_GPU=OFF): no shaders"
+
 namespace luxel::gpu::layout_check {
 
 // The C++ side of one struct: its size and the offsetof of every member, in declaration order.

@@ -15,12 +15,14 @@ using namespace layout_check;
 using namespace shared;
 
 TEST(OctreeTilesLayout, WorkgroupSizeComesFromTheSharedConstants) {
+    LUXEL_REQUIRE_EMBEDDED_SHADERS();
     EXPECT_EQ(
         reflect("octree_tiles").workgroupSize,
         (std::array<std::uint32_t, 3>{LUXEL_OCTREE_TILES_GROUP_X, LUXEL_OCTREE_TILES_GROUP_Y, 1}));
 }
 
 TEST(OctreeTilesLayout, TileStateAndPushConstants) {
+    LUXEL_REQUIRE_EMBEDDED_SHADERS();
     using S = OctreeTileState;
     expectBuffer("octree_tiles", 3,
                  {sizeof(S),
@@ -34,6 +36,7 @@ TEST(OctreeTilesLayout, TileStateAndPushConstants) {
 }
 
 TEST(OctreeTilesLayout, ParamsAndPixelsAreThoseOfOctreeRender) {
+    LUXEL_REQUIRE_EMBEDDED_SHADERS();
     using R = OctreeRenderParams;
     expectBuffer("octree_tiles", 0,
                  {sizeof(R), {LUXEL_MEMBER(R, originX),       LUXEL_MEMBER(R, originY),

@@ -39,6 +39,7 @@ double maxRelativeDifference(const Image& a, const Image& b) {
     if (!context) GTEST_SKIP() << "no Vulkan device";
 
 TEST(PostGpu, SharedLayouts) {
+    LUXEL_REQUIRE_EMBEDDED_SHADERS();
     const CppLayout resample{
         sizeof(PostResampleParams),
         {LUXEL_MEMBER(PostResampleParams, srcWidth), LUXEL_MEMBER(PostResampleParams, srcHeight),

@@ -41,6 +41,7 @@ TEST(GpuSharedLayout, ReaderRejectsMalformedWords) {
 }
 
 TEST(GpuSharedLayout, WorkgroupSizesComeFromTheSharedConstants) {
+    LUXEL_REQUIRE_EMBEDDED_SHADERS();
     EXPECT_EQ(reflect("hrc_merge").workgroupSize,
               (std::array<std::uint32_t, 3>{LUXEL_HRC_GROUP_SIZE, 1, 1}));
     EXPECT_EQ(reflect("rc_cascade").workgroupSize,
@@ -59,6 +60,7 @@ TEST(GpuSharedLayout, WorkgroupSizesComeFromTheSharedConstants) {
 }
 
 TEST(GpuSharedLayout, OctreeRenderParams) {
+    LUXEL_REQUIRE_EMBEDDED_SHADERS();
     using P = OctreeRenderParams;
     for (const char* shader : {"octree_render", "octree_light_cache"}) {
         expectBuffer(shader, 0,
@@ -93,6 +95,7 @@ TEST(GpuSharedLayout, OctreeRenderParams) {
 }
 
 TEST(GpuSharedLayout, OctreeCastBuffersAndPushConstants) {
+    LUXEL_REQUIRE_EMBEDDED_SHADERS();
     using P = OctreeCastPush;
     expectPushConstants(
         "octree_cast", {sizeof(P),
@@ -117,6 +120,7 @@ TEST(GpuSharedLayout, OctreeCastBuffersAndPushConstants) {
 }
 
 TEST(GpuSharedLayout, HrcPushConstants) {
+    LUXEL_REQUIRE_EMBEDDED_SHADERS();
     expectPushConstants(
         "hrc_extend",
         {sizeof(HrcExtendParams),
@@ -151,6 +155,7 @@ TEST(GpuSharedLayout, HrcPushConstants) {
 }
 
 TEST(GpuSharedLayout, RcPushConstants) {
+    LUXEL_REQUIRE_EMBEDDED_SHADERS();
     using P = RcCascadeParams;
     expectPushConstants(
         "rc_cascade",
@@ -169,6 +174,7 @@ TEST(GpuSharedLayout, RcPushConstants) {
 }
 
 TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
+    LUXEL_REQUIRE_EMBEDDED_SHADERS();
     using P = VoxelRenderParams;
     const CppLayout params{sizeof(P),
                            {LUXEL_MEMBER(P, sizeX),
@@ -285,6 +291,7 @@ TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
 // The element structs of the buffers that used to be bare float/uint arrays: the 2D medium, the
 // RGB buffers (cones, accumulators, cascades, fluence), the HRC table entries, the voxel output.
 TEST(GpuSharedLayout, BufferElementStructs) {
+    LUXEL_REQUIRE_EMBEDDED_SHADERS();
     const CppLayout medium{
         sizeof(MediumTexel),
         {LUXEL_MEMBER(MediumTexel, sigmaR), LUXEL_MEMBER(MediumTexel, sigmaG),
