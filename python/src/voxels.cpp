@@ -9,6 +9,7 @@
 #include <string>
 
 #include "arrays.h"
+#include "luxel/core/tonemap.h"
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/voxel_scene.h"
 #include "luxel/voxel/voxel_world.h"
@@ -112,6 +113,18 @@ py::tuple tupleOf(Vec3d v) {
     return py::make_tuple(v.x, v.y, v.z);
 }
 
+const char* curveName(ToneCurve curve) {
+    switch (curve) {
+        case ToneCurve::Clamp:
+            return "clamp";
+        case ToneCurve::Reinhard:
+            return "reinhard";
+        case ToneCurve::Aces:
+            break;
+    }
+    return "aces";
+}
+
 void bindWorld(py::module_& m) {
     py::class_<VoxelWorld>(
         m, "VoxelWorld",
@@ -213,6 +226,12 @@ void bindScene(py::module_& m) {
             "The scene's world (edits change the scene; assigning copies).")
         .def_readwrite("camera", &VoxelScene::camera)
         .def_readonly("source_path", &VoxelScene::sourcePath)
+        .def_property_readonly(
+            "exposure", [](const VoxelScene& s) { return s.post.tone.exposureStops; },
+            "The scene's exposure in stops (its \"post\" section), for tonemap().")
+        .def_property_readonly(
+            "curve", [](const VoxelScene& s) { return curveName(s.post.tone.curve); },
+            "The scene's tone curve name (its \"post\" section), for tonemap().")
         .def("__repr__", [](const VoxelScene& s) {
             const Int3 size = s.world.size();
             return "<luxel.VoxelScene world " + std::to_string(size.x) + "x" +

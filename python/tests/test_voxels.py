@@ -76,6 +76,9 @@ def test_shipped_voxel_scene_renders_small(source_dir):
     image = luxel.render_voxel(scene, backend="cpu")
     assert image.shape == (16, 24, 3)
     assert np.all(np.isfinite(image)) and image.max() > 0.05
+    assert scene.curve in ("clamp", "reinhard", "aces")
+    shown = luxel.tonemap(image, exposure=scene.exposure, curve=scene.curve)
+    assert 0 <= shown.min() and shown.max() <= 1
 
 
 def test_world_from_array_refuses_bad_arrays():
