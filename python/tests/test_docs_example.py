@@ -6,7 +6,7 @@ from conftest import SOURCE_DIR
 
 
 def test_docs_example_runs(tmp_path, monkeypatch, capsys):
-    text = (SOURCE_DIR / "docs" / "python.md").read_text()
+    text = (SOURCE_DIR / "docs/python.md").read_text()
     cells = re.findall(r"```python\n(.*?)```", text, flags=re.S)
     assert len(cells) >= 4
     # The example reads scenes/ and writes its pictures into the working directory.
