@@ -7,6 +7,7 @@ PYBIND11_MODULE(luxel, m) {
         "luxel: light transport in 2D and voxel worlds. 2D scenes render with the reference, "
         "HRC and RC solvers on the CPU or a Vulkan GPU; voxel worlds are ray cast. Images are "
         "float32 numpy arrays (height, width, channels). See docs/python.md.";
+    m.attr("__version__") = LUXEL_VERSION;
     namespace lp = luxel::python;
     lp::bindErrors(m);  // first: the other bindings raise luxel.Error
     lp::bindImages(m);
