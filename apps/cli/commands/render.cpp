@@ -5,6 +5,8 @@
 
 #include "commands/command.h"
 #include "commands/render_memory.h"
+#include "commands/render_outputs.h"
+#include "commands/scene_warnings.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
@@ -34,7 +36,8 @@ struct RenderArgs {
     int threads = 0;
     int supersample = 16;
     std::uint64_t seed = 1;
-    float exposure = 0.0f;
+    std::string exposureText;  // --exposure: stops or "auto"
+    ExposureFlag exposure;     // parsed from exposureText
     bool quiet = false;
     bool stats = false;  // print a machine-readable timing line (for compare-solvers)
     std::string backendName = "auto", device;
@@ -95,7 +98,10 @@ Status parsePostFlags(RenderArgs& args, const CLI::App& command) {
             return Error("--upscaler '" + args.upscalerName + "' is not bilinear or edge");
         }
     }
-    if (command.count("--exposure") > 0) f.exposure = args.exposure;
+    auto exposure = parseExposureFlag(args.exposureText);
+    if (!exposure) return exposure.error();
+    args.exposure = *exposure;
+    f.exposure = exposure->stops;
     if (command.count("--tonemap") > 0) f.tone = parseToneCurve(args.tonemap);
     return Ok{};
 }
@@ -301,16 +307,64 @@ void drawProbes(const RenderArgs& args, Image& display) {
     }
 }
 
+// The provenance of a 2D render: the solver and every setting it ran with (docs/image-metadata.md).
+ImageMetadata metadata2D(const RenderArgs& args, int w, int h, const std::string& detail,
+                         const std::string& bounceNote, double rasterSeconds, double solveSeconds) {
+    ImageMetadata m = renderMetadata(args.scene, gi2d::solverName(args.solver), w, h);
+    setMetadata(m, "luxel.view", args.view);
+    setMetadata(m, "luxel.backend", detail.find("gpu") != std::string::npos ? "gpu" : "cpu");
+    if (!detail.empty()) setMetadata(m, "luxel.solver.detail", detail);
+    switch (args.solver) {
+        case gi2d::Solver2D::Reference:
+            setNumber(m, "luxel.rays", args.rays);
+            setMetadata(m, "luxel.seed", std::to_string(args.seed));
+            break;
+        case gi2d::Solver2D::Hrc:
+            setNumber(m, "luxel.hrc.cascades", gi2d::hrcCascadeCount(w, h));
+            setNumber(m, "luxel.hrc.traced_levels", args.tracedLevels);
+            setMetadata(m, "luxel.hrc.cross_blur", args.noBlur ? "no" : "yes");
+            if (!args.frustum.empty()) setMetadata(m, "luxel.hrc.frustum", args.frustum);
+            break;
+        case gi2d::Solver2D::Rc: {
+            const gi2d::RcOptions options = rcOptions(args);
+            setNumber(m, "luxel.rc.cascades",
+                      static_cast<double>(gi2d::rcCascades(w, h, options).size()));
+            setMetadata(m, "luxel.rc.merge", gi2d::mergeName(args.merge));
+            setMetadata(m, "luxel.rc.march", args.march);
+            setNumber(m, "luxel.rc.probe_spacing", args.probeSpacing);
+            setNumber(m, "luxel.rc.base_rays", args.baseRays);
+            setNumber(m, "luxel.rc.base_interval", args.baseInterval);
+            setNumber(m, "luxel.rc.max_cascades", args.maxCascades);
+            setNumber(m, "luxel.rc.jitters", args.jitters);
+            break;
+        }
+    }
+    if (!bounceNote.empty()) setMetadata(m, "luxel.bounces", bounceNote);
+    setNumber(m, "luxel.supersample", args.supersample);
+    setNumber(m, "luxel.threads", args.threads > 0 ? args.threads : hardwareThreads());
+    setNumber(m, "luxel.raster.seconds", rasterSeconds);
+    setNumber(m, "luxel.render.seconds", solveSeconds);
+    return m;
+}
+
 int runRender(const RenderArgs& args) {
-    if (!hasExtension(args.out, ".exr") && !hasExtension(args.out, ".png")) {
+    if (args.out.empty() && args.png.empty()) {
+        return reportError(
+            Error("nothing to write: give --out FILE.exr|FILE.png, --png FILE.png, "
+                  "or both"));
+    }
+    if (!args.out.empty() && !hasExtension(args.out, ".exr") && !hasExtension(args.out, ".png")) {
         return reportError(Error("--out '" + args.out + "' must end in .exr or .png"));
+    }
+    if (!args.png.empty() && !hasExtension(args.png, ".png")) {
+        return reportError(Error("--png '" + args.png + "' must end in .png"));
     }
     auto curve = parseToneCurve(args.tonemap);
     if (!curve) {
         return reportError(
             Error("--tonemap '" + args.tonemap + "' is unknown (clamp, reinhard, aces)"));
     }
-    const ToneMapSettings tone{args.exposure, *curve};
+    const ToneMapSettings tone{args.exposure.stops.value_or(0.0f), *curve};
     ThreadLimit threadLimit(args.threads);
     Stopwatch loadTime;
     auto file = loadScene(args.scene, args.size);
@@ -330,6 +384,7 @@ int runRender(const RenderArgs& args) {
                                    args.device, loadTime.seconds(), args.post,  args.surfaces};
         request.samples = args.samples;
         request.filter = args.filter;
+        request.autoExposure = args.exposure.automatic;
         if (!voxel && (args.samples != 0 || !args.filter.empty())) {
             return reportError(Error("--samples and --filter apply to voxel scenes; " + args.scene +
                                      " is " + sceneKindPhrase(file->kind())));
@@ -340,6 +395,11 @@ int runRender(const RenderArgs& args) {
 
     auto sized = sizeScene(std::move(file->twoD()), args.size);
     if (!sized) return reportError(sized.error());
+    if (!args.quiet) {
+        for (const std::string& warning : silentEmitterWarnings(sized->scene)) {
+            printWarning(args.scene + ": " + warning);
+        }
+    }
     // Refuse before allocating anything when the medium, the solver and the images written
     // cannot fit (`luxel info` reports the same estimate).
     Memory2D memory = estimate2D(sized->width, sized->height, args.solver, rcOptions(args),
@@ -370,22 +430,27 @@ int runRender(const RenderArgs& args) {
     if (!fluence) return reportError(fluence.error());
     const double solveSeconds = solveTime.seconds();
 
-    const Image out = hasExtension(args.out, ".png") ? toneMap(*fluence, tone) : *fluence;
-    // --out and --png change together or not at all (writeImages renames only once both are
-    // complete).
-    std::vector<ImageFile> files{{args.out, &out}};
-    Image display;
-    if (!args.png.empty()) {
-        if (!hasExtension(args.png, ".png")) {
-            return reportError(Error("--png '" + args.png + "' must end in .png"));
-        }
-        display = gi2d::displayImage(*medium, *fluence, tone);
-        if (args.view == "probes") {
-            drawProbes(args, display);
-        }
-        files.push_back({args.png, &display});
+    // What the display image shows before tone mapping: the light sources and the light.
+    Image hdr(w, h, 3);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x)
+            hdr.setRgb(x, y, medium->emission.rgb(x, y) + fluence->rgb(x, y));
     }
-    if (Status s = writeImages(files); !s) return reportError(s.error());
+    RenderImages images;
+    images.out = args.out;
+    images.png = args.png;
+    images.linear = &*fluence;
+    images.linearName = "fluence";
+    images.displayHdr = &hdr;
+    images.tone = tone;
+    images.autoExposure = args.exposure.automatic;
+    images.quiet = args.quiet;
+    images.lightSources = &medium->emission;
+    images.metadata = metadata2D(args, w, h, detail, bounceNote, rasterSeconds, solveSeconds);
+    if (args.view == "probes")
+        images.drawOnDisplay = [&](Image& display) { drawProbes(args, display); };
+    // --out and --png change together or not at all.
+    if (Status s = writeRenderImages(std::move(images)); !s) return reportError(s.error());
     if (args.stats) std::printf("stats solve_seconds=%.6f\n", solveSeconds);
     if (!args.quiet) {
         std::printf("%s: %dx%d, solver %s%s%s%s, %s, %d threads\n", args.scene.c_str(), w, h,
@@ -397,8 +462,8 @@ int runRender(const RenderArgs& args) {
         if (rays > 0) {
             std::printf(", %.2f Mrays/s at %d rays/pixel", rays / solveSeconds * 1e-6, args.rays);
         }
-        std::printf(")\n  wrote %s%s%s\n", args.out.c_str(), args.png.empty() ? "" : ", ",
-                    args.png.c_str());
+        std::printf(")\n  wrote %s%s%s\n", args.out.c_str(),
+                    args.out.empty() || args.png.empty() ? "" : ", ", args.png.c_str());
     }
     return 0;
 }
@@ -463,12 +528,12 @@ Runner addRenderCommand(CLI::App& app) {
                    "gi (default), nogi (emission only), probes (RC probe grid of --cascade on the "
                    "--png image), cascade (the merged radiance of --cascade)")
         ->capture_default_str();
-    app.add_option("--out", args->out, "fluence image: .exr (linear float) or .png (tonemapped)")
-        ->required();
-    app.add_option("--png", args->png, "also write the display image (emission + fluence)");
-    app.add_option("--exposure", args->exposure, "exposure in stops for PNG output")
-        ->check(finiteIn(-64.0, 64.0))
-        ->capture_default_str();
+    app.add_option("--out", args->out, "fluence image: .exr (linear float) or .png (tonemapped)");
+    app.add_option("--png", args->png,
+                   "the display image (emission + fluence, tonemapped); --out, --png or both");
+    app.add_option("--exposure", args->exposureText,
+                   "exposure in stops for PNG output, or auto (the 99th percentile of the lit "
+                   "pixels at 90% of white); default 0, voxel scenes: the scene's");
     app.add_option("--tonemap", args->tonemap, "tone curve for PNG output: clamp, reinhard, aces")
         ->capture_default_str();
     app.add_flag("--quiet,-q", args->quiet, "no progress bar or summary");
