@@ -62,7 +62,7 @@ TEST_F(CliOutputs, RenderedImagesCarrySolverSettingsAndSceneHash) {
     const RunResult r = runLuxel("render " + file + " --solver hrc --quiet --out " + path("f.exr") +
                                  " --png " + path("d.png"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    for (const std::string image : {path("f.exr"), path("d.png")}) {
+    for (const std::string& image : {path("f.exr"), path("d.png")}) {
         const ImageMetadata m = metadataOf(image);
         EXPECT_EQ(value(m, "luxel.solver"), "hrc") << image;
         EXPECT_EQ(value(m, "luxel.scene"), "lamp.json");
@@ -120,7 +120,7 @@ TEST_F(CliOutputs, EveryCommandLineErrorExitsOne) {
     expectError("render " + file + " --png " + path("d.png") + " --rays many", "--rays");
     expectError("render " + file + " --png " + path("d.png") + " --exposure bright", "--exposure");
     expectError("render " + path("missing.json") + " --png " + path("d.png"), "missing.json");
-    expectError("frobnicate", "frobnicate");  // unknown command
+    expectError("frobnicate", "subcommand");  // unknown command
     expectError("", "subcommand");
     // Asking for help or the version is not an error.
     const RunResult help = runLuxel("render --help");

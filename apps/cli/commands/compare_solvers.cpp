@@ -276,7 +276,15 @@ int runCompareSolvers(const CompareSolversArgs& args) {
             panels.push_back(divergingColours(
                 signedRelativeDifference(runs[i].fluence, reference, mean), scale));
         }
-        if (Status s = writePng(args.errorImage, sideBySide(panels)); !s) {
+        ImageMetadata metadata =
+            renderMetadata(args.scene, "compare-solvers", reference.width(), reference.height());
+        setNumber(metadata, "luxel.rays", referenceRays);
+        setNumber(metadata, "luxel.error_scale_percent", args.errorScalePercent);
+        setMetadata(metadata, "luxel.content",
+                    "reference display, then the signed error of reference seed 2, hrc, rc "
+                    "vanilla, rc bilinear fix");
+        if (Status s = writePng(args.errorImage, sideBySide(panels), PngEncoding::Srgb, metadata);
+            !s) {
             return reportError(s.error());
         }
         std::printf(

@@ -20,7 +20,7 @@ int textWidth(std::string_view text, int scale = 1);
 
 // Draws `text` (lines split by '\n') with its top-left corner at (x, y), `scale` pixels per font
 // unit, in `colour`; pixels outside the image are skipped. Characters other than printable ASCII
-// draw as '?'. Returns the number of pixels set.
+// draw as '?'. Returns the number of pixel writes (a pixel where two strokes meet counts twice).
 std::size_t drawText(Image& image, int x, int y, std::string_view text, Rgb colour, int scale = 1);
 
 // `text` shortened to at most `maxWidth` pixels at `scale`: cut at the end, with ".." to show it
