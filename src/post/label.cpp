@@ -82,13 +82,23 @@ std::string fitText(std::string_view text, int maxWidth, int scale) {
     return out;
 }
 
-void drawPanelLabel(Image& image, int x0, int width, std::string_view text) {
+namespace {
+constexpr int kMargin = 4;  // between a panel's edge and its caption, in pixels
+}  // namespace
+
+int panelLabelScale(const std::vector<std::string>& texts, int width) {
+    for (const std::string& text : texts) {
+        if (textWidth(text, 2) > width - 2 * kMargin) return 1;
+    }
+    return 2;
+}
+
+void drawPanelLabel(Image& image, int x0, int width, std::string_view text, int scale) {
     const int x1 = std::min(x0 + width, image.width());
     x0 = std::max(x0, 0);
-    constexpr int kMargin = 4;  // between the panel's edge and the text, in pixels
     const int room = x1 - x0 - 2 * kMargin;
     if (room <= 0) return;
-    const int scale = textWidth(text, 2) <= room ? 2 : 1;
+    if (scale <= 0) scale = panelLabelScale({std::string(text)}, x1 - x0);
     const std::string fitted = fitText(text, room, scale);
     const int lines = static_cast<int>(splitLines(fitted).size());
     const int boxRight = std::min(x1, x0 + textWidth(fitted, scale) + 2 * kMargin);

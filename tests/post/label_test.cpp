@@ -98,6 +98,14 @@ TEST(Label, PanelLabelsStayInsideNarrowPanels) {
     EXPECT_LT(big.x1, 4 + textWidth("reference\n1024 rays", 2));
 }
 
+TEST(Label, PanelsOfOneGridShareTheLargestScaleThatFitsThemAll) {
+    const std::string shortText = "hrc", longText = "1753 ms, rel. L1 0.0535";
+    const int width = textWidth(longText, 2);  // the long caption fits at scale 1 only
+    EXPECT_EQ(panelLabelScale({shortText}, width), 2);
+    EXPECT_EQ(panelLabelScale({shortText, longText}, width), 1);
+    EXPECT_EQ(panelLabelScale({shortText, longText}, width + 8), 2);
+}
+
 TEST(Label, PanelLabelDarkensItsBoxOnly) {
     Image image(200, 100, 3);
     image.fill(0.8f);

@@ -243,6 +243,7 @@ int runCompareSolvers(const CompareSolversArgs& args) {
         ImageMetadata metadata =
             renderMetadata(args.scene, "compare-solvers", reference.width(), reference.height());
         setNumber(metadata, "luxel.rays", referenceRays);
+        std::vector<std::string> labels;
         for (std::size_t i = 0; i < 4; ++i) {
             std::string label = names[i];
             if (i == 0) {
@@ -254,12 +255,16 @@ int runCompareSolvers(const CompareSolversArgs& args) {
                               compareImages(runs[i].fluence, reference)->relativeL1);
                 label += "\n" + formatDuration(runs[i].solveMs) + error;
             }
-            displays.push_back(runs[i].display);
-            post::drawPanelLabel(displays.back(), 0, displays.back().width(), label);
+            labels.push_back(label);
             std::string key = names[i];
             for (char& c : key) c = c == ' ' ? '_' : c;
             setMetadata(metadata, "luxel.panel" + std::to_string(i + 1) + "." + key,
                         label.substr(label.find('\n') + 1));
+        }
+        const int scale = post::panelLabelScale(labels, reference.width());
+        for (std::size_t i = 0; i < 4; ++i) {
+            displays.push_back(runs[i].display);
+            post::drawPanelLabel(displays.back(), 0, displays.back().width(), labels[i], scale);
         }
         setMetadata(metadata, "luxel.content", "display, tonemapped; panels left to right");
         if (Status s = writePng(args.grid, sideBySide(displays), PngEncoding::Srgb, metadata); !s) {

@@ -5,6 +5,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "luxel/core/image.h"
 #include "luxel/core/vec.h"
@@ -27,9 +28,13 @@ std::size_t drawText(Image& image, int x, int y, std::string_view text, Rgb colo
 // was cut ("" when not even that fits). Per line.
 std::string fitText(std::string_view text, int maxWidth, int scale = 1);
 
+// The largest scale (2 or 1) at which every caption fits a panel `width` pixels wide, so the
+// panels of one grid share a text size.
+int panelLabelScale(const std::vector<std::string>& texts, int width);
+
 // A caption in the top-left corner of the panel of `image` spanning columns [x0, x0 + width):
-// white text on a darkened box, at scale 2 when that fits the panel and 1 otherwise, each line
+// white text on a darkened box, at `scale` (0: panelLabelScale of this caption alone), each line
 // cut to the panel (fitText), so nothing is drawn outside it.
-void drawPanelLabel(Image& image, int x0, int width, std::string_view text);
+void drawPanelLabel(Image& image, int x0, int width, std::string_view text, int scale = 0);
 
 }  // namespace luxel::post
