@@ -31,7 +31,8 @@ Result<ExposureFlag> parseExposureFlag(const std::string& text) {
     } catch (const std::exception&) {
         // reported below
     }
-    return Error("--exposure '" + text + "' is not auto or a number of stops in [-64, 64]");
+    // Worded as the other number options' checks (common/number_options.h).
+    return Error("--exposure: '" + text + "' is not a finite number in [-64, 64] or auto");
 }
 
 ImageMetadata renderMetadata(const std::string& scenePath, const std::string& solver, int width,
