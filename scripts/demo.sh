@@ -83,15 +83,13 @@ mkdir -p out/reference-cache
 cp "out/$default_scene.exr" "out/reference-cache/${default_scene}_$size.exr"
 
 total_ms=$(ms_since "$total_start")
-cat <<SUMMARY
-
-total $((total_ms / 1000)).$((total_ms % 1000 / 100)) s. What to open:
-  out/$default_scene.png            the default 2D scene, reference solver (ground truth)
-  out/$default_scene-solvers.png    reference, HRC, RC vanilla, RC bilinear fix side by side, labelled
-  out/$default_scene-hrc-diff.png   where HRC differs from the reference (white = largest error)
-  out/*.png                  the other 2D scenes (penumbra, pinhole, fog, thin-walls, many-lights)
-  out/terrain.png            a voxel world: shadows, reflections, water; out/glass.png: refraction
-  out/octree-terrain.png     a 4096^3 sparse voxel octree; out/octree-phantom.png: a translucent volume
-  out/*.exr                  linear fluence / radiance for measurements (luxel compare A.exr B.exr)
-Every image says how it was made: luxel info out/$default_scene.png
-SUMMARY
+printf '\ntotal %d.%d s. What to open:\n' $((total_ms / 1000)) $((total_ms % 1000 / 100))
+open_row() { printf '  %-26s %s\n' "$1" "$2"; }
+open_row "out/$default_scene.png" "the default 2D scene, reference solver (ground truth)"
+open_row "out/$default_scene-solvers.png" "reference, HRC, RC vanilla, RC bilinear fix side by side, labelled"
+open_row "out/$default_scene-hrc-diff.png" "where HRC differs from the reference (white = largest error)"
+open_row "out/penumbra.png ..." "the other 2D scenes: penumbra, pinhole, fog, thin-walls, many-lights"
+open_row "out/terrain.png" "a voxel world: shadows, reflections, water (out/glass.png: refraction)"
+open_row "out/octree-terrain.png" "a 4096^3 sparse voxel octree (out/octree-phantom.png: a volume)"
+open_row "out/*.exr" "linear fluence and radiance, for measuring (luxel compare A.exr B.exr)"
+echo "Every image says how it was made: luxel info out/$default_scene.png"
