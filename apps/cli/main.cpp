@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <map>
+#include <string>
 
 #include "commands/command.h"
 #include "common/last_resort.h"
@@ -10,7 +11,7 @@
 int main(int argc, char** argv) {
     CLI::App app{"luxel: real-time light transport in 2D and voxel worlds"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", "luxel 0.1.0");
+    app.set_version_flag("--version", std::string("luxel ") + LUXEL_VERSION);
     std::map<CLI::App*, luxel::cli::Runner> runners;
     auto add = [&](const char* name, const char* help, auto addCommand) {
         CLI::App* sub = app.add_subcommand(name, help);
@@ -45,7 +46,12 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "luxel: error: %s\n", e.what());
         return luxel::cli::kExitBadInput;
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // --help and --version end parsing with exit code 0 and print what was asked for.
+        if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);
+        // Every other parse error (a missing argument, an unknown option, an extra value) is bad
+        // input like any other: one line and exit code 1, not CLI11's own codes (106 and so on).
+        std::fprintf(stderr, "luxel: error: %s (see 'luxel --help')\n", e.what());
+        return luxel::cli::kExitBadInput;
     }
     for (auto& [sub, run] : runners) {
         if (sub->parsed()) {

@@ -31,13 +31,13 @@ Error unknownFormat(const char* verb, const std::string& path) {
 
 }  // namespace
 
-Result<Image> readImage(const std::string& path) {
+Result<Image> readImage(const std::string& path, ImageMetadata* metadata) {
     try {
         switch (formatOf(path)) {
             case ImageFormat::Png:
-                return readPng(path);
+                return readPng(path, PngEncoding::Srgb, metadata);
             case ImageFormat::Exr:
-                return readExr(path);
+                return readExr(path, metadata);
             case ImageFormat::Unknown:
                 break;
         }
@@ -47,13 +47,13 @@ Result<Image> readImage(const std::string& path) {
     }
 }
 
-Status writeImage(const std::string& path, const Image& image) {
+Status writeImage(const std::string& path, const Image& image, const ImageMetadata& metadata) {
     try {
         switch (formatOf(path)) {
             case ImageFormat::Png:
-                return writePng(path, image);
+                return writePng(path, image, PngEncoding::Srgb, metadata);
             case ImageFormat::Exr:
-                return writeExr(path, image);
+                return writeExr(path, image, metadata);
             case ImageFormat::Unknown:
                 break;
         }
@@ -64,6 +64,7 @@ Status writeImage(const std::string& path, const Image& image) {
 }
 
 Status writeImages(const std::vector<ImageFile>& files) {
+    static const ImageMetadata kNone;
     std::vector<AtomicFile> written;
     written.reserve(files.size());
     for (const ImageFile& entry : files) {
@@ -72,9 +73,11 @@ Status writeImages(const std::vector<ImageFile>& files) {
         Result<AtomicFile> file =
             AtomicFile::create(entry.path, format == ImageFormat::Png ? "PNG" : "EXR");
         if (!file) return file.error();
-        const Status s = format == ImageFormat::Png
-                             ? detail::writePngInto(*file, *entry.image, PngEncoding::Srgb)
-                             : detail::writeExrInto(*file, *entry.image);
+        const ImageMetadata& metadata = entry.metadata != nullptr ? *entry.metadata : kNone;
+        const Status s =
+            format == ImageFormat::Png
+                ? detail::writePngInto(*file, *entry.image, PngEncoding::Srgb, metadata)
+                : detail::writeExrInto(*file, *entry.image, metadata);
         if (!s) return s;
         written.push_back(std::move(*file));
     }

@@ -7,6 +7,7 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <ImfStdIO.h>
+#include <ImfStringAttribute.h>
 #include <ImfThreading.h>
 
 #include <cerrno>
@@ -134,12 +135,25 @@ class MemoryStream final : public Imf::IStream {
 
 // Reads an EXR of `totalBytes` from `stream`; `path` names it in messages. The file reader and
 // the in-memory reader share it, so both see the same checks.
-Result<Image> readExrImpl(Imf::IStream& stream, std::uint64_t totalBytes, const std::string& path) {
+// The header's string attributes, in the header's (alphabetical) order.
+ImageMetadata stringAttributes(const Imf::Header& header) {
+    ImageMetadata metadata;
+    for (auto it = header.begin(); it != header.end(); ++it) {
+        if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&it.attribute())) {
+            metadata.push_back({it.name(), text->value()});
+        }
+    }
+    return metadata;
+}
+
+Result<Image> readExrImpl(Imf::IStream& stream, std::uint64_t totalBytes, const std::string& path,
+                          ImageMetadata* metadata) {
     if (Status s = detail::checkExrAttributeSizes(stream, totalBytes); !s) {
         return readError(path, s.error().message());
     }
     Imf::InputFile file(stream);
     const Imf::Header& header = file.header();
+    if (metadata != nullptr) *metadata = stringAttributes(header);
     const Imath::Box2i window = header.dataWindow();
     const std::int64_t width = std::int64_t{window.max.x} - window.min.x + 1;
     const std::int64_t height = std::int64_t{window.max.y} - window.min.y + 1;
@@ -189,13 +203,21 @@ Result<Image> readExrImpl(Imf::IStream& stream, std::uint64_t totalBytes, const 
     return image;
 }
 
-Status writeExrImpl(AtomicFile& out, const Image& image) {
+Status writeExrImpl(AtomicFile& out, const Image& image, const ImageMetadata& metadata) {
     static const std::vector<std::string> kNames[] = {
         {"Y"}, {"Y", "A"}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
     const std::vector<std::string>& names = kNames[image.channels() - 1];
 
     Imf::Header header(image.width(), image.height());
     for (const std::string& name : names) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    for (const MetadataEntry& entry : metadata) {
+        // The header's own attributes (channels, compression, dataWindow, ...) keep their types.
+        if (header.find(entry.key) != header.end()) {
+            return out.failure("metadata key '" + entry.key +
+                               "' is one of the EXR header's own attributes");
+        }
+        header.insert(entry.key, Imf::StringAttribute(entry.value));
+    }
     AtomicFileStream stream(out);
     {
         // ZIP compression of the line blocks runs on OpenEXR's thread pool, one thread per core.
@@ -222,13 +244,13 @@ Status writeExrImpl(AtomicFile& out, const Image& image) {
 
 }  // namespace
 
-Result<Image> readExr(const std::string& path) {
+Result<Image> readExr(const std::string& path, ImageMetadata* metadata) {
     if (Status s = canOpen(path); !s) return s.error();
     try {
         Imf::StdIFStream stream(path.c_str());
         std::error_code error;
         const std::uintmax_t size = std::filesystem::file_size(path, error);
-        return readExrImpl(stream, error ? ~std::uint64_t{0} : size, path);
+        return readExrImpl(stream, error ? ~std::uint64_t{0} : size, path, metadata);
     } catch (const std::exception& e) {
         return readError(path, e.what());
     } catch (...) {
@@ -236,10 +258,11 @@ Result<Image> readExr(const std::string& path) {
     }
 }
 
-Result<Image> decodeExr(std::span<const std::uint8_t> bytes, const std::string& name) {
+Result<Image> decodeExr(std::span<const std::uint8_t> bytes, const std::string& name,
+                        ImageMetadata* metadata) {
     try {
         MemoryStream stream(bytes, name);
-        return readExrImpl(stream, bytes.size(), name);
+        return readExrImpl(stream, bytes.size(), name, metadata);
     } catch (const std::exception& e) {
         return readError(name, e.what());
     } catch (...) {
@@ -249,12 +272,13 @@ Result<Image> decodeExr(std::span<const std::uint8_t> bytes, const std::string& 
 
 namespace detail {
 
-Status writeExrInto(AtomicFile& file, const Image& image) {
+Status writeExrInto(AtomicFile& file, const Image& image, const ImageMetadata& metadata) {
     if (image.empty() || image.channels() < 1 || image.channels() > 4) {
         return file.failure("the image is empty");
     }
+    if (Status s = checkMetadata(metadata); !s) return file.failure(s.error().message());
     try {
-        return writeExrImpl(file, image);
+        return writeExrImpl(file, image, metadata);
     } catch (const std::exception& e) {
         return file.failure(e.what());
     } catch (...) {
@@ -264,13 +288,13 @@ Status writeExrInto(AtomicFile& file, const Image& image) {
 
 }  // namespace detail
 
-Status writeExr(const std::string& path, const Image& image) {
+Status writeExr(const std::string& path, const Image& image, const ImageMetadata& metadata) {
     if (image.empty() || image.channels() < 1 || image.channels() > 4) {
         return writeError(path, "the image is empty");
     }
     Result<AtomicFile> file = AtomicFile::create(path, "EXR");
     if (!file) return file.error();
-    if (Status s = detail::writeExrInto(*file, image); !s) return s;
+    if (Status s = detail::writeExrInto(*file, image, metadata); !s) return s;
     return file->commit();
 }
 

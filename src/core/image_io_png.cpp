@@ -17,6 +17,7 @@
 #include <system_error>
 #include <vector>
 
+#include "core/png_text.h"
 #include "image_writers.h"
 #include "luxel/core/file_io.h"
 #include "luxel/core/image_io.h"
@@ -133,19 +134,21 @@ bool readPngRow(png_structp png, png_bytep row) {
     return true;
 }
 
-// Reading to IEND also catches files truncated after the pixel data.
-bool readPngEnd(png_structp png) {
+// Reading to IEND also catches files truncated after the pixel data; text chunks after the
+// pixels join those before them in `info`.
+bool readPngEnd(png_structp png, png_infop info) {
     if (setjmp(png_jmpbuf(png))) return false;
-    png_read_end(png, nullptr);
+    png_read_end(png, info);
     return true;
 }
 
 bool writePngRows(png_structp png, png_infop info, const PngHeader* header, int colorType,
-                  bool srgb, png_bytepp rows) {
+                  bool srgb, const png_text* text, int textCount, png_bytepp rows) {
     if (setjmp(png_jmpbuf(png))) return false;
     png_set_IHDR(png, info, header->width, header->height, 8, colorType, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     if (srgb) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    if (textCount > 0) png_set_text(png, info, text, textCount);
     png_write_info(png, info);
     png_write_image(png, rows);
     png_write_end(png, nullptr);
@@ -209,7 +212,7 @@ int alphaChannel(int channels) {
 // Reads a PNG of `streamBytes` from an open stream; `path` names it in messages. The file reader
 // and the in-memory reader (a stream over the bytes) share it, so both see the same checks.
 Result<Image> readPngImpl(const FilePtr& file, std::uint64_t streamBytes, const std::string& path,
-                          PngEncoding encoding) {
+                          PngEncoding encoding, ImageMetadata* metadata) {
     std::array<png_byte, 8> signature{};
     if (std::fread(signature.data(), 1, signature.size(), file.get()) != signature.size()) {
         if (std::ferror(file.get())) return openError(path, errno);
@@ -292,12 +295,16 @@ Result<Image> readPngImpl(const FilePtr& file, std::uint64_t streamBytes, const 
             convert(row.data(), y);
         }
     }
-    if (!readPngEnd(structs.png)) return readError(path, describeFailure(context));
+    if (!readPngEnd(structs.png, structs.info)) return readError(path, describeFailure(context));
+    if (metadata != nullptr) *metadata = detail::pngTextMetadata(structs.png, structs.info);
     return image;
 }
 
-Status writePngImpl(AtomicFile& file, const Image& image, PngEncoding encoding) {
+Status writePngImpl(AtomicFile& file, const Image& image, PngEncoding encoding,
+                    const ImageMetadata& metadata) {
     if (image.empty()) return file.failure("the image is empty");
+    if (Status s = checkMetadata(metadata); !s) return file.failure(s.error().message());
+    const std::vector<png_text> text = detail::pngTextChunks(metadata);
     const int width = image.width();
     const int height = image.height();
     const int channels = image.channels();
@@ -337,8 +344,8 @@ Status writePngImpl(AtomicFile& file, const Image& image, PngEncoding encoding) 
             PngHeader header;
             header.width = static_cast<png_uint_32>(width);
             header.height = static_cast<png_uint_32>(height);
-            written =
-                writePngRows(structs.png, structs.info, &header, colorType, srgb, rows.data());
+            written = writePngRows(structs.png, structs.info, &header, colorType, srgb, text.data(),
+                                   static_cast<int>(text.size()), rows.data());
         }
     }
     // The temporary is removed by AtomicFile unless the caller publishes it.
@@ -348,7 +355,7 @@ Status writePngImpl(AtomicFile& file, const Image& image, PngEncoding encoding) 
 
 }  // namespace
 
-Result<Image> readPng(const std::string& path, PngEncoding encoding) {
+Result<Image> readPng(const std::string& path, PngEncoding encoding, ImageMetadata* metadata) {
     try {
         auto opened = openRegularFile(path);
         if (!opened) return Error("cannot open '" + path + "': " + opened.error().message());
@@ -356,7 +363,7 @@ Result<Image> readPng(const std::string& path, PngEncoding encoding) {
         const std::uint64_t size = ::fstat(::fileno(opened->get()), &status) == 0
                                        ? std::uint64_t(status.st_size)
                                        : ~std::uint64_t{0};  // no bound
-        return readPngImpl(*opened, size, path, encoding);
+        return readPngImpl(*opened, size, path, encoding, metadata);
     } catch (const std::exception& e) {
         return readError(path, e.what());
     } catch (...) {
@@ -365,7 +372,7 @@ Result<Image> readPng(const std::string& path, PngEncoding encoding) {
 }
 
 Result<Image> decodePng(std::span<const std::uint8_t> bytes, const std::string& name,
-                        PngEncoding encoding) {
+                        PngEncoding encoding, ImageMetadata* metadata) {
     // fmemopen refuses an empty buffer; such input is simply too short.
     if (bytes.size() < 8) return readError(name, "not a PNG file (too short)");
     try {
@@ -373,7 +380,7 @@ Result<Image> decodePng(std::span<const std::uint8_t> bytes, const std::string& 
         FilePtr file(::fmemopen(const_cast<std::uint8_t*>(bytes.data()), bytes.size(), "rb"),
                      &std::fclose);
         if (!file) return readError(name, std::generic_category().message(errno));
-        return readPngImpl(file, bytes.size(), name, encoding);
+        return readPngImpl(file, bytes.size(), name, encoding, metadata);
     } catch (const std::exception& e) {
         return readError(name, e.what());
     } catch (...) {
@@ -383,9 +390,10 @@ Result<Image> decodePng(std::span<const std::uint8_t> bytes, const std::string& 
 
 namespace detail {
 
-Status writePngInto(AtomicFile& file, const Image& image, PngEncoding encoding) {
+Status writePngInto(AtomicFile& file, const Image& image, PngEncoding encoding,
+                    const ImageMetadata& metadata) {
     try {
-        return writePngImpl(file, image, encoding);
+        return writePngImpl(file, image, encoding, metadata);
     } catch (const std::exception& e) {
         return file.failure(e.what());
     } catch (...) {
@@ -395,11 +403,12 @@ Status writePngInto(AtomicFile& file, const Image& image, PngEncoding encoding) 
 
 }  // namespace detail
 
-Status writePng(const std::string& path, const Image& image, PngEncoding encoding) {
+Status writePng(const std::string& path, const Image& image, PngEncoding encoding,
+                const ImageMetadata& metadata) {
     try {
         Result<AtomicFile> file = AtomicFile::create(path, "PNG");
         if (!file) return file.error();
-        if (Status s = detail::writePngInto(*file, image, encoding); !s) return s;
+        if (Status s = detail::writePngInto(*file, image, encoding, metadata); !s) return s;
         return file->commit();
     } catch (const std::exception& e) {
         return writeError(path, e.what());

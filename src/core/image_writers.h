@@ -7,7 +7,8 @@
 
 namespace luxel::detail {
 
-Status writePngInto(AtomicFile& file, const Image& image, PngEncoding encoding);
-Status writeExrInto(AtomicFile& file, const Image& image);
+Status writePngInto(AtomicFile& file, const Image& image, PngEncoding encoding,
+                    const ImageMetadata& metadata);
+Status writeExrInto(AtomicFile& file, const Image& image, const ImageMetadata& metadata);
 
 }  // namespace luxel::detail

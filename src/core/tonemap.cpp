@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace luxel {
 
@@ -54,6 +55,67 @@ Image toneMap(const Image& hdr, const ToneMapSettings& settings) {
         for (int c = 0; c < colourChannels; ++c) p[c] = applyCurve(p[c], scale, settings.curve);
     }
     return out;
+}
+
+float autoExposureStops(const Image& hdr, ToneCurve curve) {
+    if (hdr.empty()) return 0.0f;
+    const int channels = hdr.channels();
+    const int colourChannels = channels == 2 ? 1 : std::min(channels, 3);
+    std::vector<float> brightest;
+    brightest.reserve(hdr.pixelCount());
+    const float* p = hdr.data();
+    for (std::size_t i = 0; i < hdr.pixelCount(); ++i, p += channels) {
+        float v = 0.0f;
+        for (int c = 0; c < colourChannels; ++c) {
+            if (std::isfinite(p[c])) v = std::max(v, p[c]);
+        }
+        if (v > 0.0f) brightest.push_back(v);
+    }
+    if (brightest.empty()) return 0.0f;
+    const auto at = brightest.begin() +
+                    static_cast<std::ptrdiff_t>(kAutoExposurePercentile * (brightest.size() - 1));
+    std::nth_element(brightest.begin(), at, brightest.end());
+    // The curve's input that displays as kAutoExposureWhite, by bisection (every curve is
+    // monotonic and reaches 0.9 below 1e3).
+    double lo = 0.0, hi = 1e3;
+    for (int i = 0; i < 100; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (applyCurve(static_cast<float>(mid), 1.0f, curve) < kAutoExposureWhite ? lo : hi) = mid;
+    }
+    const double stops = std::log2(0.5 * (lo + hi) / static_cast<double>(*at));
+    return static_cast<float>(std::clamp(stops, -64.0, 64.0));
+}
+
+double clippedFraction(const Image& display, const Image* ignore) {
+    if (display.empty()) return 0.0;
+    LUXEL_CHECK(ignore == nullptr ||
+                (ignore->width() == display.width() && ignore->height() == display.height()));
+    const float white = displayWhiteLevel();
+    const int channels = display.channels();
+    const int colourChannels = channels == 2 ? 1 : std::min(channels, 3);
+    std::size_t clipped = 0, counted = 0;
+    for (int y = 0; y < display.height(); ++y) {
+        for (int x = 0; x < display.width(); ++x) {
+            if (ignore != nullptr) {
+                const Rgb v = ignore->rgb(x, y);
+                if (v.r > 0.0f || v.g > 0.0f || v.b > 0.0f) continue;
+            }
+            ++counted;
+            for (int c = 0; c < colourChannels; ++c) {
+                if (display.at(x, y, c) >= white) {
+                    ++clipped;
+                    break;
+                }
+            }
+        }
+    }
+    return counted > 0 ? static_cast<double>(clipped) / static_cast<double>(counted) : 0.0;
+}
+
+float displayWhiteLevel() {
+    // linearToSrgb(v) * 255 rounds to 255 from here on.
+    static const float white = srgbToLinear(254.5f / 255.0f);
+    return white;
 }
 
 float linearToSrgb(float linear) {

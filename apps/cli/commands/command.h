@@ -125,6 +125,7 @@ struct VoxelRenderRequest {
     // --samples and --filter (0, empty: the scene's).
     int samples = 0;
     std::string filter = {};
+    bool autoExposure = false;  // --exposure auto (commands/render_outputs.h)
 };
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene scene);
 

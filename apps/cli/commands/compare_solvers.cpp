@@ -2,6 +2,7 @@
 // memory can be measured: solve time, error against the reference solver, peak RSS; optionally a
 // side-by-side image grid of the display images and one of each solver's signed error
 // (docs/solver-errors.md). With --move, how each solver's image changes when the light moves.
+// --reference reuses a reference render instead of solving it again.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
@@ -12,16 +13,21 @@
 #include <cstring>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "commands/command.h"
 #include "commands/compare_moving_light.h"
 #include "commands/error_image.h"
+#include "commands/render_outputs.h"
+#include "luxel/core/file_io.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/metrics.h"
+#include "luxel/gi2d/display.h"
 #include "luxel/gi2d/reference_solver.h"
+#include "luxel/post/label.h"
 #include "luxel/voxel/voxel_scene.h"
 
 extern char** environ;
@@ -30,7 +36,7 @@ namespace luxel::cli {
 namespace {
 
 struct CompareSolversArgs {
-    std::string scene, size, grid, errorImage, move;
+    std::string scene, size, grid, errorImage, move, reference;
     int rays = 1024;
     double errorScalePercent = 10;
 };
@@ -42,9 +48,65 @@ struct SolverRun {
 
 struct RunOutcome {
     double solveMs = 0;
-    std::uint64_t peakBytes = 0;
+    std::uint64_t peakBytes = 0;  // 0: not measured (a reused reference)
     Image fluence, display;
 };
+
+// --reference: a fluence EXR that `luxel render --solver reference` wrote for this scene at this
+// size, checked by its size and, where its metadata has them, its solver and scene hash.
+Result<RunOutcome> reuseReference(const CompareSolversArgs& args, int& rays) {
+    if (!hasExtension(args.reference, ".exr")) {
+        return Error("--reference '" + args.reference +
+                     "' must be a fluence EXR (luxel render --solver reference --out FILE.exr)");
+    }
+    ImageMetadata metadata;
+    auto fluence = readExr(args.reference, &metadata);
+    if (!fluence) return fluence.error();
+    auto sized = loadSizedScene(args.scene, args.size);
+    if (!sized) return sized.error();
+    if (fluence->width() != sized->width || fluence->height() != sized->height) {
+        return Error("--reference '" + args.reference + "' is " + std::to_string(fluence->width()) +
+                     "x" + std::to_string(fluence->height()) + " but " + args.scene +
+                     " renders at " + std::to_string(sized->width) + "x" +
+                     std::to_string(sized->height) + (args.size.empty() ? "" : " (--size)"));
+    }
+    if (const std::string* solver = findMetadata(metadata, "luxel.solver");
+        solver != nullptr && *solver != "reference") {
+        return Error("--reference '" + args.reference + "' was rendered by the " + *solver +
+                     " solver, not the reference");
+    }
+    if (const std::string* hash = findMetadata(metadata, "luxel.scene.fnv1a64")) {
+        auto bytes = readFileBytes(args.scene, "scene");
+        if (!bytes) return bytes.error();
+        if (*hash != fnv1a64Hex(*bytes)) {
+            return Error("--reference '" + args.reference +
+                         "' was rendered from another version of " + args.scene +
+                         " (scene FNV-1a " + *hash + ", the file's now " + fnv1a64Hex(*bytes) +
+                         ")");
+        }
+    }
+    if (const std::string* given = findMetadata(metadata, "luxel.rays")) rays = std::stoi(*given);
+    auto medium = rasterizeSized(*sized, args.scene, 16);
+    if (!medium) return medium.error();
+    RunOutcome out;
+    if (const std::string* seconds = findMetadata(metadata, "luxel.render.seconds")) {
+        out.solveMs = std::stod(*seconds) * 1e3;
+    }
+    out.display = gi2d::displayImage(*medium, *fluence, ToneMapSettings{});
+    out.fluence = std::move(*fluence);
+    return out;
+}
+
+// "812 ms" or "59.2 s".
+std::string formatDuration(double ms) {
+    char text[32];
+    if (ms < 10000) {
+        std::snprintf(text, sizeof text, "%.0f ms", ms);
+    } else {
+        std::snprintf(text, sizeof text, "%.1f s", ms / 1000);
+    }
+    return text;
+}
 
 // Runs `luxel render` for one solver in a child process and collects what it wrote.
 Result<RunOutcome> runSolver(const CompareSolversArgs& args, const SolverRun& solver,
@@ -109,14 +171,25 @@ int runCompareSolvers(const CompareSolversArgs& args) {
                                  "; compare-solvers compares the 2D "
                                  "solvers"));
     }
+    if (!args.move.empty() && !args.reference.empty()) {
+        return reportError(
+            Error("--reference does not apply to --move, which renders both lights"));
+    }
     if (!args.move.empty()) {
         return runCompareMovingLight(
             {args.scene, args.size, args.move, args.errorImage, args.rays, args.errorScalePercent});
     }
+    int referenceRays = args.rays;
+    std::optional<RunOutcome> reused;
+    if (!args.reference.empty()) {
+        auto outcome = reuseReference(args, referenceRays);
+        if (!outcome) return reportError(outcome.error());
+        reused = std::move(*outcome);
+    }
     // The CPU paths, so peak memory is the solver's own (no Vulkan driver loaded); RC marches the
     // pixel medium as the reference does.
     std::vector<SolverRun> solvers = {
-        {"reference", {"--solver", "reference", "--rays", std::to_string(args.rays)}},
+        {"reference", {"--solver", "reference", "--rays", std::to_string(referenceRays)}},
         {"hrc", {"--solver", "hrc", "--backend", "cpu"}},
         {"rc-vanilla",
          {"--solver", "rc", "--merge", "vanilla", "--march", "dda", "--backend", "cpu"}},
@@ -128,7 +201,7 @@ int runCompareSolvers(const CompareSolversArgs& args) {
     if (!args.errorImage.empty()) {
         solvers.push_back(
             {"reference-seed2",
-             {"--solver", "reference", "--rays", std::to_string(args.rays), "--seed", "2"}});
+             {"--solver", "reference", "--rays", std::to_string(referenceRays), "--seed", "2"}});
     }
     std::error_code ec;
     const std::filesystem::path dir =
@@ -137,7 +210,9 @@ int runCompareSolvers(const CompareSolversArgs& args) {
     if (ec) return reportError(Error("cannot create " + dir.string() + ": " + ec.message()));
 
     std::vector<RunOutcome> runs;
+    if (reused) runs.push_back(std::move(*reused));
     for (const SolverRun& solver : solvers) {
+        if (!runs.empty() && &solver == &solvers[0]) continue;  // the reused reference
         auto run = runSolver(args, solver, dir);
         if (!run) {
             std::filesystem::remove_all(dir, ec);
@@ -148,8 +223,9 @@ int runCompareSolvers(const CompareSolversArgs& args) {
     std::filesystem::remove_all(dir, ec);
 
     const Image& reference = runs[0].fluence;
-    std::printf("%s at %dx%d (reference: %d rays/pixel)\n", args.scene.c_str(), reference.width(),
-                reference.height(), args.rays);
+    std::printf("%s at %dx%d (reference: %d rays/pixel%s%s)\n", args.scene.c_str(),
+                reference.width(), reference.height(), referenceRays,
+                args.reference.empty() ? "" : ", from ", args.reference.c_str());
     std::printf("%-16s %10s %10s %10s %9s %12s\n", "solver", "ms", "rel. L1", "RMSE", "RMSE/mean",
                 "peak memory");
     for (std::size_t i = 0; i < runs.size(); ++i) {
@@ -158,12 +234,40 @@ int runCompareSolvers(const CompareSolversArgs& args) {
         std::printf("%-16s %10.1f %10.4f %10.5f %8.2f%% %12s\n", solvers[i].label, runs[i].solveMs,
                     e->relativeL1, e->rmse,
                     e->meanReference > 0 ? 100.0 * e->rmse / e->meanReference : 0.0,
-                    formatBytes(runs[i].peakBytes).c_str());
+                    runs[i].peakBytes > 0 ? formatBytes(runs[i].peakBytes).c_str() : "-");
     }
     if (!args.grid.empty()) {
+        // Each panel says what it is: the solver, its time and its error against the reference.
+        const char* names[] = {"reference", "hrc", "rc vanilla", "rc bilinear fix"};
         std::vector<Image> displays;
-        for (const RunOutcome& r : runs) displays.push_back(r.display);
-        if (Status s = writePng(args.grid, sideBySide(displays)); !s) {
+        ImageMetadata metadata =
+            renderMetadata(args.scene, "compare-solvers", reference.width(), reference.height());
+        setNumber(metadata, "luxel.rays", referenceRays);
+        std::vector<std::string> labels;
+        for (std::size_t i = 0; i < 4; ++i) {
+            std::string label = names[i];
+            if (i == 0) {
+                label += "\n" + std::to_string(referenceRays) + " rays" +
+                         (runs[0].solveMs > 0 ? ", " + formatDuration(runs[0].solveMs) : "");
+            } else {
+                char error[64];
+                std::snprintf(error, sizeof error, ", rel. L1 %.4f",
+                              compareImages(runs[i].fluence, reference)->relativeL1);
+                label += "\n" + formatDuration(runs[i].solveMs) + error;
+            }
+            labels.push_back(label);
+            std::string key = names[i];
+            for (char& c : key) c = c == ' ' ? '_' : c;
+            setMetadata(metadata, "luxel.panel" + std::to_string(i + 1) + "." + key,
+                        label.substr(label.find('\n') + 1));
+        }
+        const int scale = post::panelLabelScale(labels, reference.width());
+        for (std::size_t i = 0; i < 4; ++i) {
+            displays.push_back(runs[i].display);
+            post::drawPanelLabel(displays.back(), 0, displays.back().width(), labels[i], scale);
+        }
+        setMetadata(metadata, "luxel.content", "display, tonemapped; panels left to right");
+        if (Status s = writePng(args.grid, sideBySide(displays), PngEncoding::Srgb, metadata); !s) {
             return reportError(s.error());
         }
         std::printf("wrote %s (left to right: reference, hrc, rc vanilla, rc bilinear fix)\n",
@@ -177,7 +281,15 @@ int runCompareSolvers(const CompareSolversArgs& args) {
             panels.push_back(divergingColours(
                 signedRelativeDifference(runs[i].fluence, reference, mean), scale));
         }
-        if (Status s = writePng(args.errorImage, sideBySide(panels)); !s) {
+        ImageMetadata metadata =
+            renderMetadata(args.scene, "compare-solvers", reference.width(), reference.height());
+        setNumber(metadata, "luxel.rays", referenceRays);
+        setNumber(metadata, "luxel.error_scale_percent", args.errorScalePercent);
+        setMetadata(metadata, "luxel.content",
+                    "reference display, then the signed error of reference seed 2, hrc, rc "
+                    "vanilla, rc bilinear fix");
+        if (Status s = writePng(args.errorImage, sideBySide(panels), PngEncoding::Srgb, metadata);
+            !s) {
             return reportError(s.error());
         }
         std::printf(
@@ -204,6 +316,9 @@ Runner addCompareSolversCommand(CLI::App& app) {
                    "error image: the error (% of the mean fluence) drawn fully red or blue")
         ->check(CLI::Range(0.001, 1000.0))
         ->capture_default_str();
+    app.add_option("--reference", args->reference,
+                   "reuse this reference fluence (.exr from luxel render --solver reference) "
+                   "instead of solving it again; checked against the scene's size and hash");
     app.add_option("--move", args->move,
                    "move the brightest light by DX,DY px and compare each solver's change");
     return [args] { return runCompareSolvers(*args); };

@@ -1,10 +1,13 @@
 // `luxel info`: what a scene holds and the memory rendering it needs (voxel scenes:
-// info_voxel.cpp).
+// info_voxel.cpp), or an image's size and metadata.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 
 #include "commands/command.h"
 #include "commands/render_memory.h"
+#include "commands/scene_warnings.h"
+#include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rc_solver.h"
@@ -25,7 +28,32 @@ void printRgb(const char* label, Rgb v) {
     std::printf("  %-18s (%g, %g, %g)\n", label, v.r, v.g, v.b);
 }
 
+// `luxel info IMAGE.exr|png`: its size and the metadata luxel (or another program) wrote into it.
+int runImageInfo(const std::string& path) {
+    ImageMetadata metadata;
+    auto image = readImage(path, &metadata);
+    if (!image) return reportError(image.error());
+    std::printf("%s\n", path.c_str());
+    std::printf("  image              %dx%d, %d channels (%s)\n", image->width(), image->height(),
+                image->channels(), hasExtension(path, ".exr") ? "EXR, linear float" : "PNG, 8-bit");
+    if (metadata.empty()) {
+        std::printf("  metadata           none\n");
+        return 0;
+    }
+    std::printf("  metadata           %zu entries\n", metadata.size());
+    std::size_t width = 0;
+    for (const MetadataEntry& entry : metadata) width = std::max(width, entry.key.size());
+    for (const MetadataEntry& entry : metadata) {
+        std::printf("    %-*s  %s\n", static_cast<int>(width), entry.key.c_str(),
+                    entry.value.c_str());
+    }
+    return 0;
+}
+
 int runInfo(const InfoArgs& args) {
+    if (hasExtension(args.scene, ".exr") || hasExtension(args.scene, ".png")) {
+        return runImageInfo(args.scene);
+    }
     auto solver = gi2d::parseSolver2D(args.solverName);
     if (!solver) return reportError(solver.error());
     auto merge = gi2d::parseRcMerge(args.mergeName);
@@ -53,6 +81,9 @@ int runInfo(const InfoArgs& args) {
         std::printf("    %2zu %-8s %-16s E (%g, %g, %g)  sigma (%g, %g, %g)\n", i,
                     gi2d::geometryTypeName(s.geometry), s.name.c_str(), e.r, e.g, e.b, a.r, a.g,
                     a.b);
+    }
+    for (const std::string& warning : silentEmitterWarnings(*scene)) {
+        printWarning(args.scene + ": " + warning);
     }
     // Bounce light: scattering fog (non-opaque albedo) and reflective surfaces (opaque albedo).
     if (gi2d::sceneBounces(*scene)) {
@@ -110,7 +141,10 @@ int runInfo(const InfoArgs& args) {
 
 Runner addInfoCommand(CLI::App& app) {
     auto args = std::make_shared<InfoArgs>();
-    app.add_option("scene", args->scene, "scene file (.json)")->required();
+    app.add_option("scene", args->scene,
+                   "scene file (.json), or an image (.exr, .png) to show its "
+                   "metadata")
+        ->required();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
     app.add_option("--solver", args->solverName, "solver to estimate for: reference, hrc, rc")
         ->capture_default_str();

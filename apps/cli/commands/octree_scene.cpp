@@ -6,6 +6,7 @@
 
 #include "commands/command.h"
 #include "commands/render_memory.h"
+#include "commands/render_outputs.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/timer.h"
@@ -69,15 +70,19 @@ int renderOctreeScene(const VoxelRenderRequest& request, scene::OctreeScene load
     if (!radiance) return reportError(radiance.error());
     const double renderSeconds = renderTime.seconds();
     radiance = postProcess(*radiance, width, height, post);
-    const Image out = hasExtension(request.out, ".png") ? toneMap(*radiance, post.tone) : *radiance;
-    // --out and --png change together or not at all.
-    std::vector<ImageFile> files{{request.out, &out}};
-    Image display;
-    if (!request.png.empty()) {
-        display = toneMap(*radiance, post.tone);
-        files.push_back({request.png, &display});
-    }
-    if (Status s = writeImages(files); !s) return reportError(s.error());
+    // --out and --png change together or not at all; both carry the provenance.
+    RenderImages images;
+    images.out = request.out;
+    images.png = request.png;
+    images.linear = &*radiance;
+    images.linearName = "radiance";
+    images.displayHdr = &*radiance;
+    images.tone = post.tone;
+    images.autoExposure = request.autoExposure;
+    images.quiet = request.quiet;
+    images.metadata = octreeMetadata(request.scene, scene->source, scene->render, post, width,
+                                     height, context->get(), renderSeconds);
+    if (Status s = writeRenderImages(std::move(images)); !s) return reportError(s.error());
     if (request.stats) std::printf("stats solve_seconds=%.6f\n", renderSeconds);
     if (!request.quiet) {
         const double pixels = static_cast<double>(radiance->width()) * radiance->height();
@@ -87,8 +92,8 @@ int renderOctreeScene(const VoxelRenderRequest& request, scene::OctreeScene load
                     *context ? ("gpu: " + (**context).device().name).c_str() : "cpu");
         std::printf("  build %.3f s, render %.3f s incl. upload (%.2f Mpixel/s)\n",
                     scene->buildSeconds, renderSeconds, pixels / renderSeconds * 1e-6);
-        std::printf("  wrote %s%s%s\n", request.out.c_str(), request.png.empty() ? "" : ", ",
-                    request.png.c_str());
+        std::printf("  wrote %s%s%s\n", request.out.c_str(),
+                    request.out.empty() || request.png.empty() ? "" : ", ", request.png.c_str());
     }
     return 0;
 }

@@ -4,7 +4,10 @@
 #include <vector>
 
 #include "commands/command.h"
+#include "commands/render_args.h"
 #include "commands/render_memory.h"
+#include "commands/render_outputs.h"
+#include "commands/scene_warnings.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
@@ -25,80 +28,6 @@
 
 namespace luxel::cli {
 namespace {
-
-struct RenderArgs {
-    std::string scene, solverName = "reference", size, out, png, tonemap = "aces";
-    gi2d::Solver2D solver = gi2d::Solver2D::Reference;  // parsed from solverName
-    std::vector<std::string> options2DGiven;            // 2D-only options on the command line
-    int rays = gi2d::ReferenceOptions{}.rays;
-    int threads = 0;
-    int supersample = 16;
-    std::uint64_t seed = 1;
-    float exposure = 0.0f;
-    bool quiet = false;
-    bool stats = false;  // print a machine-readable timing line (for compare-solvers)
-    std::string backendName = "auto", device;
-    gpu::Backend backend = gpu::Backend::Auto;  // parsed from backendName
-    // HRC
-    int tracedLevels = gi2d::HrcOptions{}.tracedLevels;
-    bool noBlur = false;
-    std::string frustum;  // debug: one of +x, +y, -x, -y
-    int cascade = 0;      // debug: the cascade --view cascade|probes shows (hrc, rc)
-    // RC
-    std::string mergeName = "bilinear-fix", march = "auto", view = "gi";
-    gi2d::RcMerge merge = gi2d::RcMerge::BilinearFix;  // parsed from mergeName
-    int probeSpacing = gi2d::RcOptions{}.probeSpacing;
-    int baseRays = gi2d::RcOptions{}.baseRays;
-    double baseInterval = gi2d::RcOptions{}.baseInterval;
-    int maxCascades = 0;
-    int jitters = 1;
-    // Bounce light: -1 = the solver's default when the scene bounces (gi2d/bounce.h)
-    int bounces = -1;
-    // Voxel and octree post-processing (override the scene's "post")
-    float bloom = 0.0f, internalScale = 1.0f, sharpness = 0.0f;
-    std::string upscalerName;
-    PostFlags post;                      // the post flags given, parsed
-    std::vector<std::string> postGiven;  // their names
-    VoxelSurfaceFlags surfaces;          // voxel scenes
-    // Voxel scenes: anti-aliasing and texture filtering (0 / empty: the scene's).
-    int samples = 0;
-    std::string filter;
-};
-
-// The names given on the command line -> the library's enums (luxel/gi2d/solver_choice.h,
-// luxel/gpu/backend_policy.h), so the CLI and the viewer accept the same words.
-Status parseChoices(RenderArgs& args) {
-    auto solver = gi2d::parseSolver2D(args.solverName);
-    if (!solver) return solver.error();
-    auto merge = gi2d::parseRcMerge(args.mergeName);
-    if (!merge) return merge.error();
-    auto backend = gpu::parseBackend(args.backendName);
-    if (!backend) return backend.error();
-    args.solver = *solver;
-    args.merge = *merge;
-    args.backend = *backend;
-    return Ok{};
-}
-
-// The post flags given on the command line; the rest come from the scene's "post" section.
-Status parsePostFlags(RenderArgs& args, const CLI::App& command) {
-    PostFlags& f = args.post;
-    for (const char* name : {"--bloom", "--internal-scale", "--upscaler", "--sharpness"}) {
-        if (command.count(name) > 0) args.postGiven.push_back(name);
-    }
-    if (command.count("--bloom") > 0) f.bloom = args.bloom;
-    if (command.count("--internal-scale") > 0) f.internalScale = args.internalScale;
-    if (command.count("--sharpness") > 0) f.sharpness = args.sharpness;
-    if (command.count("--upscaler") > 0) {
-        f.upscaler = post::parseUpscaler(args.upscalerName);
-        if (!f.upscaler) {
-            return Error("--upscaler '" + args.upscalerName + "' is not bilinear or edge");
-        }
-    }
-    if (command.count("--exposure") > 0) f.exposure = args.exposure;
-    if (command.count("--tonemap") > 0) f.tone = parseToneCurve(args.tonemap);
-    return Ok{};
-}
 
 // Frustum name -> HRC frustum mask bit.
 Result<unsigned> frustumMask(const std::string& name) {
@@ -301,16 +230,66 @@ void drawProbes(const RenderArgs& args, Image& display) {
     }
 }
 
+// The provenance of a 2D render: the solver and every setting it ran with (docs/image-metadata.md).
+ImageMetadata metadata2D(const RenderArgs& args, int w, int h, const std::string& detail,
+                         const std::string& bounceNote, double rasterSeconds, double solveSeconds) {
+    ImageMetadata m = renderMetadata(args.scene, gi2d::solverName(args.solver), w, h);
+    setMetadata(m, "luxel.view", args.view);
+    setMetadata(m, "luxel.backend", detail.find("gpu") != std::string::npos ? "gpu" : "cpu");
+    if (!detail.empty()) setMetadata(m, "luxel.solver.detail", detail);
+    switch (args.solver) {
+        case gi2d::Solver2D::Reference:
+            setNumber(m, "luxel.rays", args.rays);
+            setMetadata(m, "luxel.seed", std::to_string(args.seed));
+            break;
+        case gi2d::Solver2D::Hrc:
+            setNumber(m, "luxel.hrc.cascades", gi2d::hrcCascadeCount(w, h));
+            setNumber(m, "luxel.hrc.traced_levels", args.tracedLevels);
+            setMetadata(m, "luxel.hrc.cross_blur", args.noBlur ? "no" : "yes");
+            if (!args.frustum.empty()) setMetadata(m, "luxel.hrc.frustum", args.frustum);
+            break;
+        case gi2d::Solver2D::Rc: {
+            const gi2d::RcOptions options = rcOptions(args);
+            setNumber(m, "luxel.rc.cascades",
+                      static_cast<double>(gi2d::rcCascades(w, h, options).size()));
+            setMetadata(m, "luxel.rc.merge", gi2d::mergeName(args.merge));
+            setMetadata(m, "luxel.rc.march", args.march);
+            setNumber(m, "luxel.rc.probe_spacing", args.probeSpacing);
+            setNumber(m, "luxel.rc.base_rays", args.baseRays);
+            setNumber(m, "luxel.rc.base_interval", args.baseInterval);
+            setNumber(m, "luxel.rc.max_cascades", args.maxCascades);
+            setNumber(m, "luxel.rc.jitters", args.jitters);
+            break;
+        }
+    }
+    if (!bounceNote.empty()) setMetadata(m, "luxel.bounces", bounceNote);
+    setNumber(m, "luxel.supersample", args.supersample);
+    setNumber(m, "luxel.threads", args.threads > 0 ? args.threads : hardwareThreads());
+    setNumber(m, "luxel.raster.seconds", rasterSeconds);
+    setNumber(m, "luxel.render.seconds", solveSeconds);
+    return m;
+}
+
+}  // namespace
+
 int runRender(const RenderArgs& args) {
-    if (!hasExtension(args.out, ".exr") && !hasExtension(args.out, ".png")) {
+    if (args.out.empty() && args.png.empty()) {
+        return reportError(
+            Error("nothing to write: give --out FILE.exr|FILE.png, --png FILE.png, "
+                  "or both"));
+    }
+    if (!args.out.empty() && !hasExtension(args.out, ".exr") && !hasExtension(args.out, ".png")) {
         return reportError(Error("--out '" + args.out + "' must end in .exr or .png"));
+    }
+    if (!args.png.empty() && !hasExtension(args.png, ".png")) {
+        return reportError(Error("--png '" + args.png + "' must end in .png"));
     }
     auto curve = parseToneCurve(args.tonemap);
     if (!curve) {
         return reportError(
             Error("--tonemap '" + args.tonemap + "' is unknown (clamp, reinhard, aces)"));
     }
-    const ToneMapSettings tone{args.exposure, *curve};
+    const ToneMapSettings tone{args.exposure.stops.value_or(0.0f), *curve};
     ThreadLimit threadLimit(args.threads);
     Stopwatch loadTime;
     auto file = loadScene(args.scene, args.size);
@@ -330,6 +309,7 @@ int runRender(const RenderArgs& args) {
                                    args.device, loadTime.seconds(), args.post,  args.surfaces};
         request.samples = args.samples;
         request.filter = args.filter;
+        request.autoExposure = args.exposure.automatic;
         if (!voxel && (args.samples != 0 || !args.filter.empty())) {
             return reportError(Error("--samples and --filter apply to voxel scenes; " + args.scene +
                                      " is " + sceneKindPhrase(file->kind())));
@@ -340,6 +320,11 @@ int runRender(const RenderArgs& args) {
 
     auto sized = sizeScene(std::move(file->twoD()), args.size);
     if (!sized) return reportError(sized.error());
+    if (!args.quiet) {
+        for (const std::string& warning : silentEmitterWarnings(sized->scene)) {
+            printWarning(args.scene + ": " + warning);
+        }
+    }
     // Refuse before allocating anything when the medium, the solver and the images written
     // cannot fit (`luxel info` reports the same estimate).
     Memory2D memory = estimate2D(sized->width, sized->height, args.solver, rcOptions(args),
@@ -370,22 +355,27 @@ int runRender(const RenderArgs& args) {
     if (!fluence) return reportError(fluence.error());
     const double solveSeconds = solveTime.seconds();
 
-    const Image out = hasExtension(args.out, ".png") ? toneMap(*fluence, tone) : *fluence;
-    // --out and --png change together or not at all (writeImages renames only once both are
-    // complete).
-    std::vector<ImageFile> files{{args.out, &out}};
-    Image display;
-    if (!args.png.empty()) {
-        if (!hasExtension(args.png, ".png")) {
-            return reportError(Error("--png '" + args.png + "' must end in .png"));
-        }
-        display = gi2d::displayImage(*medium, *fluence, tone);
-        if (args.view == "probes") {
-            drawProbes(args, display);
-        }
-        files.push_back({args.png, &display});
+    // What the display image shows before tone mapping: the light sources and the light.
+    Image hdr(w, h, 3);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x)
+            hdr.setRgb(x, y, medium->emission.rgb(x, y) + fluence->rgb(x, y));
     }
-    if (Status s = writeImages(files); !s) return reportError(s.error());
+    RenderImages images;
+    images.out = args.out;
+    images.png = args.png;
+    images.linear = &*fluence;
+    images.linearName = "fluence";
+    images.displayHdr = &hdr;
+    images.tone = tone;
+    images.autoExposure = args.exposure.automatic;
+    images.quiet = args.quiet;
+    images.lightSources = &medium->emission;
+    images.metadata = metadata2D(args, w, h, detail, bounceNote, rasterSeconds, solveSeconds);
+    if (args.view == "probes")
+        images.drawOnDisplay = [&](Image& display) { drawProbes(args, display); };
+    // --out and --png change together or not at all.
+    if (Status s = writeRenderImages(std::move(images)); !s) return reportError(s.error());
     if (args.stats) std::printf("stats solve_seconds=%.6f\n", solveSeconds);
     if (!args.quiet) {
         std::printf("%s: %dx%d, solver %s%s%s%s, %s, %d threads\n", args.scene.c_str(), w, h,
@@ -397,113 +387,10 @@ int runRender(const RenderArgs& args) {
         if (rays > 0) {
             std::printf(", %.2f Mrays/s at %d rays/pixel", rays / solveSeconds * 1e-6, args.rays);
         }
-        std::printf(")\n  wrote %s%s%s\n", args.out.c_str(), args.png.empty() ? "" : ", ",
-                    args.png.c_str());
+        std::printf(")\n  wrote %s%s%s\n", args.out.c_str(),
+                    args.out.empty() || args.png.empty() ? "" : ", ", args.png.c_str());
     }
     return 0;
-}
-
-}  // namespace
-
-Runner addRenderCommand(CLI::App& app) {
-    auto args = std::make_shared<RenderArgs>();
-    app.add_option("scene", args->scene, "scene file (.json)")->required();
-    app.add_option("--solver", args->solverName, "light transport solver: reference, hrc, rc")
-        ->capture_default_str();
-    app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
-    app.add_option("--rays", args->rays, "directions per pixel (reference solver)")
-        ->check(wholeIn(1, gi2d::kMaxReferenceRays))
-        ->capture_default_str();
-    app.add_option("--threads", args->threads, "worker threads (0 = all cores)")
-        ->check(wholeIn(0, 4096))
-        ->capture_default_str();
-    app.add_option("--seed", args->seed, "random seed (reference solver)")->capture_default_str();
-    app.add_option("--supersample", args->supersample, "edge samples per pixel side")
-        ->check(wholeIn(1, 64))
-        ->capture_default_str();
-    app.add_option("--traced-levels", args->tracedLevels,
-                   "HRC: cascades traced exactly; the rest by ray extension (1 = extend from c0)")
-        ->check(wholeIn(1, 64))
-        ->capture_default_str();
-    app.add_flag("--no-blur", args->noBlur, "HRC: skip the opacity-gated cross blur (Eq 21)");
-    app.add_option("--frustum", args->frustum, "HRC debug: only this frustum (+x, +y, -x, -y)");
-    app.add_option("--cascade", args->cascade,
-                   "debug: the cascade that --view cascade|probes shows")
-        ->check(wholeIn(0, 64))
-        ->capture_default_str();
-    app.add_option("--merge", args->mergeName, "RC: vanilla or bilinear-fix")
-        ->capture_default_str();
-    app.add_option("--march", args->march,
-                   "RC: interval tracing: auto = dda (the pixel medium all solvers share), sdf "
-                   "(exact shapes)")
-        ->capture_default_str();
-    app.add_option("--probe-spacing", args->probeSpacing, "RC: cascade-0 probe spacing (px)")
-        ->check(wholeIn(1, 64))
-        ->capture_default_str();
-    app.add_option("--base-rays", args->baseRays, "RC: cascade-0 directions per probe")
-        ->check(wholeIn(1, 1024))
-        ->capture_default_str();
-    app.add_option("--base-interval", args->baseInterval, "RC: cascade-0 interval length (px)")
-        ->check(finiteIn(1e-3, 1e5))
-        ->capture_default_str();
-    app.add_option("--jitters", args->jitters,
-                   "RC: solves averaged, each with the probe grids above cascade 0 shifted "
-                   "differently (fewer blotches, less popping as lights move; N times the time)")
-        ->check(wholeIn(1, 256))
-        ->capture_default_str();
-    app.add_option("--max-cascades", args->maxCascades, "RC: cap on the cascade count (0 = none)")
-        ->check(wholeIn(0, 16))
-        ->capture_default_str();
-    app.add_option("--bounces", args->bounces,
-                   "bounce light (scenes with albedo): fluence fed back this many times; 0 = off "
-                   "(default: the reference converges, hrc and rc bounce " +
-                       std::to_string(gi2d::kDefaultCascadeBounces) + " times)")
-        ->check(wholeIn(0, gi2d::kMaxReferenceBounces));
-    app.add_option("--view", args->view,
-                   "gi (default), nogi (emission only), probes (RC probe grid of --cascade on the "
-                   "--png image), cascade (the merged radiance of --cascade)")
-        ->capture_default_str();
-    app.add_option("--out", args->out, "fluence image: .exr (linear float) or .png (tonemapped)")
-        ->required();
-    app.add_option("--png", args->png, "also write the display image (emission + fluence)");
-    app.add_option("--exposure", args->exposure, "exposure in stops for PNG output")
-        ->check(finiteIn(-64.0, 64.0))
-        ->capture_default_str();
-    app.add_option("--tonemap", args->tonemap, "tone curve for PNG output: clamp, reinhard, aces")
-        ->capture_default_str();
-    app.add_flag("--quiet,-q", args->quiet, "no progress bar or summary");
-    app.add_flag("--stats", args->stats, "print 'stats solve_seconds=S' (for scripts)");
-    app.add_option("--backend", args->backendName,
-                   "auto (a hardware GPU when there is one, else CPU), cpu or gpu (HRC, RC, voxel)")
-        ->capture_default_str();
-    app.add_option("--device", args->device, "GPU: device index or part of its name");
-    app.add_option("--bloom", args->bloom, "voxel/octree: bloom strength in [0, 1] (0 = off)")
-        ->check(finiteIn(0.0, 1.0));
-    app.add_option("--internal-scale", args->internalScale,
-                   "voxel/octree: render at this fraction of the size, then upscale")
-        ->check(finiteIn(double(post::kMinInternalScale), 1.0));
-    app.add_option("--upscaler", args->upscalerName, "voxel/octree: bilinear or edge");
-    app.add_option("--sharpness", args->sharpness, "voxel/octree: sharpening after upscaling")
-        ->check(finiteIn(0.0, 1.0));
-    addVoxelSurfaceFlags(app, args->surfaces);
-    app.add_option("--samples", args->samples,
-                   "voxel: samples per pixel, stratified (default: the scene's render.samples)")
-        ->check(wholeIn(0, voxel::kMaxSamplesPerPixel));
-    app.add_option(
-        "--filter", args->filter,
-        "voxel: texture filter nearest, trilinear or anisotropic (default: the scene's)");
-    CLI::App* command = &app;
-    return [args, command] {
-        for (const char* name :
-             {"--solver", "--rays", "--seed", "--supersample", "--traced-levels", "--no-blur",
-              "--frustum", "--cascade", "--merge", "--march", "--probe-spacing", "--base-rays",
-              "--base-interval", "--max-cascades", "--view", "--bounces"}) {
-            if (command->count(name) > 0) args->options2DGiven.push_back(name);
-        }
-        if (Status s = parseChoices(*args); !s) return reportError(s.error());
-        if (Status s = parsePostFlags(*args, *command); !s) return reportError(s.error());
-        return runRender(*args);
-    };
 }
 
 }  // namespace luxel::cli

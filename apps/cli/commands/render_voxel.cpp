@@ -7,6 +7,7 @@
 
 #include "commands/command.h"
 #include "commands/render_memory.h"
+#include "commands/render_outputs.h"
 #include "luxel/core/image_io.h"
 #include "luxel/core/timer.h"
 #include "luxel/gpu/context.h"
@@ -146,16 +147,19 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
     }
     const double renderSeconds = renderTime.seconds();
     const Image radiance = postProcess(internal, width, height, post);
-    // EXR keeps linear radiance; PNG gets the display transform.
-    const Image out = hasExtension(request.out, ".png") ? toneMap(radiance, post.tone) : radiance;
-    // --out and --png change together or not at all.
-    std::vector<ImageFile> files{{request.out, &out}};
-    Image display;
-    if (!request.png.empty()) {
-        display = toneMap(radiance, post.tone);
-        files.push_back({request.png, &display});
-    }
-    if (Status s = writeImages(files); !s) return reportError(s.error());
+    // EXR keeps linear radiance; PNG gets the display transform. Both carry the provenance.
+    RenderImages images;
+    images.out = request.out;
+    images.png = request.png;
+    images.linear = &radiance;
+    images.linearName = "radiance";
+    images.displayHdr = &radiance;
+    images.tone = post.tone;
+    images.autoExposure = request.autoExposure;
+    images.quiet = request.quiet;
+    images.metadata = voxelMetadata(request.scene, scene->shading, post, width, height,
+                                    context->get(), renderSeconds);
+    if (Status s = writeRenderImages(std::move(images)); !s) return reportError(s.error());
     if (request.stats) std::printf("stats solve_seconds=%.6f\n", renderSeconds);
     if (!request.quiet) {
         const Int3 s = scene->world.size();
@@ -173,8 +177,8 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
             std::printf("  internal %dx%d (%s upscaler), bloom %.2f\n", internal.width(),
                         internal.height(), post::upscalerName(post.upscaler), post.bloom.strength);
         }
-        std::printf("  wrote %s%s%s\n", request.out.c_str(), request.png.empty() ? "" : ", ",
-                    request.png.c_str());
+        std::printf("  wrote %s%s%s\n", request.out.c_str(),
+                    request.out.empty() || request.png.empty() ? "" : ", ", request.png.c_str());
     }
     return 0;
 }

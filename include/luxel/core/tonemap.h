@@ -24,6 +24,22 @@ struct ToneMapSettings {
 // Applies exposure and the curve to the first three channels; alpha (4th) is copied. NaN -> 0.
 Image toneMap(const Image& hdr, const ToneMapSettings& settings);
 
+// Auto exposure (`--exposure auto`): the stops that map the 99th percentile of the brightest
+// channel, over the pixels with any light (max channel > 0; NaN and infinity are skipped), to 90%
+// of display white under `curve`. A bright light covering less than 1% of the lit pixels may
+// clip; everything else keeps its colour. 0 for an image with no light; clamped to +-64 stops.
+inline constexpr double kAutoExposurePercentile = 0.99;
+inline constexpr float kAutoExposureWhite = 0.9f;
+float autoExposureStops(const Image& hdr, ToneCurve curve);
+
+// The fraction of pixels of a tonemapped image (display-referred linear, as toneMap returns)
+// with a colour channel at display white: 255 once encoded as 8-bit sRGB. Pixels where `ignore`
+// (same size, or null) has a channel above 0, such as the light sources themselves, count
+// neither way.
+double clippedFraction(const Image& display, const Image* ignore = nullptr);
+// The smallest display-referred linear value that 8-bit sRGB encodes as 255.
+float displayWhiteLevel();
+
 // sRGB transfer curve (IEC 61966-2-1), on one linear value in [0, 1].
 float linearToSrgb(float linear);
 float srgbToLinear(float encoded);
