@@ -4,6 +4,7 @@
 #pragma once
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -22,8 +23,10 @@ class CliFixture : public testing::Test {
   protected:
     void SetUp() override {
         const testing::TestInfo* info = testing::UnitTest::GetInstance()->current_test_info();
+        // The process id keeps two test runs at once (two build trees) out of each other's way.
         dir_ = std::filesystem::temp_directory_path() /
-               ("luxel_" + std::string(info->test_suite_name()) + "_" + info->name());
+               ("luxel_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
+                std::to_string(getpid()));
         std::filesystem::remove_all(dir_);
         std::filesystem::create_directories(dir_);
     }
