@@ -37,6 +37,7 @@ struct RenderArgs {
     float exposure = 0.0f;
     bool quiet = false;
     bool stats = false;  // print a machine-readable timing line (for compare-solvers)
+    int frame = -1;      // --frame: a MagicaVoxel world's animation frame
     std::string backendName = "auto", device;
     gpu::Backend backend = gpu::Backend::Auto;  // parsed from backendName
     // HRC
@@ -313,7 +314,7 @@ int runRender(const RenderArgs& args) {
     const ToneMapSettings tone{args.exposure, *curve};
     ThreadLimit threadLimit(args.threads);
     Stopwatch loadTime;
-    auto file = loadScene(args.scene, args.size);
+    auto file = loadScene(args.scene, args.size, args.frame);
     if (!file) return reportError(file.error());
     if (file->kind() == scene::SceneKind::TwoD && !args.postGiven.empty()) {
         return reportError(Error(args.postGiven.front() + " applies to voxel and octree scenes; " +
@@ -411,6 +412,7 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option("--solver", args->solverName, "light transport solver: reference, hrc, rc")
         ->capture_default_str();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
+    addVoxFrameOption(app, args->frame);
     app.add_option("--rays", args->rays, "directions per pixel (reference solver)")
         ->check(wholeIn(1, gi2d::kMaxReferenceRays))
         ->capture_default_str();
