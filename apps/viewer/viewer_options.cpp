@@ -39,7 +39,8 @@ Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
     app.add_option("--record", o.recordFrames, "write the next N rendered frames as PNG")
         ->check(CLI::Range(1, 1000000));
     app.add_option("--record-dir", o.recordDir, "folder for --record frames");
-    app.add_option("--save", o.savePath, "where paint mode saves the scene (Ctrl+S)");
+    app.add_option("--save", o.savePath,
+                   "where Ctrl+S saves: the painted 2D scene, the voxel world (.vox)");
     app.add_option("--threads", o.threads, "solver threads (0: all)")->check(CLI::Range(0, 1024));
     app.add_flag("--no-overlay", o.hideOverlay, "start with the panels hidden (F1 shows them)");
 
