@@ -271,7 +271,14 @@ class Reader {
     // Refuses placements that no world can hold, with the size and the memory it would need.
     void checkSpan(const Int3L& span, const Int3L& lo) const {
         if (span[0] <= kMaxWorldSide && span[1] <= kMaxWorldSide && span[2] <= kMaxWorldSide) {
-            return;
+            const std::uint64_t bytes = VoxelWorld::bytesFor(
+                {int(span[0]), int(span[2]), int(span[1])}, options_.chunkSize);
+            if (options_.maxWorldBytes == 0 || bytes <= options_.maxWorldBytes) return;
+            throw VoxFailure{kNoOffset, "the placed models span " + std::to_string(span[0]) + "x" +
+                                            std::to_string(span[1]) + "x" +
+                                            std::to_string(span[2]) + " voxels, a world of " +
+                                            formatBytes(bytes) + "; the limit here is " +
+                                            formatBytes(options_.maxWorldBytes)};
         }
         // A dense world of that span: 4 bytes a voxel (VoxelWorld::bytesFor adds a little).
         const double bytes = double(span[0]) * double(span[1]) * double(span[2]) * sizeof(Voxel);

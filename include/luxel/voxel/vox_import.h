@@ -28,6 +28,8 @@ struct VoxOptions {
     int frame = 0;
     // False: every voxel is a plain block (alpha 255) and VoxImport::materials stays empty.
     bool materials = true;
+    // Largest world to build, in bytes (VoxelWorld::bytesFor); 0: as much as the machine has.
+    std::uint64_t maxWorldBytes = 0;
 };
 
 // A .vox file read into a world.
