@@ -133,7 +133,11 @@ void FeatureWarnings::add(const std::string& what, const std::string& message, i
 void FeatureWarnings::lines(std::vector<std::string>& out) const {
     for (const auto& key : order_) {
         const std::vector<int>& ids = ids_.at(key);
-        out.push_back(key.first + " " + joinIds(ids) + ": " + key.second);
+        // A negative id: a remark about the whole palette, without ids.
+        const bool whole = ids.size() == 1 && ids.front() < 0;
+        std::string line = key.first;
+        if (!whole) line.append(" ").append(joinIds(ids));
+        out.push_back(line.append(": ").append(key.second));
     }
 }
 
@@ -182,7 +186,7 @@ PaletteMapping mapPalette(const std::array<Voxel, 256>& palette, const std::map<
     if (!anyAlpha) {
         for (int i = 1; i < 256; ++i) {
             if (used[i]) {
-                warnings.add("palette", "alpha is 0 for every colour used; read as opaque", 0);
+                warnings.add("palette", "alpha is 0 for every colour used; read as opaque", -1);
                 break;
             }
         }

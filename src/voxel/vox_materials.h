@@ -18,6 +18,7 @@ namespace luxel::voxel::vox {
 // every id it applies to ("MATL 3, 9 and 12: ...").
 class FeatureWarnings {
   public:
+    // `id` < 0: a remark about the whole `what`, printed without ids.
     void add(const std::string& what, const std::string& message, int id);
     void lines(std::vector<std::string>& out) const;
 

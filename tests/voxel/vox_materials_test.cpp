@@ -115,7 +115,9 @@ TEST(VoxMaterials, PaletteAlphaIsOpacity) {
     ASSERT_TRUE(opaque.ok()) << opaque.error().message();
     EXPECT_EQ(opaque->world.get(0, 0, 0), (Voxel{1, 2, 3, 255}));
     EXPECT_EQ(opaque->world.get(1, 0, 0), (Voxel{4, 5, 6, 255}));
-    EXPECT_TRUE(hasWarning(*opaque, "alpha is 0 for every colour used; read as opaque"));
+    ASSERT_EQ(opaque->warnings.size(), 1u);
+    EXPECT_EQ(opaque->warnings[0],
+              "n.vox: palette: alpha is 0 for every colour used; read as opaque");
 }
 
 TEST(VoxMaterials, UnusedChunksAreWarnedOncePerKind) {
