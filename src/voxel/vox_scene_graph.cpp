@@ -178,25 +178,26 @@ void SceneGraph::addLayer(Bytes bytes, const Chunk& chunk) {
 }
 
 std::vector<Placement> SceneGraph::place(int frame, int modelCount) const {
-    std::vector<Placement> out;
-    if (nodes_.empty()) return out;
+    if (nodes_.empty()) return {};
     if (!index_.count(0)) {
         throw VoxFailure{nodes_.front().at, "the scene graph has no root node 0"};
     }
-    std::vector<char> onPath(nodes_.size(), 0);
-    visit(0, Transform{}, 0, frame, modelCount, nodes_[index_.at(0)].at, onPath, out);
-    return out;
+    Walk walk;
+    walk.frame = frame;
+    walk.modelCount = modelCount;
+    walk.onPath.assign(nodes_.size(), 0);
+    visit(0, Transform{}, 0, nodes_[index_.at(0)].at, walk);
+    return std::move(walk.out);
 }
 
-void SceneGraph::visit(int id, const Transform& parent, int depth, int frame, int modelCount,
-                       std::size_t from, std::vector<char>& onPath,
-                       std::vector<Placement>& out) const {
+void SceneGraph::visit(int id, const Transform& parent, int depth, std::size_t from,
+                       Walk& walk) const {
     const auto found = index_.find(id);
     if (found == index_.end()) {
         throw VoxFailure{from, "node " + std::to_string(id) + " does not exist"};
     }
     const Node& node = nodes_[found->second];
-    if (onPath[found->second]) {
+    if (walk.onPath[found->second]) {
         throw VoxFailure{node.at, "node " + std::to_string(id) +
                                       " is its own ancestor (a cycle in the scene graph)"};
     }
@@ -204,41 +205,44 @@ void SceneGraph::visit(int id, const Transform& parent, int depth, int frame, in
         throw VoxFailure{node.at, "the scene graph nests deeper than " +
                                       std::to_string(kMaxGraphDepth) + " nodes"};
     }
+    if (++walk.visits > kMaxNodeVisits) {
+        throw VoxFailure{node.at, "the scene graph visits more than " +
+                                      std::to_string(kMaxNodeVisits) +
+                                      " nodes (groups shared many times over)"};
+    }
     if (node.hidden) return;
     if (node.kind == Node::Kind::Transform) {
         const auto layer = layerHidden_.find(node.layer);
         if (layer != layerHidden_.end() && layer->second) return;
     }
-    onPath[found->second] = 1;
+    walk.onPath[found->second] = 1;
     switch (node.kind) {
         case Node::Kind::Transform: {
-            const Transform t = parent * keyframeAt(node.keyframes, frame).value;
-            visit(node.children.front(), t, depth + 1, frame, modelCount, node.at, onPath, out);
+            const Transform t = parent * keyframeAt(node.keyframes, walk.frame).value;
+            visit(node.children.front(), t, depth + 1, node.at, walk);
             break;
         }
         case Node::Kind::Group:
-            for (int child : node.children) {
-                visit(child, parent, depth + 1, frame, modelCount, node.at, onPath, out);
-            }
+            for (int child : node.children) visit(child, parent, depth + 1, node.at, walk);
             break;
         case Node::Kind::Shape: {
             if (node.models.empty()) break;
-            const int model = keyframeAt(node.models, frame).value;
-            if (model < 0 || model >= modelCount) {
+            const int model = keyframeAt(node.models, walk.frame).value;
+            if (model < 0 || model >= walk.modelCount) {
                 throw VoxFailure{node.at, "shape node " + std::to_string(id) + " names model " +
                                               std::to_string(model) + ", the file has " +
-                                              std::to_string(modelCount) + " (0.." +
-                                              std::to_string(modelCount - 1) + ")"};
+                                              std::to_string(walk.modelCount) + " (0.." +
+                                              std::to_string(walk.modelCount - 1) + ")"};
             }
-            if (out.size() >= kMaxPlacements) {
+            if (walk.out.size() >= kMaxPlacements) {
                 throw VoxFailure{node.at, "the scene graph places more than " +
                                               std::to_string(kMaxPlacements) + " models"};
             }
-            out.push_back({model, parent});
+            walk.out.push_back({model, parent});
             break;
         }
     }
-    onPath[found->second] = 0;
+    walk.onPath[found->second] = 0;
 }
 
 }  // namespace luxel::voxel::vox

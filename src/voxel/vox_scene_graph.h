@@ -50,6 +50,8 @@ struct Placement {
 // (shared groups multiply: a group used twice by a group used twice ...).
 inline constexpr int kMaxGraphDepth = 256;
 inline constexpr std::size_t kMaxPlacements = std::size_t{1} << 16;
+// Most node visits one walk may make (shared groups that place nothing still cost visits).
+inline constexpr std::size_t kMaxNodeVisits = std::size_t{1} << 20;
 
 class SceneGraph {
   public:
@@ -64,7 +66,7 @@ class SceneGraph {
     int frameCount() const { return frameCount_; }
     // Every visible model placement at `frame`, from root node 0. Throws VoxFailure for a missing
     // root or child, a model id outside 0..modelCount-1, a cycle, nesting deeper than
-    // kMaxGraphDepth or more than kMaxPlacements placements.
+    // kMaxGraphDepth, more than kMaxPlacements placements or kMaxNodeVisits visits.
     std::vector<Placement> place(int frame, int modelCount) const;
 
   private:
@@ -83,8 +85,13 @@ class SceneGraph {
         std::vector<Keyed<int>> models;           // shape
     };
     void addNode(int id, Node node, std::size_t at);
-    void visit(int id, const Transform& parent, int depth, int frame, int modelCount,
-               std::size_t from, std::vector<char>& onPath, std::vector<Placement>& out) const;
+    struct Walk {
+        int frame = 0, modelCount = 0;
+        std::vector<char> onPath;  // by nodes_ index: on the path from the root
+        std::size_t visits = 0;
+        std::vector<Placement> out;
+    };
+    void visit(int id, const Transform& parent, int depth, std::size_t from, Walk& walk) const;
 
     std::vector<Node> nodes_;
     std::unordered_map<int, std::size_t> index_;  // node id -> nodes_ index

@@ -54,6 +54,11 @@ TEST(VoxHostile, DeepNestingAndMultiplyingGroups) {
     for (int i = 1; i <= 20; ++i) diamond = vw::cat({diamond, vw::group(i, {i + 1, i + 1})});
     diamond = vw::cat({diamond, vw::shape(21, {{0, -1}})});
     expectError(vw::file(diamond), "the scene graph places more than 65536 models");
+    // The same ending in an empty group: nothing is placed, but the walk is bounded too.
+    vw::Bytes hollow = vw::cat({kModel, vw::transform(0, 1)});
+    for (int i = 1; i <= 40; ++i) hollow = vw::cat({hollow, vw::group(i, {i + 1, i + 1})});
+    hollow = vw::cat({hollow, vw::group(41, {})});
+    expectError(vw::file(hollow), "the scene graph visits more than 1048576 nodes");
 }
 
 TEST(VoxHostile, HugeTranslationsAreRefusedWithTheMemoryNeeded) {
