@@ -1,9 +1,13 @@
 #include "luxel/voxel/vox_scene.h"
 
 #include <algorithm>
+#include <bit>
+#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <numbers>
+#include <vector>
 
 #include "luxel/core/file_io.h"
 #include "luxel/voxel/texture_set.h"
@@ -15,6 +19,42 @@ constexpr int kDefaultWidth = 960, kDefaultHeight = 540;
 constexpr double kFovY = 40.0;
 constexpr double kElevation = 30.0, kAzimuth = 45.0;  // degrees
 
+// What a camera must see of a world: for every column of bricks holding solid voxels, the
+// corners of the box round its solid voxels (read from the occupancy masks, so it costs one
+// pass over the bricks). The whole world's corners when nothing is solid.
+std::vector<Vec3d> solidOutline(const VoxelWorld& world) {
+    const Int3 bricks = world.brickCount(), size = world.size();
+    constexpr int kSide = VoxelWorld::kBrickSide;
+    std::vector<Vec3d> points;
+    for (int bz = 0; bz < bricks.z; ++bz) {
+        for (int bx = 0; bx < bricks.x; ++bx) {
+            Int3 lo{INT32_MAX, INT32_MAX, INT32_MAX}, hi{-1, -1, -1};
+            for (int by = 0; by < bricks.y; ++by) {
+                for (std::uint64_t m = world.brickMask(bx, by, bz); m != 0; m &= m - 1) {
+                    const int bit = std::countr_zero(m);  // bit (z * 16 + y * 4 + x)
+                    const Int3 v{bx * kSide + (bit & 3), by * kSide + (bit >> 2 & 3),
+                                 bz * kSide + (bit >> 4 & 3)};
+                    lo = {std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z)};
+                    hi = {std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z)};
+                }
+            }
+            if (hi.x < 0) continue;
+            for (int corner = 0; corner < 8; ++corner) {
+                points.push_back({double(corner & 1 ? hi.x + 1 : lo.x),
+                                  double(corner & 2 ? hi.y + 1 : lo.y),
+                                  double(corner & 4 ? hi.z + 1 : lo.z)});
+            }
+        }
+    }
+    if (points.empty()) {
+        for (int corner = 0; corner < 8; ++corner) {
+            points.push_back({corner & 1 ? double(size.x) : 0.0, corner & 2 ? double(size.y) : 0.0,
+                              corner & 4 ? double(size.z) : 0.0});
+        }
+    }
+    return points;
+}
+
 VoxelScene sceneFrom(VoxImport import, const std::string& path, const VoxSceneOptions& options) {
     VoxelScene scene{};
     scene.sourcePath = path;
@@ -24,7 +64,7 @@ VoxelScene sceneFrom(VoxImport import, const std::string& path, const VoxSceneOp
     }
     const int w = options.width > 0 ? options.width : kDefaultWidth;
     const int h = options.height > 0 ? options.height : kDefaultHeight;
-    scene.camera = framingCamera(import.world.size(), w, h).value();
+    scene.camera = framingCamera(solidOutline(import.world), w, h).value();
     scene.world = std::move(import.world);
     scene.warnings = std::move(import.warnings);
     ShadeOptions& o = scene.shading;
@@ -52,18 +92,59 @@ bool hasVoxMagic(std::span<const std::uint8_t> bytes) {
 }
 
 Result<Camera> framingCamera(Int3 size, int width, int height) {
-    const Vec3d centre{size.x / 2.0, size.y / 2.0, size.z / 2.0};
-    const double radius = 0.5 * std::sqrt(double(size.x) * size.x + double(size.y) * size.y +
-                                          double(size.z) * size.z);
+    std::vector<Vec3d> corners;
+    for (int corner = 0; corner < 8; ++corner) {
+        corners.push_back({corner & 1 ? double(size.x) : 0.0, corner & 2 ? double(size.y) : 0.0,
+                           corner & 4 ? double(size.z) : 0.0});
+    }
+    return framingCamera(corners, width, height);
+}
+
+Result<Camera> framingCamera(const std::vector<Vec3d>& points, int width, int height) {
+    if (points.empty()) return Error("framing an empty set of points");
+    Vec3d lo = points.front(), hi = points.front();
+    for (const Vec3d& p : points) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z)};
+        hi = {std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z)};
+    }
+    const Vec3d centre = (lo + hi) * 0.5;
     const double toRad = std::numbers::pi / 180.0;
-    const double halfY = kFovY * toRad / 2;
-    const double halfX = std::atan(std::tan(halfY) * width / std::max(height, 1));
-    const double distance = 1.05 * radius / std::sin(std::min(halfX, halfY));
+    const double tanY = std::tan(kFovY * toRad / 2);
+    const double tanX = tanY * width / std::max(height, 1);
     const double el = kElevation * toRad, az = kAzimuth * toRad;
     const Vec3d toCamera{std::cos(el) * std::sin(az), std::sin(el), -std::cos(el) * std::cos(az)};
-    const Vec3d position{centre.x + distance * toCamera.x, centre.y + distance * toCamera.y,
-                         centre.z + distance * toCamera.z};
-    return Camera::lookAt(position, centre, kFovY, width, height);
+    // The view's axes do not depend on the distance: take them from a camera one voxel away.
+    Result<Camera> probe = Camera::lookAt(centre + toCamera, centre, kFovY, width, height);
+    if (!probe) return probe.error();
+    const Vec3d right = probe->right(), up = probe->up();
+    const auto dot = [](Vec3d a, Vec3d b) { return a.x * b.x + a.y * b.y + a.z * b.z; };
+    // The nearest distance D at which every point is inside the image: a point at offset p from
+    // the target is at depth D - p.toCamera and must satisfy |p.right| <= tanX * depth and
+    // |p.up| <= tanY * depth. Then the target moves across the view to centre the points'
+    // image, and the distance is found again (a dozen rounds settle it).
+    Vec3d target = centre;
+    double distance = 1.0;
+    for (int round = 0;; ++round) {
+        distance = 1.0;
+        for (const Vec3d& point : points) {
+            const Vec3d p = point - target;
+            const double along = dot(p, toCamera);
+            distance = std::max({distance, std::abs(dot(p, right)) / tanX + along,
+                                 std::abs(dot(p, up)) / tanY + along});
+        }
+        distance *= 1.08;  // a margin round the model
+        if (round == 12) break;
+        double uLo = 1e300, uHi = -1e300, vLo = 1e300, vHi = -1e300;
+        for (const Vec3d& point : points) {
+            const Vec3d p = point - target;
+            const double depth = distance - dot(p, toCamera);
+            uLo = std::min(uLo, dot(p, right) / depth), uHi = std::max(uHi, dot(p, right) / depth);
+            vLo = std::min(vLo, dot(p, up) / depth), vHi = std::max(vHi, dot(p, up) / depth);
+        }
+        target =
+            target + right * (0.5 * (uLo + uHi) * distance) + up * (0.5 * (vLo + vHi) * distance);
+    }
+    return Camera::lookAt(target + toCamera * distance, target, kFovY, width, height);
 }
 
 Status addVoxMaterials(VoxImport& import, TextureSet& textures, MaterialTable& table) {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "luxel/core/error.h"
 #include "luxel/voxel/vox_import.h"
@@ -25,9 +26,12 @@ Result<VoxelScene> voxSceneFromBytes(std::span<const std::uint8_t> bytes, const 
                                      const VoxSceneOptions& options = {});
 
 // A camera looking at the centre of a world of `worldSize` voxels from above (30 degrees) and the
-// front right (45 degrees: MagicaVoxel's front, vox -y, is luxel -z), far enough back that the
-// world's bounding sphere fits the narrower field of view.
+// front right (45 degrees: MagicaVoxel's front, vox -y, is luxel -z), as near as it can be with
+// every corner of the world inside the image (and a margin).
 Result<Camera> framingCamera(Int3 worldSize, int width, int height);
+// The same for a set of points that must all be seen, looking at the centre of their box (a
+// .vox scene frames the outline of the bricks that hold solid voxels).
+Result<Camera> framingCamera(const std::vector<Vec3d>& points, int width, int height);
 
 // Adds an import's materials to a scene's texture slots (after those it has: "material:vox N",
 // one white texel) and their materials to `table`, renumbering the world's material bytes to
