@@ -35,6 +35,8 @@ int main(int argc, char** argv) {
         luxel::cli::addOctreeCommand);
     add("shadows", "sun visibility by every shadow method against ray-traced truth",
         luxel::cli::addShadowsCommand);
+    add("convert", "write a voxel world (scene or .vox) as a MagicaVoxel .vox file",
+        luxel::cli::addConvertCommand);
 
     try {
         app.parse(argc, argv);

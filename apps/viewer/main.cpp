@@ -136,8 +136,12 @@ int runViewer(int argc, char** argv) {
         if (Status s = checkFrameMemory(internal, windowW, windowH); !s) {
             return fail(s.error().message());
         }
-        mode = std::make_unique<ModeVoxel>(std::move(*scene), internal.first, internal.second,
-                                           o.exposure, std::move(source));
+        for (const std::string& w : scene->warnings) {
+            std::fprintf(stderr, "luxel-view: warning: %s\n", w.c_str());
+        }
+        mode = std::make_unique<ModeVoxel>(
+            std::move(*scene), internal.first, internal.second, o.exposure, std::move(source),
+            o.savePath.empty() ? defaultVoxSavePath(o.scene) : o.savePath);
     } else if (file->kind() == scene::SceneKind::Octree) {
         scene::OctreeScene* scene = &file->octree();
         if (windowW == 0) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "luxel/voxel/camera.h"
 #include "voxel_controls.h"
@@ -29,8 +30,9 @@ Vec3d rightOf(const FlyCamera& c) {
 }  // namespace
 
 ModeVoxel::ModeVoxel(voxel::VoxelScene scene, int width, int height, float exposure,
-                     std::unique_ptr<VoxelFrameSource> source)
+                     std::unique_ptr<VoxelFrameSource> source, std::string savePath)
     : worldSize_(scene.world.size()),
+      saver_(scene.world, scene.shading.materials, std::move(savePath)),
       worker_(std::make_unique<RendererVoxel>(std::move(scene.world), std::move(source))) {
     const voxel::Camera& camera = scene.camera;
     const Vec3d f = camera.forward();
@@ -67,7 +69,15 @@ void ModeVoxel::move(Vec3d direction, double distance) {
     dirty_ = true;
 }
 
-void ModeVoxel::handleKey(SDL_Keycode key, bool shift) {
+void ModeVoxel::save() {
+    if (saver_.save()) {
+        std::printf("luxel-view: %s\n", saver_.status().c_str());
+    } else {
+        std::fprintf(stderr, "luxel-view: %s\n", saver_.status().c_str());
+    }
+}
+
+void ModeVoxel::handleKey(SDL_Keycode key, bool shift, bool ctrl) {
     // A tap moves one step, so scripted and single presses have a visible, repeatable effect;
     // holding the key keeps moving in update().
     const double step = shift ? 8.0 : 2.0;
@@ -78,6 +88,10 @@ void ModeVoxel::handleKey(SDL_Keycode key, bool shift) {
             move(forwardOf(c), step);
             break;
         case SDLK_s:
+            if (ctrl) {
+                save();
+                return;
+            }
             move(forwardOf(c), -step);
             break;
         case SDLK_d:
@@ -152,7 +166,8 @@ void ModeVoxel::handleEvent(const SDL_Event& event, const ViewRect& view) {
         case SDL_KEYDOWN:
             held_.insert(event.key.keysym.sym);
             if (!event.key.repeat)
-                handleKey(event.key.keysym.sym, (event.key.keysym.mod & KMOD_SHIFT) != 0);
+                handleKey(event.key.keysym.sym, (event.key.keysym.mod & KMOD_SHIFT) != 0,
+                          (event.key.keysym.mod & KMOD_CTRL) != 0);
             break;
         case SDL_KEYUP:
             held_.erase(event.key.keysym.sym);
@@ -181,6 +196,7 @@ void ModeVoxel::handleEvent(const SDL_Event& event, const ViewRect& view) {
                                static_cast<std::uint8_t>(editColour_[1] * 255.0f + 0.5f),
                                static_cast<std::uint8_t>(editColour_[2] * 255.0f + 0.5f), 255};
                 state_.edits.push_back(edit);
+                saver_.edit(edit);
                 dirty_ = true;
             }
             break;
@@ -206,7 +222,7 @@ void ModeVoxel::update(double seconds) {
     const FlyCamera& c = state_.camera;
     const double d = speed * std::min(seconds, 0.1);
     if (held_.count(SDLK_w)) move(forwardOf(c), d);
-    if (held_.count(SDLK_s)) move(forwardOf(c), -d);
+    if (held_.count(SDLK_s) && (SDL_GetModState() & KMOD_CTRL) == 0) move(forwardOf(c), -d);
     if (held_.count(SDLK_d)) move(rightOf(c), d);
     if (held_.count(SDLK_a)) move(rightOf(c), -d);
     if (held_.count(SDLK_e)) move({0, 1, 0}, d);
@@ -297,6 +313,10 @@ void ModeVoxel::drawPanel() {
     drawSurfacePanel();
     ImGui::ColorEdit3("new voxel colour", editColour_);
     ImGui::TextUnformatted("left click removes, Shift+left click adds");
+    if (ImGui::Button("Save .vox")) save();
+    ImGui::SameLine();
+    ImGui::TextUnformatted(saver_.status().empty() ? ("Ctrl+S: " + saver_.path()).c_str()
+                                                   : saver_.status().c_str());
 }
 
 }  // namespace luxel::viewer

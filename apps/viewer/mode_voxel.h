@@ -1,5 +1,6 @@
 // Voxel mode: fly camera (mouse look with the right button, WASD/QE), reflection count, shading
-// toggles, sun direction, and click-to-edit (left removes, Shift+left adds).
+// toggles, sun direction, click-to-edit (left removes, Shift+left adds) and saving the edited
+// world as .vox (Ctrl+S or the panel's button).
 #pragma once
 
 #include <set>
@@ -8,14 +9,15 @@
 #include "render_worker.h"
 #include "renderer_voxel.h"
 #include "viewer_mode.h"
+#include "voxel_controls.h"
 
 namespace luxel::viewer {
 
 class ModeVoxel : public ViewerMode {
   public:
-    // `width` x `height`: internal resolution.
+    // `width` x `height`: internal resolution; `savePath`: where Ctrl+S writes the world.
     ModeVoxel(voxel::VoxelScene scene, int width, int height, float exposure,
-              std::unique_ptr<VoxelFrameSource> source);
+              std::unique_ptr<VoxelFrameSource> source, std::string savePath);
 
     void handleEvent(const SDL_Event& event, const ViewRect& view) override;
     void update(double seconds) override;
@@ -33,7 +35,8 @@ class ModeVoxel : public ViewerMode {
     std::string name() const override { return "voxel"; }
 
   private:
-    void handleKey(SDL_Keycode key, bool shift);
+    void handleKey(SDL_Keycode key, bool shift, bool ctrl);
+    void save();
     void move(Vec3d direction, double distance);
     void setSun(double azimuthDegrees, double elevationDegrees);
     void drawSurfacePanel();  // lighting, shadows, surfaces, bloom, upscaling
@@ -46,6 +49,7 @@ class ModeVoxel : public ViewerMode {
     bool looking_ = false;
     std::uint64_t generation_ = 0;
     bool dirty_ = true;
+    VoxelSaver saver_;  // before worker_: it copies the world the worker takes
     RenderWorker<RendererVoxel> worker_;
 };
 

@@ -39,7 +39,8 @@ Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
     app.add_option("--record", o.recordFrames, "write the next N rendered frames as PNG")
         ->check(CLI::Range(1, 1000000));
     app.add_option("--record-dir", o.recordDir, "folder for --record frames");
-    app.add_option("--save", o.savePath, "where paint mode saves the scene (Ctrl+S)");
+    app.add_option("--save", o.savePath,
+                   "where Ctrl+S saves: the painted 2D scene, the voxel world (.vox)");
     app.add_option("--target-fps", o.targetFps,
                    "without --internal-size/--internal-scale, the internal size adapts to keep "
                    "this frame rate (0: fixed)")

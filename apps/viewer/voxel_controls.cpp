@@ -1,8 +1,11 @@
-// Toggles and cycles of the voxel surface, shadow and post options.
+// Toggles and cycles of the voxel surface, shadow and post options; saving the edited world.
 #include "voxel_controls.h"
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+
+#include "luxel/voxel/vox_import.h"
 
 namespace luxel::viewer {
 namespace {
@@ -76,6 +79,29 @@ std::string upscalingLabel(const VoxelState& state) {
     std::snprintf(text, sizeof text, "%s %.2f",
                   state.temporal ? "temporal" : post::upscalerName(p.upscaler), p.internalScale);
     return text;
+}
+
+VoxelSaver::VoxelSaver(voxel::VoxelWorld world, voxel::MaterialTable materials, std::string path)
+    : world_(std::move(world)), materials_(std::move(materials)), path_(std::move(path)) {}
+
+void VoxelSaver::edit(const VoxelEdit& e) {
+    applyVoxelEdit(world_, e);
+}
+
+bool VoxelSaver::save() {
+    auto written = voxel::writeVox(world_, path_, &materials_);
+    if (!written) {
+        status_ = "save failed: " + written.error().message();
+        return false;
+    }
+    status_ = "saved " + std::to_string(world_.solidCount()) + " voxels to " + path_;
+    if (!written->empty()) status_ += " (" + written->front() + ")";
+    return true;
+}
+
+std::string defaultVoxSavePath(const std::string& scenePath) {
+    const std::filesystem::path p(scenePath);
+    return (p.parent_path() / (p.stem().string() + ".edited.vox")).string();
 }
 
 }  // namespace luxel::viewer

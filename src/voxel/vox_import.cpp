@@ -1,43 +1,32 @@
-// MagicaVoxel .vox reader and writer (format: ephtracy/voxel-model,
-// MagicaVoxel-file-format-vox.txt). Every size and offset is checked against the bytes that are
-// actually there before it is used; nothing is allocated from an unchecked number.
+// MagicaVoxel .vox reader: chunks (vox_chunks.h), the scene graph (vox_scene_graph.h) and
+// materials (vox_materials.h) composed into one world. Every size and offset is checked against
+// the bytes that are actually there before it is used; nothing is allocated from an unchecked
+// number.
 #include "luxel/voxel/vox_import.h"
 
 #include <algorithm>
-#include <cstring>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <string_view>
-#include <unordered_map>
+#include <map>
 
 #include "luxel/core/file_io.h"
+#include "luxel/core/memory.h"
+#include "luxel/voxel/texture_set.h"
+#include "voxel/vox_chunks.h"
+#include "voxel/vox_materials.h"
+#include "voxel/vox_scene_graph.h"
 
 namespace luxel::voxel {
 namespace {
 
-constexpr int kMaxVoxModelSide = 256;  // coordinates in XYZI are single bytes
+using namespace vox;
 
-std::int32_t readI32(std::span<const std::uint8_t> b, std::size_t at) {
-    const std::uint32_t u = static_cast<std::uint32_t>(b[at]) |
-                            (static_cast<std::uint32_t>(b[at + 1]) << 8) |
-                            (static_cast<std::uint32_t>(b[at + 2]) << 16) |
-                            (static_cast<std::uint32_t>(b[at + 3]) << 24);
-    return static_cast<std::int32_t>(u);
-}
+// A failure about the file as a whole (no byte offset in the message).
+constexpr std::size_t kNoOffset = static_cast<std::size_t>(-1);
 
-// A chunk id for messages: printable characters kept, anything else as '?'.
-std::string chunkId(std::span<const std::uint8_t> b, std::size_t at) {
-    std::string id(4, '?');
-    for (int i = 0; i < 4; ++i) {
-        const std::uint8_t c = b[at + i];
-        if (c >= 32 && c < 127) id[i] = static_cast<char>(c);
-    }
-    return id;
-}
-
-bool idIs(std::span<const std::uint8_t> b, std::size_t at, const char* id) {
-    return std::memcmp(b.data() + at, id, 4) == 0;
-}
+// Most voxel writes one file may cause (instancing multiplies a model's voxels).
+constexpr std::uint64_t kMaxPlacedVoxels = std::uint64_t{1} << 30;
 
 struct Model {
     Int3 size;               // in vox axes (z up)
@@ -45,197 +34,277 @@ struct Model {
     std::int32_t count = 0;  // number of voxel records
 };
 
-class Parser {
+// What the chunks that luxel does not use were for, for the warning.
+const char* ignoredChunkMeaning(const std::string& id) {
+    if (id == "rOBJ") return "render settings";
+    if (id == "rCAM") return "cameras; luxel frames the model itself";
+    if (id == "NOTE") return "palette notes";
+    if (id == "IMAP") return "palette display order";
+    if (id == "MATT") return "old-style materials";
+    return nullptr;
+}
+
+class Reader {
   public:
-    Parser(std::span<const std::uint8_t> bytes, const std::string& name) : b_(bytes), name_(name) {}
+    Reader(Bytes bytes, const std::string& name, const VoxOptions& options)
+        : b_(bytes), name_(name), options_(options) {}
 
-    Error fail(std::size_t at, const std::string& message) const {
-        return Error(name_ + ": byte " + std::to_string(at) + ": " + message);
-    }
-
-    Result<VoxelWorld> parse(int chunkSize) {
-        const std::size_t n = b_.size();
-        if (n < 8) {
-            return fail(
-                0, "file is truncated: " + std::to_string(n) + " bytes, a .vox header needs 8");
-        }
-        if (!idIs(b_, 0, "VOX ")) return fail(0, "not a MagicaVoxel file: no \"VOX \" magic");
-        const std::int32_t version = readI32(b_, 4);
-        if (version != 150 && version != 200) {
-            return fail(4, "unsupported .vox version " + std::to_string(version) +
-                               " (expected 150 or 200)");
-        }
-        if (n - 8 < 12) return fail(8, "file is truncated: no MAIN chunk header");
-        if (!idIs(b_, 8, "MAIN")) {
-            return fail(8, "expected the MAIN chunk, found '" + chunkId(b_, 8) + "'");
-        }
-        std::size_t contentSize = 0, childrenSize = 0;
-        if (Status s = chunkSizes(8, n, contentSize, childrenSize); !s) return s.error();
-        const std::size_t end = 20 + contentSize + childrenSize;
+    VoxImport read() {
         palette_ = defaultVoxPalette();
-
-        bool pendingSize = false;
-        std::size_t pendingAt = 0;
-        Int3 pending;
-        for (std::size_t at = 20 + contentSize; at < end;) {
-            if (end - at < 12) {
-                return fail(at, "truncated chunk header: " + std::to_string(end - at) +
-                                    " bytes left in MAIN, a chunk header needs 12");
-            }
-            std::size_t size = 0, children = 0;
-            if (Status s = chunkSizes(at, end, size, children); !s) return s.error();
-            const std::size_t content = at + 12;
-            if (idIs(b_, at, "SIZE")) {
-                if (pendingSize) {
-                    return fail(pendingAt, "SIZE chunk is not followed by an XYZI chunk");
-                }
-                if (size < 12) return tooSmall(at, "SIZE", size, 12);
-                const char* axis[3] = {"x", "y", "z"};
-                for (int a = 0; a < 3; ++a) {
-                    pending[a] = readI32(b_, content + 4 * a);
-                    if (pending[a] < 1 || pending[a] > kMaxVoxModelSide) {
-                        return fail(content + 4 * a, "SIZE " + std::string(axis[a]) + " = " +
-                                                         std::to_string(pending[a]) +
-                                                         " is invalid: each side must be in 1.." +
-                                                         std::to_string(kMaxVoxModelSide));
-                    }
-                }
-                pendingSize = true;
-                pendingAt = at;
-            } else if (idIs(b_, at, "XYZI")) {
-                if (!pendingSize) return fail(at, "XYZI chunk without a preceding SIZE chunk");
-                if (size < 4) return tooSmall(at, "XYZI", size, 4);
-                const std::int32_t count = readI32(b_, content);
-                if (count < 0) {
-                    return fail(content, "XYZI chunk claims a negative number of voxels (" +
-                                             std::to_string(count) + ")");
-                }
-                if (static_cast<std::uint64_t>(count) * 4 > size - 4) {
-                    return fail(content, "XYZI chunk claims " + std::to_string(count) +
-                                             " voxels but holds " + std::to_string(size - 4) +
-                                             " bytes");
-                }
-                for (std::int32_t i = 0; i < count; ++i) {
-                    const std::size_t v = content + 4 + 4 * static_cast<std::size_t>(i);
-                    if (b_[v] >= pending.x || b_[v + 1] >= pending.y || b_[v + 2] >= pending.z) {
-                        return fail(
-                            v, "voxel " + std::to_string(i) + " at (" + std::to_string(b_[v]) +
-                                   ", " + std::to_string(b_[v + 1]) + ", " +
-                                   std::to_string(b_[v + 2]) + ") is outside the model size " +
-                                   std::to_string(pending.x) + "x" + std::to_string(pending.y) +
-                                   "x" + std::to_string(pending.z));
-                    }
-                }
-                models_.push_back({pending, content + 4, count});
-                pendingSize = false;
-            } else if (idIs(b_, at, "RGBA")) {
-                if (size < 1024) return tooSmall(at, "RGBA", size, 1024);
-                // Entry i of the chunk is colour index i + 1 (index 0 means empty).
-                for (int i = 0; i < 255; ++i) {
-                    const std::size_t p = content + 4 * static_cast<std::size_t>(i);
-                    palette_[i + 1] = {b_[p], b_[p + 1], b_[p + 2], b_[p + 3]};
-                }
-            } else if (idIs(b_, at, "PACK")) {
-                if (size < 4) return tooSmall(at, "PACK", size, 4);
-                const std::int32_t models = readI32(b_, content);
-                if (models < 1) {
-                    return fail(content, "PACK chunk claims " + std::to_string(models) + " models");
-                }
-            }
-            // Anything else (nTRN, nGRP, nSHP, MATL, LAYR, rOBJ, rCAM, IMAP, NOTE, ...) is skipped.
-            at = content + size + children;
+        for (const Chunk& c : readChunks(b_)) readChunk(c);
+        if (pendingSize_) {
+            throw VoxFailure{pendingAt_, "SIZE chunk is not followed by an XYZI chunk"};
         }
-        if (pendingSize) return fail(pendingAt, "SIZE chunk is not followed by an XYZI chunk");
-        if (models_.empty()) return fail(8, "no model: the file has no SIZE and XYZI chunks");
-        return build(chunkSize);
+        if (models_.empty()) throw VoxFailure{8, "no model: the file has no SIZE and XYZI chunks"};
+        return build();
     }
 
   private:
-    // Reads the content and children sizes of the chunk at `at`; both must fit before `end`.
-    Status chunkSizes(std::size_t at, std::size_t end, std::size_t& content,
-                      std::size_t& children) const {
-        const std::string id = chunkId(b_, at);
-        const std::int32_t n = readI32(b_, at + 4), m = readI32(b_, at + 8);
-        if (n < 0) {
-            return fail(at + 4,
-                        id + " chunk has a negative content size (" + std::to_string(n) + ")");
+    void readChunk(const Chunk& c) {
+        const std::size_t content = c.content;
+        if (c.id == "SIZE") {
+            if (pendingSize_)
+                throw VoxFailure{pendingAt_, "SIZE chunk is not followed by an XYZI chunk"};
+            if (c.size < 12) tooSmall(c, 12);
+            const char* axis[3] = {"x", "y", "z"};
+            for (int a = 0; a < 3; ++a) {
+                pending_[a] = readI32(b_, content + 4 * a);
+                if (pending_[a] < 1 || pending_[a] > kMaxVoxModelSide) {
+                    throw VoxFailure{content + 4 * a, "SIZE " + std::string(axis[a]) + " = " +
+                                                          std::to_string(pending_[a]) +
+                                                          " is invalid: each side must be in 1.." +
+                                                          std::to_string(kMaxVoxModelSide)};
+                }
+            }
+            pendingSize_ = true;
+            pendingAt_ = c.at;
+        } else if (c.id == "XYZI") {
+            readVoxels(c);
+        } else if (c.id == "RGBA") {
+            if (c.size < 1024) tooSmall(c, 1024);
+            // Entry i of the chunk is colour index i + 1 (index 0 means empty).
+            for (int i = 0; i < 255; ++i) {
+                const std::size_t p = content + 4 * static_cast<std::size_t>(i);
+                palette_[i + 1] = {b_[p], b_[p + 1], b_[p + 2], b_[p + 3]};
+            }
+        } else if (c.id == "PACK") {
+            if (c.size < 4) tooSmall(c, 4);
+            const std::int32_t models = readI32(b_, content);
+            if (models < 1) {
+                throw VoxFailure{content,
+                                 "PACK chunk claims " + std::to_string(models) + " models"};
+            }
+        } else if (c.id == "nTRN") {
+            graph_.addTransform(b_, c);
+        } else if (c.id == "nGRP") {
+            graph_.addGroup(b_, c);
+        } else if (c.id == "nSHP") {
+            graph_.addShape(b_, c);
+        } else if (c.id == "LAYR") {
+            graph_.addLayer(b_, c);
+        } else if (c.id == "MATL") {
+            FieldReader r(b_, c);
+            const int id = r.i32("material id");
+            Dict d = r.dict("material properties");
+            if (id >= 1 && id <= 255) {
+                matl_[id] = std::move(d);
+            } else if (id != 0) {  // MagicaVoxel writes a material 0 for the empty index
+                warn("MATL " + std::to_string(id) + " at byte " + std::to_string(c.at) +
+                     ": not a colour index (1..255); ignored");
+            }
+        } else {
+            ignoredChunk(c);
         }
-        if (m < 0) {
-            return fail(at + 8,
-                        id + " chunk has a negative children size (" + std::to_string(m) + ")");
-        }
-        const std::uint64_t left = end - (at + 12);
-        const std::uint64_t claimed = static_cast<std::uint64_t>(n) + static_cast<std::uint64_t>(m);
-        if (claimed > left) {
-            return fail(at + 4, id + " chunk claims " + std::to_string(claimed) +
-                                    " bytes but only " + std::to_string(left) + " remain");
-        }
-        content = static_cast<std::size_t>(n);
-        children = static_cast<std::size_t>(m);
-        return Ok{};
     }
 
-    Error tooSmall(std::size_t at, const char* id, std::size_t size, int needed) const {
-        return fail(at + 4, std::string(id) + " chunk holds " + std::to_string(size) +
-                                " bytes, needs at least " + std::to_string(needed));
+    void ignoredChunk(const Chunk& c) {
+        if (std::find(ignoredIds_.begin(), ignoredIds_.end(), c.id) != ignoredIds_.end()) return;
+        ignoredIds_.push_back(c.id);
+        if (const char* meaning = ignoredChunkMeaning(c.id)) {
+            warn("chunk " + c.id + " (" + meaning + ") ignored");
+        } else {
+            warn("unknown chunk '" + c.id + "' at byte " + std::to_string(c.at) + " ignored");
+        }
     }
 
-    Result<VoxelWorld> build(int chunkSize) {
-        // Models side by side along luxel x; vox z (up) is luxel y, vox y is luxel z.
-        std::int64_t width = 0;
-        int height = 1, depth = 1;
-        for (const Model& m : models_) {
-            width += m.size.x;
-            height = std::max(height, m.size.z);
-            depth = std::max(depth, m.size.y);
-            if (width > kMaxWorldSide) {
-                return fail(8, "the " + std::to_string(models_.size()) +
-                                   "+ models side by side are wider than " +
-                                   std::to_string(kMaxWorldSide) + " voxels");
+    void readVoxels(const Chunk& c) {
+        if (!pendingSize_) throw VoxFailure{c.at, "XYZI chunk without a preceding SIZE chunk"};
+        if (c.size < 4) tooSmall(c, 4);
+        const std::int32_t count = readI32(b_, c.content);
+        if (count < 0) {
+            throw VoxFailure{c.content, "XYZI chunk claims a negative number of voxels (" +
+                                            std::to_string(count) + ")"};
+        }
+        if (static_cast<std::uint64_t>(count) * 4 > c.size - 4) {
+            throw VoxFailure{c.content, "XYZI chunk claims " + std::to_string(count) +
+                                            " voxels but holds " + std::to_string(c.size - 4) +
+                                            " bytes"};
+        }
+        const Int3 s = pending_;
+        for (std::int32_t i = 0; i < count; ++i) {
+            const std::size_t v = c.content + 4 + 4 * static_cast<std::size_t>(i);
+            if (b_[v] >= s.x || b_[v + 1] >= s.y || b_[v + 2] >= s.z) {
+                throw VoxFailure{v, "voxel " + std::to_string(i) + " at (" + std::to_string(b_[v]) +
+                                        ", " + std::to_string(b_[v + 1]) + ", " +
+                                        std::to_string(b_[v + 2]) + ") is outside the model size " +
+                                        std::to_string(s.x) + "x" + std::to_string(s.y) + "x" +
+                                        std::to_string(s.z)};
             }
         }
-        Result<VoxelWorld> created =
-            VoxelWorld::create({static_cast<int>(width), height, depth}, chunkSize);
-        if (!created) return Error(name_ + ": " + created.error().message());
-        VoxelWorld world = std::move(created).value();
-        int offset = 0;
-        for (const Model& m : models_) {
+        models_.push_back({s, c.content + 4, count});
+        pendingSize_ = false;
+    }
+
+    [[noreturn]] void tooSmall(const Chunk& c, int needed) const {
+        throw VoxFailure{c.at + 4, c.id + " chunk holds " + std::to_string(c.size) +
+                                       " bytes, needs at least " + std::to_string(needed)};
+    }
+
+    void warn(const std::string& message) { warnings_.push_back(name_ + ": " + message); }
+
+    // Where the models go: the scene graph's placements, or (without one) the models side by side.
+    std::vector<Placement> placements() {
+        const int modelCount = static_cast<int>(models_.size());
+        if (!graph_.empty()) return graph_.place(options_.frame, modelCount);
+        std::vector<Placement> out;
+        std::int64_t x = 0;
+        for (int m = 0; m < modelCount; ++m) {
+            const Int3 s = models_[m].size;
+            Placement p{m, {}};
+            p.transform.translation = {x + s.x / 2, s.y / 2, s.z / 2};
+            out.push_back(p);
+            x += s.x;
+        }
+        if (modelCount > 1) {
+            warn(std::to_string(modelCount) +
+                 " models and no scene graph (nTRN/nGRP/nSHP): laid side by side along x");
+        }
+        return out;
+    }
+
+    void frameWarnings() {
+        const int frames = graph_.frameCount();
+        if (frames <= 1 && options_.frame > 0) {
+            warn("frame " + std::to_string(options_.frame) +
+                 " asked for, but the file has no animation; showing its only frame");
+        } else if (options_.frame >= frames) {
+            warn("frame " + std::to_string(options_.frame) + " is past the last keyframe (" +
+                 std::to_string(frames - 1) + "); the last keyframes hold");
+        }
+    }
+
+    // The cell that voxel v of a placed model lands on (MagicaVoxel's pivot: floor(size / 2)).
+    static Int3L cellOf(const Placement& p, const Int3& size, Int3L v) {
+        for (int a = 0; a < 3; ++a) v[a] -= size[a] / 2;
+        const Int3L r = p.transform.rotation.apply(v);
+        return {r[0] + p.transform.translation[0], r[1] + p.transform.translation[1],
+                r[2] + p.transform.translation[2]};
+    }
+
+    VoxImport build() {
+        frameWarnings();
+        const std::vector<Placement> placed = placements();
+        // Colour use and the bounds of the placed models.
+        std::array<std::uint64_t, 256> used{};
+        Int3L lo{INT64_MAX, INT64_MAX, INT64_MAX}, hi{INT64_MIN, INT64_MIN, INT64_MIN};
+        std::uint64_t writes = 0;
+        for (const Placement& p : placed) {
+            const Model& m = models_[p.model];
+            for (int corner = 0; corner < 8; ++corner) {
+                const Int3L v{corner & 1 ? m.size.x - 1 : 0, corner & 2 ? m.size.y - 1 : 0,
+                              corner & 4 ? m.size.z - 1 : 0};
+                const Int3L c = cellOf(p, m.size, v);
+                for (int a = 0; a < 3; ++a) {
+                    lo[a] = std::min(lo[a], c[a]);
+                    hi[a] = std::max(hi[a], c[a] + 1);
+                }
+            }
+            writes += static_cast<std::uint64_t>(m.count);
+            if (writes > kMaxPlacedVoxels) {
+                throw VoxFailure{8, "the scene graph places more than " +
+                                        std::to_string(kMaxPlacedVoxels) + " voxels"};
+            }
+            for (std::int32_t i = 0; i < m.count; ++i)
+                ++used[b_[m.voxelsAt + 4 * std::size_t(i) + 3]];
+        }
+        if (placed.empty()) {
+            warn("every model is hidden; the world is empty");
+            lo = {0, 0, 0};
+            hi = {1, 1, 1};
+        }
+        FeatureWarnings features;
+        PaletteMapping mapping = mapPalette(palette_, matl_, used, features);
+        std::vector<std::string> lines;
+        features.lines(lines);
+        for (const std::string& line : lines) warn(line);
+
+        const Int3L span{hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]};
+        checkSpan(span, lo);
+        // vox (x, y, z) -> luxel (x, z, y)
+        const Int3 size{int(span[0]), int(span[2]), int(span[1])};
+        Result<VoxelWorld> created = VoxelWorld::create(size, options_.chunkSize);
+        if (!created) throw VoxFailure{kNoOffset, created.error().message()};
+        VoxImport out{std::move(created).value(), {}, {}, 1, 0, 0, {0, 0, 0}};
+        for (const Placement& p : placed) {
+            const Model& m = models_[p.model];
             for (std::int32_t i = 0; i < m.count; ++i) {
                 const std::size_t v = m.voxelsAt + 4 * static_cast<std::size_t>(i);
                 const std::uint8_t index = b_[v + 3];
-                if (index == 0) continue;
+                const int slot = mapping.slot[index];
+                if (index == 0 || slot == PaletteMapping::kSkip) continue;
                 Voxel c = palette_[index];
-                c.a = 255;  // a listed voxel is a solid plain block (alpha 1..254 are textures)
-                world.set(offset + b_[v], b_[v + 2], b_[v + 1], c);
+                c.a = slot >= 0 && options_.materials ? alphaForSlot(slot) : kPlainBlockAlpha;
+                const Int3L cell = cellOf(p, m.size, {b_[v], b_[v + 1], b_[v + 2]});
+                out.world.set(int(cell[0] - lo[0]), int(cell[2] - lo[2]), int(cell[1] - lo[1]), c);
             }
-            offset += m.size.x;
         }
-        world.refreshEmptySpace();
-        return world;
+        out.world.refreshEmptySpace();
+        if (options_.materials) out.materials = std::move(mapping.materials);
+        out.warnings = std::move(warnings_);
+        out.frameCount = graph_.frameCount();
+        out.modelCount = static_cast<int>(models_.size());
+        out.placedCount = static_cast<int>(placed.size());
+        out.voxOrigin = lo;
+        return out;
     }
 
-    std::span<const std::uint8_t> b_;
+    // Refuses placements that no world can hold, with the size and the memory it would need.
+    void checkSpan(const Int3L& span, const Int3L& lo) const {
+        if (span[0] <= kMaxWorldSide && span[1] <= kMaxWorldSide && span[2] <= kMaxWorldSide) {
+            const std::uint64_t bytes = VoxelWorld::bytesFor(
+                {int(span[0]), int(span[2]), int(span[1])}, options_.chunkSize);
+            if (options_.maxWorldBytes == 0 || bytes <= options_.maxWorldBytes) return;
+            throw VoxFailure{kNoOffset, "the placed models span " + std::to_string(span[0]) + "x" +
+                                            std::to_string(span[1]) + "x" +
+                                            std::to_string(span[2]) + " voxels, a world of " +
+                                            formatBytes(bytes) + "; the limit here is " +
+                                            formatBytes(options_.maxWorldBytes)};
+        }
+        // A dense world of that span: 4 bytes a voxel (VoxelWorld::bytesFor adds a little).
+        const double bytes = double(span[0]) * double(span[1]) * double(span[2]) * sizeof(Voxel);
+        const std::string need = bytes < 1.8e19 ? formatBytes(static_cast<std::uint64_t>(bytes))
+                                                : std::string("more than 16 EiB");
+        throw VoxFailure{8, "the placed models span " + std::to_string(span[0]) + "x" +
+                                std::to_string(span[1]) + "x" + std::to_string(span[2]) +
+                                " voxels (vox axes, from (" + std::to_string(lo[0]) + ", " +
+                                std::to_string(lo[1]) + ", " + std::to_string(lo[2]) +
+                                ")): a world is at most " + std::to_string(kMaxWorldSide) +
+                                " per side, and this one would need " + need};
+    }
+
+    Bytes b_;
     const std::string& name_;
+    VoxOptions options_;
     std::array<Voxel, 256> palette_{};
     std::vector<Model> models_;
+    bool pendingSize_ = false;
+    std::size_t pendingAt_ = 0;
+    Int3 pending_;
+    SceneGraph graph_;
+    std::map<int, Dict> matl_;
+    std::vector<std::string> ignoredIds_;
+    std::vector<std::string> warnings_;
 };
-
-std::uint32_t pack(Voxel v) {
-    return static_cast<std::uint32_t>(v.r) | (static_cast<std::uint32_t>(v.g) << 8) |
-           (static_cast<std::uint32_t>(v.b) << 16) | (static_cast<std::uint32_t>(v.a) << 24);
-}
-Voxel unpack(std::uint32_t c) {
-    return {static_cast<std::uint8_t>(c), static_cast<std::uint8_t>(c >> 8),
-            static_cast<std::uint8_t>(c >> 16), static_cast<std::uint8_t>(c >> 24)};
-}
-
-void putI32(std::vector<std::uint8_t>& out, std::int64_t v) {
-    const auto u = static_cast<std::uint32_t>(v);
-    for (int i = 0; i < 4; ++i) out.push_back(static_cast<std::uint8_t>(u >> (8 * i)));
-}
-void putId(std::vector<std::uint8_t>& out, const char* id) {
-    out.insert(out.end(), id, id + 4);
-}
 
 }  // namespace
 
@@ -271,16 +340,21 @@ const std::array<Voxel, 256>& defaultVoxPalette() {
     return palette;
 }
 
-Result<VoxelWorld> parseVox(std::span<const std::uint8_t> bytes, const std::string& name,
-                            int chunkSize) {
+Result<VoxImport> readVox(std::span<const std::uint8_t> bytes, const std::string& name,
+                          const VoxOptions& options) {
     if (bytes.size() > kMaxVoxFileBytes) {
         return Error(name + ": " + std::to_string(bytes.size()) +
                      " bytes is larger than the 256 MiB limit for .vox files");
     }
-    return Parser(bytes, name).parse(chunkSize);
+    try {
+        return Reader(bytes, name, options).read();
+    } catch (const VoxFailure& f) {
+        if (f.at == kNoOffset) return Error(name + ": " + f.message);
+        return Error(name + ": byte " + std::to_string(f.at) + ": " + f.message);
+    }
 }
 
-Result<VoxelWorld> loadVox(const std::string& path, int chunkSize) {
+Result<VoxImport> readVoxFile(const std::string& path, const VoxOptions& options) {
     std::error_code ec;
     const std::uintmax_t size = std::filesystem::file_size(path, ec);
     if (ec) return Error(path + ": cannot read: " + ec.message());
@@ -288,109 +362,23 @@ Result<VoxelWorld> loadVox(const std::string& path, int chunkSize) {
         return Error(path + ": " + std::to_string(size) +
                      " bytes is larger than the 256 MiB limit for .vox files");
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error(path + ": cannot open for reading");
-    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
-    in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size));
-    if (static_cast<std::uintmax_t>(in.gcount()) != size) {
-        return Error(path + ": read " + std::to_string(in.gcount()) + " of " +
-                     std::to_string(size) + " bytes");
-    }
-    return parseVox(bytes, path, chunkSize);
+    Result<std::string> bytes = readFileBytes(path, ".vox file", kMaxVoxFileBytes);
+    if (!bytes) return bytes.error();
+    return readVox(std::span(reinterpret_cast<const std::uint8_t*>(bytes->data()), bytes->size()),
+                   path, options);
 }
 
-Result<std::vector<std::uint8_t>> encodeVox(const VoxelWorld& world) {
-    const Int3 s = world.size();
-    if (s.x > kMaxVoxModelSide || s.y > kMaxVoxModelSide || s.z > kMaxVoxModelSide) {
-        return Error("a " + std::to_string(s.x) + "x" + std::to_string(s.y) + "x" +
-                     std::to_string(s.z) + " world does not fit one .vox model (at most " +
-                     std::to_string(kMaxVoxModelSide) + " per side)");
-    }
-    // Colour histogram of the solid voxels.
-    std::unordered_map<std::uint32_t, std::uint64_t> histogram;
-    for (int z = 0; z < s.z; ++z) {
-        for (int y = 0; y < s.y; ++y) {
-            for (int x = 0; x < s.x; ++x) {
-                const Voxel v = world.get(x, y, z);
-                if (v.solid()) ++histogram[pack(v)];
-            }
-        }
-    }
-    std::vector<std::pair<std::uint32_t, std::uint64_t>> colours(histogram.begin(),
-                                                                 histogram.end());
-    // Most frequent first; ties by value so the output is deterministic.
-    std::sort(colours.begin(), colours.end(), [](const auto& a, const auto& b) {
-        return a.second != b.second ? a.second > b.second : a.first < b.first;
-    });
-    const std::size_t kept = std::min<std::size_t>(colours.size(), 255);
-    std::unordered_map<std::uint32_t, std::uint8_t> indexOf;
-    for (std::size_t i = 0; i < kept; ++i) {
-        indexOf[colours[i].first] = static_cast<std::uint8_t>(i + 1);
-    }
-    for (std::size_t i = kept; i < colours.size(); ++i) {
-        const Voxel c = unpack(colours[i].first);
-        int best = 0;
-        std::int64_t bestDistance = INT64_MAX;
-        for (std::size_t k = 0; k < kept; ++k) {
-            const Voxel p = unpack(colours[k].first);
-            const std::int64_t dr = c.r - p.r, dg = c.g - p.g, db = c.b - p.b, da = c.a - p.a;
-            const std::int64_t distance = dr * dr + dg * dg + db * db + da * da;
-            if (distance < bestDistance) {
-                bestDistance = distance;
-                best = static_cast<int>(k);
-            }
-        }
-        indexOf[colours[i].first] = static_cast<std::uint8_t>(best + 1);
-    }
-
-    const std::uint64_t count = world.solidCount();
-    const std::uint64_t xyziBytes = 4 + 4 * count;
-    const std::uint64_t children = (12 + 12) + (12 + xyziBytes) + (12 + 1024);
-    std::vector<std::uint8_t> out;
-    out.reserve(static_cast<std::size_t>(20 + children));
-    putId(out, "VOX ");
-    putI32(out, 150);
-    putId(out, "MAIN");
-    putI32(out, 0);
-    putI32(out, static_cast<std::int64_t>(children));
-    putId(out, "SIZE");
-    putI32(out, 12);
-    putI32(out, 0);
-    putI32(out, s.x);  // vox x, y, z = luxel x, z, y (vox is z-up)
-    putI32(out, s.z);
-    putI32(out, s.y);
-    putId(out, "XYZI");
-    putI32(out, static_cast<std::int64_t>(xyziBytes));
-    putI32(out, 0);
-    putI32(out, static_cast<std::int64_t>(count));
-    for (int z = 0; z < s.z; ++z) {
-        for (int y = 0; y < s.y; ++y) {
-            for (int x = 0; x < s.x; ++x) {
-                const Voxel v = world.get(x, y, z);
-                if (!v.solid()) continue;
-                out.push_back(static_cast<std::uint8_t>(x));
-                out.push_back(static_cast<std::uint8_t>(z));
-                out.push_back(static_cast<std::uint8_t>(y));
-                out.push_back(indexOf[pack(v)]);
-            }
-        }
-    }
-    putId(out, "RGBA");
-    putI32(out, 1024);
-    putI32(out, 0);
-    for (int i = 0; i < 256; ++i) {
-        const Voxel c = i < static_cast<int>(kept) ? unpack(colours[i].first) : Voxel{};
-        out.insert(out.end(), {c.r, c.g, c.b, c.a});
-    }
-    return out;
+Result<VoxelWorld> parseVox(std::span<const std::uint8_t> bytes, const std::string& name,
+                            int chunkSize) {
+    Result<VoxImport> r = readVox(bytes, name, {chunkSize, 0, false});
+    if (!r) return r.error();
+    return std::move(r->world);
 }
 
-Status saveVox(const VoxelWorld& world, const std::string& path) {
-    Result<std::vector<std::uint8_t>> bytes = encodeVox(world);
-    if (!bytes) return Error(path + ": " + bytes.error().message());
-    return writeFileAtomically(
-        path, std::string_view(reinterpret_cast<const char*>(bytes->data()), bytes->size()),
-        "vox file");
+Result<VoxelWorld> loadVox(const std::string& path, int chunkSize) {
+    Result<VoxImport> r = readVoxFile(path, {chunkSize, 0, false});
+    if (!r) return r.error();
+    return std::move(r->world);
 }
 
 }  // namespace luxel::voxel

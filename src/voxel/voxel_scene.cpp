@@ -12,6 +12,7 @@
 #include "luxel/core/file_io.h"
 #include "luxel/voxel/generators.h"
 #include "luxel/voxel/vox_import.h"
+#include "luxel/voxel/vox_scene.h"
 #include "post/post_json.h"
 #include "voxel/material_scene.h"
 #include "voxel/shadows/shadow_json.h"
@@ -152,14 +153,35 @@ void textureByColour(const Json& list, VoxelWorld& world, const TextureSet& text
     }
 }
 
+// A "vox" source: the file's world, its materials and warnings given to the scene.
+Result<VoxelWorld> voxWorld(const std::string& path, int chunk, const Json& w,
+                            const VoxWorldExtras& extras) {
+    int frame = 0;
+    if (const Json* f = find(w, "frame")) frame = wholeNumber(*f, "world.frame", 0, 1 << 30);
+    if (extras.voxFrame >= 0) frame = extras.voxFrame;
+    const bool keepMaterials = extras.textures && extras.table;
+    Result<VoxImport> import = readVoxFile(path, {chunk, frame, keepMaterials});
+    if (!import) return import.error();
+    if (!keepMaterials) return std::move(import->world);
+    if (Status s = addVoxMaterials(*import, *extras.textures, *extras.table); !s) {
+        return Error(path + ": " + s.error().message());
+    }
+    if (extras.warnings) {
+        extras.warnings->insert(extras.warnings->end(), import->warnings.begin(),
+                                import->warnings.end());
+    }
+    return std::move(import->world);
+}
+
 }  // namespace
 
 // Builds the world described by "world".
 VoxelWorld worldFromJson(const Json& w, const std::filesystem::path& baseDir,
-                         const TextureSet& textures) {
-    checkObject(w, "world",
-                {"source", "size", "chunk", "seed", "height", "amplitude", "frequency", "octaves",
-                 "water", "caves", "density", "color", "file", "shapes", "texture_by_color"});
+                         const TextureSet& textures, const VoxWorldExtras& voxExtras) {
+    checkObject(
+        w, "world",
+        {"source", "size", "chunk", "seed", "height", "amplitude", "frequency", "octaves", "water",
+         "caves", "density", "color", "file", "shapes", "texture_by_color", "frame"});
     const Json* sourceJson = find(w, "source");
     if (!sourceJson || !sourceJson->is_string()) {
         throw Invalid{"world.source", "must be \"terrain\", \"random\", \"empty\" or \"vox\""};
@@ -173,7 +195,7 @@ VoxelWorld worldFromJson(const Json& w, const std::filesystem::path& baseDir,
             if (!file || !file->is_string()) throw Invalid{"world.file", "must be a .vox path"};
             std::filesystem::path p = file->get<std::string>();
             if (p.is_relative()) p = baseDir / p;
-            return loadVox(p.string(), chunk);
+            return voxWorld(p.string(), chunk, w, voxExtras);
         }
         const Json* sizeJson = find(w, "size");
         if (!sizeJson) throw Invalid{"world", "needs \"size\": [x, y, z]"};
@@ -418,7 +440,8 @@ Result<VoxelScene> parseVoxelScene(std::string_view text, const std::string& pat
 }
 
 Result<VoxelScene> voxelSceneFromJson(const json::Json& root, std::string_view text,
-                                      const std::string& path, int width, int height) {
+                                      const std::string& path, int width, int height,
+                                      int voxFrame) {
     try {
         checkObject(root, "",
                     {"type", "description", "textures", "world", "camera", "sun", "sky", "render",
@@ -432,13 +455,16 @@ Result<VoxelScene> voxelSceneFromJson(const json::Json& root, std::string_view t
         MaterialTable table;
         TextureSet textures = buildTextures(find(root, "textures"), baseDir, materials, table);
         addMaterialSlots(materials, textures, table);
-        VoxelWorld built = worldFromJson(*world, baseDir, textures);
+        std::vector<std::string> warnings;
+        VoxelWorld built =
+            worldFromJson(*world, baseDir, textures, {&textures, &table, &warnings, voxFrame});
         VoxelScene scene{std::move(built),
                          cameraFromJson(*camera, width, height),
                          buildShading(root, materials, std::move(table)),
                          path,
                          std::move(textures),
-                         {}};
+                         {},
+                         std::move(warnings)};
         if (const Json* p = find(root, "post")) scene.post = post::postOptionsFromJson(*p, "post");
         return scene;
     } catch (const Invalid& invalid) {

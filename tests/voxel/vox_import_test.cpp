@@ -77,21 +77,22 @@ TEST(VoxImport, MinimalFileWithZUpMapping) {
     EXPECT_EQ(defaultVoxPalette()[255], (Voxel{0x11, 0x11, 0x11, 255}));
 }
 
-TEST(VoxImport, PaletteSkippedChunksAndVersion200) {
+TEST(VoxImport, PaletteIgnoredChunksAndVersion200) {
     Bytes rgba(1024, 0);
     rgba[0] = 10, rgba[1] = 20, rgba[2] = 30, rgba[3] = 255;  // colour index 1
-    rgba[4 * 6] = 200, rgba[4 * 6 + 3] = 0;  // index 7, alpha 0 -> a solid plain block (255)
-    const Bytes file = voxFile(
-        cat({chunk("PACK", ints({1})), chunk("SIZE", ints({3, 3, 3})),
-             xyzi({{0, 0, 0, 1}, {2, 2, 2, 7}, {1, 1, 1, 0}}),
-             chunk("nTRN", Bytes(28, 7), chunk("nGRP", Bytes(5, 1))), chunk("MATL", Bytes(13, 0)),
-             chunk("NOTE", {}), chunk("RGBA", rgba), chunk("LAYR", Bytes(3, 9))}),
-        200);
-    Result<VoxelWorld> r = parseVox(file, "p.vox", 4);
+    rgba[4 * 6] = 200, rgba[4 * 6 + 3] = 0;  // index 7, alpha 0: invisible (palette alpha)
+    const Bytes file = voxFile(cat({chunk("PACK", ints({1})), chunk("SIZE", ints({3, 3, 3})),
+                                    xyzi({{0, 0, 0, 1}, {2, 2, 2, 7}, {1, 1, 1, 0}}),
+                                    chunk("NOTE", ints({0})), chunk("RGBA", rgba)}),
+                               200);
+    Result<VoxImport> r = readVox(file, "p.vox", {4});
     ASSERT_TRUE(r.ok()) << r.error().message();
-    EXPECT_EQ(r->solidCount(), 2u);  // colour index 0 is skipped
-    EXPECT_EQ(r->get(0, 0, 0), (Voxel{10, 20, 30, 255}));
-    EXPECT_EQ(r->get(2, 2, 2), (Voxel{200, 0, 0, 255}));
+    EXPECT_EQ(r->world.solidCount(), 1u);  // colour index 0 and the alpha-0 colour are left out
+    EXPECT_EQ(r->world.get(0, 0, 0), (Voxel{10, 20, 30, 255}));
+    ASSERT_EQ(r->warnings.size(), 2u);
+    EXPECT_EQ(r->warnings[0], "p.vox: chunk NOTE (palette notes) ignored");
+    EXPECT_EQ(r->warnings[1],
+              "p.vox: palette index 7: alpha 0: its voxels are left out (invisible)");
 }
 
 TEST(VoxImport, ModelsSideBySide) {
@@ -159,13 +160,12 @@ TEST(VoxImport, ManyColoursUseNearest) {
     }
 }
 
-TEST(VoxImport, RefusesWorldsTooLargeForVox) {
+TEST(VoxImport, SaveIntoAMissingFolderFails) {
     VoxelWorld w = VoxelWorld::create({300, 4, 4}, 4).value();
-    const Result<std::vector<std::uint8_t>> bytes = encodeVox(w);
-    ASSERT_FALSE(bytes.ok());
-    EXPECT_NE(bytes.error().message().find("at most 256 per side"), std::string::npos);
+    w.set(299, 3, 3, Voxel{1, 2, 3, 255});
     const Status s = saveVox(w, "/nonexistent-dir/x.vox");
-    EXPECT_FALSE(s.ok());
+    ASSERT_FALSE(s.ok());
+    EXPECT_NE(s.error().message().find("/nonexistent-dir/x.vox"), std::string::npos);
 }
 
 TEST(VoxImport, LoadsShippedSample) {
@@ -273,7 +273,9 @@ TEST(VoxImport, RejectsHostileChunks) {
     // Too many models side by side.
     Bytes wide;
     for (int i = 0; i < 20; ++i) wide = cat({wide, chunk("SIZE", ints({250, 1, 1})), xyzi({})});
-    expectError(voxFile(wide), "wider than 4096 voxels");
+    expectError(voxFile(wide),
+                "byte 8: the placed models span 5000x1x1 voxels (vox axes, from (0, 0, 0)): a "
+                "world is at most 4096 per side, and this one would need");
     // A bad chunk size for the world.
     const Result<VoxelWorld> r = parseVox(voxFile(cat({size, xyzi({})})), "model.vox", 3);
     ASSERT_FALSE(r.ok());

@@ -34,6 +34,7 @@ Runner addDevicesCommand(CLI::App& app);
 Runner addBenchCommand(CLI::App& app);
 Runner addOctreeCommand(CLI::App& app);
 Runner addShadowsCommand(CLI::App& app);
+Runner addConvertCommand(CLI::App& app);
 
 // "a voxel scene", "an octree scene", "a 2D scene": for messages that refuse a scene's kind.
 const char* sceneKindPhrase(scene::SceneKind kind);
@@ -59,8 +60,14 @@ struct SizedScene {
 };
 
 // Reads a scene file once, whatever its type (luxel/scene/scene_file.h); `size` ("" or WxH)
-// overrides a voxel scene's camera size.
-Result<scene::SceneFile> loadScene(const std::string& scenePath, const std::string& size);
+// overrides a voxel scene's camera size, `voxFrame` >= 0 the animation frame of a MagicaVoxel
+// world. A voxel scene's warnings are printed ("luxel: warning: m.vox: ...").
+Result<scene::SceneFile> loadScene(const std::string& scenePath, const std::string& size,
+                                   int voxFrame = -1);
+// Prints each as "luxel: warning: <text>" to stderr.
+void printWarnings(const std::vector<std::string>& warnings);
+// `--frame N`: the animation frame of a MagicaVoxel world (-1 when not given).
+void addVoxFrameOption(CLI::App& app, int& frame);
 
 // A 2D scene at the size it will be rendered at: `size` overrides its canvas ("" = its own).
 Result<SizedScene> sizeScene(gi2d::Scene2D scene, const std::string& size);

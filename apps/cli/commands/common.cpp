@@ -1,5 +1,6 @@
 // Helpers shared by the CLI subcommands.
 #include <cctype>
+#include <cstdio>
 #include <string_view>
 
 #include "commands/command.h"
@@ -31,10 +32,17 @@ Result<std::pair<int, int>> parseSize(const std::string& text) {
     return std::pair{size->width, size->height};
 }
 
-Result<scene::SceneFile> loadScene(const std::string& scenePath, const std::string& size) {
+Result<scene::SceneFile> loadScene(const std::string& scenePath, const std::string& size,
+                                   int voxFrame) {
     auto dims = parseSize(size);
     if (!dims) return dims.error();
-    return scene::loadSceneFile(scenePath, {{dims->first, dims->second}});
+    auto file = scene::loadSceneFile(scenePath, {{dims->first, dims->second}, voxFrame});
+    if (file && file->kind() == scene::SceneKind::Voxel) printWarnings(file->voxel().warnings);
+    return file;
+}
+
+void printWarnings(const std::vector<std::string>& warnings) {
+    for (const std::string& w : warnings) std::fprintf(stderr, "luxel: warning: %s\n", w.c_str());
 }
 
 const char* sceneKindPhrase(scene::SceneKind kind) {

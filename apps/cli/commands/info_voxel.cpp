@@ -19,7 +19,11 @@ int infoVoxelScene(const voxel::VoxelScene& loaded) {
     std::printf("%s\n", scene->sourcePath.c_str());
     std::printf("  world              %dx%dx%d voxels in chunks of %d, %llu solid\n", s.x, s.y, s.z,
                 world.chunkSize(), static_cast<unsigned long long>(world.solidCount()));
-    std::printf("  textures           %d\n", scene->textures.size());
+    std::printf("  textures           %d (materials %d)\n", scene->textures.size(),
+                shading.materials.slotCount());
+    std::printf(
+        "  lighting           %s\n",
+        shading.lighting == voxel::ShadeOptions::Lighting::Physical ? "physical" : "classic");
     const Vec3d p = camera.position(), f = camera.forward();
     std::printf("  camera             at (%g, %g, %g) looking along (%.3f, %.3f, %.3f), fov %g\n",
                 p.x, p.y, p.z, f.x, f.y, f.z, camera.fovYDegrees());

@@ -292,7 +292,7 @@ int runRender(const RenderArgs& args) {
     const ToneMapSettings tone{args.exposure.stops.value_or(0.0f), *curve};
     ThreadLimit threadLimit(args.threads);
     Stopwatch loadTime;
-    auto file = loadScene(args.scene, args.size);
+    auto file = loadScene(args.scene, args.size, args.frame);
     if (!file) return reportError(file.error());
     if (file->kind() == scene::SceneKind::TwoD && !args.postGiven.empty()) {
         return reportError(Error(args.postGiven.front() + " applies to voxel and octree scenes; " +

@@ -28,6 +28,7 @@ struct RenderArgs {
     ExposureFlag exposure;     // parsed from exposureText
     bool quiet = false;
     bool stats = false;  // print a machine-readable timing line (for compare-solvers)
+    int frame = -1;      // --frame: a MagicaVoxel world's animation frame
     std::string backendName = "auto", device;
     gpu::Backend backend = gpu::Backend::Auto;  // parsed from backendName
     // HRC

@@ -53,6 +53,7 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option("--solver", args->solverName, "light transport solver: reference, hrc, rc")
         ->capture_default_str();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
+    addVoxFrameOption(app, args->frame);
     app.add_option("--rays", args->rays, "directions per pixel (reference solver)")
         ->check(wholeIn(1, gi2d::kMaxReferenceRays))
         ->capture_default_str();

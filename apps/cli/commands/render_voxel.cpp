@@ -100,6 +100,13 @@ Status applyVoxelSurfaceFlags(const VoxelSurfaceFlags& flags, voxel::ShadeOption
     return Ok{};
 }
 
+void addVoxFrameOption(CLI::App& app, int& frame) {
+    app.add_option("--frame", frame,
+                   "MagicaVoxel worlds: the animation frame to show (default: the scene's "
+                   "\"frame\", else 0)")
+        ->check(wholeIn(0, 1 << 30));
+}
+
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded) {
     voxel::VoxelScene* scene = &loaded;
     if (Status s = applyVoxelSurfaceFlags(request.surfaces, scene->shading); !s) {

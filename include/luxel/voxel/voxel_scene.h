@@ -4,6 +4,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "luxel/core/error.h"
 #include "luxel/post/post_options.h"
@@ -21,6 +22,8 @@ struct VoxelScene {
     std::string sourcePath;
     TextureSet textures;     // the scene's "textures", in slot order
     post::PostOptions post;  // the scene's "post": bloom, tone, internal resolution
+    // What a .vox world could not apply ("m.vox: MATL 37: ..."), for the caller to print.
+    std::vector<std::string> warnings = {};
 };
 
 // Reads a scene, builds its world (generators run here) and validates everything. Errors name the
