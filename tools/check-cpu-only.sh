@@ -3,7 +3,8 @@
 # checks that this build needs none of Vulkan, glslc, SDL2 and Dear ImGui, and that it works:
 #   - configure with glslc pointed at a file that does not exist, and no mention of Vulkan, SDL2
 #     or ImGui in the configure output;
-#   - build the libraries, the CLI and the tests; no object includes a Vulkan header;
+#   - build everything it builds (libraries, CLI, tests, fuzz smoke runs); no object includes a
+#     Vulkan header;
 #   - `luxel devices` and `--backend gpu` fail naming LUXEL_GPU=OFF, `--backend auto` falls back;
 #   - a selection of tests (GPU tests skip), and the install-and-consume package test.
 # Not part of `make test`: a second full build takes long. Usage: tools/check-cpu-only.sh [BUILD_DIR]
@@ -35,7 +36,7 @@ then
 fi
 echo "check-cpu-only: configured without Vulkan, glslc, SDL2 or ImGui"
 
-cmake --build "$build" -j "$jobs" --target luxel luxel_tests
+cmake --build "$build" -j "$jobs"
 if ninja -C "$build" -t deps | grep '/vulkan/'; then
     fail "an object includes a Vulkan header (above)"
 fi
@@ -56,5 +57,5 @@ grep -q "using the CPU" <<<"$out" || fail "--backend auto gave no CPU note: $out
 echo "check-cpu-only: the CLI reports the missing backend and falls back to the CPU"
 
 ctest --test-dir "$build" -j "$jobs" --output-on-failure \
-    -R '^(Gpu|BackendPolicy|RcPasses|HrcPasses|PostGpu|OctreeTilesLayout|Hrc|Cli|package)'
+    -R '^(Gpu|BackendPolicy|RcPasses|HrcPasses|PostGpu|OctreeTilesLayout|Hrc|Cli|FuzzSmoke|package)'
 echo "check-cpu-only: passed"
