@@ -105,7 +105,7 @@ int runViewer(int argc, char** argv) {
         auto opened = gpu::openBackend(gpu::Backend::Gpu, {o.device, false});
         if (!opened) return fail(opened.error().message());
     }
-    auto file = scene::loadSceneFile(o.scene);
+    auto file = scene::loadSceneFile(o.scene, {{}, o.voxFrame});
     if (!file) return fail(file.error().message());
     if (file->kind() == scene::SceneKind::Voxel) {
         voxel::VoxelScene* scene = &file->voxel();

@@ -45,6 +45,10 @@ Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
                    "without --internal-size/--internal-scale, the internal size adapts to keep "
                    "this frame rate (0: fixed)")
         ->check(options::finiteIn(0.0, 1000.0));
+    app.add_option("--frame", o.voxFrame,
+                   "MagicaVoxel worlds: the animation frame to show (default: the scene's "
+                   "\"frame\", else 0)")
+        ->check(CLI::Range(0, 1 << 30));
     app.add_option("--threads", o.threads, "solver threads (0: all)")->check(CLI::Range(0, 1024));
     app.add_flag("--no-overlay", o.hideOverlay, "start with the panels hidden (F1 shows them)");
 

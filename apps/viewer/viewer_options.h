@@ -28,6 +28,7 @@ struct ViewerOptions {
     std::string recordDir = "frames";
     std::string savePath;  // paint mode saves here (default: SCENE stem + ".painted.json")
     int threads = 0;       // solver threads (0: all)
+    int voxFrame = -1;     // MagicaVoxel worlds: the animation frame (-1: the scene's, else 0)
     // Without --internal-size/--internal-scale the internal size adapts to keep this frame rate
     // (0: keep the mode's default size).
     double targetFps = 15.0;

@@ -87,6 +87,14 @@ TEST_F(CliVox, FramePicksTheAnimationFrame) {
     EXPECT_NE(r.output.find("frame 7 is past the last keyframe (1)"), std::string::npos)
         << r.output;
     expectError("render " + vox + " --frame -1 --out " + path("x.png"), "--frame");
+    // info reads the same frame; a 2D scene has no frames.
+    r = runLuxel("info " + vox + " --frame 7");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("frame 7 is past the last keyframe (1)"), std::string::npos)
+        << r.output;
+    const std::string flat = write("flat.json", R"({"canvas": [16, 16], "shapes": []})");
+    expectError("render " + flat + " --frame 0 --out " + path("x.png"),
+                "--frame applies to MagicaVoxel worlds");
 }
 
 TEST_F(CliVox, ConvertWritesVoxFromVoxAndFromScenes) {

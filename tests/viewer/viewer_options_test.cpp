@@ -7,10 +7,11 @@ namespace luxel::viewer {
 namespace {
 
 TEST(ViewerOptions, ParsesSizesAndChoices) {
-    auto parsed =
-        parseViewerOptions({"scene.json", "--size", "640x480", "--internal-size", "160x120",
-                            "--backend", "cpu", "--solver", "rc", "--merge", "bilinear-fix",
-                            "--record", "5", "--record-dir", "out", "--script", "s.txt"});
+    auto parsed = parseViewerOptions(
+        {"scene.json", "--size",       "640x480", "--internal-size", "160x120",      "--backend",
+         "cpu",        "--solver",     "rc",      "--merge",         "bilinear-fix", "--record",
+         "5",          "--record-dir", "out",     "--script",        "s.txt",        "--frame",
+         "3",          "--target-fps", "30"});
     ASSERT_TRUE(parsed) << parsed.error().message();
     const ViewerOptions& o = parsed->options;
     EXPECT_EQ(o.scene, "scene.json");
@@ -24,6 +25,13 @@ TEST(ViewerOptions, ParsesSizesAndChoices) {
     EXPECT_EQ(o.recordFrames, 5);
     EXPECT_EQ(o.recordDir, "out");
     EXPECT_EQ(o.script, "s.txt");
+    EXPECT_EQ(o.voxFrame, 3);
+    EXPECT_EQ(o.targetFps, 30.0);
+    // Without them: the scene's frame, and an adaptive size at 15 frames per second.
+    auto plain = parseViewerOptions({"scene.json"});
+    ASSERT_TRUE(plain);
+    EXPECT_EQ(plain->options.voxFrame, -1);
+    EXPECT_EQ(plain->options.targetFps, 15.0);
 }
 
 TEST(ViewerOptions, RejectsBadValuesWithTheOptionName) {
@@ -33,6 +41,8 @@ TEST(ViewerOptions, RejectsBadValuesWithTheOptionName) {
     };
     const Case cases[] = {
         {{}, "scene"},
+        {{"s.json", "--frame", "-2"}, "--frame"},
+        {{"s.json", "--target-fps", "-1"}, "--target-fps"},
         {{"s.json", "--size", "640"}, "--size '640' is not WIDTHxHEIGHT"},
         {{"s.json", "--internal-size", "0x10"},
          "--internal-size '0x10': each side must be in 1..65536"},

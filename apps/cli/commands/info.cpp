@@ -22,6 +22,7 @@ namespace {
 struct InfoArgs {
     std::string scene, size, solverName = "reference", mergeName = "bilinear-fix";
     int rays = gi2d::ReferenceOptions{}.rays;
+    int frame = -1;  // --frame: a MagicaVoxel world's animation frame
 };
 
 void printRgb(const char* label, Rgb v) {
@@ -58,7 +59,7 @@ int runInfo(const InfoArgs& args) {
     if (!solver) return reportError(solver.error());
     auto merge = gi2d::parseRcMerge(args.mergeName);
     if (!merge) return reportError(merge.error());
-    auto file = loadScene(args.scene, args.size);
+    auto file = loadScene(args.scene, args.size, args.frame);
     if (!file) return reportError(file.error());
     if (file->kind() == scene::SceneKind::Voxel) return infoVoxelScene(file->voxel());
     if (file->kind() == scene::SceneKind::Octree) return infoOctreeScene(file->octree());
@@ -146,6 +147,7 @@ Runner addInfoCommand(CLI::App& app) {
                    "metadata")
         ->required();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
+    addVoxFrameOption(app, args->frame);
     app.add_option("--solver", args->solverName, "solver to estimate for: reference, hrc, rc")
         ->capture_default_str();
     app.add_option("--merge", args->mergeName, "RC: vanilla or bilinear-fix")

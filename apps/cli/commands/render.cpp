@@ -294,6 +294,10 @@ int runRender(const RenderArgs& args) {
     Stopwatch loadTime;
     auto file = loadScene(args.scene, args.size, args.frame);
     if (!file) return reportError(file.error());
+    if (file->kind() == scene::SceneKind::TwoD && args.frame >= 0) {
+        return reportError(Error("--frame applies to MagicaVoxel worlds; " + args.scene + " is " +
+                                 sceneKindPhrase(file->kind())));
+    }
     if (file->kind() == scene::SceneKind::TwoD && !args.postGiven.empty()) {
         return reportError(Error(args.postGiven.front() + " applies to voxel and octree scenes; " +
                                  args.scene + " is " + sceneKindPhrase(file->kind())));
