@@ -40,14 +40,6 @@ Result<Image> castImage(const VoxelJob& job, const Camera& camera, gpu::Context*
     return renderer->render(camera, job.shading);
 }
 
-Image postProcess(const Image& internal, int width, int height, const post::PostOptions& post) {
-    Image full = internal.width() == width && internal.height() == height
-                     ? internal
-                     : post::upscale(internal, width, height, post.upscaler);
-    if (post.sharpness > 0.0f) full = post::sharpen(full, post.sharpness);
-    return post::applyBloom(full, post);
-}
-
 // Shading settings a render may override (unset: the scene's, or the defaults for a world).
 struct ShadingArgs {
     std::optional<int> samples, reflections;
@@ -106,7 +98,7 @@ py::array_t<float> renderJob(VoxelJob& job, const ShadingArgs& shading, bool app
         image = runCancellable([&]() -> Result<Image> {
             auto internal = castImage(job, camera, context.get());
             if (!internal) return internal.error();
-            Image radiance = postProcess(*internal, width, height, post);
+            Image radiance = post::processInternal(*internal, width, height, post);
             relay.advance();  // the voxel renderer reports no progress of its own
             return radiance;
         });

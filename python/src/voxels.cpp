@@ -113,18 +113,6 @@ py::tuple tupleOf(Vec3d v) {
     return py::make_tuple(v.x, v.y, v.z);
 }
 
-const char* curveName(ToneCurve curve) {
-    switch (curve) {
-        case ToneCurve::Clamp:
-            return "clamp";
-        case ToneCurve::Reinhard:
-            return "reinhard";
-        case ToneCurve::Aces:
-            break;
-    }
-    return "aces";
-}
-
 void bindWorld(py::module_& m) {
     py::class_<VoxelWorld>(
         m, "VoxelWorld",
@@ -230,7 +218,7 @@ void bindScene(py::module_& m) {
             "exposure", [](const VoxelScene& s) { return s.post.tone.exposureStops; },
             "The scene's exposure in stops (its \"post\" section), for tonemap().")
         .def_property_readonly(
-            "curve", [](const VoxelScene& s) { return curveName(s.post.tone.curve); },
+            "curve", [](const VoxelScene& s) { return toneCurveName(s.post.tone.curve); },
             "The scene's tone curve name (its \"post\" section), for tonemap().")
         .def("__repr__", [](const VoxelScene& s) {
             const Int3 size = s.world.size();

@@ -42,6 +42,18 @@ std::optional<ToneCurve> parseToneCurve(std::string_view name) {
     return std::nullopt;
 }
 
+const char* toneCurveName(ToneCurve curve) {
+    switch (curve) {
+        case ToneCurve::Clamp:
+            return "clamp";
+        case ToneCurve::Reinhard:
+            return "reinhard";
+        case ToneCurve::Aces:
+            break;
+    }
+    return "aces";
+}
+
 Image toneMap(const Image& hdr, const ToneMapSettings& settings) {
     if (hdr.empty()) return Image();
     Image out = hdr;

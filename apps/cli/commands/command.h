@@ -106,9 +106,6 @@ struct PostFlags {
     std::optional<post::Upscaler> upscaler;
 };
 post::PostOptions applyPostFlags(post::PostOptions scene, const PostFlags& flags);
-// A render made at the internal size -> the linear image at width x height: upscaled, sharpened,
-// bloomed (written as is to EXR; PNGs get post.tone on top: luxel/post/finish.h).
-Image postProcess(const Image& internal, int width, int height, const post::PostOptions& post);
 // `luxel render` flags overriding a voxel scene's surface lighting (empty: the scene's).
 struct VoxelSurfaceFlags {
     std::string lighting, specular, fresnel;

@@ -13,6 +13,7 @@
 #include "luxel/gpu/context.h"
 #include "luxel/octree/octree_gpu.h"
 #include "luxel/octree/octree_render.h"
+#include "luxel/post/finish.h"
 #include "luxel/post/upscale.h"
 #include "luxel/post/voxel_frames.h"
 
@@ -69,7 +70,7 @@ int renderOctreeScene(const VoxelRenderRequest& request, scene::OctreeScene load
     }
     if (!radiance) return reportError(radiance.error());
     const double renderSeconds = renderTime.seconds();
-    radiance = postProcess(*radiance, width, height, post);
+    radiance = post::processInternal(*radiance, width, height, post);
     // --out and --png change together or not at all; both carry the provenance.
     RenderImages images;
     images.out = request.out;

@@ -63,18 +63,6 @@ void setNumber(ImageMetadata& metadata, const std::string& key, double value) {
 
 namespace {
 
-const char* curveName(ToneCurve curve) {
-    switch (curve) {
-        case ToneCurve::Clamp:
-            return "clamp";
-        case ToneCurve::Reinhard:
-            return "reinhard";
-        case ToneCurve::Aces:
-            break;
-    }
-    return "aces";
-}
-
 // A blown-out picture: more than kClippedWarningFraction of its pixels at white.
 void warnIfClipped(const Image& display, const Image& hdr, const ToneMapSettings& tone,
                    const Image* lightSources) {
@@ -114,7 +102,7 @@ Status writeRenderImages(RenderImages images) {
     }
     setNumber(images.metadata, "luxel.exposure", images.tone.exposureStops);
     setMetadata(images.metadata, "luxel.exposure.auto", images.autoExposure ? "yes" : "no");
-    setMetadata(images.metadata, "luxel.tonemap", curveName(images.tone.curve));
+    setMetadata(images.metadata, "luxel.tonemap", toneCurveName(images.tone.curve));
 
     const bool outIsPng = hasExtension(images.out, ".png");
     Image outImage;

@@ -42,14 +42,6 @@ post::PostOptions applyPostFlags(post::PostOptions scene, const PostFlags& flags
     return scene;
 }
 
-Image postProcess(const Image& internal, int width, int height, const post::PostOptions& post) {
-    Image full = internal.width() == width && internal.height() == height
-                     ? internal
-                     : post::upscale(internal, width, height, post.upscaler);
-    if (post.sharpness > 0.0f) full = post::sharpen(full, post.sharpness);
-    return post::applyBloom(full, post);
-}
-
 void addVoxelSurfaceFlags(CLI::App& app, VoxelSurfaceFlags& flags) {
     app.add_option("--lighting", flags.lighting,
                    "voxel: classic or physical (default: the scene's)");
@@ -153,7 +145,7 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         internal = voxel::render(scene->world, camera, scene->shading, &scene->textures);
     }
     const double renderSeconds = renderTime.seconds();
-    const Image radiance = postProcess(internal, width, height, post);
+    const Image radiance = post::processInternal(internal, width, height, post);
     // EXR keeps linear radiance; PNG gets the display transform. Both carry the provenance.
     RenderImages images;
     images.out = request.out;

@@ -15,6 +15,7 @@ enum class ToneCurve {
 };
 
 std::optional<ToneCurve> parseToneCurve(std::string_view name);  // "clamp" | "reinhard" | "aces"
+const char* toneCurveName(ToneCurve curve);                      // the name parseToneCurve reads
 
 struct ToneMapSettings {
     float exposureStops = 0.0f;  // multiplies by 2^stops before the curve

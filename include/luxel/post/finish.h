@@ -8,6 +8,9 @@
 
 namespace luxel::post {
 
+// A render made at the internal size -> the linear image at width x height: upscaled (the
+// options' upscaler), sharpened, bloomed. This is what EXR files get; PNGs get the tone on top.
+Image processInternal(const Image& internal, int width, int height, const PostOptions& options);
 // Linear radiance after bloom (the image written to EXR).
 Image applyBloom(const Image& hdr, const PostOptions& options);
 // Display-referred [0, 1] RGB for PNG: toneMap(applyBloom(hdr)).
