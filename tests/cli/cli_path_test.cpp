@@ -50,7 +50,7 @@ TEST_F(CliPath, PathTracesAVoxelScene) {
     EXPECT_EQ(value("luxel.seed"), "7");
     EXPECT_TRUE(luxel::readPng(path("p.png")).ok());
 
-    // The same seed gives the same image; the images are written only on success.
+    // Seed 7 again: an identical image.
     const RunResult again = runLuxel("render " + kTerrain +
                                      " --solver path --spp 2 --seed 7 --max-bounces 3 "
                                      "--size 32x18 --quiet --out " +
