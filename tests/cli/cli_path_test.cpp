@@ -21,10 +21,11 @@ const std::string kScenes = std::string(LUXEL_SOURCE_DIR) + "/scenes/";
 const std::string kTerrain = kScenes + "voxel/terrain.json";
 
 TEST_F(CliPath, PathTracesAVoxelScene) {
-    const RunResult r = runLuxel("render " + kTerrain +
-                                 " --solver path --spp 2 --seed 7 --max-bounces 3 --size 32x18 "
-                                 "--out " +
-                                 path("p.exr") + " --png " + path("p.png"));
+    const RunResult r =
+        runLuxel("render " + kTerrain +
+                 " --solver path --spp 2 --seed 7 --max-bounces 3 --size 32x18 "
+                 "--out " +
+                 path("p.exr") + " --png " + path("p.png") + " --std-error " + path("e.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("path traced"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("path tracing: 2 samples per pixel, at most 3 bounces, seed 7, "
@@ -50,6 +51,24 @@ TEST_F(CliPath, PathTracesAVoxelScene) {
     EXPECT_EQ(value("luxel.seed"), "7");
     EXPECT_TRUE(luxel::readPng(path("p.png")).ok());
 
+    // The standard error: as large as the image, finite, >= 0, > 0 where samples differ.
+    luxel::ImageMetadata errorMetadata;
+    auto error = luxel::readExr(path("e.exr"), &errorMetadata);
+    ASSERT_TRUE(error.ok()) << error.error().message();
+    ASSERT_EQ(error->width(), 32);
+    ASSERT_EQ(error->height(), 18);
+    int noisy = 0;
+    for (int y = 0; y < 18; ++y)
+        for (int x = 0; x < 32; ++x) {
+            const float e = error->at(x, y, 1);
+            ASSERT_TRUE(std::isfinite(e) && e >= 0.0f) << e;
+            noisy += e > 0.0f;
+        }
+    EXPECT_GT(noisy, 0);
+    const std::string* content = luxel::findMetadata(errorMetadata, "luxel.content");
+    ASSERT_NE(content, nullptr);
+    EXPECT_EQ(*content, "standard error, linear");
+
     // Seed 7 again: an identical image.
     const RunResult again = runLuxel("render " + kTerrain +
                                      " --solver path --spp 2 --seed 7 --max-bounces 3 "
@@ -73,6 +92,10 @@ TEST_F(CliPath, RefusesPathWhereItDoesNotApply) {
                 "--max-bounces applies to --solver path");
     expectError("render " + kTerrain + " --solver path --samples 4" + out,
                 "apply to the ray caster; --solver path takes --spp");
+    expectError("render " + kTerrain + " --solver path --std-error " + path("e.png") + out,
+                "' must be an .exr file");
+    expectError("render " + kTerrain + " --std-error " + path("e.exr") + out,
+                "--std-error applies to --solver path");
     expectError("render " + kTerrain + " --solver path --backend gpu" + out,
                 "--solver path runs on the CPU");
     expectError("render " + kTerrain + " --solver pt" + out,

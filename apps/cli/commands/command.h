@@ -134,6 +134,7 @@ struct VoxelRenderRequest {
     // --solver path: the path tracer (voxel/path_trace.h) instead of the ray caster.
     bool pathSolver = false;
     voxel::PathTraceOptions path = {};
+    std::string pathStdError = {};  // --std-error: where the standard error image goes (.exr)
 };
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene scene);
 

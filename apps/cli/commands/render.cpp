@@ -325,6 +325,7 @@ int runRender(const RenderArgs& args) {
         request.path.samplesPerPixel = args.spp;
         request.path.maxBounces = args.maxBounces;
         request.path.seed = args.seed;
+        request.pathStdError = args.stdError;
         if (!voxel && (args.samples != 0 || !args.filter.empty())) {
             return reportError(Error("--samples and --filter apply to voxel scenes; " + args.scene +
                                      " is " + sceneKindPhrase(file->kind())));

@@ -60,6 +60,7 @@ struct RenderArgs {
     // Voxel scenes, --solver path (voxel/path_trace.h); pathGiven: --spp or --max-bounces given.
     int spp = voxel::PathTraceOptions{}.samplesPerPixel;
     int maxBounces = voxel::PathTraceOptions{}.maxBounces;
+    std::string stdError;  // --std-error: the per-pixel standard error as EXR
     std::vector<std::string> pathGiven;
 };
 

@@ -147,9 +147,11 @@ Runner addRenderCommand(CLI::App& app) {
                    "voxel, --solver path: most reflections of the light reaching the eye")
         ->check(wholeIn(0, voxel::kMaxPathBounces))
         ->capture_default_str();
+    app.add_option("--std-error", args->stdError,
+                   "voxel, --solver path: the standard error of each pixel's mean (.exr)");
     CLI::App* command = &app;
     return [args, command] {
-        for (const char* name : {"--spp", "--max-bounces"}) {
+        for (const char* name : {"--spp", "--max-bounces", "--std-error"}) {
             if (command->count(name) > 0) args->pathGiven.push_back(name);
         }
         // --solver path and its --seed belong to voxel scenes (runRender refuses them for 2D).

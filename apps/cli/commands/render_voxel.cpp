@@ -1,5 +1,6 @@
 // `luxel render` for voxel scenes: DDA ray casting with shading, shadows and reflections, on the
 // CPU or (--backend) the GPU; or, with --solver path, the CPU path tracer.
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -35,6 +36,13 @@ void printPathSummary(const voxel::PathTraceOptions& path, double relativeError)
     } else {
         std::printf("relative standard error %.3f%%\n", 100.0 * relativeError);
     }
+}
+
+bool endsWithExr(const std::string& path) {
+    if (path.size() < 4) return false;
+    std::string ext = path.substr(path.size() - 4);
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".exr";
 }
 
 Result<Image> renderOnGpu(gpu::Context& context, const voxel::VoxelScene& scene,
@@ -144,6 +152,10 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
                   "--specular, --fresnel, --no-refraction, --shadows) apply to the "
                   "ray caster; --solver path takes --spp and --max-bounces"));
     }
+    if (!request.pathStdError.empty() && !endsWithExr(request.pathStdError)) {
+        return reportError(Error("--std-error '" + request.pathStdError +
+                                 "' must be an .exr file (linear float)"));
+    }
     if (request.pathSolver && request.backend == gpu::Backend::Gpu) {
         return reportError(Error("--solver path runs on the CPU; --backend gpu does not apply"));
     }
@@ -168,7 +180,7 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         return reportError(s.error());
     }
     Stopwatch renderTime;
-    Image internal;
+    Image internal, standardError;
     double relativeError = 0.0;
     if (request.pathSolver) {
         auto traced =
@@ -176,6 +188,7 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         if (!traced) return reportError(traced.error());
         relativeError = traced->relativeError;
         internal = std::move(traced->radiance);
+        standardError = std::move(traced->standardError);
     } else if (*context) {
         auto image = renderOnGpu(**context, *scene, camera);
         if (!image) return reportError(image.error());
@@ -205,7 +218,15 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         setMetadata(images.metadata, "luxel.seed", std::to_string(request.path.seed));
         setNumber(images.metadata, "luxel.path.relative_error", relativeError);
     }
+    ImageMetadata errorMetadata = images.metadata;
     if (Status s = writeRenderImages(std::move(images)); !s) return reportError(s.error());
+    if (!request.pathStdError.empty()) {
+        // At the internal size: the post pipeline does not apply to an error estimate.
+        setMetadata(errorMetadata, "luxel.content", "standard error, linear");
+        if (Status s = writeImages({{request.pathStdError, &standardError, &errorMetadata}}); !s) {
+            return reportError(s.error());
+        }
+    }
     if (request.stats) std::printf("stats solve_seconds=%.6f\n", renderSeconds);
     if (!request.quiet) {
         const Int3 s = scene->world.size();
