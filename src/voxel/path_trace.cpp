@@ -1,6 +1,7 @@
 // The path estimator of the voxel path tracer (path_trace.h;
 // docs/algorithms/voxel-path-tracing.md): one path per call, Lambertian bounces, next event
-// estimation towards the sun, Russian roulette.
+// estimation towards the sun and the emissive voxels (with multiple importance sampling), Russian
+// roulette.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -56,6 +57,32 @@ Surface surfaceAt(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptio
     return {colour, m.emission};
 }
 
+// Power-heuristic weight of a strategy of density `mine` against one of density `other`.
+double powerHeuristic(double mine, double other) {
+    const double a = mine * mine, b = other * other;
+    return a + b > 0.0 ? a / (a + b) : 0.0;
+}
+
+// Next event estimation towards the emissive voxels: one point on one facing face of one
+// emitter, weighted against the bounce ray that could have found it (multiple importance
+// sampling, power heuristic).
+Rgb emitterLight(const VoxelWorld& world, const TextureSet* textures, const PathEmitters& emitters,
+                 const Hit& hit, Rgb albedo, const ShadeOptions& o, PathRng& rng) {
+    const float u0 = rng.next(), u1 = rng.next(), u2 = rng.next(), u3 = rng.next();
+    const PathEmitters::Sample s = emitters.sample(hit.point, u0, u1, u2, u3);
+    if (!(s.pdf > 0.0)) return {};
+    const double cosSurface = dot(toDouble(hit.normal), s.direction);
+    if (!(cosSurface > 0.0)) return {};
+    // Visible when the shadow ray first meets the sampled face itself.
+    const Hit seen = castToSurface(world, textures, {hit.point, s.direction}, o.stepCap).hit;
+    if (!seen.hit || seen.voxel != s.voxel || seen.normal != s.normal) return {};
+    const Voxel v = world.get(s.voxel.x, s.voxel.y, s.voxel.z);
+    const Rgb emission = o.materials.forSlot(textureSlotOf(v)).emission;
+    const double bouncePdf = cosSurface / kPi;
+    const double weight = powerHeuristic(s.pdf, bouncePdf);
+    return albedo * emission * float(cosSurface / kPi * weight / s.pdf);
+}
+
 bool sunBlocked(const VoxelWorld& world, const TextureSet* textures, const Ray& ray, int stepCap) {
     // Cutout texels let sunlight through, as they let camera rays through.
     if (textures && !textures->empty()) {
@@ -109,11 +136,15 @@ Status validatePathTrace(const ShadeOptions& o, const PathTraceOptions& p) {
 }
 
 Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& cameraRay,
-              const ShadeOptions& o, const PathTraceOptions& p, PathRng& rng) {
+              const ShadeOptions& o, const PathTraceOptions& p, PathRng& rng,
+              const PathEmitters* emitters) {
+    if (emitters && emitters->empty()) emitters = nullptr;
     const Vec3d sun = normalize(Vec3d{o.sunDirection.x, o.sunDirection.y, o.sunDirection.z});
     const bool sunLit = o.sunIrradiance.maxComponent() > 0.0f;
     Rgb radiance, throughput(1.0f);
     Ray ray = cameraRay;
+    Vec3d bounceOrigin;      // where the last bounce ray started
+    double bouncePdf = 0.0;  // its density in solid angle (0: the camera ray)
     // Vertex k of the path is reached after k reflections.
     for (int k = 0;; ++k) {
         const SurfaceHit s = castToSurface(world, textures, ray, o.stepCap);
@@ -124,13 +155,26 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
         const Hit& hit = s.hit;
         if (hit.normal == Int3{}) break;  // started inside a solid voxel: no light
         const Surface surface = surfaceAt(world, s, o);
-        radiance += throughput * surface.emission;
+        if (surface.emission.maxComponent() > 0.0f) {
+            // Seen by a bounce ray that emitter sampling could also have found: MIS-weighted.
+            double weight = 1.0;
+            if (emitters && k > 0) {
+                const double lightPdf =
+                    emitters->pdf(bounceOrigin, hit.voxel, hit.normal, hit.point);
+                weight = powerHeuristic(bouncePdf, lightPdf);
+            }
+            radiance += throughput * surface.emission * float(weight);
+        }
         if (k == p.maxBounces) break;
         // Next event estimation: the sun is a delta light, reached only by this shadow ray.
         // Rays start on the face; castRay's start-cell rule puts them in the cell in front.
         const double cosSun = dot(toDouble(hit.normal), sun);
         if (sunLit && cosSun > 0.0 && !sunBlocked(world, textures, {hit.point, sun}, o.stepCap)) {
             radiance += throughput * surface.albedo * o.sunIrradiance * float(cosSun / kPi);
+        }
+        if (emitters) {
+            radiance +=
+                throughput * emitterLight(world, textures, *emitters, hit, surface.albedo, o, rng);
         }
         // Lambertian bounce by cosine sampling: f cos / pdf = albedo.
         throughput = throughput * surface.albedo;
@@ -142,6 +186,8 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
         }
         const float u1 = rng.next(), u2 = rng.next();
         ray = {hit.point, cosineDirection(hit.normal, u1, u2)};
+        bounceOrigin = hit.point;
+        bouncePdf = dot(toDouble(hit.normal), ray.direction) / kPi;
     }
     return radiance;
 }

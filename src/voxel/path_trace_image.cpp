@@ -32,6 +32,8 @@ PathTracer::PathTracer(const VoxelWorld& world, const Camera& camera, const Shad
       shading_(shading),
       options_(options),
       textures_(textures),
+      emitters_(options.sampleEmitters ? PathEmitters::find(world, shading.materials)
+                                       : PathEmitters{}),
       sums_(static_cast<std::size_t>(camera.width()) * camera.height()) {}
 
 Result<PathTracer> PathTracer::create(const VoxelWorld& world, const Camera& camera,
@@ -63,7 +65,8 @@ Status PathTracer::addSamples(int count) {
                     PathRng rng(options_.seed, pixel, std::uint64_t(k));
                     const float jx = rng.next(), jy = rng.next();  // uniform in the pixel
                     const Ray ray = camera_.rayAt(x + double(jx), y + double(jy));
-                    const Rgb c = tracePath(*world_, textures_, ray, shading_, options_, rng);
+                    const Rgb c =
+                        tracePath(*world_, textures_, ray, shading_, options_, rng, &emitters_);
                     for (int i = 0; i < 3; ++i) {
                         sums.sum[i] += c[i];
                         sums.sumSquares[i] += double(c[i]) * c[i];

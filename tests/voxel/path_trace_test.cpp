@@ -93,12 +93,72 @@ TEST(PathTrace, FurnaceBoxShowsEmissionOverOneMinusAlbedo) {
             mean += l / 48.0;
         }
     EXPECT_NEAR(mean, expected, 0.02 * expected);
-    // Without roulette's help and with two reflections at most: E (1 + a + a^2), noise-free.
+    // Two reflections at most: E (1 + a + a^2). Without emitter sampling (every path walks
+    // the same weights) noise-free; with it, the same mean.
     p.maxBounces = 2;
-    p.rouletteAfter = 3;
+    p.sampleEmitters = false;
     const PathTraceImage two = trace(world, *camera, o, p);
     EXPECT_NEAR(two.radiance.at(3, 3, 0), e * (1.0 + a + a * a), 1e-5);
     EXPECT_NEAR(two.standardError.at(3, 3, 0), 0.0, 1e-5);
+    p.sampleEmitters = true;
+    const PathTraceImage mis = trace(world, *camera, o, p);
+    double misMean = 0.0, misError = 0.0;
+    for (int y = 0; y < 6; ++y)
+        for (int x = 0; x < 8; ++x) {
+            misMean += mis.radiance.at(x, y, 0) / 48.0;
+            misError += mis.standardError.at(x, y, 0) / 48.0;
+        }
+    EXPECT_GT(misError, 0.0);
+    EXPECT_NEAR(misMean, e * (1.0 + a + a * a), 5.0 * misError / std::sqrt(48.0));
+}
+
+// A closed grey room lit by one small emissive block: emitter sampling with MIS and bounce rays
+// alone agree on the mean, and MIS has far less noise where the lamp lights the room unseen.
+TEST(PathTrace, EmitterSamplingAgreesWithBounceRaysAndHasLessNoise) {
+    VoxelWorld world = makeWorld({12, 8, 12});
+    for (int z = 0; z < 12; ++z)
+        for (int y = 0; y < 8; ++y)
+            for (int x = 0; x < 12; ++x) {
+                const bool wall = x == 0 || y == 0 || z == 0 || x == 11 || y == 7 || z == 11;
+                if (wall) world.set(x, y, z, Voxel{180, 180, 180, 255});
+            }
+    world.set(3, 1, 8, Voxel{255, 255, 255, 1});  // texture slot 0: the lamp's material
+    finish(world);
+    ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
+    Material lamp;
+    lamp.name = "lamp";
+    lamp.emission = Rgb(20.0f, 15.0f, 10.0f);
+    ASSERT_TRUE(o.materials.setSlot(0, lamp).ok());
+    const PathEmitters emitters = PathEmitters::find(world, o.materials);
+    ASSERT_EQ(emitters.size(), 1);
+    // The density sample() reports is the one pdf() gives for the point sampled.
+    const Vec3d from{8.5, 1.0, 3.5};
+    const PathEmitters::Sample one = emitters.sample(from, 0.2f, 0.7f, 0.3f, 0.6f);
+    ASSERT_GT(one.pdf, 0.0);
+    EXPECT_NEAR(emitters.pdf(from, one.voxel, one.normal, from + one.direction * one.distance),
+                one.pdf, 1e-9 * one.pdf);
+
+    auto camera = Camera::lookAt({6.0, 4.0, 7.0}, {6.0, 2.0, 0.5}, 70.0, 12, 9);  // lamp behind
+    ASSERT_TRUE(camera.ok());
+    PathTraceOptions p;
+    p.samplesPerPixel = 128;
+    const PathTraceImage mis = trace(world, *camera, o, p);
+    p.sampleEmitters = false;
+    const PathTraceImage bounce = trace(world, *camera, o, p);
+    double misMean = 0, bounceMean = 0, misSe = 0, bounceSe = 0;
+    const int pixels = 12 * 9;
+    for (int y = 0; y < 9; ++y)
+        for (int x = 0; x < 12; ++x) {
+            misMean += mis.radiance.at(x, y, 1) / pixels;
+            bounceMean += bounce.radiance.at(x, y, 1) / pixels;
+            misSe += mis.standardError.at(x, y, 1) / pixels;
+            bounceSe += bounce.standardError.at(x, y, 1) / pixels;
+        }
+    EXPECT_GT(misMean, 0.0);
+    // Pixel errors average down by sqrt(pixels) over the image (pixels are independent).
+    const double combined = std::hypot(misSe, bounceSe) / std::sqrt(double(pixels));
+    EXPECT_NEAR(misMean, bounceMean, 5.0 * combined);
+    EXPECT_LT(mis.relativeError, 0.5 * bounce.relativeError);
 }
 
 TEST(PathTrace, PlaneUnderAUniformSkyShowsAlbedoTimesSky) {

@@ -5,10 +5,11 @@
 // shading computes it); emissive materials emit their `emission`. Light comes from the sun (a
 // delta directional light of `sunIrradiance` towards `sunDirection`, sampled by next event
 // estimation with a shadow ray) and the scene's gradient sky (skyColor in shading.h), which rays
-// leaving the world see. Bounces sample the cosine-weighted hemisphere; Russian roulette ends paths
-// after `rouletteAfter` bounces. Each sample draws its random numbers from a counter-based
-// generator keyed by (seed, pixel, sample), so images are bit-identical for any thread count and
-// for any split of the samples into progressive passes.
+// leaving the world see; emissive voxels are sampled as lights too, combined with the bounce rays
+// by multiple importance sampling. Bounces sample the cosine-weighted hemisphere; Russian roulette
+// ends paths after `rouletteAfter` bounces. Each sample draws its random numbers from a
+// counter-based generator keyed by (seed, pixel, sample), so images are bit-identical for any
+// thread count and for any split of the samples into progressive passes.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +20,7 @@
 #include "luxel/core/vec.h"
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/dda.h"
+#include "luxel/voxel/path_trace_emitters.h"
 #include "luxel/voxel/path_trace_rng.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/texture_set.h"
@@ -38,6 +40,9 @@ struct PathTraceOptions {
     int maxBounces = 8;
     int rouletteAfter = 3;  // reflections before Russian roulette may end a path (>= 0)
     std::uint64_t seed = 1;
+    // Next event estimation towards the emissive voxels, combined with the bounce rays by
+    // multiple importance sampling; off: bounce rays alone find them (same mean, more noise).
+    bool sampleEmitters = true;
 };
 
 // The options and the scene light (ShadeOptions' sun direction and irradiance, sky colours)
@@ -45,9 +50,11 @@ struct PathTraceOptions {
 Status validatePathTrace(const ShadeOptions& shading, const PathTraceOptions& options);
 
 // Radiance carried by one path sample along `ray`, drawing its random numbers from `rng`.
-// `shading` and `options` must be valid (validatePathTrace).
+// `shading` and `options` must be valid (validatePathTrace). `emitters` (PathEmitters::find of
+// the world and shading.materials; null or empty: none) are sampled as lights.
 Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
-              const ShadeOptions& shading, const PathTraceOptions& options, PathRng& rng);
+              const ShadeOptions& shading, const PathTraceOptions& options, PathRng& rng,
+              const PathEmitters* emitters = nullptr);
 
 struct PathTraceImage {
     Image radiance;       // mean linear radiance, RGB
@@ -86,6 +93,7 @@ class PathTracer {
     ShadeOptions shading_;
     PathTraceOptions options_;
     const TextureSet* textures_;
+    PathEmitters emitters_;
     std::vector<PixelSums> sums_;
     int samples_ = 0;
 };
