@@ -54,6 +54,7 @@ PathEmitters PathEmitters::find(const VoxelWorld& world, const MaterialTable& ma
                         for (int x = cx * side; x < std::min((cx + 1) * side, size.x); ++x) {
                             const Voxel v = world.get(x, y, z);
                             if (v.solid() && emits(materials.forSlot(textureSlotOf(v)))) {
+                                if (out.size() == kMaxPathEmitters) return PathEmitters{};
                                 out.voxels_.push_back({x, y, z});
                             }
                         }

@@ -12,10 +12,13 @@
 
 namespace luxel::voxel {
 
+// Most emitters listed (12 bytes each); a world with more leaves its emitters to bounce rays.
+inline constexpr int kMaxPathEmitters = 1 << 24;
+
 class PathEmitters {
   public:
     // Every solid voxel whose material (materials.forSlot of its texture slot) emits; an empty
-    // list, without a scan, when no material emits.
+    // list, without a scan, when no material emits, and when more than kMaxPathEmitters do.
     static PathEmitters find(const VoxelWorld& world, const MaterialTable& materials);
 
     bool empty() const { return voxels_.empty(); }
