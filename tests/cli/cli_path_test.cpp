@@ -28,6 +28,9 @@ TEST_F(CliPath, PathTracesAVoxelScene) {
                  path("p.exr") + " --png " + path("p.png") + " --std-error " + path("e.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("path traced"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("wrote " + path("p.exr") + ", " + path("p.png") + ", " + path("e.exr")),
+              std::string::npos)
+        << r.output;
     EXPECT_NE(r.output.find("path tracing: 2 samples per pixel, at most 3 bounces, seed 7, "
                             "relative standard error "),
               std::string::npos)

@@ -252,8 +252,9 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
             std::printf("  internal %dx%d (%s upscaler), bloom %.2f\n", internal.width(),
                         internal.height(), post::upscalerName(post.upscaler), post.bloom.strength);
         }
-        std::printf("  wrote %s%s%s\n", request.out.c_str(),
-                    request.out.empty() || request.png.empty() ? "" : ", ", request.png.c_str());
+        std::printf("  wrote %s%s%s%s%s\n", request.out.c_str(),
+                    request.out.empty() || request.png.empty() ? "" : ", ", request.png.c_str(),
+                    request.pathStdError.empty() ? "" : ", ", request.pathStdError.c_str());
     }
     return 0;
 }
