@@ -20,6 +20,7 @@
 #include "luxel/gpu/fwd.h"
 #include "luxel/post/post_options.h"
 #include "luxel/scene/scene_file.h"
+#include "luxel/voxel/path_trace.h"
 
 namespace luxel::cli {
 
@@ -130,6 +131,10 @@ struct VoxelRenderRequest {
     int samples = 0;
     std::string filter = {};
     bool autoExposure = false;  // --exposure auto (commands/render_outputs.h)
+    // --solver path: the path tracer (voxel/path_trace.h) instead of the ray caster.
+    bool pathSolver = false;
+    voxel::PathTraceOptions path = {};
+    std::string pathStdError = {};  // --std-error: where the standard error image goes (.exr)
 };
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene scene);
 

@@ -292,8 +292,15 @@ int runRender(const RenderArgs& args) {
     const ToneMapSettings tone{args.exposure.stops.value_or(0.0f), *curve};
     ThreadLimit threadLimit(args.threads);
     Stopwatch loadTime;
+    if (!args.pathSolver && !args.pathGiven.empty()) {
+        return reportError(Error(args.pathGiven.front() + " applies to --solver path"));
+    }
     auto file = loadScene(args.scene, args.size, args.frame);
     if (!file) return reportError(file.error());
+    if (args.pathSolver && file->kind() != scene::SceneKind::Voxel) {
+        return reportError(Error("--solver path applies to voxel scenes; " + args.scene + " is " +
+                                 sceneKindPhrase(file->kind())));
+    }
     if (file->kind() == scene::SceneKind::TwoD && args.frame >= 0) {
         return reportError(Error("--frame applies to MagicaVoxel worlds; " + args.scene + " is " +
                                  sceneKindPhrase(file->kind())));
@@ -314,6 +321,11 @@ int runRender(const RenderArgs& args) {
         request.samples = args.samples;
         request.filter = args.filter;
         request.autoExposure = args.exposure.automatic;
+        request.pathSolver = args.pathSolver;
+        request.path.samplesPerPixel = args.spp;
+        request.path.maxBounces = args.maxBounces;
+        request.path.seed = args.seed;
+        request.pathStdError = args.stdError;
         if (!voxel && (args.samples != 0 || !args.filter.empty())) {
             return reportError(Error("--samples and --filter apply to voxel scenes; " + args.scene +
                                      " is " + sceneKindPhrase(file->kind())));

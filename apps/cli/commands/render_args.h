@@ -12,6 +12,7 @@
 #include "luxel/gi2d/rc_solver.h"
 #include "luxel/gi2d/reference_solver.h"
 #include "luxel/gi2d/solver_choice.h"
+#include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/render_image.h"
 
 namespace luxel::cli {
@@ -19,6 +20,7 @@ namespace luxel::cli {
 struct RenderArgs {
     std::string scene, solverName = "reference", size, out, png, tonemap = "aces";
     gi2d::Solver2D solver = gi2d::Solver2D::Reference;  // parsed from solverName
+    bool pathSolver = false;                            // --solver path (voxel scenes)
     std::vector<std::string> options2DGiven;            // 2D-only options on the command line
     int rays = gi2d::ReferenceOptions{}.rays;
     int threads = 0;
@@ -55,6 +57,11 @@ struct RenderArgs {
     // Voxel scenes: anti-aliasing and texture filtering (0 / empty: the scene's).
     int samples = 0;
     std::string filter;
+    // Voxel scenes, --solver path (voxel/path_trace.h); pathGiven: --spp or --max-bounces given.
+    int spp = voxel::PathTraceOptions{}.samplesPerPixel;
+    int maxBounces = voxel::PathTraceOptions{}.maxBounces;
+    std::string stdError;  // --std-error: the per-pixel standard error as EXR
+    std::vector<std::string> pathGiven;
 };
 
 // Renders what `args` asks for (any scene kind) and returns the exit code.

@@ -1,5 +1,6 @@
 // `luxel render`'s options: registration, and the names given -> the library's choices.
 #include <memory>
+#include <string_view>
 
 #include "commands/render_args.h"
 #include "luxel/gpu/backend_policy.h"
@@ -10,8 +11,10 @@ namespace {
 // The names given on the command line -> the library's enums (luxel/gi2d/solver_choice.h,
 // luxel/gpu/backend_policy.h), so the CLI and the viewer accept the same words.
 Status parseChoices(RenderArgs& args) {
-    auto solver = gi2d::parseSolver2D(args.solverName);
-    if (!solver) return solver.error();
+    args.pathSolver = args.solverName == "path";
+    auto solver = args.pathSolver ? Result<gi2d::Solver2D>(gi2d::Solver2D::Reference)
+                                  : gi2d::parseSolver2D(args.solverName);
+    if (!solver) return Error(solver.error().message() + " (voxel scenes: path)");
     auto merge = gi2d::parseRcMerge(args.mergeName);
     if (!merge) return merge.error();
     auto backend = gpu::parseBackend(args.backendName);
@@ -50,7 +53,8 @@ Status parsePostFlags(RenderArgs& args, const CLI::App& command) {
 Runner addRenderCommand(CLI::App& app) {
     auto args = std::make_shared<RenderArgs>();
     app.add_option("scene", args->scene, "scene file (.json)")->required();
-    app.add_option("--solver", args->solverName, "light transport solver: reference, hrc, rc")
+    app.add_option("--solver", args->solverName,
+                   "light transport solver: reference, hrc, rc (2D scenes); path (voxel scenes)")
         ->capture_default_str();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
     addVoxFrameOption(app, args->frame);
@@ -60,7 +64,8 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option("--threads", args->threads, "worker threads (0 = all cores)")
         ->check(wholeIn(0, 4096))
         ->capture_default_str();
-    app.add_option("--seed", args->seed, "random seed (reference solver)")->capture_default_str();
+    app.add_option("--seed", args->seed, "random seed (reference solver, path)")
+        ->capture_default_str();
     app.add_option("--supersample", args->supersample, "edge samples per pixel side")
         ->check(wholeIn(1, 64))
         ->capture_default_str();
@@ -135,13 +140,31 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option(
         "--filter", args->filter,
         "voxel: texture filter nearest, trilinear or anisotropic (default: the scene's)");
+    app.add_option("--spp", args->spp, "voxel, --solver path: samples per pixel")
+        ->check(wholeIn(1, voxel::kMaxPathSamples))
+        ->capture_default_str();
+    app.add_option("--max-bounces", args->maxBounces,
+                   "voxel, --solver path: most reflections of the light reaching the eye")
+        ->check(wholeIn(0, voxel::kMaxPathBounces))
+        ->capture_default_str();
+    app.add_option("--std-error", args->stdError,
+                   "voxel, --solver path: the standard error of each pixel's mean (.exr)");
     CLI::App* command = &app;
     return [args, command] {
+        for (const char* name : {"--spp", "--max-bounces", "--std-error"}) {
+            if (command->count(name) > 0) args->pathGiven.push_back(name);
+        }
+        // --solver path and its --seed belong to voxel scenes (runRender refuses them for 2D).
+        const bool path = args->solverName == "path";
         for (const char* name :
              {"--solver", "--rays", "--seed", "--supersample", "--traced-levels", "--no-blur",
               "--frustum", "--cascade", "--merge", "--march", "--probe-spacing", "--base-rays",
               "--base-interval", "--max-cascades", "--view", "--bounces"}) {
-            if (command->count(name) > 0) args->options2DGiven.push_back(name);
+            const bool pathOption =
+                std::string_view(name) == "--solver" || std::string_view(name) == "--seed";
+            if (command->count(name) > 0 && !(path && pathOption)) {
+                args->options2DGiven.push_back(name);
+            }
         }
         if (Status s = parseChoices(*args); !s) return reportError(s.error());
         if (Status s = parsePostFlags(*args, *command); !s) return reportError(s.error());

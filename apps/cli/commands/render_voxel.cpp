@@ -1,5 +1,8 @@
 // `luxel render` for voxel scenes: DDA ray casting with shading, shadows and reflections, on the
-// CPU or (--backend) the GPU.
+// CPU or (--backend) the GPU; or, with --solver path, the CPU path tracer.
+#include <cctype>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -14,6 +17,7 @@
 #include "luxel/post/finish.h"
 #include "luxel/post/upscale.h"
 #include "luxel/post/voxel_frames.h"
+#include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/render_image.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/shadows/sun_visibility.h"
@@ -22,6 +26,24 @@
 
 namespace luxel::cli {
 namespace {
+
+// The path tracer's line of the summary: its settings and the noise left.
+void printPathSummary(const voxel::PathTraceOptions& path, double relativeError) {
+    std::printf("  path tracing: %d samples per pixel, at most %d bounces, seed %llu, ",
+                path.samplesPerPixel, path.maxBounces, static_cast<unsigned long long>(path.seed));
+    if (std::isnan(relativeError)) {
+        std::printf("standard error n/a (needs 2 samples or more, and light)\n");
+    } else {
+        std::printf("relative standard error %.3f%%\n", 100.0 * relativeError);
+    }
+}
+
+bool endsWithExr(const std::string& path) {
+    if (path.size() < 4) return false;
+    std::string ext = path.substr(path.size() - 4);
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".exr";
+}
 
 Result<Image> renderOnGpu(gpu::Context& context, const voxel::VoxelScene& scene,
                           const voxel::Camera& camera) {
@@ -120,7 +142,26 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         }
         scene->shading.textureFilter = *filter;
     }
-    auto context = chooseGpuBackend(request.backend, request.device, request.quiet);
+    const VoxelSurfaceFlags& f = request.surfaces;
+    const bool casterFlags = request.samples != 0 || !request.filter.empty() ||
+                             !f.lighting.empty() || !f.specular.empty() || !f.fresnel.empty() ||
+                             f.noRefraction || !f.shadows.empty();
+    if (request.pathSolver && casterFlags) {
+        return reportError(
+            Error("--samples, --filter and the surface flags (--lighting, "
+                  "--specular, --fresnel, --no-refraction, --shadows) apply to the "
+                  "ray caster; --solver path takes --spp and --max-bounces"));
+    }
+    if (!request.pathStdError.empty() && !endsWithExr(request.pathStdError)) {
+        return reportError(Error("--std-error '" + request.pathStdError +
+                                 "' must be an .exr file (linear float)"));
+    }
+    if (request.pathSolver && request.backend == gpu::Backend::Gpu) {
+        return reportError(Error("--solver path runs on the CPU; --backend gpu does not apply"));
+    }
+    auto context = request.pathSolver
+                       ? Result<std::unique_ptr<gpu::Context>>(nullptr)
+                       : chooseGpuBackend(request.backend, request.device, request.quiet);
     if (!context) return reportError(context.error());
     const post::PostOptions post = applyPostFlags(scene->post, request.post);
     const int width = scene->camera.width(), height = scene->camera.height();
@@ -130,14 +171,25 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
                                   post::internalSide(height, post.internalScale))
             : scene->camera;
     // Refuse before the first frame buffer (`luxel info` reports the same estimate).
-    if (Status s =
-            checkRenderMemory(width, height, frameBytes(width, height, post, *context != nullptr));
+    // The path tracer adds its running sums: 8 doubles a pixel.
+    const std::uint64_t pathBytes =
+        request.pathSolver ? std::uint64_t(camera.width()) * camera.height() * 64 : 0;
+    if (Status s = checkRenderMemory(
+            width, height, frameBytes(width, height, post, *context != nullptr) + pathBytes);
         !s) {
         return reportError(s.error());
     }
     Stopwatch renderTime;
-    Image internal;
-    if (*context) {
+    Image internal, standardError;
+    double relativeError = 0.0;
+    if (request.pathSolver) {
+        auto traced =
+            voxel::pathTrace(scene->world, camera, scene->shading, request.path, &scene->textures);
+        if (!traced) return reportError(traced.error());
+        relativeError = traced->relativeError;
+        internal = std::move(traced->radiance);
+        standardError = std::move(traced->standardError);
+    } else if (*context) {
         auto image = renderOnGpu(**context, *scene, camera);
         if (!image) return reportError(image.error());
         internal = std::move(*image);
@@ -158,26 +210,51 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
     images.quiet = request.quiet;
     images.metadata = voxelMetadata(request.scene, scene->shading, post, width, height,
                                     context->get(), renderSeconds);
+    if (request.pathSolver) {
+        setMetadata(images.metadata, "luxel.solver", "path");
+        setMetadata(images.metadata, "luxel.lighting", "path");
+        setNumber(images.metadata, "luxel.samples", request.path.samplesPerPixel);
+        setNumber(images.metadata, "luxel.path.max_bounces", request.path.maxBounces);
+        setMetadata(images.metadata, "luxel.seed", std::to_string(request.path.seed));
+        setNumber(images.metadata, "luxel.path.relative_error", relativeError);
+    }
+    ImageMetadata errorMetadata = images.metadata;
     if (Status s = writeRenderImages(std::move(images)); !s) return reportError(s.error());
+    if (!request.pathStdError.empty()) {
+        // At the internal size: the post pipeline does not apply to an error estimate.
+        setMetadata(errorMetadata, "luxel.content", "standard error, linear");
+        if (Status s = writeImages({{request.pathStdError, &standardError, &errorMetadata}}); !s) {
+            return reportError(s.error());
+        }
+    }
     if (request.stats) std::printf("stats solve_seconds=%.6f\n", renderSeconds);
     if (!request.quiet) {
         const Int3 s = scene->world.size();
         const double pixels = static_cast<double>(radiance.width()) * radiance.height();
-        std::printf("%s: voxel world %dx%dx%d (%llu solid), image %dx%d, %d reflections, %s\n",
+        const std::string transport =
+            request.pathSolver ? "path traced"
+                               : std::to_string(scene->shading.maxReflections) + " reflections";
+        std::printf("%s: voxel world %dx%dx%d (%llu solid), image %dx%d, %s, %s\n",
                     request.scene.c_str(), s.x, s.y, s.z,
                     static_cast<unsigned long long>(scene->world.solidCount()), radiance.width(),
-                    radiance.height(), scene->shading.maxReflections,
+                    radiance.height(), transport.c_str(),
                     *context ? ("gpu: " + (**context).device().name).c_str() : "cpu");
-        std::printf("  %d samples per pixel, %s textures\n", voxel::samplesPerPixel(scene->shading),
-                    voxel::textureFilterName(scene->shading.textureFilter));
+        if (request.pathSolver) {
+            printPathSummary(request.path, relativeError);
+        } else {
+            std::printf("  %d samples per pixel, %s textures\n",
+                        voxel::samplesPerPixel(scene->shading),
+                        voxel::textureFilterName(scene->shading.textureFilter));
+        }
         std::printf("  world %.3f s, render %.3f s incl. upload (%.2f Mpixel/s)\n", loadSeconds,
                     renderSeconds, pixels / renderSeconds * 1e-6);
         if (post.internalScale < 1.0f || post.bloom.strength > 0.0f) {
             std::printf("  internal %dx%d (%s upscaler), bloom %.2f\n", internal.width(),
                         internal.height(), post::upscalerName(post.upscaler), post.bloom.strength);
         }
-        std::printf("  wrote %s%s%s\n", request.out.c_str(),
-                    request.out.empty() || request.png.empty() ? "" : ", ", request.png.c_str());
+        std::printf("  wrote %s%s%s%s%s\n", request.out.c_str(),
+                    request.out.empty() || request.png.empty() ? "" : ", ", request.png.c_str(),
+                    request.pathStdError.empty() ? "" : ", ", request.pathStdError.c_str());
     }
     return 0;
 }

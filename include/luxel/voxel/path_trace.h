@@ -1,0 +1,106 @@
+// A progressive Monte Carlo path tracer over the voxel world: the ground truth that faster voxel
+// lighting is measured against (docs/algorithms/voxel-path-tracing.md).
+//
+// Surfaces are Lambertian with albedo = voxel colour x texel x material albedo (as the physical
+// shading computes it); emissive materials emit their `emission`. Light comes from the sun (a
+// delta directional light of `sunIrradiance` towards `sunDirection`, sampled by next event
+// estimation with a shadow ray) and the scene's gradient sky (skyColor in shading.h), which rays
+// leaving the world see; emissive voxels are sampled as lights too, combined with the bounce rays
+// by multiple importance sampling. Bounces sample the cosine-weighted hemisphere; Russian roulette
+// ends paths after `rouletteAfter` bounces. Each sample draws its random numbers from a
+// counter-based generator keyed by (seed, pixel, sample), so images are bit-identical for any
+// thread count and for any split of the samples into progressive passes.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "luxel/core/error.h"
+#include "luxel/core/image.h"
+#include "luxel/core/vec.h"
+#include "luxel/voxel/camera.h"
+#include "luxel/voxel/dda.h"
+#include "luxel/voxel/path_trace_emitters.h"
+#include "luxel/voxel/path_trace_rng.h"
+#include "luxel/voxel/shading.h"
+#include "luxel/voxel/texture_set.h"
+#include "luxel/voxel/voxel_world.h"
+
+namespace luxel::voxel {
+
+inline constexpr int kMaxPathSamples = 1 << 20;  // samples per pixel
+inline constexpr int kMaxPathBounces = 1024;
+// Largest image: the accumulator keeps 8 doubles (64 bytes) per pixel.
+inline constexpr std::int64_t kMaxPathPixels = std::int64_t(1) << 26;
+
+struct PathTraceOptions {
+    int samplesPerPixel = 16;  // 1..kMaxPathSamples (the standard error needs 2 or more)
+    // Most surface reflections of the light that reaches the eye, 0..kMaxPathBounces: 0 shows
+    // emitters and the sky only, 1 adds direct sun and sky light, 2 one bounce of indirect light.
+    int maxBounces = 8;
+    int rouletteAfter = 3;  // reflections before Russian roulette may end a path (>= 0)
+    std::uint64_t seed = 1;
+    // Next event estimation towards the emissive voxels, combined with the bounce rays by
+    // multiple importance sampling; off: bounce rays alone find them (same mean, more noise).
+    bool sampleEmitters = true;
+};
+
+// The options and the scene light (ShadeOptions' sun direction and irradiance, sky colours)
+// checked: finite, in range, a non-zero sun direction; the error names the field.
+Status validatePathTrace(const ShadeOptions& shading, const PathTraceOptions& options);
+
+// Radiance carried by one path sample along `ray`, drawing its random numbers from `rng`.
+// `shading` and `options` must be valid (validatePathTrace). `emitters` (PathEmitters::find of
+// the world and shading.materials; null or empty: none) are sampled as lights.
+Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
+              const ShadeOptions& shading, const PathTraceOptions& options, PathRng& rng,
+              const PathEmitters* emitters = nullptr);
+
+struct PathTraceImage {
+    Image radiance;       // mean linear radiance, RGB
+    Image standardError;  // standard error of that mean per pixel and channel (0 with 1 sample)
+    int samplesPerPixel = 0;
+    // Sum over pixels of the standard error of the mean luminance over the sum of the mean
+    // luminance: the noise left, relative to the image. NaN with 1 sample or a black image.
+    double relativeError = 0.0;
+};
+
+// Per-pixel running sums of the samples (and of their squares), so a render can grow pass by
+// pass: pass after pass gives the same image as one pass of all the samples. Keeps references to
+// the world and the textures, which must outlive it.
+class PathTracer {
+  public:
+    static Result<PathTracer> create(const VoxelWorld& world, const Camera& camera,
+                                     const ShadeOptions& shading, const PathTraceOptions& options,
+                                     const TextureSet* textures = nullptr);
+
+    // Adds samples samplesDone() .. samplesDone() + count - 1 of every pixel (rows in parallel).
+    // Fails when the total would exceed kMaxPathSamples.
+    Status addSamples(int count);
+    int samplesDone() const { return samples_; }
+    PathTraceImage image() const;
+
+  private:
+    struct PixelSums {
+        double sum[3] = {0, 0, 0}, sumSquares[3] = {0, 0, 0};
+        double luminance = 0, luminanceSquares = 0;
+    };
+    PathTracer(const VoxelWorld& world, const Camera& camera, const ShadeOptions& shading,
+               const PathTraceOptions& options, const TextureSet* textures);
+
+    const VoxelWorld* world_;
+    Camera camera_;
+    ShadeOptions shading_;
+    PathTraceOptions options_;
+    const TextureSet* textures_;
+    PathEmitters emitters_;
+    std::vector<PixelSums> sums_;
+    int samples_ = 0;
+};
+
+// PathTracer with options.samplesPerPixel samples in one pass.
+Result<PathTraceImage> pathTrace(const VoxelWorld& world, const Camera& camera,
+                                 const ShadeOptions& shading, const PathTraceOptions& options,
+                                 const TextureSet* textures = nullptr);
+
+}  // namespace luxel::voxel

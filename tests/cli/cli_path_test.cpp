@@ -1,0 +1,115 @@
+// `luxel render --solver path` end to end: a shipped voxel scene path traced at a small size
+// (image, provenance, summary), and the refusals: path on a 2D or octree scene, --spp without
+// --solver path, the ray caster's flags with it, bad sample counts.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "luxel/core/image_io.h"
+#include "luxel/core/image_metadata.h"
+#include "support/cli_fixture.h"
+
+namespace {
+
+using luxel::test::runLuxel;
+using luxel::test::RunResult;
+
+class CliPath : public luxel::test::CliFixture {};
+
+const std::string kScenes = std::string(LUXEL_SOURCE_DIR) + "/scenes/";
+const std::string kTerrain = kScenes + "voxel/terrain.json";
+
+TEST_F(CliPath, PathTracesAVoxelScene) {
+    const RunResult r =
+        runLuxel("render " + kTerrain +
+                 " --solver path --spp 2 --seed 7 --max-bounces 3 --size 32x18 "
+                 "--out " +
+                 path("p.exr") + " --png " + path("p.png") + " --std-error " + path("e.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("path traced"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("wrote " + path("p.exr") + ", " + path("p.png") + ", " + path("e.exr")),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("path tracing: 2 samples per pixel, at most 3 bounces, seed 7, "
+                            "relative standard error "),
+              std::string::npos)
+        << r.output;
+    luxel::ImageMetadata metadata;
+    auto exr = luxel::readExr(path("p.exr"), &metadata);
+    ASSERT_TRUE(exr.ok()) << exr.error().message();
+    EXPECT_EQ(exr->width(), 32);
+    EXPECT_EQ(exr->height(), 18);
+    double sum = 0.0;
+    for (int y = 0; y < 18; ++y)
+        for (int x = 0; x < 32; ++x) sum += exr->at(x, y, 1);
+    EXPECT_TRUE(std::isfinite(sum));
+    EXPECT_GT(sum, 0.0);
+    auto value = [&](const char* key) {
+        const std::string* v = luxel::findMetadata(metadata, key);
+        return v ? *v : std::string("(missing)");
+    };
+    EXPECT_EQ(value("luxel.solver"), "path");
+    EXPECT_EQ(value("luxel.samples"), "2");
+    EXPECT_EQ(value("luxel.seed"), "7");
+    EXPECT_TRUE(luxel::readPng(path("p.png")).ok());
+
+    // The standard error: as large as the image, finite, >= 0, > 0 where samples differ.
+    luxel::ImageMetadata errorMetadata;
+    auto error = luxel::readExr(path("e.exr"), &errorMetadata);
+    ASSERT_TRUE(error.ok()) << error.error().message();
+    ASSERT_EQ(error->width(), 32);
+    ASSERT_EQ(error->height(), 18);
+    int noisy = 0;
+    for (int y = 0; y < 18; ++y)
+        for (int x = 0; x < 32; ++x) {
+            const float e = error->at(x, y, 1);
+            ASSERT_TRUE(std::isfinite(e) && e >= 0.0f) << e;
+            noisy += e > 0.0f;
+        }
+    EXPECT_GT(noisy, 0);
+    const std::string* content = luxel::findMetadata(errorMetadata, "luxel.content");
+    ASSERT_NE(content, nullptr);
+    EXPECT_EQ(*content, "standard error, linear");
+
+    // Seed 7 again: an identical image.
+    const RunResult again = runLuxel("render " + kTerrain +
+                                     " --solver path --spp 2 --seed 7 --max-bounces 3 "
+                                     "--size 32x18 --quiet --out " +
+                                     path("q.exr"));
+    ASSERT_EQ(again.exitCode, 0) << again.output;
+    auto second = luxel::readExr(path("q.exr"));
+    ASSERT_TRUE(second.ok());
+    for (int y = 0; y < 18; ++y)
+        for (int x = 0; x < 32; ++x) ASSERT_EQ(second->at(x, y, 0), exr->at(x, y, 0));
+}
+
+TEST_F(CliPath, RefusesPathWhereItDoesNotApply) {
+    const std::string out = " --out " + path("x.exr");
+    expectError("render " + kScenes + "2d/room.json --solver path" + out,
+                "--solver path applies to voxel scenes; " + kScenes + "2d/room.json is a 2D scene");
+    expectError("render " + kScenes + "octree/terrain.json --solver path" + out,
+                "--solver path applies to voxel scenes");
+    expectError("render " + kTerrain + " --spp 4" + out, "--spp applies to --solver path");
+    expectError("render " + kTerrain + " --max-bounces 2" + out,
+                "--max-bounces applies to --solver path");
+    expectError("render " + kTerrain + " --solver path --samples 4" + out,
+                "apply to the ray caster; --solver path takes --spp");
+    expectError("render " + kTerrain + " --solver path --std-error " + path("e.png") + out,
+                "' must be an .exr file");
+    expectError("render " + kTerrain + " --std-error " + path("e.exr") + out,
+                "--std-error applies to --solver path");
+    expectError("render " + kTerrain + " --solver path --backend gpu" + out,
+                "--solver path runs on the CPU");
+    expectError("render " + kTerrain + " --solver pt" + out,
+                "--solver 'pt' is not one of: reference, hrc, rc (voxel scenes: path)");
+    // A 2D solver on a voxel scene is refused as before.
+    expectError("render " + kTerrain + " --solver rc" + out, "--solver applies to 2D scenes");
+    for (const char* spp : {"0", "-3", "1e9", "nan"}) {
+        const RunResult r = runLuxel("render " + kTerrain + " --solver path --spp " + spp + out);
+        EXPECT_EQ(r.exitCode, 1) << spp << ": " << r.output;
+        EXPECT_NE(r.output.find("--spp"), std::string::npos) << r.output;
+    }
+}
+
+}  // namespace
