@@ -9,6 +9,7 @@
 #include "luxel/core/tonemap.h"
 #include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/surface_cast.h"
+#include "path_trace_surface.h"
 
 namespace luxel::voxel {
 namespace {
@@ -33,28 +34,6 @@ Status finiteNonNegative(const char* field, Rgb c) {
         }
     }
     return Ok{};
-}
-
-struct Surface {
-    Rgb albedo, emission;
-};
-
-// What the hit face reflects and emits: the physical shading's surface colour (voxel colour x
-// texel x procedural texture x material albedo; nearest texel), every material taken as diffuse.
-Surface surfaceAt(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& o) {
-    const Hit& hit = s.hit;
-    const Voxel voxel = world.get(hit.voxel.x, hit.voxel.y, hit.voxel.z);
-    const int materialSlot = textureSlotOf(voxel);
-    const Material& m = o.materials.forSlot(materialSlot);
-    Rgb colour = Rgb(srgbToLinear(voxel.r / 255.0f), srgbToLinear(voxel.g / 255.0f),
-                     srgbToLinear(voxel.b / 255.0f)) *
-                 m.albedo;
-    if (s.slot >= 0) colour = colour * Rgb(s.texel.r, s.texel.g, s.texel.b);
-    const bool procedural =
-        o.textures && (s.slot < 0 ? !o.materials.hasSlot(materialSlot) || m.proceduralTexture
-                                  : o.materials.hasSlot(s.slot) && m.proceduralTexture);
-    if (procedural) colour = colour * textureFactor(hit, o);
-    return {colour, m.emission};
 }
 
 // Power-heuristic weight of a strategy of density `mine` against one of density `other`.
@@ -83,16 +62,47 @@ Rgb emitterLight(const VoxelWorld& world, const TextureSet* textures, const Path
     return albedo * emission * float(cosSurface / kPi * weight / s.pdf);
 }
 
-bool sunBlocked(const VoxelWorld& world, const TextureSet* textures, const Ray& ray, int stepCap) {
-    // Cutout texels let sunlight through, as they let camera rays through.
-    if (textures && !textures->empty()) {
-        return castToSurface(world, textures, ray, stepCap).hit.hit;
-    }
-    return occluded(world, ray, kInfinity, stepCap);
+}  // namespace
+
+PathSurface pathSurfaceAt(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& o) {
+    const Hit& hit = s.hit;
+    const Voxel voxel = world.get(hit.voxel.x, hit.voxel.y, hit.voxel.z);
+    const int materialSlot = textureSlotOf(voxel);
+    const Material& m = o.materials.forSlot(materialSlot);
+    Rgb colour = Rgb(srgbToLinear(voxel.r / 255.0f), srgbToLinear(voxel.g / 255.0f),
+                     srgbToLinear(voxel.b / 255.0f)) *
+                 m.albedo;
+    if (s.slot >= 0) colour = colour * Rgb(s.texel.r, s.texel.g, s.texel.b);
+    const bool procedural =
+        o.textures && (s.slot < 0 ? !o.materials.hasSlot(materialSlot) || m.proceduralTexture
+                                  : o.materials.hasSlot(s.slot) && m.proceduralTexture);
+    if (procedural) colour = colour * textureFactor(hit, o);
+    return {colour, m.emission};
 }
 
-// A cosine-weighted direction about the axis-aligned normal n (the face's tangents complete the
-// frame): pdf cos / pi, so a Lambertian bounce weighs albedo exactly.
+bool surfaceRayBlocked(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
+                       double tMax, int stepCap) {
+    // Cutout texels let light through, as they let camera rays through.
+    if (textures && !textures->empty()) {
+        const Hit hit = castToSurface(world, textures, ray, stepCap).hit;
+        return hit.hit && hit.t <= tMax;
+    }
+    return occluded(world, ray, tMax, stepCap);
+}
+
+Rgb directSunLight(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb albedo,
+                   const ShadeOptions& o) {
+    if (!(o.sunIrradiance.maxComponent() > 0.0f)) return {};
+    const Vec3d sun = normalize(Vec3d{o.sunDirection.x, o.sunDirection.y, o.sunDirection.z});
+    const double cosSun = dot(toDouble(hit.normal), sun);
+    // Rays start on the face; castRay's start-cell rule puts them in the cell in front.
+    if (!(cosSun > 0.0) ||
+        surfaceRayBlocked(world, textures, {hit.point, sun}, kInfinity, o.stepCap)) {
+        return {};
+    }
+    return albedo * o.sunIrradiance * float(cosSun / kPi);
+}
+
 Vec3d cosineDirection(Int3 normal, float u1, float u2) {
     const Vec3d n = toDouble(normal);
     Vec3d tu{0, 0, 1}, tv{0, 1, 0};
@@ -106,8 +116,6 @@ Vec3d cosineDirection(Int3 normal, float u1, float u2) {
     const double z = std::sqrt(1.0 - double(u1));
     return tu * (r * std::cos(phi)) + tv * (r * std::sin(phi)) + n * z;
 }
-
-}  // namespace
 
 Status validatePathTrace(const ShadeOptions& o, const PathTraceOptions& p) {
     if (p.samplesPerPixel < 1 || p.samplesPerPixel > kMaxPathSamples) {
@@ -139,8 +147,6 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
               const ShadeOptions& o, const PathTraceOptions& p, PathRng& rng,
               const PathEmitters* emitters) {
     if (emitters && emitters->empty()) emitters = nullptr;
-    const Vec3d sun = normalize(Vec3d{o.sunDirection.x, o.sunDirection.y, o.sunDirection.z});
-    const bool sunLit = o.sunIrradiance.maxComponent() > 0.0f;
     Rgb radiance, throughput(1.0f);
     Ray ray = cameraRay;
     Vec3d bounceOrigin;      // where the last bounce ray started
@@ -154,7 +160,7 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
         }
         const Hit& hit = s.hit;
         if (hit.normal == Int3{}) break;  // started inside a solid voxel: no light
-        const Surface surface = surfaceAt(world, s, o);
+        const PathSurface surface = pathSurfaceAt(world, s, o);
         if (surface.emission.maxComponent() > 0.0f) {
             // Seen by a bounce ray that emitter sampling could also have found: MIS-weighted.
             double weight = 1.0;
@@ -167,11 +173,7 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
         }
         if (k == p.maxBounces) break;
         // Next event estimation: the sun is a delta light, reached only by this shadow ray.
-        // Rays start on the face; castRay's start-cell rule puts them in the cell in front.
-        const double cosSun = dot(toDouble(hit.normal), sun);
-        if (sunLit && cosSun > 0.0 && !sunBlocked(world, textures, {hit.point, sun}, o.stepCap)) {
-            radiance += throughput * surface.albedo * o.sunIrradiance * float(cosSun / kPi);
-        }
+        radiance += throughput * directSunLight(world, textures, hit, surface.albedo, o);
         if (emitters) {
             radiance +=
                 throughput * emitterLight(world, textures, *emitters, hit, surface.albedo, o, rng);

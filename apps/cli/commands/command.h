@@ -21,6 +21,7 @@
 #include "luxel/post/post_options.h"
 #include "luxel/scene/scene_file.h"
 #include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/sky_visibility.h"
 
 namespace luxel::cli {
 
@@ -135,6 +136,9 @@ struct VoxelRenderRequest {
     bool pathSolver = false;
     voxel::PathTraceOptions path = {};
     std::string pathStdError = {};  // --std-error: where the standard error image goes (.exr)
+    // --solver ao: sky visibility (voxel/sky_visibility.h) instead of the ray caster.
+    bool aoSolver = false;
+    voxel::SkyVisibilityOptions ao = {};
 };
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene scene);
 

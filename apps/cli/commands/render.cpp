@@ -295,11 +295,18 @@ int runRender(const RenderArgs& args) {
     if (!args.pathSolver && !args.pathGiven.empty()) {
         return reportError(Error(args.pathGiven.front() + " applies to --solver path"));
     }
+    if (!args.aoSolver && !args.aoGiven.empty()) {
+        return reportError(Error(args.aoGiven.front() + " applies to --solver ao"));
+    }
+    if (args.aoSolver && !(args.aoRadius > 0.0)) {
+        return reportError(
+            Error("--ao-radius must be > 0 voxels (or inf), got " + std::to_string(args.aoRadius)));
+    }
     auto file = loadScene(args.scene, args.size, args.frame);
     if (!file) return reportError(file.error());
-    if (args.pathSolver && file->kind() != scene::SceneKind::Voxel) {
-        return reportError(Error("--solver path applies to voxel scenes; " + args.scene + " is " +
-                                 sceneKindPhrase(file->kind())));
+    if ((args.pathSolver || args.aoSolver) && file->kind() != scene::SceneKind::Voxel) {
+        return reportError(Error("--solver " + args.solverName + " applies to voxel scenes; " +
+                                 args.scene + " is " + sceneKindPhrase(file->kind())));
     }
     if (file->kind() == scene::SceneKind::TwoD && args.frame >= 0) {
         return reportError(Error("--frame applies to MagicaVoxel worlds; " + args.scene + " is " +
@@ -326,6 +333,8 @@ int runRender(const RenderArgs& args) {
         request.path.maxBounces = args.maxBounces;
         request.path.seed = args.seed;
         request.pathStdError = args.stdError;
+        request.aoSolver = args.aoSolver;
+        request.ao = {args.aoRays, args.aoRadius, args.seed};
         if (!voxel && (args.samples != 0 || !args.filter.empty())) {
             return reportError(Error("--samples and --filter apply to voxel scenes; " + args.scene +
                                      " is " + sceneKindPhrase(file->kind())));

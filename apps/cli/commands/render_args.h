@@ -14,6 +14,7 @@
 #include "luxel/gi2d/solver_choice.h"
 #include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/render_image.h"
+#include "luxel/voxel/sky_visibility.h"
 
 namespace luxel::cli {
 
@@ -21,6 +22,7 @@ struct RenderArgs {
     std::string scene, solverName = "reference", size, out, png, tonemap = "aces";
     gi2d::Solver2D solver = gi2d::Solver2D::Reference;  // parsed from solverName
     bool pathSolver = false;                            // --solver path (voxel scenes)
+    bool aoSolver = false;                              // --solver ao (voxel scenes)
     std::vector<std::string> options2DGiven;            // 2D-only options on the command line
     int rays = gi2d::ReferenceOptions{}.rays;
     int threads = 0;
@@ -62,6 +64,10 @@ struct RenderArgs {
     int maxBounces = voxel::PathTraceOptions{}.maxBounces;
     std::string stdError;  // --std-error: the per-pixel standard error as EXR
     std::vector<std::string> pathGiven;
+    // Voxel scenes, --solver ao (voxel/sky_visibility.h); aoGiven: --ao-rays or --ao-radius given.
+    int aoRays = voxel::SkyVisibilityOptions{}.rays;
+    double aoRadius = voxel::SkyVisibilityOptions{}.radius;
+    std::vector<std::string> aoGiven;
 };
 
 // Renders what `args` asks for (any scene kind) and returns the exit code.

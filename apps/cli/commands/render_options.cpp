@@ -12,9 +12,11 @@ namespace {
 // luxel/gpu/backend_policy.h), so the CLI and the viewer accept the same words.
 Status parseChoices(RenderArgs& args) {
     args.pathSolver = args.solverName == "path";
-    auto solver = args.pathSolver ? Result<gi2d::Solver2D>(gi2d::Solver2D::Reference)
-                                  : gi2d::parseSolver2D(args.solverName);
-    if (!solver) return Error(solver.error().message() + " (voxel scenes: path)");
+    args.aoSolver = args.solverName == "ao";
+    auto solver = args.pathSolver || args.aoSolver
+                      ? Result<gi2d::Solver2D>(gi2d::Solver2D::Reference)
+                      : gi2d::parseSolver2D(args.solverName);
+    if (!solver) return Error(solver.error().message() + " (voxel scenes: path, ao)");
     auto merge = gi2d::parseRcMerge(args.mergeName);
     if (!merge) return merge.error();
     auto backend = gpu::parseBackend(args.backendName);
@@ -53,8 +55,9 @@ Status parsePostFlags(RenderArgs& args, const CLI::App& command) {
 Runner addRenderCommand(CLI::App& app) {
     auto args = std::make_shared<RenderArgs>();
     app.add_option("scene", args->scene, "scene file (.json)")->required();
-    app.add_option("--solver", args->solverName,
-                   "light transport solver: reference, hrc, rc (2D scenes); path (voxel scenes)")
+    app.add_option(
+           "--solver", args->solverName,
+           "light transport solver: reference, hrc, rc (2D scenes); path, ao (voxel scenes)")
         ->capture_default_str();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
     addVoxFrameOption(app, args->frame);
@@ -64,7 +67,7 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option("--threads", args->threads, "worker threads (0 = all cores)")
         ->check(wholeIn(0, 4096))
         ->capture_default_str();
-    app.add_option("--seed", args->seed, "random seed (reference solver, path)")
+    app.add_option("--seed", args->seed, "random seed (reference solver, path, ao)")
         ->capture_default_str();
     app.add_option("--supersample", args->supersample, "edge samples per pixel side")
         ->check(wholeIn(1, 64))
@@ -149,13 +152,23 @@ Runner addRenderCommand(CLI::App& app) {
         ->capture_default_str();
     app.add_option("--std-error", args->stdError,
                    "voxel, --solver path: the standard error of each pixel's mean (.exr)");
+    app.add_option("--ao-rays", args->aoRays,
+                   "voxel, --solver ao: sky visibility rays per surface point")
+        ->check(wholeIn(1, voxel::kMaxSkyRays))
+        ->capture_default_str();
+    app.add_option("--ao-radius", args->aoRadius,
+                   "voxel, --solver ao: ray length in voxels (inf: whole sky visibility)")
+        ->capture_default_str();
     CLI::App* command = &app;
     return [args, command] {
         for (const char* name : {"--spp", "--max-bounces", "--std-error"}) {
             if (command->count(name) > 0) args->pathGiven.push_back(name);
         }
-        // --solver path and its --seed belong to voxel scenes (runRender refuses them for 2D).
-        const bool path = args->solverName == "path";
+        for (const char* name : {"--ao-rays", "--ao-radius"}) {
+            if (command->count(name) > 0) args->aoGiven.push_back(name);
+        }
+        // --solver path/ao and --seed belong to voxel scenes (runRender refuses them for 2D).
+        const bool path = args->solverName == "path" || args->solverName == "ao";
         for (const char* name :
              {"--solver", "--rays", "--seed", "--supersample", "--traced-levels", "--no-blur",
               "--frustum", "--cascade", "--merge", "--march", "--probe-spacing", "--base-rays",

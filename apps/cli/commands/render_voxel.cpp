@@ -1,5 +1,6 @@
 // `luxel render` for voxel scenes: DDA ray casting with shading, shadows and reflections, on the
-// CPU or (--backend) the GPU; or, with --solver path, the CPU path tracer.
+// CPU or (--backend) the GPU; or, with --solver path, the CPU path tracer; or, with --solver ao,
+// CPU sky visibility.
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -21,6 +22,7 @@
 #include "luxel/voxel/render_image.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/shadows/sun_visibility.h"
+#include "luxel/voxel/sky_visibility.h"
 #include "luxel/voxel/voxel_gpu.h"
 #include "luxel/voxel/voxel_scene.h"
 
@@ -36,6 +38,12 @@ void printPathSummary(const voxel::PathTraceOptions& path, double relativeError)
     } else {
         std::printf("relative standard error %.3f%%\n", 100.0 * relativeError);
     }
+}
+
+// Sky visibility's line of the summary: its settings.
+void printAoSummary(const voxel::SkyVisibilityOptions& ao) {
+    std::printf("  sky visibility: %d rays per point, radius %g voxels, seed %llu\n", ao.rays,
+                ao.radius, static_cast<unsigned long long>(ao.seed));
 }
 
 bool endsWithExr(const std::string& path) {
@@ -152,14 +160,21 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
                   "--specular, --fresnel, --no-refraction, --shadows) apply to the "
                   "ray caster; --solver path takes --spp and --max-bounces"));
     }
+    if (request.aoSolver && casterFlags) {
+        return reportError(
+            Error("--samples, --filter and the surface flags (--lighting, "
+                  "--specular, --fresnel, --no-refraction, --shadows) apply to the "
+                  "ray caster; --solver ao takes --ao-rays and --ao-radius"));
+    }
     if (!request.pathStdError.empty() && !endsWithExr(request.pathStdError)) {
         return reportError(Error("--std-error '" + request.pathStdError +
                                  "' must be an .exr file (linear float)"));
     }
-    if (request.pathSolver && request.backend == gpu::Backend::Gpu) {
-        return reportError(Error("--solver path runs on the CPU; --backend gpu does not apply"));
+    if ((request.pathSolver || request.aoSolver) && request.backend == gpu::Backend::Gpu) {
+        return reportError(Error(std::string("--solver ") + (request.aoSolver ? "ao" : "path") +
+                                 " runs on the CPU; --backend gpu does not apply"));
     }
-    auto context = request.pathSolver
+    auto context = request.pathSolver || request.aoSolver
                        ? Result<std::unique_ptr<gpu::Context>>(nullptr)
                        : chooseGpuBackend(request.backend, request.device, request.quiet);
     if (!context) return reportError(context.error());
@@ -172,8 +187,11 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
             : scene->camera;
     // Refuse before the first frame buffer (`luxel info` reports the same estimate).
     // The path tracer adds its running sums: 8 doubles a pixel.
-    const std::uint64_t pathBytes =
-        request.pathSolver ? std::uint64_t(camera.width()) * camera.height() * 64 : 0;
+    // Sky visibility adds its visibility image and its radiance: 4 floats a pixel.
+    const std::uint64_t pathBytes = std::uint64_t(camera.width()) * camera.height() *
+                                    (request.pathSolver ? 64
+                                     : request.aoSolver ? 16
+                                                        : 0);
     if (Status s = checkRenderMemory(
             width, height, frameBytes(width, height, post, *context != nullptr) + pathBytes);
         !s) {
@@ -189,6 +207,11 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         relativeError = traced->relativeError;
         internal = std::move(traced->radiance);
         standardError = std::move(traced->standardError);
+    } else if (request.aoSolver) {
+        auto shaded = voxel::renderSkyVisibility(scene->world, camera, scene->shading, request.ao,
+                                                 &scene->textures);
+        if (!shaded) return reportError(shaded.error());
+        internal = std::move(shaded->radiance);
     } else if (*context) {
         auto image = renderOnGpu(**context, *scene, camera);
         if (!image) return reportError(image.error());
@@ -218,6 +241,13 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         setMetadata(images.metadata, "luxel.seed", std::to_string(request.path.seed));
         setNumber(images.metadata, "luxel.path.relative_error", relativeError);
     }
+    if (request.aoSolver) {
+        setMetadata(images.metadata, "luxel.solver", "ao");
+        setMetadata(images.metadata, "luxel.lighting", "sky visibility");
+        setNumber(images.metadata, "luxel.ao.rays", request.ao.rays);
+        setNumber(images.metadata, "luxel.ao.radius", request.ao.radius);
+        setMetadata(images.metadata, "luxel.seed", std::to_string(request.ao.seed));
+    }
     ImageMetadata errorMetadata = images.metadata;
     if (Status s = writeRenderImages(std::move(images)); !s) return reportError(s.error());
     if (!request.pathStdError.empty()) {
@@ -233,6 +263,7 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         const double pixels = static_cast<double>(radiance.width()) * radiance.height();
         const std::string transport =
             request.pathSolver ? "path traced"
+            : request.aoSolver ? "sky visibility"
                                : std::to_string(scene->shading.maxReflections) + " reflections";
         std::printf("%s: voxel world %dx%dx%d (%llu solid), image %dx%d, %s, %s\n",
                     request.scene.c_str(), s.x, s.y, s.z,
@@ -241,6 +272,8 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
                     *context ? ("gpu: " + (**context).device().name).c_str() : "cpu");
         if (request.pathSolver) {
             printPathSummary(request.path, relativeError);
+        } else if (request.aoSolver) {
+            printAoSummary(request.ao);
         } else {
             std::printf("  %d samples per pixel, %s textures\n",
                         voxel::samplesPerPixel(scene->shading),

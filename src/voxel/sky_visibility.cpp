@@ -1,0 +1,85 @@
+// Sky visibility and its renderer (sky_visibility.h; docs/algorithms/voxel-sky-visibility.md).
+// The surface model, sun shadows and ray directions are the path tracer's (path_trace_surface.h),
+// so with an infinite radius the image is the path tracer's one-reflection image in expectation.
+#include <cmath>
+#include <sstream>
+
+#include "luxel/core/parallel.h"
+#include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/sky_visibility.h"
+#include "luxel/voxel/surface_cast.h"
+#include "path_trace_surface.h"
+
+namespace luxel::voxel {
+
+Status validateSkyVisibility(const ShadeOptions& shading, const SkyVisibilityOptions& options) {
+    if (options.rays < 1 || options.rays > kMaxSkyRays) {
+        return Error("sky visibility rays must be in 1.." + std::to_string(kMaxSkyRays) + ", got " +
+                     std::to_string(options.rays));
+    }
+    if (!(options.radius > 0.0)) {  // NaN fails too; +infinity is allowed
+        std::ostringstream s;
+        s << options.radius;
+        return Error("sky visibility radius must be > 0 voxels (or infinite), got " + s.str());
+    }
+    // The scene light is the path tracer's: its check names the field.
+    return validatePathTrace(shading, PathTraceOptions{});
+}
+
+SkyVisibility estimateSkyVisibility(const VoxelWorld& world, const TextureSet* textures,
+                                    Vec3d point, Int3 normal, const ShadeOptions& shading,
+                                    const SkyVisibilityOptions& options, PathRng& rng) {
+    int escaped = 0;
+    Rgb sky;
+    for (int i = 0; i < options.rays; ++i) {
+        const float u1 = rng.next(), u2 = rng.next();
+        const Ray ray{point, cosineDirection(normal, u1, u2)};  // unit length: t is in voxels
+        if (surfaceRayBlocked(world, textures, ray, options.radius, shading.stepCap)) continue;
+        ++escaped;
+        sky += skyColor(ray.direction, shading);
+    }
+    const double n = options.rays;
+    return {escaped / n, sky * float(1.0 / n)};
+}
+
+Result<SkyVisibilityImage> renderSkyVisibility(const VoxelWorld& world, const Camera& camera,
+                                               const ShadeOptions& shading,
+                                               const SkyVisibilityOptions& options,
+                                               const TextureSet* textures) {
+    if (Status s = validateSkyVisibility(shading, options); !s) return s.error();
+    const int width = camera.width(), height = camera.height();
+    if (std::int64_t(width) * height > kMaxPathPixels) {
+        return Error("sky visibility: image " + std::to_string(width) + "x" +
+                     std::to_string(height) + " has more than " + std::to_string(kMaxPathPixels) +
+                     " pixels");
+    }
+    SkyVisibilityImage out{Image(width, height, 3), Image(width, height, 1)};
+    parallelForRange(height, 1, [&](int begin, int end) {
+        for (int y = begin; y < end; ++y) {
+            for (int x = 0; x < width; ++x) {
+                const Ray ray = camera.rayAt(x + 0.5, y + 0.5);
+                const SurfaceHit s = castToSurface(world, textures, ray, shading.stepCap);
+                Rgb radiance;
+                double visibility = 0.0;
+                if (!s.hit.hit) {  // left the world (or ran past the step cap): the sky
+                    radiance = skyColor(ray.direction, shading);
+                    visibility = 1.0;
+                } else if (s.hit.normal != Int3{}) {  // else the camera is inside a solid voxel
+                    const PathSurface surface = pathSurfaceAt(world, s, shading);
+                    PathRng rng(options.seed, std::uint64_t(y) * width + x, 0);
+                    const SkyVisibility v = estimateSkyVisibility(
+                        world, textures, s.hit.point, s.hit.normal, shading, options, rng);
+                    visibility = v.visibility;
+                    radiance = surface.emission +
+                               directSunLight(world, textures, s.hit, surface.albedo, shading) +
+                               surface.albedo * v.skyLight;
+                }
+                for (int c = 0; c < 3; ++c) out.radiance.at(x, y, c) = radiance[c];
+                out.visibility.at(x, y, 0) = float(visibility);
+            }
+        }
+    });
+    return out;
+}
+
+}  // namespace luxel::voxel
