@@ -299,8 +299,10 @@ int runRender(const RenderArgs& args) {
         return reportError(Error(args.aoGiven.front() + " applies to --solver ao"));
     }
     if (args.aoSolver && !(args.aoRadius > 0.0)) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", args.aoRadius);
         return reportError(
-            Error("--ao-radius must be > 0 voxels (or inf), got " + std::to_string(args.aoRadius)));
+            Error("--ao-radius must be > 0 voxels (or inf), got " + std::string(text)));
     }
     auto file = loadScene(args.scene, args.size, args.frame);
     if (!file) return reportError(file.error());
