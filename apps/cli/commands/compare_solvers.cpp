@@ -1,7 +1,8 @@
-// `luxel compare-solvers`: every 2D solver on one scene, each in its own process so its peak
-// memory can be measured: solve time, error against the reference solver, peak RSS; optionally a
-// side-by-side image grid of the display images and one of each solver's signed error
-// (docs/solver-errors.md). With --move, how each solver's image changes when the light moves.
+// `luxel compare-solvers`: every 2D solver on one scene (voxel scenes: compare_solvers_voxel.cpp),
+// each in its own process so its peak memory can be measured: solve time, error against the
+// reference solver, peak RSS; optionally a side-by-side image grid of the display images and one of
+// each solver's signed error (docs/solver-errors.md). With --move, how each solver's image changes
+// when the light moves.
 // --reference reuses a reference render instead of solving it again.
 #include <fcntl.h>
 #include <spawn.h>
@@ -19,6 +20,7 @@
 
 #include "commands/command.h"
 #include "commands/compare_moving_light.h"
+#include "commands/compare_solvers_run.h"
 #include "commands/error_image.h"
 #include "commands/render_outputs.h"
 #include "luxel/core/file_io.h"
@@ -28,6 +30,7 @@
 #include "luxel/gi2d/display.h"
 #include "luxel/gi2d/reference_solver.h"
 #include "luxel/post/label.h"
+#include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/voxel_scene.h"
 
 extern char** environ;
@@ -38,18 +41,9 @@ namespace {
 struct CompareSolversArgs {
     std::string scene, size, grid, errorImage, move, reference;
     int rays = 1024;
+    bool raysGiven = false;
+    int spp = 256;  // voxel scenes: the path-traced reference's samples per pixel
     double errorScalePercent = 10;
-};
-
-struct SolverRun {
-    const char* label;
-    std::vector<std::string> flags;
-};
-
-struct RunOutcome {
-    double solveMs = 0;
-    std::uint64_t peakBytes = 0;  // 0: not measured (a reused reference)
-    Image fluence, display;
 };
 
 // --reference: a fluence EXR that `luxel render --solver reference` wrote for this scene at this
@@ -97,7 +91,8 @@ Result<RunOutcome> reuseReference(const CompareSolversArgs& args, int& rays) {
     return out;
 }
 
-// "812 ms" or "59.2 s".
+}  // namespace
+
 std::string formatDuration(double ms) {
     char text[32];
     if (ms < 10000) {
@@ -108,15 +103,14 @@ std::string formatDuration(double ms) {
     return text;
 }
 
-// Runs `luxel render` for one solver in a child process and collects what it wrote.
-Result<RunOutcome> runSolver(const CompareSolversArgs& args, const SolverRun& solver,
-                             const std::filesystem::path& dir) {
+Result<RunOutcome> runSolverProcess(const std::string& scene, const std::string& size,
+                                    const SolverRun& solver, const std::filesystem::path& dir) {
     const std::string exr = (dir / (std::string(solver.label) + ".exr")).string();
     const std::string png = (dir / (std::string(solver.label) + ".png")).string();
     const std::string log = (dir / (std::string(solver.label) + ".log")).string();
-    std::vector<std::string> argv = {"/proc/self/exe", "render", args.scene, "--quiet", "--stats",
-                                     "--out",          exr,      "--png",    png};
-    if (!args.size.empty()) argv.insert(argv.end(), {"--size", args.size});
+    std::vector<std::string> argv = {"/proc/self/exe", "render", scene,   "--quiet", "--stats",
+                                     "--out",          exr,      "--png", png};
+    if (!size.empty()) argv.insert(argv.end(), {"--size", size});
     argv.insert(argv.end(), solver.flags.begin(), solver.flags.end());
     std::vector<char*> cargv;
     for (std::string& a : argv) cargv.push_back(a.data());
@@ -159,6 +153,8 @@ Result<RunOutcome> runSolver(const CompareSolversArgs& args, const SolverRun& so
     return out;
 }
 
+namespace {
+
 int runCompareSolvers(const CompareSolversArgs& args) {
     if (access(args.scene.c_str(), R_OK) != 0) {
         return reportError(Error("cannot open scene '" + args.scene + "'"));
@@ -166,10 +162,23 @@ int runCompareSolvers(const CompareSolversArgs& args) {
     if (auto size = parseSize(args.size); !size) return reportError(size.error());
     auto file = loadScene(args.scene, "");
     if (!file) return reportError(file.error());
+    if (file->kind() == scene::SceneKind::Voxel) {
+        for (const auto& [flag, given] : {std::pair{"--reference", !args.reference.empty()},
+                                          {"--move", !args.move.empty()},
+                                          {"--error-image", !args.errorImage.empty()},
+                                          {"--rays", args.raysGiven}}) {
+            if (given) {
+                return reportError(Error(std::string(flag) + " applies to 2D scenes; " +
+                                         args.scene +
+                                         " is a voxel scene (--spp sets the path "
+                                         "tracer's samples)"));
+            }
+        }
+        return compareVoxelSolvers({args.scene, args.size, args.grid, args.spp});
+    }
     if (file->kind() != scene::SceneKind::TwoD) {
         return reportError(Error(args.scene + ": " + sceneKindPhrase(file->kind()) +
-                                 "; compare-solvers compares the 2D "
-                                 "solvers"));
+                                 "; compare-solvers compares the 2D and the voxel solvers"));
     }
     if (!args.move.empty() && !args.reference.empty()) {
         return reportError(
@@ -213,7 +222,7 @@ int runCompareSolvers(const CompareSolversArgs& args) {
     if (reused) runs.push_back(std::move(*reused));
     for (const SolverRun& solver : solvers) {
         if (!runs.empty() && &solver == &solvers[0]) continue;  // the reused reference
-        auto run = runSolver(args, solver, dir);
+        auto run = runSolverProcess(args.scene, args.size, solver, dir);
         if (!run) {
             std::filesystem::remove_all(dir, ec);
             return reportError(run.error());
@@ -309,6 +318,10 @@ Runner addCompareSolversCommand(CLI::App& app) {
     app.add_option("--rays", args->rays, "reference directions per pixel")
         ->check(wholeIn(1, gi2d::kMaxReferenceRays))
         ->capture_default_str();
+    app.add_option("--spp", args->spp,
+                   "voxel scenes: samples per pixel of the path-traced reference")
+        ->check(wholeIn(2, voxel::kMaxPathSamples))
+        ->capture_default_str();
     app.add_option("--grid", args->grid, "write the display images side by side (.png)");
     app.add_option("--error-image", args->errorImage,
                    "write the reference and each solver's signed error side by side (.png)");
@@ -321,7 +334,11 @@ Runner addCompareSolversCommand(CLI::App& app) {
                    "instead of solving it again; checked against the scene's size and hash");
     app.add_option("--move", args->move,
                    "move the brightest light by DX,DY px and compare each solver's change");
-    return [args] { return runCompareSolvers(*args); };
+    CLI::App* command = &app;
+    return [args, command] {
+        args->raysGiven = command->count("--rays") > 0;
+        return runCompareSolvers(*args);
+    };
 }
 
 }  // namespace luxel::cli
