@@ -81,6 +81,14 @@ bool MaterialTable::hasSlot(int slot) const {
     return slot >= 0 && slot < slotCount() && set_[slot];
 }
 
+bool MaterialTable::anyEmission() const {
+    if (plain_.emission.maxComponent() > 0.0f) return true;
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+        if (set_[i] && slots_[i].emission.maxComponent() > 0.0f) return true;
+    }
+    return false;
+}
+
 const Material& MaterialTable::forSlot(int slot) const {
     return hasSlot(slot) ? slots_[slot] : plain_;
 }

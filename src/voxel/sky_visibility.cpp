@@ -30,16 +30,26 @@ SkyVisibility estimateSkyVisibility(const VoxelWorld& world, const TextureSet* t
                                     Vec3d point, Int3 normal, const ShadeOptions& shading,
                                     const SkyVisibilityOptions& options, PathRng& rng) {
     int escaped = 0;
-    Rgb sky;
+    Rgb sky, emitted;
+    // Emissive materials need the face a ray meets; otherwise an occlusion test is enough.
+    const bool emitters = shading.materials.anyEmission();
     for (int i = 0; i < options.rays; ++i) {
         const float u1 = rng.next(), u2 = rng.next();
         const Ray ray{point, cosineDirection(normal, u1, u2)};  // unit length: t is in voxels
-        if (surfaceRayBlocked(world, textures, ray, options.radius, shading.stepCap)) continue;
+        if (emitters) {
+            const SurfaceHit s = castToSurface(world, textures, ray, shading.stepCap);
+            if (s.hit.hit && s.hit.t <= options.radius) {
+                emitted += pathSurfaceAt(world, s, shading).emission;
+                continue;
+            }
+        } else if (surfaceRayBlocked(world, textures, ray, options.radius, shading.stepCap)) {
+            continue;
+        }
         ++escaped;
         sky += skyColor(ray.direction, shading);
     }
     const double n = options.rays;
-    return {escaped / n, sky * float(1.0 / n)};
+    return {escaped / n, sky * float(1.0 / n), emitted * float(1.0 / n)};
 }
 
 Result<SkyVisibilityImage> renderSkyVisibility(const VoxelWorld& world, const Camera& camera,
@@ -72,7 +82,7 @@ Result<SkyVisibilityImage> renderSkyVisibility(const VoxelWorld& world, const Ca
                     visibility = v.visibility;
                     radiance = surface.emission +
                                directSunLight(world, textures, s.hit, surface.albedo, shading) +
-                               surface.albedo * v.skyLight;
+                               surface.albedo * (v.skyLight + v.emitterLight);
                 }
                 for (int c = 0; c < 3; ++c) out.radiance.at(x, y, c) = radiance[c];
                 out.visibility.at(x, y, 0) = float(visibility);

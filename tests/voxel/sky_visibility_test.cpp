@@ -107,6 +107,50 @@ TEST(SkyVisibility, InfiniteRadiusMatchesThePathTracersFirstReflection) {
     EXPECT_LT(lowest, 0.8f);
 }
 
+TEST(SkyVisibility, EmissiveVoxelsLightTheirSurroundingsAsInThePathTracer) {
+    // A glowing panel in front of the wall: the rays that meet it carry its emission, so the floor
+    // by it brightens, by as much on average as the path tracer's first reflection says.
+    CornerScene s;
+    for (int y = 1; y < 4; ++y)
+        for (int x = 12; x < 16; ++x) s.world.set(x, y, 5, Voxel{255, 255, 255, 1});  // slot 0
+    s.world.refreshEmptySpace();
+    Material lamp;
+    lamp.name = "lamp";
+    lamp.emission = Rgb(5.0f, 4.0f, 3.0f);
+    ASSERT_TRUE(s.o.materials.setSlot(0, lamp).ok());
+    SkyVisibilityOptions options;
+    options.rays = 2048;
+    const SkyVisibilityImage ao = render(s.world, s.camera, s.o, options);
+    ShadeOptions dark = s.o;
+    Material off = lamp;
+    off.emission = Rgb(0.0f);
+    ASSERT_TRUE(dark.materials.setSlot(0, off).ok());
+    const SkyVisibilityImage unlit = render(s.world, s.camera, dark, options);
+
+    const PathEmitters emitters = PathEmitters::find(s.world, s.o.materials);
+    PathTraceOptions p;
+    p.maxBounces = 1;
+    const int n = 1024;
+    double aoSum = 0.0, pathSum = 0.0, unlitSum = 0.0;
+    for (int y = 0; y < s.camera.height(); ++y) {
+        for (int x = 0; x < s.camera.width(); ++x) {
+            const Ray ray = s.camera.rayAt(x + 0.5, y + 0.5);
+            for (int k = 0; k < n; ++k) {
+                PathRng rng(7, std::uint64_t(y) * s.camera.width() + x, std::uint64_t(k));
+                const Rgb c = tracePath(s.world, nullptr, ray, s.o, p, rng, &emitters);
+                pathSum += (double(c[0]) + c[1] + c[2]) / n;
+            }
+            for (int i = 0; i < 3; ++i) {
+                aoSum += ao.radiance.at(x, y, i);
+                unlitSum += unlit.radiance.at(x, y, i);
+            }
+        }
+    }
+    EXPECT_NEAR(aoSum, pathSum, 0.02 * pathSum);
+    // The panel's light is a visible part of the image, not lost in the tolerance.
+    EXPECT_GT(aoSum - unlitSum, 0.1 * unlitSum);
+}
+
 TEST(SkyVisibility, OpenPlaneSeesTheWholeSky) {
     VoxelWorld world = makeWorld({32, 2, 32});
     for (int z = 0; z < 32; ++z)

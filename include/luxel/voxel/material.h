@@ -51,6 +51,8 @@ class MaterialTable {
     // The material a voxel with texture slot `slot` shows (-1: a plain block).
     const Material& forSlot(int slot) const;
     bool hasSlot(int slot) const;
+    // Whether any material (plain or a slot's) emits light.
+    bool anyEmission() const;
     // Slots that have a material of their own are 0..slotCount() - 1 at most.
     int slotCount() const { return static_cast<int>(slots_.size()); }
 

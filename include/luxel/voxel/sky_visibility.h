@@ -5,9 +5,11 @@
 // fraction V of the cosine-weighted hemisphere that sees the sky, and the sky light those rays see
 // (the scene's gradient sky, skyColor in shading.h). The renderer shades each pixel's primary hit
 // (through the pixel centre) as the path tracer's first reflection does: albedo x (direct sun with
-// a shadow ray + the sky light of the escaping rays) + emission. With R = infinity this is the
-// path tracer with maxBounces = 1 and no emitter lighting; a finite R counts rays that meet nothing
-// within R as seeing the sky (ambient occlusion). Random numbers come from the path tracer's
+// a shadow ray + the sky light of the escaping rays + the emission of the emissive voxels the
+// rays meet within R) + emission. With R = infinity this is the path tracer with maxBounces = 1
+// (same mean; emitters are found by these rays only, so small ones are noisier than the path
+// tracer's sampled ones); a finite R counts rays that meet nothing within R as seeing the sky
+// (ambient occlusion). Random numbers come from the path tracer's
 // counter-based generator keyed by (seed, pixel), so images are identical for any thread count.
 #pragma once
 
@@ -39,6 +41,7 @@ Status validateSkyVisibility(const ShadeOptions& shading, const SkyVisibilityOpt
 struct SkyVisibility {
     double visibility = 0.0;  // V: the fraction of the rays that met nothing within the radius
     Rgb skyLight;             // sum over escaping rays of the sky they see, over the ray count
+    Rgb emitterLight;         // sum over rays that meet an emissive face of its emission, likewise
 };
 
 // The estimate at `point` on a face with axis-aligned outward `normal`, drawing options.rays
