@@ -348,9 +348,10 @@ TEST_F(Cli, InfoDescribesVoxelScenes) {
     EXPECT_NE(r.output.find("textures           3"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("image              320x180"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("memory (gpu)"), std::string::npos) << r.output;
-    // 2D-only commands say what the file is instead of a 2D field error.
+    // 2D-only commands and options say what the file is instead of a 2D field error
+    // (compare-solvers itself compares the voxel renderers: cli_compare_voxel_test.cpp).
     expectError("raster " + scene + " --emission " + path("x.exr"), "a voxel scene");
-    expectError("compare-solvers " + scene, "a voxel scene");
+    expectError("compare-solvers " + scene + " --rays 64", "a voxel scene");
 }
 
 TEST_F(Cli, BenchesVoxelScenes) {
