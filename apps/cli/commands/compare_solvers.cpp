@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -153,6 +154,27 @@ Result<RunOutcome> runSolverProcess(const std::string& scene, const std::string&
     return out;
 }
 
+Result<std::vector<RunOutcome>> runSolverProcesses(const std::string& scene,
+                                                   const std::string& size,
+                                                   std::span<const SolverRun> solvers) {
+    std::error_code ec;
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("luxel-compare-" + std::to_string(getpid()));
+    std::filesystem::create_directories(dir, ec);
+    if (ec) return Error("cannot create " + dir.string() + ": " + ec.message());
+    std::vector<RunOutcome> runs;
+    for (const SolverRun& solver : solvers) {
+        auto run = runSolverProcess(scene, size, solver, dir);
+        if (!run) {
+            std::filesystem::remove_all(dir, ec);
+            return run.error();
+        }
+        runs.push_back(std::move(*run));
+    }
+    std::filesystem::remove_all(dir, ec);
+    return runs;
+}
+
 namespace {
 
 int runCompareSolvers(const CompareSolversArgs& args) {
@@ -212,24 +234,13 @@ int runCompareSolvers(const CompareSolversArgs& args) {
             {"reference-seed2",
              {"--solver", "reference", "--rays", std::to_string(referenceRays), "--seed", "2"}});
     }
-    std::error_code ec;
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / ("luxel-compare-" + std::to_string(getpid()));
-    std::filesystem::create_directories(dir, ec);
-    if (ec) return reportError(Error("cannot create " + dir.string() + ": " + ec.message()));
-
+    // A reused reference stands in for the first run.
+    auto solved = runSolverProcesses(args.scene, args.size,
+                                     std::span<const SolverRun>(solvers).subspan(reused ? 1 : 0));
+    if (!solved) return reportError(solved.error());
     std::vector<RunOutcome> runs;
     if (reused) runs.push_back(std::move(*reused));
-    for (const SolverRun& solver : solvers) {
-        if (!runs.empty() && &solver == &solvers[0]) continue;  // the reused reference
-        auto run = runSolverProcess(args.scene, args.size, solver, dir);
-        if (!run) {
-            std::filesystem::remove_all(dir, ec);
-            return reportError(run.error());
-        }
-        runs.push_back(std::move(*run));
-    }
-    std::filesystem::remove_all(dir, ec);
+    for (RunOutcome& run : *solved) runs.push_back(std::move(run));
 
     const Image& reference = runs[0].fluence;
     std::printf("%s at %dx%d (reference: %d rays/pixel%s%s)\n", args.scene.c_str(),

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,12 @@ struct RunOutcome {
 // it wrote, its solve time (--stats) and its peak resident memory.
 Result<RunOutcome> runSolverProcess(const std::string& scene, const std::string& size,
                                     const SolverRun& solver, const std::filesystem::path& dir);
+
+// runSolverProcess for each solver in turn, in a temporary folder removed afterwards; the first
+// failure stops the runs and is returned.
+Result<std::vector<RunOutcome>> runSolverProcesses(const std::string& scene,
+                                                   const std::string& size,
+                                                   std::span<const SolverRun> solvers);
 
 // "812 ms" or "59.2 s".
 std::string formatDuration(double ms);

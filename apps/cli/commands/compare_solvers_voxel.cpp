@@ -2,11 +2,8 @@
 // sky visibility (ambient occlusion) and the ray caster with physical lighting are measured
 // against it: time, relative L1, RMSE, low-frequency RMSE (8 x 8 pixel block means, the error a
 // smooth GI method is judged by: docs/algorithms/voxel-sky-visibility.md) and peak memory.
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -52,21 +49,9 @@ int compareVoxelSolvers(const VoxelCompareRequest& request) {
         {"ao", {"--solver", "ao", "--backend", "cpu"}},
         {"ray-caster", {"--lighting", "physical", "--backend", "cpu"}},
     };
-    std::error_code ec;
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / ("luxel-compare-" + std::to_string(getpid()));
-    std::filesystem::create_directories(dir, ec);
-    if (ec) return reportError(Error("cannot create " + dir.string() + ": " + ec.message()));
-    std::vector<RunOutcome> runs;
-    for (const SolverRun& solver : solvers) {
-        auto run = runSolverProcess(request.scene, request.size, solver, dir);
-        if (!run) {
-            std::filesystem::remove_all(dir, ec);
-            return reportError(run.error());
-        }
-        runs.push_back(std::move(*run));
-    }
-    std::filesystem::remove_all(dir, ec);
+    auto solved = runSolverProcesses(request.scene, request.size, solvers);
+    if (!solved) return reportError(solved.error());
+    const std::vector<RunOutcome>& runs = *solved;
 
     const Image& reference = runs[0].fluence;
     const Image referenceBlocks = blockMeans(reference);
