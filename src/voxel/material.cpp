@@ -54,11 +54,14 @@ Status validateMaterial(const Material& m) {
     return Ok{};
 }
 
-MaterialTable::MaterialTable() : plain_(defaultMaterial()) {}
+MaterialTable::MaterialTable() : plain_(defaultMaterial()) {
+    updateEmission();
+}
 
 Status MaterialTable::setPlain(Material material) {
     if (Status s = validateMaterial(material); !s) return s;
     plain_ = std::move(material);
+    updateEmission();
     return Ok{};
 }
 
@@ -74,6 +77,7 @@ Status MaterialTable::setSlot(int slot, Material material) {
     }
     slots_[slot] = std::move(material);
     set_[slot] = true;
+    updateEmission();
     return Ok{};
 }
 
@@ -81,12 +85,11 @@ bool MaterialTable::hasSlot(int slot) const {
     return slot >= 0 && slot < slotCount() && set_[slot];
 }
 
-bool MaterialTable::anyEmission() const {
-    if (plain_.emission.maxComponent() > 0.0f) return true;
-    for (std::size_t i = 0; i < slots_.size(); ++i) {
-        if (set_[i] && slots_[i].emission.maxComponent() > 0.0f) return true;
+void MaterialTable::updateEmission() {
+    emits_ = plain_.emission.maxComponent() > 0.0f;
+    for (std::size_t i = 0; i < slots_.size() && !emits_; ++i) {
+        emits_ = set_[i] && slots_[i].emission.maxComponent() > 0.0f;
     }
-    return false;
 }
 
 const Material& MaterialTable::forSlot(int slot) const {

@@ -51,8 +51,9 @@ class MaterialTable {
     // The material a voxel with texture slot `slot` shows (-1: a plain block).
     const Material& forSlot(int slot) const;
     bool hasSlot(int slot) const;
-    // Whether any material (plain or a slot's) emits light.
-    bool anyEmission() const;
+    // Whether any material (plain or a slot's) emits light (kept up to date by the setters, so
+    // renderers may ask per pixel).
+    bool anyEmission() const { return emits_; }
     // Slots that have a material of their own are 0..slotCount() - 1 at most.
     int slotCount() const { return static_cast<int>(slots_.size()); }
 
@@ -60,6 +61,9 @@ class MaterialTable {
     Material plain_;
     std::vector<Material> slots_;
     std::vector<bool> set_;
+    bool emits_ = false;
+
+    void updateEmission();
 };
 
 }  // namespace luxel::voxel
