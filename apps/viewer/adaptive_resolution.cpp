@@ -39,7 +39,7 @@ ImageSize AdaptiveResolution::sizeFor(double scale) const {
 
 std::optional<ImageSize> AdaptiveResolution::frameRendered(ImageSize size, double milliseconds,
                                                            double seconds) {
-    if (size.width != current_.width || size.height != current_.height) return std::nullopt;
+    if (size != current_) return std::nullopt;
     if (!(milliseconds > 0.0) || !std::isfinite(milliseconds)) return std::nullopt;
     const double scale = scaleOf(size);
     double wanted = scale * std::sqrt(kAim * targetMs_ / milliseconds);
@@ -58,7 +58,7 @@ std::optional<ImageSize> AdaptiveResolution::frameRendered(ImageSize size, doubl
     }
     const ImageSize next = sizeFor(wanted);
     slowFrames_ = 0;
-    if (next.width == current_.width && next.height == current_.height) return std::nullopt;
+    if (next == current_) return std::nullopt;
     // Changes of under 10% in pixel count are not worth a new frame.
     const double ratio =
         static_cast<double>(next.width) * next.height / (double(current_.width) * current_.height);
