@@ -15,12 +15,12 @@ Ray continueThroughVoxel(const Ray& ray, const Hit& hit) {
 }
 
 SurfaceHit castToSurface(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
-                         int stepCap) {
+                         int stepCap, double tMax) {
     SurfaceHit s;
     Ray current = ray;
     double tOffset = 0.0;  // t along `ray` of current.origin
     for (;;) {
-        s.hit = castRay(world, current, kInfinity, stepCap);
+        s.hit = castRay(world, current, tMax - tOffset, stepCap);
         if (!s.hit.hit) return s;
         s.hit.t += tOffset;
         const Int3 v = s.hit.voxel;

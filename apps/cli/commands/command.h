@@ -21,6 +21,7 @@
 #include "luxel/post/post_options.h"
 #include "luxel/scene/scene_file.h"
 #include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/radiance_cascades.h"
 #include "luxel/voxel/sky_visibility.h"
 
 namespace luxel::cli {
@@ -139,6 +140,9 @@ struct VoxelRenderRequest {
     // --solver ao: sky visibility (voxel/sky_visibility.h) instead of the ray caster.
     bool aoSolver = false;
     voxel::SkyVisibilityOptions ao = {};
+    // --solver rc: radiance cascades (voxel/radiance_cascades.h) instead of the ray caster.
+    bool cascadeSolver = false;
+    voxel::CascadeOptions cascades = {};
 };
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene scene);
 

@@ -1,4 +1,5 @@
 // `luxel render`: scene -> fluence image (EXR linear or PNG tonemapped) and display PNG.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <vector>
@@ -310,6 +311,14 @@ int runRender(const RenderArgs& args) {
         return reportError(Error("--solver " + args.solverName + " applies to voxel scenes; " +
                                  args.scene + " is " + sceneKindPhrase(file->kind())));
     }
+    const bool voxelRc = args.solverName == "rc" && file->kind() == scene::SceneKind::Voxel;
+    if (args.rcSpacingGiven && !voxelRc) {
+        return reportError(Error("--rc-spacing applies to --solver rc on voxel scenes"));
+    }
+    if (args.solverName == "rc" && file->kind() == scene::SceneKind::Octree) {
+        return reportError(Error("--solver rc applies to 2D and voxel scenes; " + args.scene +
+                                 " is " + sceneKindPhrase(file->kind())));
+    }
     if (file->kind() == scene::SceneKind::TwoD && args.frame >= 0) {
         return reportError(Error("--frame applies to MagicaVoxel worlds; " + args.scene + " is " +
                                  sceneKindPhrase(file->kind())));
@@ -337,6 +346,9 @@ int runRender(const RenderArgs& args) {
         request.pathStdError = args.stdError;
         request.aoSolver = args.aoSolver;
         request.ao = {args.aoRays, args.aoRadius, args.seed};
+        request.cascadeSolver = voxelRc;
+        request.cascades.spacing = args.rcSpacing;
+        request.cascades.bounces = std::max(0, args.bounces);
         if (!voxel && (args.samples != 0 || !args.filter.empty())) {
             return reportError(Error("--samples and --filter apply to voxel scenes; " + args.scene +
                                      " is " + sceneKindPhrase(file->kind())));

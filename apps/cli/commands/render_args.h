@@ -68,6 +68,9 @@ struct RenderArgs {
     int aoRays = voxel::SkyVisibilityOptions{}.rays;
     double aoRadius = voxel::SkyVisibilityOptions{}.radius;
     std::vector<std::string> aoGiven;
+    // Voxel scenes, --solver rc (voxel/radiance_cascades.h): --rc-spacing, and --bounces.
+    int rcSpacing = 0;
+    bool rcSpacingGiven = false;
 };
 
 // Renders what `args` asks for (any scene kind) and returns the exit code.

@@ -16,7 +16,7 @@ Status parseChoices(RenderArgs& args) {
     auto solver = args.pathSolver || args.aoSolver
                       ? Result<gi2d::Solver2D>(gi2d::Solver2D::Reference)
                       : gi2d::parseSolver2D(args.solverName);
-    if (!solver) return Error(solver.error().message() + " (voxel scenes: path, ao)");
+    if (!solver) return Error(solver.error().message() + " (voxel scenes: path, ao, rc)");
     auto merge = gi2d::parseRcMerge(args.mergeName);
     if (!merge) return merge.error();
     auto backend = gpu::parseBackend(args.backendName);
@@ -57,7 +57,7 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option("scene", args->scene, "scene file (.json)")->required();
     app.add_option(
            "--solver", args->solverName,
-           "light transport solver: reference, hrc, rc (2D scenes); path, ao (voxel scenes)")
+           "light transport solver: reference, hrc, rc (2D scenes); path, ao, rc (voxel scenes)")
         ->capture_default_str();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
     addVoxFrameOption(app, args->frame);
@@ -159,8 +159,14 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option("--ao-radius", args->aoRadius,
                    "voxel, --solver ao: ray length in voxels (inf: whole sky visibility)")
         ->capture_default_str();
+    app.add_option("--rc-spacing", args->rcSpacing,
+                   "voxel, --solver rc: probe spacing of the first cascade level in voxels "
+                   "(power of two; 0: automatic)")
+        ->check(wholeIn(0, voxel::kMaxCascadeSpacing))
+        ->capture_default_str();
     CLI::App* command = &app;
     return [args, command] {
+        args->rcSpacingGiven = command->count("--rc-spacing") > 0;
         for (const char* name : {"--spp", "--max-bounces", "--std-error"}) {
             if (command->count(name) > 0) args->pathGiven.push_back(name);
         }
@@ -175,7 +181,11 @@ Runner addRenderCommand(CLI::App& app) {
               "--base-interval", "--max-cascades", "--view", "--bounces"}) {
             const bool pathOption =
                 std::string_view(name) == "--solver" || std::string_view(name) == "--seed";
-            if (command->count(name) > 0 && !(path && pathOption)) {
+            // rc names a solver of both kinds; --bounces serves both (runRender sorts them out).
+            const bool rcOption =
+                args->solverName == "rc" &&
+                (std::string_view(name) == "--solver" || std::string_view(name) == "--bounces");
+            if (command->count(name) > 0 && !(path && pathOption) && !rcOption) {
                 args->options2DGiven.push_back(name);
             }
         }

@@ -1,6 +1,6 @@
 // `luxel render` for voxel scenes: DDA ray casting with shading, shadows and reflections, on the
 // CPU or (--backend) the GPU; or, with --solver path, the CPU path tracer; or, with --solver ao,
-// CPU sky visibility.
+// CPU sky visibility; or, with --solver rc, CPU radiance cascades.
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -13,6 +13,7 @@
 #include "commands/render_memory.h"
 #include "commands/render_outputs.h"
 #include "luxel/core/image_io.h"
+#include "luxel/core/memory.h"
 #include "luxel/core/timer.h"
 #include "luxel/gpu/context.h"
 #include "luxel/post/finish.h"
@@ -44,6 +45,16 @@ void printPathSummary(const voxel::PathTraceOptions& path, double relativeError)
 void printAoSummary(const voxel::SkyVisibilityOptions& ao) {
     std::printf("  sky visibility: %d rays per point, radius %g voxels, seed %llu\n", ao.rays,
                 ao.radius, static_cast<unsigned long long>(ao.seed));
+}
+
+// The radiance cascades' line of the summary: their layout, memory and times.
+void printCascadeSummary(const voxel::CascadeImage& c) {
+    std::printf(
+        "  radiance cascades: %d faces, %d levels from spacing %d (%lld probes), "
+        "%lld segments, %s; build %.3f s, %d bounces %.3f s, picture %.3f s\n",
+        c.stats.faces, c.stats.levels, c.stats.spacing, static_cast<long long>(c.stats.probes),
+        static_cast<long long>(c.stats.segments), formatBytes(c.stats.bytes).c_str(),
+        c.stats.buildSeconds, c.stats.bounces, c.lightSeconds, c.renderSeconds);
 }
 
 bool endsWithExr(const std::string& path) {
@@ -166,17 +177,24 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
                   "--specular, --fresnel, --no-refraction, --shadows) apply to the "
                   "ray caster; --solver ao takes --ao-rays and --ao-radius"));
     }
+    if (request.cascadeSolver && casterFlags) {
+        return reportError(
+            Error("--samples, --filter and the surface flags (--lighting, "
+                  "--specular, --fresnel, --no-refraction, --shadows) apply to the "
+                  "ray caster; --solver rc takes --rc-spacing and --bounces"));
+    }
+    const bool cpuSolver = request.pathSolver || request.aoSolver || request.cascadeSolver;
+    const char* cpuSolverName = request.pathSolver ? "path" : request.aoSolver ? "ao" : "rc";
     if (!request.pathStdError.empty() && !endsWithExr(request.pathStdError)) {
         return reportError(Error("--std-error '" + request.pathStdError +
                                  "' must be an .exr file (linear float)"));
     }
-    if ((request.pathSolver || request.aoSolver) && request.backend == gpu::Backend::Gpu) {
-        return reportError(Error(std::string("--solver ") + (request.aoSolver ? "ao" : "path") +
+    if (cpuSolver && request.backend == gpu::Backend::Gpu) {
+        return reportError(Error(std::string("--solver ") + cpuSolverName +
                                  " runs on the CPU; --backend gpu does not apply"));
     }
-    auto context = request.pathSolver || request.aoSolver
-                       ? Result<std::unique_ptr<gpu::Context>>(nullptr)
-                       : chooseGpuBackend(request.backend, request.device, request.quiet);
+    auto context = cpuSolver ? Result<std::unique_ptr<gpu::Context>>(nullptr)
+                             : chooseGpuBackend(request.backend, request.device, request.quiet);
     if (!context) return reportError(context.error());
     const post::PostOptions post = applyPostFlags(scene->post, request.post);
     const int width = scene->camera.width(), height = scene->camera.height();
@@ -200,6 +218,7 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
     Stopwatch renderTime;
     Image internal, standardError;
     double relativeError = 0.0;
+    voxel::CascadeImage cascaded;
     if (request.pathSolver) {
         auto traced =
             voxel::pathTrace(scene->world, camera, scene->shading, request.path, &scene->textures);
@@ -212,6 +231,12 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
                                                  &scene->textures);
         if (!shaded) return reportError(shaded.error());
         internal = std::move(shaded->radiance);
+    } else if (request.cascadeSolver) {
+        auto shaded = voxel::renderRadianceCascades(scene->world, camera, scene->shading,
+                                                    request.cascades, &scene->textures);
+        if (!shaded) return reportError(shaded.error());
+        cascaded = std::move(*shaded);
+        internal = std::move(cascaded.radiance);
     } else if (*context) {
         auto image = renderOnGpu(**context, *scene, camera);
         if (!image) return reportError(image.error());
@@ -248,6 +273,13 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         setNumber(images.metadata, "luxel.ao.radius", request.ao.radius);
         setMetadata(images.metadata, "luxel.seed", std::to_string(request.ao.seed));
     }
+    if (request.cascadeSolver) {
+        setMetadata(images.metadata, "luxel.solver", "rc");
+        setMetadata(images.metadata, "luxel.lighting", "radiance cascades");
+        setNumber(images.metadata, "luxel.rc.spacing", cascaded.stats.spacing);
+        setNumber(images.metadata, "luxel.rc.levels", cascaded.stats.levels);
+        setNumber(images.metadata, "luxel.rc.bounces", cascaded.stats.bounces);
+    }
     ImageMetadata errorMetadata = images.metadata;
     if (Status s = writeRenderImages(std::move(images)); !s) return reportError(s.error());
     if (!request.pathStdError.empty()) {
@@ -264,7 +296,9 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         const std::string transport =
             request.pathSolver ? "path traced"
             : request.aoSolver ? "sky visibility"
-                               : std::to_string(scene->shading.maxReflections) + " reflections";
+            : request.cascadeSolver
+                ? "radiance cascades"
+                : std::to_string(scene->shading.maxReflections) + " reflections";
         std::printf("%s: voxel world %dx%dx%d (%llu solid), image %dx%d, %s, %s\n",
                     request.scene.c_str(), s.x, s.y, s.z,
                     static_cast<unsigned long long>(scene->world.solidCount()), radiance.width(),
@@ -274,6 +308,8 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
             printPathSummary(request.path, relativeError);
         } else if (request.aoSolver) {
             printAoSummary(request.ao);
+        } else if (request.cascadeSolver) {
+            printCascadeSummary(cascaded);
         } else {
             std::printf("  %d samples per pixel, %s textures\n",
                         voxel::samplesPerPixel(scene->shading),

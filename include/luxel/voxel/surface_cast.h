@@ -32,8 +32,8 @@ Ray continueThroughVoxel(const Ray& ray, const Hit& hit);
 
 // The first surface along the ray that is not a cutout. Voxels whose alpha selects a slot that
 // `textures` lacks (or any voxel when textures is null) are plain blocks. hit.t is measured
-// along the original ray (the continuations' t added up).
+// along the original ray (the continuations' t added up); surfaces past tMax are not met.
 SurfaceHit castToSurface(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
-                         int stepCap = 0);
+                         int stepCap = 0, double tMax = kInfinity);
 
 }  // namespace luxel::voxel

@@ -1,0 +1,109 @@
+// Radiance cascades in voxel worlds: real-time global illumination from world-space probe
+// cascades, measured against the path tracer (docs/algorithms/voxel-radiance-cascades.md).
+//
+// The open voxel faces are the finest probes (one irradiance value each, interpolated across
+// neighbouring faces at a pixel); above them, world-space levels of probes double their spacing
+// and their direction bins per side from level to level. Every probe direction is a chain of
+// segments that ends exactly where the next level's segment starts (one segment towards each of
+// the eight upper probes around it, weighted trilinearly), so light reaches a probe only along
+// an unbroken path: no light crosses a 1-voxel wall. The world is static between create() calls,
+// so each segment's first hit is found once; a lighting pass then only reads the faces'
+// outgoing radiance through those hits. Faces reflect diffusely (the path tracer's surface
+// model); each pass feeds the faces' irradiance back as one more reflection.
+//
+// Direct sun light is computed per pixel with a shadow ray (as the path tracer's first
+// reflection); the cascades carry everything else: sky light, emissive voxels and the light
+// surfaces reflect.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "luxel/core/error.h"
+#include "luxel/core/image.h"
+#include "luxel/voxel/camera.h"
+#include "luxel/voxel/shading.h"
+#include "luxel/voxel/texture_set.h"
+#include "luxel/voxel/voxel_world.h"
+
+namespace luxel::voxel {
+
+inline constexpr int kMaxCascadeBounces = 1024;
+inline constexpr int kMaxCascadeSpacing = 64;
+
+struct CascadeOptions {
+    // Probe spacing of the first world level, voxels: a power of two in 1..kMaxCascadeSpacing;
+    // 0 picks 2, or the smallest larger spacing whose cascades fit `memoryLimit`.
+    int spacing = 0;
+    // Reflections solved by solve(): 0 iterates until converged (at most kMaxCascadeBounces).
+    int bounces = 0;
+    // solve() stops when a pass changes the faces' total irradiance by less than this fraction.
+    double tolerance = 1e-4;
+    // Bytes the cascades may take; 0: 2 GiB or the memory the machine has, if less.
+    std::uint64_t memoryLimit = 0;
+};
+
+// Options checked: spacing, bounces, tolerance finite and in range; the error names the field.
+Status validateCascades(const CascadeOptions& options);
+
+struct CascadeStats {
+    int faces = 0, levels = 0, spacing = 0;
+    std::int64_t probes = 0, segments = 0;
+    std::uint64_t bytes = 0;
+    double buildSeconds = 0.0;
+    int bounces = 0;  // lighting passes run so far
+};
+
+class RadianceCascades {
+  public:
+    // Finds the faces, plans the levels and casts every segment once. Keeps references to the
+    // world and the textures, which must outlive it and stay unchanged. Fails when the scene
+    // light is invalid (validatePathTrace) or the cascades would not fit the memory limit.
+    static Result<RadianceCascades> create(const VoxelWorld& world, const TextureSet* textures,
+                                           const ShadeOptions& shading,
+                                           const CascadeOptions& options = {});
+    RadianceCascades(RadianceCascades&&) noexcept;
+    RadianceCascades& operator=(RadianceCascades&&) noexcept;
+    ~RadianceCascades();
+
+    // New light (sun, sky, materials); the faces' irradiance so far is kept as the next pass's
+    // starting point (one bounce per frame in the viewer). Fails on an invalid scene light.
+    Status setLight(const ShadeOptions& shading);
+    // One lighting pass: faces' outgoing radiance from the current irradiance, the levels merged
+    // top down, each face's irradiance gathered. Returns the relative change of the summed face
+    // irradiance (1 after the first pass from black).
+    double iterate();
+    // Passes until options.bounces are done or a pass changes less than options.tolerance.
+    // Returns the passes run.
+    int solve();
+
+    // Irradiance from everything but the direct sun at a point on a face (voxel, axis normal),
+    // interpolated between the face and its coplanar neighbours.
+    Rgb indirectIrradiance(Int3 voxel, Int3 normal, Vec3d point) const;
+    // The picture: one primary ray per pixel centre (cutouts honoured), shaded as
+    // emission + direct sun (shadow ray) + albedo x indirectIrradiance / pi; rows in parallel.
+    Result<Image> render(const Camera& camera) const;
+
+    CascadeStats stats() const;
+
+    struct State;  // defined by the implementation (src/voxel/cascades/cascade_state.h)
+
+  private:
+    explicit RadianceCascades(std::unique_ptr<State> state);
+    std::unique_ptr<State> state_;
+};
+
+struct CascadeImage {
+    Image radiance;
+    CascadeStats stats;
+    double lightSeconds = 0.0, renderSeconds = 0.0;
+};
+
+// create(), solve() and render() in one call.
+Result<CascadeImage> renderRadianceCascades(const VoxelWorld& world, const Camera& camera,
+                                            const ShadeOptions& shading,
+                                            const CascadeOptions& options = {},
+                                            const TextureSet* textures = nullptr);
+
+}  // namespace luxel::voxel

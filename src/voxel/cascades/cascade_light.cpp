@@ -1,0 +1,217 @@
+// Lighting passes of the voxel radiance cascades (docs/algorithms/voxel-radiance-cascades.md §4):
+// faces send emission plus the diffuse reflection of the sun and of last pass's irradiance; the
+// levels merge from the top down through the cached segment codes; each face gathers its
+// irradiance from level 0 through its own segments.
+#include <cmath>
+
+#include "../path_trace_surface.h"
+#include "cascade_state.h"
+#include "luxel/core/parallel.h"
+#include "luxel/voxel/surface_cast.h"
+
+namespace luxel::voxel::cascades {
+
+namespace {
+
+constexpr float kInvPi = float(1.0 / 3.14159265358979323846);
+
+Vec3d normalised(Vec3 v) {
+    return normalize(Vec3d{v.x, v.y, v.z});
+}
+
+// The mean colour of a texture's opaque texels: what a face of it reflects on average.
+Texel meanOpaqueTexel(const Texture& texture) {
+    double sum[3] = {0, 0, 0};
+    int count = 0;
+    for (const Texel& t : texture.texels) {
+        if (t.cutout()) continue;
+        sum[0] += t.r, sum[1] += t.g, sum[2] += t.b;
+        ++count;
+    }
+    if (count == 0) return Texel{0, 0, 0, 1};
+    return Texel{float(sum[0] / count), float(sum[1] / count), float(sum[2] / count), 1};
+}
+
+// Fraction of the face's four quarter centres that see the sun (cutouts let it through).
+float sunVisibility(const RadianceCascades::State& state, const Face& face, Vec3d sun) {
+    const Int3 n = normalFromIndex(face.normal);
+    if (!(n.x * sun.x + n.y * sun.y + n.z * sun.z > 0.0)) return 0.0f;
+    const int axis = face.normal / 2, a = (axis + 1) % 3, b = (axis + 2) % 3;
+    const Vec3d centre = faceCentre(face);
+    int lit = 0;
+    for (int i = 0; i < 4; ++i) {
+        Vec3d p = centre;
+        p[a] += (i & 1) ? 0.25 : -0.25;
+        p[b] += (i & 2) ? 0.25 : -0.25;
+        lit += !surfaceRayBlocked(*state.world, state.textures, {p, sun}, kInfinity,
+                                  state.shading.stepCap);
+    }
+    return lit / 4.0f;
+}
+
+// Radiance a segment code brings: a face's, the sky's, or (kContinue) `next`.
+inline Rgb codeRadiance(std::uint32_t code, const std::vector<Rgb>& outgoing, Rgb sky, Rgb next) {
+    if (code < kVoid) return outgoing[code];
+    if (code == kContinue) return next;
+    if (code == kSky) return sky;
+    return Rgb{};
+}
+
+// The trilinear mean over the corners whose segments do not start inside a solid.
+template <typename Next>
+Rgb mergeCorners(const std::uint32_t* codes, const Corners& corners,
+                 const std::vector<Rgb>& outgoing, Rgb sky, Next&& next) {
+    Rgb sum;
+    float weight = 0.0f;
+    for (int c = 0; c < 8; ++c) {
+        const float w = corners.weight[c];
+        if (codes[c] == kVoid || w == 0.0f) continue;
+        sum += codeRadiance(codes[c], outgoing, sky, codes[c] == kContinue ? next(c) : Rgb{}) * w;
+        weight += w;
+    }
+    return weight > 0.0f ? sum * (1.0f / weight) : Rgb{};
+}
+
+void mergeLevel(RadianceCascades::State& state, std::size_t k) {
+    LevelData& data = state.levels[k];
+    const std::vector<Rgb>& outgoing = state.faces.outgoing;
+    const int bins = data.bins.count();
+    const std::int64_t probes = data.level.probeCount();
+    data.radiance.resize(std::size_t(probes) * bins);
+    const LevelData* upper = data.level.top ? nullptr : &state.levels[k + 1];
+    parallelForRange(int(probes), 1, [&](int begin, int end) {
+        for (int p = begin; p < end; ++p) {
+            Rgb* radiance = &data.radiance[std::size_t(p) * bins];
+            if (!upper) {
+                for (int b = 0; b < bins; ++b) {
+                    radiance[b] = codeRadiance(data.codes[std::size_t(p) * bins + b], outgoing,
+                                               data.sky[b], Rgb{});
+                }
+                continue;
+            }
+            const Corners& corners = data.corners[p];
+            for (int b = 0; b < bins; ++b) {
+                radiance[b] = mergeCorners(
+                    &data.codes[(std::size_t(p) * bins + b) * 8], corners, outgoing, data.sky[b],
+                    [&](int c) {
+                        return upper->childMean[std::size_t(corners.probe[c]) * bins + b];
+                    });
+            }
+        }
+    });
+    // What the level below reads: for each of its bins the solid-angle mean of the children here
+    // (level 0 and the faces share their bins, so the faces read level 0's radiance directly).
+    if (k == 0) return;
+    const int parents = bins / 4;
+    data.childMean.resize(std::size_t(probes) * parents);
+    const DirectionBins& below = state.levels[k - 1].bins;
+    parallelForRange(int(probes), 16, [&](int begin, int end) {
+        for (int p = begin; p < end; ++p) {
+            for (int b = 0; b < parents; ++b) {
+                Rgb sum;
+                double area = 0.0;
+                for (int child : below.children(b)) {
+                    const double a = data.bins.solidAngle[child];
+                    sum += data.radiance[std::size_t(p) * bins + child] * float(a);
+                    area += a;
+                }
+                data.childMean[std::size_t(p) * parents + b] = sum * float(1.0 / area);
+            }
+        }
+    });
+}
+
+}  // namespace
+
+void updateFaceLight(RadianceCascades::State& state) {
+    FaceData& faces = state.faces;
+    const ShadeOptions& shading = state.shading;
+    const int count = faces.table.size();
+    std::vector<Texel> meanTexel;
+    if (state.textures) {
+        for (int slot = 0; slot < state.textures->size(); ++slot) {
+            meanTexel.push_back(meanOpaqueTexel((*state.textures)[slot]));
+        }
+    }
+    const Vec3d sun = normalised(shading.sunDirection);
+    const bool sunMoved =
+        faces.sunVisible.size() != std::size_t(count) || !(sun == state.sunForVisibility);
+    faces.albedo.resize(count);
+    faces.emission.resize(count);
+    faces.sunVisible.resize(count);
+    if (faces.irradiance.size() != std::size_t(count)) faces.irradiance.assign(count, Rgb{});
+    faces.outgoing.resize(count);
+    parallelForRange(count, 64, [&](int begin, int end) {
+        for (int f = begin; f < end; ++f) {
+            const Face& face = faces.table[f];
+            SurfaceHit s;
+            s.hit.hit = true;
+            s.hit.voxel = face.voxel;
+            s.hit.normal = normalFromIndex(face.normal);
+            s.hit.point = faceCentre(face);
+            s.hit.u = s.hit.v = 0.5f;
+            const int slot =
+                textureSlotOf(state.world->get(face.voxel.x, face.voxel.y, face.voxel.z));
+            if (slot >= 0 && slot < int(meanTexel.size())) {
+                s.slot = slot;
+                s.texel = meanTexel[slot];
+            }
+            const PathSurface surface = pathSurfaceAt(*state.world, s, shading);
+            faces.albedo[f] = surface.albedo;
+            faces.emission[f] = surface.emission;
+            if (sunMoved) faces.sunVisible[f] = sunVisibility(state, face, sun);
+        }
+    });
+    state.sunForVisibility = sun;
+    faces.sky = skyMeans(faces.bins, shading);
+    for (LevelData& level : state.levels) level.sky = skyMeans(level.bins, shading);
+}
+
+double lightingPass(RadianceCascades::State& state) {
+    FaceData& faces = state.faces;
+    const int count = faces.table.size();
+    const Vec3d sun = state.sunForVisibility;
+    const Rgb sunIrradiance = state.shading.sunIrradiance;
+    parallelForRange(count, 256, [&](int begin, int end) {
+        for (int f = begin; f < end; ++f) {
+            const Int3 n = normalFromIndex(faces.table[f].normal);
+            const double cosSun = std::max(0.0, n.x * sun.x + n.y * sun.y + n.z * sun.z);
+            const Rgb direct = sunIrradiance * float(cosSun * faces.sunVisible[f]);
+            faces.outgoing[f] =
+                faces.emission[f] + faces.albedo[f] * (direct + faces.irradiance[f]) * kInvPi;
+        }
+    });
+    for (std::size_t k = state.levels.size(); k-- > 0;) mergeLevel(state, k);
+
+    const LevelData& level0 = state.levels.front();
+    const int bins = level0.bins.count();
+    std::vector<Rgb> gathered(count);
+    parallelForRange(count, 64, [&](int begin, int end) {
+        for (int f = begin; f < end; ++f) {
+            const auto& seen = faces.bins.cosine[faces.table[f].normal];
+            const std::uint32_t* codes = &faces.codes[faces.codeOffset[f]];
+            const Corners& corners = faces.corners[f];
+            Rgb irradiance;
+            for (std::size_t i = 0; i < seen.bin.size(); ++i) {
+                const int b = seen.bin[i];
+                const Rgb incoming =
+                    mergeCorners(codes + i * 8, corners, faces.outgoing, faces.sky[b], [&](int c) {
+                        return level0.radiance[std::size_t(corners.probe[c]) * bins + b];
+                    });
+                irradiance += incoming * seen.weight[i];
+            }
+            gathered[f] = irradiance;
+        }
+    });
+    double change = 0.0, after = 0.0;
+    for (int f = 0; f < count; ++f) {
+        for (int c = 0; c < 3; ++c) {
+            after += gathered[f][c];
+            change += std::abs(gathered[f][c] - faces.irradiance[f][c]);
+        }
+    }
+    faces.irradiance = std::move(gathered);
+    return after > 0.0 ? change / after : 0.0;
+}
+
+}  // namespace luxel::voxel::cascades

@@ -1,0 +1,115 @@
+// Casting the segments of the voxel radiance cascades once per world
+// (docs/algorithms/voxel-radiance-cascades.md §3).
+//
+// The segment of a level-k probe p in bin b towards the upper probe q runs from
+// p + tStart_k w_parent(b) (where the level below's segment for the parent bin ended) to
+// q + tStart_{k+1} w_b (where q's segments for b's children start), so each chain of segments
+// is an unbroken path and a wall anywhere on it stops the light.
+#include <cmath>
+
+#include "cascade_state.h"
+#include "luxel/core/parallel.h"
+#include "luxel/voxel/surface_cast.h"
+
+namespace luxel::voxel::cascades {
+
+namespace {
+
+bool insideWorld(const VoxelWorld& world, Vec3d p) {
+    const Int3 s = world.size();
+    return p.x >= 0.0 && p.y >= 0.0 && p.z >= 0.0 && p.x <= s.x && p.y <= s.y && p.z <= s.z;
+}
+
+// The code of the segment from `start` to `end` (or, with `toEnd` false, from `start` along
+// end - start until it leaves the world).
+std::uint32_t castSegment(const RadianceCascades::State& state, Vec3d start, Vec3d end,
+                          bool toEnd) {
+    const Ray ray{start, end - start};
+    const SurfaceHit s = castToSurface(*state.world, state.textures, ray, state.shading.stepCap,
+                                       toEnd ? 1.0 : kInfinity);
+    if (!s.hit.hit) {
+        if (s.hit.capped || s.cutoutCapped) return kBlack;
+        return (!toEnd || !insideWorld(*state.world, end)) ? kSky : kContinue;
+    }
+    if (s.hit.normal == Int3{} || !(s.hit.t > 1e-9)) return kVoid;
+    const int face = state.faces.table.find(s.hit.voxel, normalIndex(s.hit.normal));
+    return face < 0 ? kBlack : std::uint32_t(face);
+}
+
+void castLevel(RadianceCascades::State& state, std::size_t k) {
+    LevelData& data = state.levels[k];
+    const Level& level = data.level;
+    const bool top = level.top;
+    const DirectionBins& below = k == 0 ? state.faces.bins : state.levels[k - 1].bins;
+    const int bins = data.bins.count(), corners = top ? 1 : 8;
+    const std::int64_t probes = level.probeCount();
+    data.codes.assign(std::size_t(probes) * bins * corners, kVoid);
+    if (!top) data.corners.resize(std::size_t(probes));
+    const LevelData* upper = top ? nullptr : &state.levels[k + 1];
+    parallelForRange(int(probes), 1, [&](int begin, int end) {
+        for (int p = begin; p < end; ++p) {
+            const Vec3d origin = level.position(p);
+            if (!top) data.corners[p] = cornersAround(upper->level, origin);
+            for (int b = 0; b < bins; ++b) {
+                // Level 0 has the faces' bins; above, a bin's chain came through its parent.
+                const Vec3d from = k == 0 ? data.bins.centre[b] : below.centre[data.bins.parent(b)];
+                const Vec3d start = origin + from * level.tStart;
+                std::uint32_t* codes = &data.codes[(std::size_t(p) * bins + b) * corners];
+                if (top) {
+                    codes[0] = castSegment(state, start, start + data.bins.centre[b], false);
+                    continue;
+                }
+                for (int c = 0; c < 8; ++c) {
+                    const Vec3d q = upper->level.position(data.corners[p].probe[c]);
+                    codes[c] = castSegment(state, start,
+                                           q + data.bins.centre[b] * upper->level.tStart, true);
+                }
+            }
+        }
+    });
+}
+
+void castFaces(RadianceCascades::State& state) {
+    FaceData& faces = state.faces;
+    const int count = faces.table.size();
+    faces.codeOffset.resize(std::size_t(count) + 1);
+    std::uint32_t offset = 0;
+    for (int f = 0; f < count; ++f) {
+        faces.codeOffset[f] = offset;
+        offset += std::uint32_t(faces.bins.cosine[faces.table[f].normal].bin.size() * 8);
+    }
+    faces.codeOffset[count] = offset;
+    faces.codes.assign(offset, kVoid);
+    faces.corners.resize(std::size_t(count));
+    const Level& level0 = state.levels.front().level;
+    parallelForRange(count, 64, [&](int begin, int end) {
+        for (int f = begin; f < end; ++f) {
+            const Face& face = faces.table[f];
+            const Int3 n = normalFromIndex(face.normal);
+            const Vec3d normal{double(n.x), double(n.y), double(n.z)};
+            const Vec3d centre = faceCentre(face);
+            faces.corners[f] = cornersAround(level0, centre + normal * 0.5);
+            const auto& seen = faces.bins.cosine[face.normal].bin;
+            std::uint32_t* codes = &faces.codes[faces.codeOffset[f]];
+            for (std::size_t i = 0; i < seen.size(); ++i) {
+                const Vec3d w = faces.bins.centre[seen[i]];
+                for (int c = 0; c < 8; ++c) {
+                    const Vec3d to = level0.position(faces.corners[f].probe[c]) + w * level0.tStart;
+                    // A segment into the face's own voxel is not light it can receive.
+                    codes[i * 8 + c] = dot(to - centre, normal) > 1e-9
+                                           ? castSegment(state, centre, to, true)
+                                           : kVoid;
+                }
+            }
+        }
+    });
+}
+
+}  // namespace
+
+void castSegments(RadianceCascades::State& state) {
+    for (std::size_t k = 0; k < state.levels.size(); ++k) castLevel(state, k);
+    castFaces(state);
+}
+
+}  // namespace luxel::voxel::cascades

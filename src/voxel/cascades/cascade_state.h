@@ -1,0 +1,70 @@
+// What the voxel radiance cascades keep between lighting passes (radiance_cascades.h): the
+// faces, the levels, every segment's first hit as a code, and the radiance of the last pass.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cascade_layout.h"
+#include "luxel/voxel/radiance_cascades.h"
+#include "octahedral_bins.h"
+#include "surface_faces.h"
+
+namespace luxel::voxel::cascades {
+
+// A segment's code: the id of the face it meets first, or one of these.
+inline constexpr std::uint32_t kContinue = 0xFFFFFFFFu;  // meets nothing: the next level goes on
+inline constexpr std::uint32_t kSky = 0xFFFFFFFEu;       // leaves the world: the sky
+inline constexpr std::uint32_t kBlack = 0xFFFFFFFDu;     // meets a face that is not a probe
+inline constexpr std::uint32_t kVoid = 0xFFFFFFFCu;      // starts inside a solid: left out
+
+struct LevelData {
+    Level level;
+    DirectionBins bins;
+    std::vector<Rgb> sky;              // per bin
+    std::vector<Corners> corners;      // per probe: the level above's probes around it
+    std::vector<std::uint32_t> codes;  // [probe][bin][corner] ([probe][bin] on the top level)
+    std::vector<Rgb> radiance;         // [probe][bin]
+    std::vector<Rgb> childMean;        // [probe][bin of the level below]: mean of its children
+};
+
+struct FaceData {
+    FaceTable table;
+    DirectionBins bins;  // side kFaceBinSide, like level 0
+    std::vector<Rgb> sky;
+    std::vector<Corners> corners;           // per face: level 0's probes around it
+    std::vector<std::uint32_t> codes;       // per face, its normal's cosine bins x 8 corners
+    std::vector<std::uint32_t> codeOffset;  // per face
+    std::vector<Rgb> albedo, emission;
+    std::vector<float> sunVisible;  // fraction of the face the sun reaches
+    std::vector<Rgb> outgoing;      // radiance the face sends, this pass
+    std::vector<Rgb> irradiance;    // indirect irradiance gathered, last pass
+};
+
+}  // namespace luxel::voxel::cascades
+
+namespace luxel::voxel {
+
+struct RadianceCascades::State {
+    const VoxelWorld* world = nullptr;
+    const TextureSet* textures = nullptr;
+    ShadeOptions shading;
+    CascadeOptions options;
+    cascades::FaceData faces;
+    std::vector<cascades::LevelData> levels;
+    Vec3d sunForVisibility{};  // the sun direction sunVisible was found for
+    CascadeStats stats;
+};
+
+}  // namespace luxel::voxel
+
+namespace luxel::voxel::cascades {
+
+// Casts every segment of the faces and the levels once (cascade_segments.cpp).
+void castSegments(RadianceCascades::State& state);
+// Face colours and sun visibility for the state's shading (cascade_light.cpp).
+void updateFaceLight(RadianceCascades::State& state);
+// One lighting pass (cascade_light.cpp); returns the relative change of total irradiance.
+double lightingPass(RadianceCascades::State& state);
+
+}  // namespace luxel::voxel::cascades

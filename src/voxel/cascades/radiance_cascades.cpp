@@ -1,0 +1,225 @@
+// The voxel radiance cascades' public face (radiance_cascades.h): building, lighting passes,
+// the per-pixel picture.
+#include "luxel/voxel/radiance_cascades.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "../path_trace_surface.h"
+#include "cascade_state.h"
+#include "luxel/core/memory.h"
+#include "luxel/core/parallel.h"
+#include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/surface_cast.h"
+
+namespace luxel::voxel {
+
+using namespace cascades;
+
+namespace {
+
+constexpr float kInvPi = float(1.0 / 3.14159265358979323846);
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::uint64_t memoryLimit(const CascadeOptions& options) {
+    if (options.memoryLimit > 0) return options.memoryLimit;
+    const std::uint64_t cap = std::uint64_t(2) << 30, available = availableMemoryBytes();
+    return available > 0 ? std::min(cap, available) : cap;
+}
+
+}  // namespace
+
+Status validateCascades(const CascadeOptions& o) {
+    if (o.spacing != 0 &&
+        (o.spacing < 1 || o.spacing > kMaxCascadeSpacing || (o.spacing & (o.spacing - 1)) != 0)) {
+        return Error("cascade spacing must be a power of two in 1.." +
+                     std::to_string(kMaxCascadeSpacing) + " (or 0 for automatic), got " +
+                     std::to_string(o.spacing));
+    }
+    if (o.bounces < 0 || o.bounces > kMaxCascadeBounces) {
+        return Error("cascade bounces must be in 0.." + std::to_string(kMaxCascadeBounces) +
+                     " (0: until converged), got " + std::to_string(o.bounces));
+    }
+    if (!(o.tolerance > 0.0 && o.tolerance < 1.0)) {
+        std::ostringstream s;
+        s << o.tolerance;
+        return Error("cascade tolerance must be in (0, 1), got " + s.str());
+    }
+    return Ok{};
+}
+
+RadianceCascades::RadianceCascades(std::unique_ptr<State> state) : state_(std::move(state)) {}
+RadianceCascades::RadianceCascades(RadianceCascades&&) noexcept = default;
+RadianceCascades& RadianceCascades::operator=(RadianceCascades&&) noexcept = default;
+RadianceCascades::~RadianceCascades() = default;
+
+Result<RadianceCascades> RadianceCascades::create(const VoxelWorld& world,
+                                                  const TextureSet* textures,
+                                                  const ShadeOptions& shading,
+                                                  const CascadeOptions& options) {
+    if (Status s = validateCascades(options); !s) return s.error();
+    if (Status s = validatePathTrace(shading, PathTraceOptions{}); !s) return s.error();
+    const auto start = std::chrono::steady_clock::now();
+    const std::uint64_t limit = memoryLimit(options);
+    const std::int64_t exposed = FaceTable::countExposed(world);
+    int spacing = options.spacing > 0 ? options.spacing : 2;
+    std::vector<Level> levels = planLevels(world.size(), spacing);
+    while (options.spacing == 0 && spacing < kMaxCascadeSpacing &&
+           cascadeBytes(levels, exposed) > limit) {
+        spacing *= 2;
+        levels = planLevels(world.size(), spacing);
+    }
+    const std::uint64_t needed = cascadeBytes(levels, exposed);
+    if (needed > limit) {
+        return Error("radiance cascades with probe spacing " + std::to_string(spacing) + " need " +
+                     formatBytes(needed) + ", more than the limit of " + formatBytes(limit) +
+                     " (try a larger --rc-spacing)");
+    }
+    if (Status s = checkMemory(needed, "radiance cascades"); !s) return s.error();
+
+    auto state = std::make_unique<State>();
+    state->world = &world;
+    state->textures = textures;
+    state->shading = shading;
+    state->options = options;
+    Result<FaceTable> table =
+        FaceTable::build(world, textures, std::max<std::int64_t>(exposed * 2, 1 << 20));
+    if (!table) return table.error();
+    state->faces.table = std::move(*table);
+    state->faces.bins = DirectionBins::build(kFaceBinSide);
+    for (const Level& level : levels) {
+        LevelData data;
+        data.level = level;
+        data.bins = DirectionBins::build(level.binSide);
+        state->levels.push_back(std::move(data));
+    }
+    castSegments(*state);
+    updateFaceLight(*state);
+
+    CascadeStats& stats = state->stats;
+    stats.faces = state->faces.table.size();
+    stats.levels = int(levels.size());
+    stats.spacing = spacing;
+    stats.segments = std::int64_t(state->faces.codes.size());
+    stats.bytes = state->faces.table.bytes() + state->faces.codes.size() * 4;
+    for (const LevelData& level : state->levels) {
+        stats.probes += level.level.probeCount();
+        stats.segments += std::int64_t(level.codes.size());
+        stats.bytes += level.codes.size() * 4 +
+                       std::uint64_t(level.level.probeCount()) * level.bins.count() * 15;
+    }
+    stats.buildSeconds = secondsSince(start);
+    return RadianceCascades(std::move(state));
+}
+
+Status RadianceCascades::setLight(const ShadeOptions& shading) {
+    if (Status s = validatePathTrace(shading, PathTraceOptions{}); !s) return s.error();
+    state_->shading = shading;
+    updateFaceLight(*state_);
+    return Ok{};
+}
+
+double RadianceCascades::iterate() {
+    ++state_->stats.bounces;
+    return lightingPass(*state_);
+}
+
+int RadianceCascades::solve() {
+    const int limit = state_->options.bounces > 0 ? state_->options.bounces : kMaxCascadeBounces;
+    int passes = 0;
+    while (passes < limit) {
+        const double change = iterate();
+        ++passes;
+        if (state_->options.bounces == 0 && change < state_->options.tolerance) break;
+    }
+    return passes;
+}
+
+Rgb RadianceCascades::indirectIrradiance(Int3 voxel, Int3 normal, Vec3d point) const {
+    const FaceData& faces = state_->faces;
+    const int n = normalIndex(normal), axis = n / 2, a = (axis + 1) % 3, b = (axis + 2) % 3;
+    // Bilinear between the centres of this face and its neighbours in the plane; a neighbour
+    // counts when it is an open face too, and a diagonal one only through an open side neighbour
+    // (so light does not cross the corner of a wall).
+    const double fa = point[a] - voxel[a] - 0.5, fb = point[b] - voxel[b] - 0.5;
+    const int da = fa < 0.0 ? -1 : 1, db = fb < 0.0 ? -1 : 1;
+    const double wa = std::abs(fa), wb = std::abs(fb);
+    Int3 va = voxel, vb = voxel, vab = voxel;
+    va[a] += da, vb[b] += db, vab[a] += da, vab[b] += db;
+    const int self = faces.table.find(voxel, n), sideA = faces.table.find(va, n),
+              sideB = faces.table.find(vb, n);
+    const int diagonal = (sideA >= 0 || sideB >= 0) ? faces.table.find(vab, n) : -1;
+    const int ids[4] = {self, sideA, sideB, diagonal};
+    const double weights[4] = {(1 - wa) * (1 - wb), wa * (1 - wb), (1 - wa) * wb, wa * wb};
+    Rgb sum;
+    double total = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        if (ids[i] < 0) continue;
+        sum += faces.irradiance[ids[i]] * float(weights[i]);
+        total += weights[i];
+    }
+    return total > 0.0 ? sum * float(1.0 / total) : Rgb{};
+}
+
+Result<Image> RadianceCascades::render(const Camera& camera) const {
+    const int width = camera.width(), height = camera.height();
+    if (std::int64_t(width) * height > kMaxPathPixels) {
+        return Error("radiance cascades: image " + std::to_string(width) + "x" +
+                     std::to_string(height) + " has more than " + std::to_string(kMaxPathPixels) +
+                     " pixels");
+    }
+    const VoxelWorld& world = *state_->world;
+    const ShadeOptions& shading = state_->shading;
+    Image out(width, height, 3);
+    parallelForRange(height, 1, [&](int begin, int end) {
+        for (int y = begin; y < end; ++y) {
+            for (int x = 0; x < width; ++x) {
+                const Ray ray = camera.rayAt(x + 0.5, y + 0.5);
+                const SurfaceHit s = castToSurface(world, state_->textures, ray, shading.stepCap);
+                Rgb radiance;
+                if (!s.hit.hit) {
+                    radiance = skyColor(ray.direction, shading);
+                } else if (s.hit.normal != Int3{}) {  // else the camera is inside a solid voxel
+                    const PathSurface surface = pathSurfaceAt(world, s, shading);
+                    radiance =
+                        surface.emission +
+                        directSunLight(world, state_->textures, s.hit, surface.albedo, shading) +
+                        surface.albedo *
+                            indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point) * kInvPi;
+                }
+                for (int c = 0; c < 3; ++c) out.at(x, y, c) = radiance[c];
+            }
+        }
+    });
+    return out;
+}
+
+CascadeStats RadianceCascades::stats() const {
+    return state_->stats;
+}
+
+Result<CascadeImage> renderRadianceCascades(const VoxelWorld& world, const Camera& camera,
+                                            const ShadeOptions& shading,
+                                            const CascadeOptions& options,
+                                            const TextureSet* textures) {
+    Result<RadianceCascades> cascades = RadianceCascades::create(world, textures, shading, options);
+    if (!cascades) return cascades.error();
+    CascadeImage out;
+    auto start = std::chrono::steady_clock::now();
+    cascades->solve();
+    out.lightSeconds = secondsSince(start);
+    start = std::chrono::steady_clock::now();
+    Result<Image> image = cascades->render(camera);
+    if (!image) return image.error();
+    out.renderSeconds = secondsSince(start);
+    out.radiance = std::move(*image);
+    out.stats = cascades->stats();
+    return out;
+}
+
+}  // namespace luxel::voxel

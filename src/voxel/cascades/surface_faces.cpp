@@ -1,0 +1,125 @@
+// The face table of the voxel radiance cascades (surface_faces.h).
+#include "surface_faces.h"
+
+#include <bit>
+#include <string>
+
+#include "octahedral_bins.h"
+
+namespace luxel::voxel::cascades {
+
+namespace {
+
+// Texture slots with at least one cutout texel: rays pass through such voxels, so faces behind
+// them can be reached.
+std::vector<bool> cutoutSlots(const TextureSet* textures) {
+    std::vector<bool> cutout(256, false);
+    if (!textures) return cutout;
+    for (int slot = 0; slot < textures->size(); ++slot) {
+        for (const Texel& t : (*textures)[slot].texels) {
+            if (t.cutout()) {
+                cutout[slot] = true;
+                break;
+            }
+        }
+    }
+    return cutout;
+}
+
+std::uint64_t mix(std::uint64_t x) {  // splitmix64's finaliser: spreads grid keys over the table
+    x ^= x >> 30;
+    x *= 0xbf58476d1ce4e5b9ULL;
+    x ^= x >> 27;
+    x *= 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+}
+
+}  // namespace
+
+std::int64_t FaceTable::countExposed(const VoxelWorld& world) {
+    const Int3 s = world.size();
+    std::int64_t count = 0;
+    for (int z = 0; z < s.z; ++z) {
+        for (int y = 0; y < s.y; ++y) {
+            for (int x = 0; x < s.x; ++x) {
+                if (!world.solid(x, y, z)) continue;
+                count += !world.solid(x + 1, y, z) + !world.solid(x - 1, y, z) +
+                         !world.solid(x, y + 1, z) + !world.solid(x, y - 1, z) +
+                         !world.solid(x, y, z + 1) + !world.solid(x, y, z - 1);
+            }
+        }
+    }
+    return count;
+}
+
+Result<FaceTable> FaceTable::build(const VoxelWorld& world, const TextureSet* textures,
+                                   std::int64_t maxFaces) {
+    FaceTable table;
+    table.size_ = world.size();
+    const std::vector<bool> cutout = cutoutSlots(textures);
+    const auto open = [&](int x, int y, int z) {
+        const Voxel v = world.get(x, y, z);
+        if (!v.solid()) return true;
+        const int slot = textureSlotOf(v);
+        return textures && slot >= 0 && slot < textures->size() && cutout[slot];
+    };
+    const Int3 s = world.size();
+    for (int z = 0; z < s.z; ++z) {
+        for (int y = 0; y < s.y; ++y) {
+            for (int x = 0; x < s.x; ++x) {
+                if (!world.solid(x, y, z)) continue;
+                for (int n = 0; n < 6; ++n) {
+                    const Int3 d = normalFromIndex(n);
+                    if (!open(x + d.x, y + d.y, z + d.z)) continue;
+                    if (std::int64_t(table.faces_.size()) >= maxFaces) {
+                        return Error("radiance cascades: the world has more than " +
+                                     std::to_string(maxFaces) +
+                                     " open voxel faces, more than the memory limit allows");
+                    }
+                    table.faces_.push_back({{x, y, z}, std::uint8_t(n)});
+                }
+            }
+        }
+    }
+    const std::uint64_t capacity = std::bit_ceil(std::uint64_t(table.faces_.size()) * 2 + 16);
+    table.mask_ = capacity - 1;
+    table.slotKeys_.assign(capacity, 0);
+    table.slotIds_.assign(capacity, -1);
+    for (int id = 0; id < table.size(); ++id) {
+        const std::uint64_t k = table.key(table.faces_[id].voxel, table.faces_[id].normal);
+        std::uint64_t slot = mix(k) & table.mask_;
+        while (table.slotKeys_[slot] != 0) slot = (slot + 1) & table.mask_;
+        table.slotKeys_[slot] = k + 1;
+        table.slotIds_[slot] = id;
+    }
+    return table;
+}
+
+std::uint64_t FaceTable::key(Int3 v, int normal) const {
+    return ((std::uint64_t(v.z) * size_.y + std::uint64_t(v.y)) * size_.x + std::uint64_t(v.x)) *
+               6 +
+           std::uint64_t(normal);
+}
+
+int FaceTable::find(Int3 v, int normal) const {
+    if (v.x < 0 || v.y < 0 || v.z < 0 || v.x >= size_.x || v.y >= size_.y || v.z >= size_.z) {
+        return -1;
+    }
+    const std::uint64_t k = key(v, normal) + 1;
+    for (std::uint64_t slot = mix(k - 1) & mask_;; slot = (slot + 1) & mask_) {
+        if (slotKeys_[slot] == k) return slotIds_[slot];
+        if (slotKeys_[slot] == 0) return -1;
+    }
+}
+
+std::uint64_t FaceTable::bytes() const {
+    return faces_.size() * sizeof(Face) + slotKeys_.size() * (sizeof(std::uint64_t) + 4);
+}
+
+Vec3d faceCentre(const Face& face) {
+    const Int3 n = normalFromIndex(face.normal);
+    Vec3d c{face.voxel.x + 0.5, face.voxel.y + 0.5, face.voxel.z + 0.5};
+    return c + Vec3d{double(n.x), double(n.y), double(n.z)} * 0.5;
+}
+
+}  // namespace luxel::voxel::cascades

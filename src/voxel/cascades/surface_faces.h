@@ -1,0 +1,51 @@
+// The voxel faces light can leave from: every face of a solid voxel whose neighbour across it is
+// empty or textured with cutout texels (so a ray can reach the face). They are the surface
+// probes of the voxel radiance cascades and the radiance cache that probe rays read
+// (docs/algorithms/voxel-radiance-cascades.md §3).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "luxel/core/error.h"
+#include "luxel/core/vec.h"
+#include "luxel/voxel/shading.h"
+#include "luxel/voxel/texture_set.h"
+#include "luxel/voxel/voxel_world.h"
+
+namespace luxel::voxel::cascades {
+
+struct Face {
+    Int3 voxel;
+    std::uint8_t normal = 0;  // normalIndex of the outward normal
+};
+
+class FaceTable {
+  public:
+    // Scans the world; fails (naming the count and bytes) past `maxFaces`.
+    static Result<FaceTable> build(const VoxelWorld& world, const TextureSet* textures,
+                                   std::int64_t maxFaces);
+    // Faces an upper bound of which build() would find, without building (a fast estimate for
+    // memory checks): the solid voxels' faces towards non-solid neighbours.
+    static std::int64_t countExposed(const VoxelWorld& world);
+
+    int size() const { return int(faces_.size()); }
+    const Face& operator[](int id) const { return faces_[id]; }
+    const std::vector<Face>& faces() const { return faces_; }
+    // The face's id, or -1 when (voxel, normal) is not in the table.
+    int find(Int3 voxel, int normal) const;
+    std::uint64_t bytes() const;
+
+  private:
+    std::uint64_t key(Int3 voxel, int normal) const;
+    Int3 size_;
+    std::vector<Face> faces_;
+    std::vector<std::uint64_t> slotKeys_;  // open addressing; 0 = empty, else key + 1
+    std::vector<std::int32_t> slotIds_;
+    std::uint64_t mask_ = 0;
+};
+
+// The centre of a face and a point just in front of it (the cell the face looks into).
+Vec3d faceCentre(const Face& face);
+
+}  // namespace luxel::voxel::cascades
