@@ -13,9 +13,14 @@ Int3 Level::probeCell(std::int64_t probe) const {
     return {x, y, z};
 }
 
+double Level::offset() const {
+    return spacing / 2 + 0.5;
+}
+
 Vec3d Level::position(std::int64_t probe) const {
     const Int3 c = probeCell(probe);
-    return Vec3d{c.x + 0.5, c.y + 0.5, c.z + 0.5} * double(spacing);
+    return Vec3d{double(c.x), double(c.y), double(c.z)} * double(spacing) +
+           Vec3d{offset(), offset(), offset()};
 }
 
 Corners cornersAround(const Level& level, Vec3d point) {

@@ -2,11 +2,12 @@
 // (docs/algorithms/voxel-radiance-cascades.md §2).
 //
 // Level 0 of the world cascades has probes every `spacing` voxels (probe i of an axis at
-// (i + 1/2) spacing, covering the world box) and side-4 direction bins; each level above doubles
-// the spacing and the bins per side (4x the directions, 1/8 the probes: half the rays). A
-// level's segments start tStart = 1.5 x its spacing from its probes and end where the next
-// level's start; the top level's go on until they leave the world. Below level 0 are the
-// surface probes (the faces), whose segments run from the face to level 0's starts.
+// i spacing + offset(), a voxel centre, so no probe lies in the plane of a face) and side-4
+// direction bins; each level above doubles the spacing and the bins per side (4x the directions,
+// 1/8 the probes: half the rays). A level's segments start tStart = 1.5 x its spacing from its
+// probes and end where the next level's start; the top level's go on until they leave the world.
+// Below level 0 are the surface probes (the faces), whose segments run from the face to level 0's
+// starts.
 #pragma once
 
 #include <array>
@@ -17,7 +18,7 @@
 
 namespace luxel::voxel::cascades {
 
-inline constexpr int kFaceBinSide = 4;  // direction bins per side at the faces and at level 0
+inline constexpr int kFaceBinSide = 8;  // direction bins per side at the faces and at level 0
 inline constexpr double kStartPerSpacing = 1.5;
 
 struct Level {
@@ -29,6 +30,7 @@ struct Level {
 
     std::int64_t probeCount() const { return std::int64_t(probes.x) * probes.y * probes.z; }
     Int3 probeCell(std::int64_t probe) const;
+    double offset() const;  // floor(spacing / 2) + 1/2: probes sit at voxel centres
     Vec3d position(std::int64_t probe) const;
 };
 

@@ -36,6 +36,24 @@ std::uint32_t castSegment(const RadianceCascades::State& state, Vec3d start, Vec
     return face < 0 ? kBlack : std::uint32_t(face);
 }
 
+// Leaves out (weight 0) the corners whose probe `from` cannot see, so the chains from a point
+// near a wall lean on the probes in the open, not on those inside or behind the wall (their
+// segments bend towards the wall). When it sees none, all keep their weights.
+void keepVisibleCorners(const RadianceCascades::State& state, const Level& upper, Vec3d from,
+                        Corners& corners) {
+    Corners visible = corners;
+    float total = 0.0f;
+    for (int c = 0; c < 8; ++c) {
+        if (visible.weight[c] == 0.0f) continue;
+        const Vec3d q = upper.position(corners.probe[c]);
+        if (occluded(*state.world, {from, q - from}, 1.0, state.shading.stepCap)) {
+            visible.weight[c] = 0.0f;
+        }
+        total += visible.weight[c];
+    }
+    if (total > 0.0f) corners = visible;
+}
+
 void castLevel(RadianceCascades::State& state, std::size_t k) {
     LevelData& data = state.levels[k];
     const Level& level = data.level;
@@ -49,7 +67,10 @@ void castLevel(RadianceCascades::State& state, std::size_t k) {
     parallelForRange(int(probes), 1, [&](int begin, int end) {
         for (int p = begin; p < end; ++p) {
             const Vec3d origin = level.position(p);
-            if (!top) data.corners[p] = cornersAround(upper->level, origin);
+            if (!top) {
+                data.corners[p] = cornersAround(upper->level, origin);
+                keepVisibleCorners(state, upper->level, origin, data.corners[p]);
+            }
             for (int b = 0; b < bins; ++b) {
                 // Level 0 has the faces' bins; above, a bin's chain came through its parent.
                 const Vec3d from = k == 0 ? data.bins.centre[b] : below.centre[data.bins.parent(b)];
@@ -89,6 +110,7 @@ void castFaces(RadianceCascades::State& state) {
             const Vec3d normal{double(n.x), double(n.y), double(n.z)};
             const Vec3d centre = faceCentre(face);
             faces.corners[f] = cornersAround(level0, centre + normal * 0.5);
+            keepVisibleCorners(state, level0, centre, faces.corners[f]);
             const auto& seen = faces.bins.cosine[face.normal].bin;
             std::uint32_t* codes = &faces.codes[faces.codeOffset[f]];
             for (std::size_t i = 0; i < seen.size(); ++i) {
