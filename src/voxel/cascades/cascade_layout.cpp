@@ -66,7 +66,7 @@ std::vector<Level> planLevels(Int3 worldSize, int spacing) {
     return levels;
 }
 
-std::uint64_t cascadeBytes(const std::vector<Level>& levels, std::int64_t faces) {
+std::uint64_t cascadeBytes(const std::vector<Level>& levels, std::int64_t faces, int binsPerFace) {
     std::uint64_t bytes = 0;
     for (std::size_t k = 0; k < levels.size(); ++k) {
         const std::uint64_t entries =
@@ -75,8 +75,9 @@ std::uint64_t cascadeBytes(const std::vector<Level>& levels, std::int64_t faces)
         bytes += entries / 4 * 12;                                      // child means
         bytes += std::uint64_t(levels[k].probeCount()) * sizeof(Corners);
     }
-    // A face sees at most 12 of the 16 bins: 12 x 8 codes, plus its colours, corners and cache.
-    bytes += std::uint64_t(faces) * (12 * 8 * 4 + sizeof(Corners) + 6 * 12 + 4 + 4 + 24);
+    // Its bins x 8 codes, plus its colours, corners and radiance cache.
+    bytes += std::uint64_t(faces) *
+             (std::uint64_t(binsPerFace) * 8 * 4 + sizeof(Corners) + 6 * 12 + 4 + 4 + 24);
     return bytes;
 }
 

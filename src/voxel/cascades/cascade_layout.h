@@ -47,7 +47,8 @@ Corners cornersAround(const Level& level, Vec3d point);
 std::vector<Level> planLevels(Int3 worldSize, int spacing);
 
 // Bytes the cascades need: segment codes (4 B), radiance and child means (12 B per entry) for
-// the levels, and `faces` surface probes with their segments and radiance.
-std::uint64_t cascadeBytes(const std::vector<Level>& levels, std::int64_t faces);
+// the levels, and `faces` surface probes that each see `binsPerFace` direction bins, with their
+// segments and radiance.
+std::uint64_t cascadeBytes(const std::vector<Level>& levels, std::int64_t faces, int binsPerFace);
 
 }  // namespace luxel::voxel::cascades

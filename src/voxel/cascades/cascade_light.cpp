@@ -163,6 +163,7 @@ void updateFaceLight(RadianceCascades::State& state) {
         }
     });
     state.sunForVisibility = sun;
+    faces.emittersExact = computeEmitterIrradiance(state);
     faces.sky = skyMeans(faces.bins, shading);
     for (LevelData& level : state.levels) level.sky = skyMeans(level.bins, shading);
 }
@@ -177,8 +178,11 @@ double lightingPass(RadianceCascades::State& state) {
             const Int3 n = normalFromIndex(faces.table[f].normal);
             const double cosSun = std::max(0.0, n.x * sun.x + n.y * sun.y + n.z * sun.z);
             const Rgb direct = sunIrradiance * float(cosSun * faces.sunVisible[f]);
+            // Emission reaches other faces exactly (emitterIrradiance) unless there are too many.
+            const Rgb emitted = faces.emittersExact ? Rgb{} : faces.emission[f];
             faces.outgoing[f] =
-                faces.emission[f] + faces.albedo[f] * (direct + faces.irradiance[f]) * kInvPi;
+                emitted + faces.albedo[f] *
+                              (direct + faces.irradiance[f] + faces.emitterIrradiance[f]) * kInvPi;
         }
     });
     for (std::size_t k = state.levels.size(); k-- > 0;) mergeLevel(state, k);

@@ -1,10 +1,12 @@
 // Casting the segments of the voxel radiance cascades once per world
 // (docs/algorithms/voxel-radiance-cascades.md §3).
 //
-// The segment of a level-k probe p in bin b towards the upper probe q runs from
+// The segment of a level-k probe p in bin b towards the upper probe q runs straight from
 // p + tStart_k w_parent(b) (where the level below's segment for the parent bin ended) to
-// q + tStart_{k+1} w_b (where q's segments for b's children start), so each chain of segments
-// is an unbroken path and a wall anywhere on it stops the light.
+// p + tStart_{k+1} w_b, then on to q + tStart_{k+1} w_b (where q's segments for b's children
+// start), so each chain of segments is an unbroken path and a wall anywhere on it stops the
+// light. The straight part, shared by the eight corners, samples the bin along its own
+// direction; only the short connector bends towards the corner.
 #include <cmath>
 
 #include "cascade_state.h"
@@ -54,6 +56,22 @@ void keepVisibleCorners(const RadianceCascades::State& state, const Level& upper
     if (total > 0.0f) corners = visible;
 }
 
+// The codes of the eight chains from `start` straight to `bend` and on to each corner's
+// probe + `reach`: one cast for the straight part, then a connector per corner it leaves open.
+void castBentSegments(const RadianceCascades::State& state, Vec3d start, Vec3d bend, Vec3d reach,
+                      const Level& upper, const Corners& corners, std::uint32_t* codes) {
+    const std::uint32_t straight = castSegment(state, start, bend, true);
+    for (int c = 0; c < 8; ++c) {
+        if (straight != kContinue) {
+            codes[c] = straight;
+        } else if (corners.weight[c] == 0.0f) {
+            codes[c] = kVoid;
+        } else {
+            codes[c] = castSegment(state, bend, upper.position(corners.probe[c]) + reach, true);
+        }
+    }
+}
+
 void castLevel(RadianceCascades::State& state, std::size_t k) {
     LevelData& data = state.levels[k];
     const Level& level = data.level;
@@ -80,11 +98,9 @@ void castLevel(RadianceCascades::State& state, std::size_t k) {
                     codes[0] = castSegment(state, start, start + data.bins.centre[b], false);
                     continue;
                 }
-                for (int c = 0; c < 8; ++c) {
-                    const Vec3d q = upper->level.position(data.corners[p].probe[c]);
-                    codes[c] = castSegment(state, start,
-                                           q + data.bins.centre[b] * upper->level.tStart, true);
-                }
+                const Vec3d bend = origin + data.bins.centre[b] * upper->level.tStart;
+                castBentSegments(state, start, bend, data.bins.centre[b] * upper->level.tStart,
+                                 upper->level, data.corners[p], codes);
             }
         }
     });
@@ -111,17 +127,14 @@ void castFaces(RadianceCascades::State& state) {
             const Vec3d centre = faceCentre(face);
             faces.corners[f] = cornersAround(level0, centre + normal * 0.5);
             keepVisibleCorners(state, level0, centre, faces.corners[f]);
-            const auto& seen = faces.bins.cosine[face.normal].bin;
+            const auto& seen = faces.bins.cosine[face.normal];
             std::uint32_t* codes = &faces.codes[faces.codeOffset[f]];
-            for (std::size_t i = 0; i < seen.size(); ++i) {
-                const Vec3d w = faces.bins.centre[seen[i]];
-                for (int c = 0; c < 8; ++c) {
-                    const Vec3d to = level0.position(faces.corners[f].probe[c]) + w * level0.tStart;
-                    // A segment into the face's own voxel is not light it can receive.
-                    codes[i * 8 + c] = dot(to - centre, normal) > 1e-9
-                                           ? castSegment(state, centre, to, true)
-                                           : kVoid;
-                }
+            for (std::size_t i = 0; i < seen.bin.size(); ++i) {
+                // Straight along the part of the bin in front of the face, then to the corners.
+                const Vec3d bend = centre + seen.direction[i] * level0.tStart;
+                castBentSegments(state, centre, bend,
+                                 faces.bins.centre[seen.bin[i]] * level0.tStart, level0,
+                                 faces.corners[f], codes + i * 8);
             }
         }
     });

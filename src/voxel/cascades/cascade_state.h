@@ -39,7 +39,14 @@ struct FaceData {
     std::vector<float> sunVisible;  // fraction of the face the sun reaches
     std::vector<Rgb> outgoing;      // radiance the face sends, this pass
     std::vector<Rgb> irradiance;    // indirect irradiance gathered, last pass
+    // Irradiance from the emissive faces, exact (cascade_emitters.cpp); when it is computed the
+    // chains carry reflected light only.
+    std::vector<Rgb> emitterIrradiance;
+    bool emittersExact = true;
 };
+
+// Most (emitting face, receiving face) pairs computed exactly; past it the chains carry emission.
+inline constexpr double kMaxEmitterPairs = 2e7;
 
 }  // namespace luxel::voxel::cascades
 
@@ -64,6 +71,10 @@ namespace luxel::voxel::cascades {
 void castSegments(RadianceCascades::State& state);
 // Face colours and sun visibility for the state's shading (cascade_light.cpp).
 void updateFaceLight(RadianceCascades::State& state);
+// The faces' emitterIrradiance; false (and zeros) when there are too many pairs.
+bool computeEmitterIrradiance(RadianceCascades::State& state);
+// The faces' emitterIrradiance; false (and zeros) when there are too many pairs.
+bool computeEmitterIrradiance(RadianceCascades::State& state);
 // One lighting pass (cascade_light.cpp); returns the relative change of total irradiance.
 double lightingPass(RadianceCascades::State& state);
 

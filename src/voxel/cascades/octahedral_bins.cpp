@@ -70,7 +70,9 @@ DirectionBins DirectionBins::build(int side) {
     bins.centre.resize(count);
     bins.solidAngle.assign(count, 0.0);
     std::array<std::vector<double>, 6> cosine;
+    std::array<std::vector<Vec3d>, 6> mean;
     for (auto& c : cosine) c.assign(count, 0.0);
+    for (auto& m : mean) m.assign(count, Vec3d{});
     double total = 0.0;
     for (int bin = 0; bin < count; ++bin) {
         bins.centre[bin] =
@@ -80,7 +82,10 @@ DirectionBins DirectionBins::build(int side) {
             for (int n = 0; n < 6; ++n) {
                 const Int3 a = normalFromIndex(n);
                 const double c = a.x * w.x + a.y * w.y + a.z * w.z;
-                if (c > 0.0) cosine[n][bin] += c * dw;
+                if (c > 0.0) {
+                    cosine[n][bin] += c * dw;
+                    mean[n][bin] = mean[n][bin] + w * (c * dw);
+                }
             }
         });
         total += bins.solidAngle[bin];
@@ -94,6 +99,7 @@ DirectionBins DirectionBins::build(int side) {
             if (cosine[n][bin] <= 0.0) continue;
             bins.cosine[n].bin.push_back(bin);
             bins.cosine[n].weight.push_back(float(cosine[n][bin] * kPi / sum));
+            bins.cosine[n].direction.push_back(normalize(mean[n][bin]));
         }
     }
     return bins;

@@ -26,9 +26,13 @@ struct DirectionBins {
     std::vector<double> solidAngle;  // steradians; they sum to 4 pi
     // For each axis normal (normalIndex) the bins it sees and the integral of max(0, n . w) over
     // each: sum of weight = pi. Bins wholly behind the normal are left out.
+    // `direction` is the cosine-weighted mean direction of the bin's part in front of the face:
+    // where the face's own rays for the bin go (the centre of a bin across the horizon may lie
+    // behind the face).
     struct CosineBins {
         std::vector<int> bin;
         std::vector<float> weight;
+        std::vector<Vec3d> direction;
     };
     std::array<CosineBins, 6> cosine;
 

@@ -67,14 +67,18 @@ Result<RadianceCascades> RadianceCascades::create(const VoxelWorld& world,
     const auto start = std::chrono::steady_clock::now();
     const std::uint64_t limit = memoryLimit(options);
     const std::int64_t exposed = FaceTable::countExposed(world);
+    DirectionBins faceBins = DirectionBins::build(kFaceBinSide);
+    int binsPerFace = 0;
+    for (const auto& seen : faceBins.cosine)
+        binsPerFace = std::max(binsPerFace, int(seen.bin.size()));
     int spacing = options.spacing > 0 ? options.spacing : 2;
     std::vector<Level> levels = planLevels(world.size(), spacing);
     while (options.spacing == 0 && spacing < kMaxCascadeSpacing &&
-           cascadeBytes(levels, exposed) > limit) {
+           cascadeBytes(levels, exposed, binsPerFace) > limit) {
         spacing *= 2;
         levels = planLevels(world.size(), spacing);
     }
-    const std::uint64_t needed = cascadeBytes(levels, exposed);
+    const std::uint64_t needed = cascadeBytes(levels, exposed, binsPerFace);
     if (needed > limit) {
         return Error("radiance cascades with probe spacing " + std::to_string(spacing) + " need " +
                      formatBytes(needed) + ", more than the limit of " + formatBytes(limit) +
@@ -91,7 +95,7 @@ Result<RadianceCascades> RadianceCascades::create(const VoxelWorld& world,
         FaceTable::build(world, textures, std::max<std::int64_t>(exposed * 2, 1 << 20));
     if (!table) return table.error();
     state->faces.table = std::move(*table);
-    state->faces.bins = DirectionBins::build(kFaceBinSide);
+    state->faces.bins = std::move(faceBins);
     for (const Level& level : levels) {
         LevelData data;
         data.level = level;
@@ -160,7 +164,7 @@ Rgb RadianceCascades::indirectIrradiance(Int3 voxel, Int3 normal, Vec3d point) c
     double total = 0.0;
     for (int i = 0; i < 4; ++i) {
         if (ids[i] < 0) continue;
-        sum += faces.irradiance[ids[i]] * float(weights[i]);
+        sum += (faces.irradiance[ids[i]] + faces.emitterIrradiance[ids[i]]) * float(weights[i]);
         total += weights[i];
     }
     return total > 0.0 ? sum * float(1.0 / total) : Rgb{};

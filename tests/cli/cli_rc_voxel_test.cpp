@@ -1,0 +1,78 @@
+// `luxel render --solver rc` on a voxel scene end to end: the cottage with radiance cascades at a
+// small size (image, provenance, summary), and the refusals: --rc-spacing without it or on a 2D
+// scene, bad spacings and bounce counts, the ray caster's flags, the GPU, an octree scene.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "luxel/core/image_io.h"
+#include "luxel/core/image_metadata.h"
+#include "support/cli_fixture.h"
+
+namespace {
+
+using luxel::test::runLuxel;
+using luxel::test::RunResult;
+
+class CliRcVoxel : public luxel::test::CliFixture {};
+
+const std::string kScenes = std::string(LUXEL_SOURCE_DIR) + "/scenes/";
+const std::string kCottage = kScenes + "voxel/cottage.json";
+
+TEST_F(CliRcVoxel, LightsAVoxelSceneWithRadianceCascades) {
+    const RunResult r = runLuxel("render " + kCottage +
+                                 " --solver rc --rc-spacing 4 --bounces 3 --size 48x27 --out " +
+                                 path("c.exr") + " --png " + path("c.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("radiance cascades: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("levels from spacing 4"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("3 bounces"), std::string::npos) << r.output;
+    luxel::ImageMetadata metadata;
+    auto exr = luxel::readExr(path("c.exr"), &metadata);
+    ASSERT_TRUE(exr.ok()) << exr.error().message();
+    EXPECT_EQ(exr->width(), 48);
+    EXPECT_EQ(exr->height(), 27);
+    double sum = 0.0;
+    for (int y = 0; y < 27; ++y)
+        for (int x = 0; x < 48; ++x) sum += exr->at(x, y, 1);
+    EXPECT_TRUE(std::isfinite(sum));
+    EXPECT_GT(sum, 0.0);
+    for (const auto& [key, value] : {std::pair<const char*, const char*>{"luxel.solver", "rc"},
+                                     {"luxel.rc.spacing", "4"},
+                                     {"luxel.rc.bounces", "3"}}) {
+        const std::string* found = luxel::findMetadata(metadata, key);
+        ASSERT_NE(found, nullptr) << key;
+        EXPECT_EQ(*found, value) << key;
+    }
+    EXPECT_TRUE(luxel::readPng(path("c.png")).ok());
+}
+
+TEST_F(CliRcVoxel, RefusesItsOptionsWhereTheyDoNotApply) {
+    const std::string out = " --out " + path("x.exr");
+    expectError("render " + kCottage + " --rc-spacing 4" + out,
+                "--rc-spacing applies to --solver rc on voxel scenes");
+    expectError("render " + kScenes + "2d/room.json --solver rc --rc-spacing 4" + out,
+                "--rc-spacing applies to --solver rc on voxel scenes");
+    expectError("render " + kCottage + " --solver rc --samples 4" + out,
+                "apply to the ray caster; --solver rc takes --rc-spacing and --bounces");
+    expectError("render " + kCottage + " --solver rc --backend gpu" + out,
+                "--solver rc runs on the CPU");
+    expectError("render " + kCottage + " --solver rc --rc-spacing 3" + out,
+                "cascade spacing must be a power of two");
+    expectError("render " + kScenes + "octree/world.json --solver rc" + out,
+                "--solver rc applies to 2D and voxel scenes");
+    expectError("render " + kCottage + " --solver path --bounces 2" + out,
+                "--bounces applies to 2D scenes");
+    for (const char* spacing : {"-1", "128", "nan", "abc"}) {
+        const RunResult r =
+            runLuxel("render " + kCottage + " --solver rc --rc-spacing " + spacing + out);
+        EXPECT_EQ(r.exitCode, 1) << spacing << ": " << r.output;
+        EXPECT_NE(r.output.find("--rc-spacing"), std::string::npos) << r.output;
+    }
+    const RunResult r = runLuxel("render " + kCottage + " --solver rc --bounces 5000" + out);
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("bounces"), std::string::npos) << r.output;
+}
+
+}  // namespace
