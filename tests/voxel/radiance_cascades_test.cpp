@@ -279,6 +279,36 @@ TEST(RadianceCascades3D, ImagesDoNotDependOnTheThreadCount) {
     EXPECT_EQ(std::memcmp(one.data(), all.data(), sizeof(float) * 3 * 16 * 12), 0);
 }
 
+// The picture casts rows of rays at a time; each pixel must be what one ray through its centre,
+// its shadow ray and the interpolated irradiance give.
+TEST(RadianceCascades3D, PictureIsThePerPixelFormula) {
+    VoxelWorld world = closedBox(12);
+    for (int x = 1; x < 11; ++x) world.set(x, 5, 2, {0, 0, 0, 0});  // a slot in the wall
+    world.set(5, 1, 5, kWhite);
+    world.refreshEmptySpace();
+    ShadeOptions o = plainLight(0.6f, Rgb(0.0f), Rgb(0.5f, 0.6f, 0.9f));
+    o.sunIrradiance = Rgb(4.0f);
+    o.sunDirection = {0.2f, 0.3f, -1.0f};
+    RadianceCascades cascades = build(world, o);
+    cascades.solve();
+    const Camera cam = camera({6.0, 6.0, 9.0}, 170.0, -25.0, 90.0, 24, 16);
+    const Image image = picture(cascades, cam);
+    for (int y = 0; y < 16; ++y)
+        for (int x = 0; x < 24; ++x) {
+            const Ray ray = cam.rayAt(x + 0.5, y + 0.5);
+            const Hit hit = castRay(world, ray);
+            ASSERT_TRUE(hit.hit);
+            const double cosSun =
+                dot(Vec3d{double(hit.normal.x), double(hit.normal.y), double(hit.normal.z)},
+                    normalize(Vec3d{0.2, 0.3, -1.0}));
+            const bool lit =
+                cosSun > 0.0 && !occluded(world, {hit.point, normalize(Vec3d{0.2, 0.3, -1.0})});
+            const Rgb e = cascades.indirectIrradiance(hit.voxel, hit.normal, hit.point);
+            const double expected = 0.6 * (e.g / kPi + (lit ? 4.0 * cosSun / kPi : 0.0));
+            EXPECT_NEAR(image.at(x, y, 1), expected, 1e-5 * (1.0 + expected)) << x << "," << y;
+        }
+}
+
 TEST(RadianceCascades3D, NewLightGivesTheSameAnswerAsAFreshBuild) {
     const VoxelWorld world = floorWorld();
     ShadeOptions o = plainLight(0.7f, Rgb(0.0f), Rgb(0.5f));

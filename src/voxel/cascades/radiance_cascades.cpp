@@ -170,39 +170,6 @@ Rgb RadianceCascades::indirectIrradiance(Int3 voxel, Int3 normal, Vec3d point) c
     return total > 0.0 ? sum * float(1.0 / total) : Rgb{};
 }
 
-Result<Image> RadianceCascades::render(const Camera& camera) const {
-    const int width = camera.width(), height = camera.height();
-    if (std::int64_t(width) * height > kMaxPathPixels) {
-        return Error("radiance cascades: image " + std::to_string(width) + "x" +
-                     std::to_string(height) + " has more than " + std::to_string(kMaxPathPixels) +
-                     " pixels");
-    }
-    const VoxelWorld& world = *state_->world;
-    const ShadeOptions& shading = state_->shading;
-    Image out(width, height, 3);
-    parallelForRange(height, 1, [&](int begin, int end) {
-        for (int y = begin; y < end; ++y) {
-            for (int x = 0; x < width; ++x) {
-                const Ray ray = camera.rayAt(x + 0.5, y + 0.5);
-                const SurfaceHit s = castToSurface(world, state_->textures, ray, shading.stepCap);
-                Rgb radiance;
-                if (!s.hit.hit) {
-                    radiance = skyColor(ray.direction, shading);
-                } else if (s.hit.normal != Int3{}) {  // else the camera is inside a solid voxel
-                    const PathSurface surface = pathSurfaceAt(world, s, shading);
-                    radiance =
-                        surface.emission +
-                        directSunLight(world, state_->textures, s.hit, surface.albedo, shading) +
-                        surface.albedo *
-                            indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point) * kInvPi;
-                }
-                for (int c = 0; c < 3; ++c) out.at(x, y, c) = radiance[c];
-            }
-        }
-    });
-    return out;
-}
-
 CascadeStats RadianceCascades::stats() const {
     return state_->stats;
 }

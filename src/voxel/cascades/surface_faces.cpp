@@ -10,6 +10,14 @@ namespace luxel::voxel::cascades {
 
 namespace {
 
+std::uint64_t mix(std::uint64_t x) {  // splitmix64's finaliser: spreads grid keys over the table
+    x ^= x >> 30;
+    x *= 0xbf58476d1ce4e5b9ULL;
+    x ^= x >> 27;
+    x *= 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+}
+
 // Texture slots with at least one cutout texel: rays pass through such voxels, so faces behind
 // them can be reached.
 std::vector<bool> cutoutSlots(const TextureSet* textures) {
@@ -24,14 +32,6 @@ std::vector<bool> cutoutSlots(const TextureSet* textures) {
         }
     }
     return cutout;
-}
-
-std::uint64_t mix(std::uint64_t x) {  // splitmix64's finaliser: spreads grid keys over the table
-    x ^= x >> 30;
-    x *= 0xbf58476d1ce4e5b9ULL;
-    x ^= x >> 27;
-    x *= 0x94d049bb133111ebULL;
-    return x ^ (x >> 31);
 }
 
 }  // namespace
