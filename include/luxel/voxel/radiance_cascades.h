@@ -90,6 +90,7 @@ class RadianceCascades {
     struct State;  // defined by the implementation (src/voxel/cascades/cascade_state.h)
 
   private:
+    friend class RadianceCascadesGpu;
     explicit RadianceCascades(std::unique_ptr<State> state);
     std::unique_ptr<State> state_;
 };

@@ -1,0 +1,49 @@
+// Voxel radiance cascades: one level merged from the level above (voxel-radiance-cascades.md §4;
+// CPU: mergeLevel in src/voxel/cascades/cascade_light.cpp). One invocation per (probe, bin).
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/medium_layout.h"
+#include "shared/voxel_cascades_layout.h"
+
+layout(local_size_x = LUXEL_CASCADES_GROUP_SIZE) in;
+layout(std430, set = 0, binding = 0) readonly buffer Codes { uint codes[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Corners { uint corners[]; };
+layout(std430, set = 0, binding = 2) readonly buffer FaceLight { RgbTexel light[]; };
+layout(std430, set = 0, binding = 3) readonly buffer Sky { RgbTexel sky[]; };
+layout(std430, set = 0, binding = 4) readonly buffer Means { RgbTexel means[]; };
+layout(std430, set = 0, binding = 5) buffer Radiance { RgbTexel radiance[]; };
+layout(push_constant) uniform Push { CascadeMergeParams params; };
+
+vec3 codeRadiance(uint code, uint bin, vec3 next) {
+    if (code < LUXEL_CASCADE_VOID) return texelRgb(light[LUXEL_FACE_OUTGOING * params.faces + code]);
+    if (code == LUXEL_CASCADE_CONTINUE) return next;
+    if (code == LUXEL_CASCADE_SKY) return texelRgb(sky[params.skyOffset + bin]);
+    return vec3(0.0);
+}
+
+void main() {
+    const uint index = gl_GlobalInvocationID.x;
+    if (index >= params.probes * params.bins) return;
+    const uint p = index / params.bins, b = index % params.bins;
+    vec3 result;
+    if (params.top != 0u) {
+        result = codeRadiance(codes[params.codeOffset + index], b, vec3(0.0));
+    } else {
+        const uint corner = (params.cornerOffset + p) * 16u;
+        vec3 sum = vec3(0.0);
+        float weight = 0.0;
+        for (uint c = 0u; c < 8u; ++c) {
+            const uint code = codes[params.codeOffset + index * 8u + c];
+            const float w = uintBitsToFloat(corners[corner + 8u + c]);
+            if (code == LUXEL_CASCADE_VOID || w == 0.0) continue;
+            vec3 next = vec3(0.0);
+            if (code == LUXEL_CASCADE_CONTINUE) {
+                next = texelRgb(means[params.upperMeanOffset + corners[corner + c] * params.bins + b]);
+            }
+            sum += codeRadiance(code, b, next) * w;
+            weight += w;
+        }
+        result = weight > 0.0 ? sum * (1.0 / weight) : vec3(0.0);
+    }
+    radiance[params.radianceOffset + index] = rgbTexel(result);
+}

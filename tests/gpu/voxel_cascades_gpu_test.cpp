@@ -1,0 +1,103 @@
+// The voxel radiance cascades' lighting passes on the GPU against their CPU reference
+// (RadianceCascades::iterate): a sunlit room with a window, a sky and a lamp, pass by pass, and
+// light changed in between. Runs on lavapipe where there is no hardware GPU.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "luxel/voxel/radiance_cascades.h"
+#include "luxel/voxel/radiance_cascades_gpu.h"
+#include "support/gpu_test_context.h"
+
+namespace {
+
+using namespace luxel;
+using namespace luxel::voxel;
+
+VoxelWorld roomWithWindow() {
+    auto created = VoxelWorld::create({20, 12, 20}, 8);
+    EXPECT_TRUE(created.ok());
+    VoxelWorld world = std::move(*created);
+    for (int z = 0; z < 20; ++z)
+        for (int x = 0; x < 20; ++x) world.set(x, 0, z, Voxel{200, 190, 170, 255});
+    for (int z = 3; z <= 15; ++z)
+        for (int y = 1; y <= 7; ++y)
+            for (int x = 3; x <= 15; ++x) {
+                const bool wall = x == 3 || x == 15 || z == 3 || z == 15 || y == 7;
+                const bool window = z == 3 && y >= 3 && y <= 5 && x >= 6 && x <= 11;
+                if (wall && !window) world.set(x, y, z, Voxel{220, 220, 220, 255});
+            }
+    world.set(8, 1, 10, Voxel{255, 255, 255, 1});  // texture slot 0: a lamp
+    world.refreshEmptySpace();
+    return world;
+}
+
+ShadeOptions light() {
+    ShadeOptions o;
+    o.textures = false;
+    o.skyHorizon = Rgb(0.8f, 0.85f, 1.0f);
+    o.skyTop = Rgb(0.2f, 0.4f, 0.9f);
+    o.sunIrradiance = Rgb(6.0f, 5.8f, 5.4f);
+    o.sunDirection = {0.1f, 0.6f, -1.0f};
+    Material plain;
+    plain.name = "plain";
+    plain.albedo = Rgb(0.8f);
+    EXPECT_TRUE(o.materials.setPlain(plain).ok());
+    Material lamp;
+    lamp.name = "lamp";
+    lamp.emission = Rgb(8.0f, 6.0f, 3.0f);
+    EXPECT_TRUE(o.materials.setSlot(0, lamp).ok());
+    return o;
+}
+
+// Largest relative difference of the irradiance the two give on a sample of faces' points.
+double largestDifference(const RadianceCascades& a, const RadianceCascades& b, double& scale) {
+    double largest = 0.0;
+    scale = 0.0;
+    for (int z = 4; z < 15; ++z)
+        for (int x = 4; x < 15; ++x) {
+            const Rgb ea = a.indirectIrradiance({x, 0, z}, {0, 1, 0}, {x + 0.3, 1.0, z + 0.6});
+            const Rgb eb = b.indirectIrradiance({x, 0, z}, {0, 1, 0}, {x + 0.3, 1.0, z + 0.6});
+            for (int c = 0; c < 3; ++c) {
+                largest = std::max(largest, double(std::abs(ea[c] - eb[c])));
+                scale = std::max(scale, double(std::abs(eb[c])));
+            }
+        }
+    return largest;
+}
+
+TEST(RadianceCascadesGpu, PassesMatchTheCpuReference) {
+    LUXEL_REQUIRE_GPU(context);
+    const VoxelWorld world = roomWithWindow();
+    ShadeOptions o = light();
+    auto cpu = RadianceCascades::create(world, nullptr, o);
+    auto onGpu = RadianceCascades::create(world, nullptr, o);
+    ASSERT_TRUE(cpu.ok() && onGpu.ok());
+    auto gpu = RadianceCascadesGpu::create(*context, *onGpu);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    for (int passes : {1, 3}) {
+        for (int i = 0; i < passes; ++i) cpu->iterate();
+        auto ran = gpu->iterate(passes);
+        ASSERT_TRUE(ran.ok()) << ran.error().message();
+        ASSERT_TRUE(gpu->download().ok());
+        double scale = 0.0;
+        const double difference = largestDifference(*onGpu, *cpu, scale);
+        EXPECT_GT(scale, 0.1);
+        EXPECT_LE(difference, 1e-5 * scale) << passes;
+    }
+    // New light: the sun moves; both carry their irradiance into the next passes.
+    o.sunDirection = {-0.4f, 0.7f, -1.0f};
+    ASSERT_TRUE(cpu->setLight(o).ok());
+    ASSERT_TRUE(onGpu->setLight(o).ok());
+    ASSERT_TRUE(gpu->uploadLight().ok());
+    for (int i = 0; i < 2; ++i) cpu->iterate();
+    ASSERT_TRUE(gpu->iterate(2).ok());
+    ASSERT_TRUE(gpu->download().ok());
+    double scale = 0.0;
+    const double difference = largestDifference(*onGpu, *cpu, scale);
+    EXPECT_GT(scale, 0.1);
+    EXPECT_LE(difference, 1e-5 * scale);
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
+}  // namespace
