@@ -139,6 +139,7 @@ struct VoxelRenderRequest {
     // --solver ao: sky visibility (voxel/sky_visibility.h) instead of the ray caster.
     bool aoSolver = false;
     voxel::SkyVisibilityOptions ao = {};
+    double sunYawDegrees = 0;  // --sun-yaw: the scene's sun turned about the vertical axis
 };
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene scene);
 

@@ -159,8 +159,13 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option("--ao-radius", args->aoRadius,
                    "voxel, --solver ao: ray length in voxels (inf: whole sky visibility)")
         ->capture_default_str();
+    app.add_option("--sun-yaw", args->sunYaw,
+                   "voxel: turn the scene's sun about the vertical axis by DEG degrees "
+                   "(from +z towards +x)")
+        ->check(finiteIn(-360, 360));
     CLI::App* command = &app;
     return [args, command] {
+        args->sunYawGiven = command->count("--sun-yaw") > 0;
         for (const char* name : {"--spp", "--max-bounces", "--std-error"}) {
             if (command->count(name) > 0) args->pathGiven.push_back(name);
         }
