@@ -33,7 +33,8 @@ int compareVoxelSunSweep(const VoxelCompareRequest& request) {
         if (!solved) return reportError(solved.error());
         for (std::size_t s = 0; s < solvers.size(); ++s) {
             RunOutcome& run = (*solved)[s];
-            auto e = compareImages(run.fluence, (*solved)[0].fluence);
+            // The reference (s = 0) is already in frames[0] when the others are compared.
+            auto e = compareImages(run.fluence, s == 0 ? run.fluence : frames[0].back());
             if (!e) return reportError(e.error());
             ms[s] += run.solveMs / request.sunSweep;
             relativeL1[s] += e->relativeL1 / request.sunSweep;
