@@ -2,7 +2,8 @@
 // each in its own process so its peak memory can be measured: solve time, error against the
 // reference solver, peak RSS; optionally a side-by-side image grid of the display images and one of
 // each solver's signed error (docs/solver-errors.md). With --move, how each solver's image changes
-// when the light moves.
+// when the light moves. On voxel scenes, --sun-sweep N renders every solver under N sun directions
+// and measures its flicker (compare_sun_sweep.cpp).
 // --reference reuses a reference render instead of solving it again.
 #include <fcntl.h>
 #include <spawn.h>

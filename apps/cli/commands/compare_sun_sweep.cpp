@@ -51,7 +51,7 @@ int compareVoxelSunSweep(const VoxelCompareRequest& request) {
     }
     std::printf(
         "%s at %dx%d, %d sun directions %g degrees apart about the vertical (reference: path "
-        "tracer, %d samples/pixel, the same seed every frame)\n",
+        "tracer, %d samples/pixel, random seed 1 in every frame)\n",
         request.scene.c_str(), first.width(), first.height(), request.sunSweep, request.sunStep,
         request.spp);
     std::printf("the reference's low-frequency change between frames: %.3f%% of its mean\n",
