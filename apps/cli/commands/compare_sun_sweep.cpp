@@ -1,7 +1,8 @@
 // `luxel compare-solvers VOXEL.json --sun-sweep N [--sun-step DEG]`: every voxel solver at N sun
 // directions, each turned DEG further about the vertical axis, and per solver the flicker of its
 // low-frequency image that the reference's change does not have (docs/voxel-gi-measures.md). The
-// reference keeps its seed in every frame, so its noise changes only as much as the sun makes it.
+// reference keeps its seed in every frame, so its noise changes only as much as the sun makes it;
+// the reference with another seed shows what flicker that noise leaves.
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -18,7 +19,14 @@
 namespace luxel::cli {
 
 int compareVoxelSunSweep(const VoxelCompareRequest& request) {
-    const std::vector<SolverRun> solvers = voxelSolvers(request.spp);
+    std::vector<SolverRun> solvers = voxelSolvers(request.spp);
+    // The reference again with other random numbers: its flicker is the reference's noise alone,
+    // the floor under every other solver's.
+    SolverRun seed2 = solvers[0];
+    seed2.label = "path-seed2";
+    seed2.title = "path tracer with seed 2";
+    seed2.flags.insert(seed2.flags.end(), {"--seed", "2"});
+    solvers.push_back(seed2);
     // frames[s][k]: solver s under the sun of frame k.
     std::vector<std::vector<Image>> frames(solvers.size());
     std::vector<double> ms(solvers.size(), 0.0), relativeL1(solvers.size(), 0.0);
@@ -56,6 +64,7 @@ int compareVoxelSunSweep(const VoxelCompareRequest& request) {
         request.spp);
     std::printf("the reference's low-frequency change between frames: %.3f%% of its mean\n",
                 100.0 * flicker[0].referenceChange);
+    std::printf("path-seed2: the reference with seed 2, whose flicker is the reference's noise\n");
     std::printf("%-12s %10s %10s %13s\n", "solver", "ms/frame", "rel. L1", "flicker/mean");
     for (std::size_t s = 0; s < solvers.size(); ++s) {
         std::printf("%-12s %10.1f %10.4f %12.3f%%\n", solvers[s].label, ms[s], relativeL1[s],
