@@ -64,7 +64,8 @@ int compareVoxelSunSweep(const VoxelCompareRequest& request) {
         request.spp);
     std::printf("the reference's low-frequency change between frames: %.3f%% of its mean\n",
                 100.0 * flicker[0].referenceChange);
-    std::printf("path-seed2: the reference with seed 2, whose flicker is the reference's noise\n");
+    std::printf(
+        "path-seed2: random seed 2 instead of 1; its flicker is the reference's noise alone\n");
     std::printf("%-12s %10s %10s %13s\n", "solver", "ms/frame", "rel. L1", "flicker/mean");
     for (std::size_t s = 0; s < solvers.size(); ++s) {
         std::printf("%-12s %10.1f %10.4f %12.3f%%\n", solvers[s].label, ms[s], relativeL1[s],
