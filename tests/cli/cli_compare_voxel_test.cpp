@@ -2,6 +2,8 @@
 // the ray caster measured against it, a labelled grid, and the 2D-only options refused.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "luxel/core/image_io.h"
@@ -16,8 +18,21 @@ using luxel::test::RunResult;
 class CliCompareVoxel : public luxel::test::CliFixture {};
 
 const std::string kCottage = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/cottage.json";
+const std::string kThinWalls = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/thin-walls.json";
 
-TEST_F(CliCompareVoxel, MeasuresSkyVisibilityAndTheRayCasterAgainstThePathTracer) {
+// The leak/mean column (percent) of a solver's row: the 7th number after its label.
+double leakPercent(const std::string& output, const std::string& solver) {
+    const auto row = output.find("\n" + solver + " ");
+    if (row == std::string::npos) return std::nan("");
+    double v[7] = {};
+    if (std::sscanf(output.c_str() + row + solver.size() + 2, "%lf %lf %lf %lf%% %lf%% %lf%%",
+                    &v[0], &v[1], &v[2], &v[3], &v[4], &v[5]) != 6) {
+        return std::nan("");
+    }
+    return v[5];
+}
+
+TEST_F(CliCompareVoxel, MeasuresSkyVisibilityCascadesAndTheRayCasterAgainstThePathTracer) {
     const RunResult r = runLuxel("compare-solvers " + kCottage + " --size 48x27 --spp 8 --grid " +
                                  path("grid.png"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -34,12 +49,48 @@ TEST_F(CliCompareVoxel, MeasuresSkyVisibilityAndTheRayCasterAgainstThePathTracer
     ASSERT_EQ(std::sscanf(r.output.c_str() + aoRow + 4, "%lf %lf", &ms, &relL1), 2) << r.output;
     EXPECT_GT(relL1, 0.0);
     EXPECT_LT(relL1, 0.2);  // the same light, short of its bounces and glow
+    const auto rcRow = r.output.find("\nrc ");
+    ASSERT_NE(rcRow, std::string::npos) << r.output;
+    ASSERT_EQ(std::sscanf(r.output.c_str() + rcRow + 4, "%lf %lf", &ms, &relL1), 2) << r.output;
+    EXPECT_GT(relL1, 0.0);
+    EXPECT_LT(relL1, 0.2);  // the same light and its bounces, without noise
 
     luxel::ImageMetadata metadata;
     auto grid = luxel::readPng(path("grid.png"), luxel::PngEncoding::Srgb, &metadata);
     ASSERT_TRUE(grid.ok()) << grid.error().message();
-    EXPECT_EQ(grid->width(), 3 * 48 + 2 * 4) << "three panels";
+    EXPECT_EQ(grid->width(), 4 * 48 + 3 * 4) << "four panels";
+    EXPECT_NE(luxel::findMetadata(metadata, "luxel.panel3.rc"), nullptr);
     EXPECT_NE(luxel::findMetadata(metadata, "luxel.panel2.ao"), nullptr);
+}
+
+TEST_F(CliCompareVoxel, MeasuresLightLeakedIntoTheSealedRoomOfThinWalls) {
+    const RunResult r = runLuxel("compare-solvers " + kThinWalls +
+                                 " --size 64x36 --spp 16 --grid " + path("grid.png"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("leak/mean"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("dark region: "), std::string::npos) << r.output;
+    const double pathLeak = leakPercent(r.output, "path");
+    const double ao = leakPercent(r.output, "ao");
+    const double caster = leakPercent(r.output, "ray-caster");
+    std::printf("leak, %% of the reference mean: path %.2f, ao %.2f, ray caster %.2f\n", pathLeak,
+                ao, caster);
+    EXPECT_EQ(pathLeak, 0.0) << r.output;
+    // Sky visibility traces exact rays: the sun and the sky stay outside. It misses the lamp's
+    // second and later bounces, so it can be darker than the reference there, by at most the dark
+    // region's own light (below 10% of the mean); brighter only by noise.
+    EXPECT_GT(ao, -10.0) << r.output;
+    EXPECT_LT(ao, 1.0) << r.output;
+    // The ray caster's ambient term is a constant share of the sky on every face, walls or not:
+    // the sealed room gets it all.
+    EXPECT_GT(caster, 100.0) << r.output;
+
+    luxel::ImageMetadata metadata;
+    auto grid = luxel::readPng(path("grid.png"), luxel::PngEncoding::Srgb, &metadata);
+    ASSERT_TRUE(grid.ok()) << grid.error().message();
+    const std::string* aoLeak = luxel::findMetadata(metadata, "luxel.leak.ao");
+    ASSERT_NE(aoLeak, nullptr);
+    EXPECT_NEAR(std::stod(*aoLeak) * 100.0, ao, 0.01);
+    EXPECT_NE(luxel::findMetadata(metadata, "luxel.dark_blocks"), nullptr);
 }
 
 TEST_F(CliCompareVoxel, RefusesTheTwoDimensionalOptions) {

@@ -102,9 +102,9 @@ TEST_F(CliPath, RefusesPathWhereItDoesNotApply) {
     expectError("render " + kTerrain + " --solver path --backend gpu" + out,
                 "--solver path runs on the CPU");
     expectError("render " + kTerrain + " --solver pt" + out,
-                "--solver 'pt' is not one of: reference, hrc, rc (voxel scenes: path, ao)");
+                "--solver 'pt' is not one of: reference, hrc, rc (voxel scenes: path, ao, rc)");
     // A 2D solver on a voxel scene is refused as before.
-    expectError("render " + kTerrain + " --solver rc" + out, "--solver applies to 2D scenes");
+    expectError("render " + kTerrain + " --solver hrc" + out, "--solver applies to 2D scenes");
     for (const char* spp : {"0", "-3", "1e9", "nan"}) {
         const RunResult r = runLuxel("render " + kTerrain + " --solver path --spp " + spp + out);
         EXPECT_EQ(r.exitCode, 1) << spp << ": " << r.output;

@@ -143,6 +143,7 @@ struct VoxelRenderRequest {
     // --solver rc: radiance cascades (voxel/radiance_cascades.h) instead of the ray caster.
     bool cascadeSolver = false;
     voxel::CascadeOptions cascades = {};
+    double sunYawDegrees = 0;  // --sun-yaw: the scene's sun turned about the vertical axis
 };
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene scene);
 

@@ -2,7 +2,8 @@
 // each in its own process so its peak memory can be measured: solve time, error against the
 // reference solver, peak RSS; optionally a side-by-side image grid of the display images and one of
 // each solver's signed error (docs/solver-errors.md). With --move, how each solver's image changes
-// when the light moves.
+// when the light moves. On voxel scenes, --sun-sweep N renders every solver under N sun directions
+// and measures its flicker (compare_sun_sweep.cpp).
 // --reference reuses a reference render instead of solving it again.
 #include <fcntl.h>
 #include <spawn.h>
@@ -10,6 +11,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -45,7 +48,15 @@ struct CompareSolversArgs {
     bool raysGiven = false;
     int spp = 256;  // voxel scenes: the path-traced reference's samples per pixel
     double errorScalePercent = 10;
+    int sunSweep = 0;    // voxel scenes: frames of the sun sweep (0: none)
+    double sunStep = 1;  // degrees between them
+    bool sunStepGiven = false;
 };
+
+// A sweep renders every solver N times: without --size it renders small, kSweepWidth pixels wide
+// (or the camera's width, if less) at the camera's aspect.
+constexpr int kSweepWidth = 128;
+constexpr int kMaxSunSweep = 360;
 
 // --reference: a fluence EXR that `luxel render --solver reference` wrote for this scene at this
 // size, checked by its size and, where its metadata has them, its solver and scene hash.
@@ -196,7 +207,24 @@ int runCompareSolvers(const CompareSolversArgs& args) {
                                          "tracer's samples)"));
             }
         }
-        return compareVoxelSolvers({args.scene, args.size, args.grid, args.spp});
+        if (args.sunStepGiven && args.sunSweep == 0) {
+            return reportError(Error("--sun-step applies to --sun-sweep"));
+        }
+        std::string size = args.size;
+        if (args.sunSweep > 0 && size.empty()) {
+            const voxel::Camera& camera = file->voxel().camera;
+            const int w = std::min(kSweepWidth, camera.width());
+            const int h = std::max(
+                1, static_cast<int>(std::lround(double(w) * camera.height() / camera.width())));
+            size = std::to_string(w) + "x" + std::to_string(h);
+        }
+        return compareVoxelSolvers(
+            {args.scene, size, args.grid, args.spp, args.sunSweep, args.sunStep});
+    }
+    if (args.sunSweep > 0 || args.sunStepGiven) {
+        return reportError(Error(std::string(args.sunSweep > 0 ? "--sun-sweep" : "--sun-step") +
+                                 " applies to voxel scenes; " + args.scene + " is " +
+                                 sceneKindPhrase(file->kind())));
     }
     if (file->kind() != scene::SceneKind::TwoD) {
         return reportError(Error(args.scene + ": " + sceneKindPhrase(file->kind()) +
@@ -345,9 +373,21 @@ Runner addCompareSolversCommand(CLI::App& app) {
                    "instead of solving it again; checked against the scene's size and hash");
     app.add_option("--move", args->move,
                    "move the brightest light by DX,DY px and compare each solver's change");
+    app.add_option("--sun-sweep", args->sunSweep,
+                   "voxel scenes: render every solver at N sun directions (--sun-step apart) "
+                   "and measure its flicker (default size 128 px wide)")
+        ->check(wholeIn(2, kMaxSunSweep));
+    app.add_option("--sun-step", args->sunStep,
+                   "voxel scenes, --sun-sweep: degrees the sun turns about the vertical per frame")
+        ->check(finiteIn(-90, 90))
+        ->capture_default_str();
     CLI::App* command = &app;
     return [args, command] {
         args->raysGiven = command->count("--rays") > 0;
+        args->sunStepGiven = command->count("--sun-step") > 0;
+        if (args->sunStepGiven && args->sunStep == 0) {
+            return reportError(Error("--sun-step must not be 0 (the sun would not move)"));
+        }
         return runCompareSolvers(*args);
     };
 }

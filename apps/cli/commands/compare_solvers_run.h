@@ -16,6 +16,7 @@ namespace luxel::cli {
 struct SolverRun {
     const char* label;
     std::vector<std::string> flags;  // `luxel render` flags that choose and set up the solver
+    const char* title = "";          // what the solver is, in words (grid captions)
 };
 
 struct RunOutcome {
@@ -38,12 +39,23 @@ Result<std::vector<RunOutcome>> runSolverProcesses(const std::string& scene,
 // "812 ms" or "59.2 s".
 std::string formatDuration(double ms);
 
-// `luxel compare-solvers` on a voxel scene: the path tracer (the reference), sky visibility and
-// the ray caster with physical lighting: time, error, low-frequency error, peak memory.
+// `luxel compare-solvers` on a voxel scene: the path tracer (the reference), sky visibility,
+// radiance cascades and the ray caster with physical lighting: time, error, low-frequency error,
+// light leaked into the reference's dark places, peak memory; with sunSweep, each solver's flicker
+// as the sun turns (docs/voxel-gi-measures.md).
 struct VoxelCompareRequest {
     std::string scene, size, grid;
-    int spp = 256;  // the path-traced reference's samples per pixel
+    int spp = 256;       // the path-traced reference's samples per pixel
+    int sunSweep = 0;    // frames of the sun sweep (0: none, else >= 2)
+    double sunStep = 1;  // degrees the sun turns about the vertical between frames
 };
 int compareVoxelSolvers(const VoxelCompareRequest& request);
+
+// The voxel solvers compare-solvers runs, the reference (the path tracer) first; a new solver is
+// one more entry.
+std::vector<SolverRun> voxelSolvers(int spp);
+
+// `compareVoxelSolvers` with request.sunSweep frames (compare_sun_sweep.cpp).
+int compareVoxelSunSweep(const VoxelCompareRequest& request);
 
 }  // namespace luxel::cli

@@ -323,6 +323,10 @@ int runRender(const RenderArgs& args) {
         return reportError(Error("--frame applies to MagicaVoxel worlds; " + args.scene + " is " +
                                  sceneKindPhrase(file->kind())));
     }
+    if (args.sunYawGiven && file->kind() != scene::SceneKind::Voxel) {
+        return reportError(Error("--sun-yaw applies to voxel scenes; " + args.scene + " is " +
+                                 sceneKindPhrase(file->kind())));
+    }
     if (file->kind() == scene::SceneKind::TwoD && !args.postGiven.empty()) {
         return reportError(Error(args.postGiven.front() + " applies to voxel and octree scenes; " +
                                  args.scene + " is " + sceneKindPhrase(file->kind())));
@@ -349,6 +353,7 @@ int runRender(const RenderArgs& args) {
         request.cascadeSolver = voxelRc;
         request.cascades.spacing = args.rcSpacing;
         request.cascades.bounces = std::max(0, args.bounces);
+        request.sunYawDegrees = args.sunYaw;
         if (!voxel && (args.samples != 0 || !args.filter.empty())) {
             return reportError(Error("--samples and --filter apply to voxel scenes; " + args.scene +
                                      " is " + sceneKindPhrase(file->kind())));

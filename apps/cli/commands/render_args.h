@@ -33,6 +33,8 @@ struct RenderArgs {
     bool quiet = false;
     bool stats = false;  // print a machine-readable timing line (for compare-solvers)
     int frame = -1;      // --frame: a MagicaVoxel world's animation frame
+    double sunYaw = 0;   // --sun-yaw: voxel scenes, degrees the sun turns about the vertical
+    bool sunYawGiven = false;
     std::string backendName = "auto", device;
     gpu::Backend backend = gpu::Backend::Auto;  // parsed from backendName
     // HRC

@@ -164,9 +164,14 @@ Runner addRenderCommand(CLI::App& app) {
                    "(power of two; 0: automatic)")
         ->check(wholeIn(0, voxel::kMaxCascadeSpacing))
         ->capture_default_str();
+    app.add_option("--sun-yaw", args->sunYaw,
+                   "voxel: turn the scene's sun about the vertical axis by DEG degrees "
+                   "(from +z towards +x)")
+        ->check(finiteIn(-360, 360));
     CLI::App* command = &app;
     return [args, command] {
         args->rcSpacingGiven = command->count("--rc-spacing") > 0;
+        args->sunYawGiven = command->count("--sun-yaw") > 0;
         for (const char* name : {"--spp", "--max-bounces", "--std-error"}) {
             if (command->count(name) > 0) args->pathGiven.push_back(name);
         }

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,13 @@ Result<Image> renderOnGpu(gpu::Context& context, const voxel::VoxelScene& scene,
     auto renderer = voxel::VoxelGpuRenderer::create(context, scene.world, &scene.textures);
     if (!renderer) return renderer.error();
     return renderer->render(camera, scene.shading);
+}
+
+// `v` turned about the y axis by `degrees`, +z towards +x (as a camera's yaw turns its view).
+Vec3 turnedAboutVertical(Vec3 v, double degrees) {
+    const double a = degrees * std::numbers::pi / 180.0;
+    const double c = std::cos(a), s = std::sin(a);
+    return {static_cast<float>(v.x * c + v.z * s), v.y, static_cast<float>(v.z * c - v.x * s)};
 }
 
 }  // namespace
@@ -142,6 +150,10 @@ void addVoxFrameOption(CLI::App& app, int& frame) {
 
 int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded) {
     voxel::VoxelScene* scene = &loaded;
+    if (request.sunYawDegrees != 0) {
+        scene->shading.sunDirection =
+            turnedAboutVertical(scene->shading.sunDirection, request.sunYawDegrees);
+    }
     if (Status s = applyVoxelSurfaceFlags(request.surfaces, scene->shading); !s) {
         return reportError(s.error());
     }
@@ -280,6 +292,8 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         setNumber(images.metadata, "luxel.rc.levels", cascaded.stats.levels);
         setNumber(images.metadata, "luxel.rc.bounces", cascaded.stats.bounces);
     }
+    if (request.sunYawDegrees != 0)
+        setNumber(images.metadata, "luxel.sun_yaw", request.sunYawDegrees);
     ImageMetadata errorMetadata = images.metadata;
     if (Status s = writeRenderImages(std::move(images)); !s) return reportError(s.error());
     if (!request.pathStdError.empty()) {
