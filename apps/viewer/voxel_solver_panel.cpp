@@ -46,6 +46,9 @@ bool drawVoxelSolverPanel(VoxelSolverOptions& solver, bool* restart) {
             }
         }
     }
+    if (solver.kind != VoxelSolver::RayCast) {
+        ImGui::TextDisabled("reflections, shading, shadows, surfaces: the ray caster's only");
+    }
     return touched;
 }
 
