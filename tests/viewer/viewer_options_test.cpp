@@ -106,6 +106,10 @@ TEST(ViewerOptions, VoxelSolversTakeTheNamesOfLuxelRender) {
     EXPECT_EQ(plain->options.path.samplesPerPixel, kDefaultViewerPathSamples);
     EXPECT_TRUE(std::isinf(plain->options.ao.radius));
     EXPECT_TRUE(plain->options.voxelFlagsGiven.empty());
+    auto wholeSky = parseViewerOptions({"world.json", "--ao-radius", "inf"});
+    ASSERT_TRUE(wholeSky) << wholeSky.error().message();
+    EXPECT_TRUE(std::isinf(wholeSky->options.ao.radius));
+    EXPECT_FALSE(parseViewerOptions({"world.json", "--ao-radius", "nan"}));
     auto twoD = parseViewerOptions({"room.json", "--solver", "reference"});
     ASSERT_TRUE(twoD);
     EXPECT_TRUE(twoD->options.solver2DGiven);
