@@ -214,7 +214,9 @@ int runApp(const ViewerOptions& options, ViewerMode& mode, std::optional<Script>
             ++framesRendered;
             renderMillisecondsSum += frame->renderMilliseconds;
             texture.update(w.renderer, shown->picture);
-            if (adaptive) {
+            // A progressive render's later passes refine a still view: their time is not the
+            // interactive rate, and a new size would throw the accumulation away.
+            if (adaptive && !shown->accumulating) {
                 adaptive->setLargest({std::max(1, static_cast<int>(view.width + 0.5)),
                                       std::max(1, static_cast<int>(view.height + 0.5))});
                 const ImageSize rendered{shown->picture.width(), shown->picture.height()};

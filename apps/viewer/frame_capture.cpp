@@ -11,7 +11,8 @@ namespace luxel::viewer {
 
 Status writeFramePng(const std::string& path, const Frame& frame) {
     if (frame.picture.empty()) return Error(path + ": no frame has been rendered yet");
-    return writePng(path, frame.picture);
+    // The metadata says what made the picture (the solver, the path tracer's samples so far).
+    return writePng(path, frame.picture, PngEncoding::Srgb, frame.metadata);
 }
 
 Status writeWindowPng(const std::string& path, SDL_Renderer* renderer) {

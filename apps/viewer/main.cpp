@@ -107,8 +107,25 @@ int runViewer(int argc, char** argv) {
     }
     auto file = scene::loadSceneFile(o.scene, {{}, o.voxFrame});
     if (!file) return fail(file.error().message());
+    if (file->kind() != scene::SceneKind::Voxel) {
+        if (o.voxelSolver) {
+            return fail(std::string("--solver ") + voxelSolverName(*o.voxelSolver) +
+                        " applies to voxel scenes");
+        }
+        if (!o.voxelFlagsGiven.empty()) {
+            return fail(o.voxelFlagsGiven.front() + " applies to voxel scenes");
+        }
+    }
     if (file->kind() == scene::SceneKind::Voxel) {
         voxel::VoxelScene* scene = &file->voxel();
+        if (o.solver2DGiven) {
+            return fail(std::string("--solver ") + gi2d::solverName(o.solver) +
+                        " is a 2D solver; voxel scenes take raycast, ao or path");
+        }
+        VoxelSolverOptions solver;
+        solver.kind = o.voxelSolver.value_or(VoxelSolver::RayCast);
+        solver.path = o.path;
+        solver.ao = o.ao;
         if (windowW == 0) {
             std::tie(windowW, windowH) =
                 fitWithin(scene->camera.width(), scene->camera.height(), 1280, 720);
@@ -141,7 +158,7 @@ int runViewer(int argc, char** argv) {
         }
         mode = std::make_unique<ModeVoxel>(
             std::move(*scene), internal.first, internal.second, o.exposure, std::move(source),
-            o.savePath.empty() ? defaultVoxSavePath(o.scene) : o.savePath);
+            o.savePath.empty() ? defaultVoxSavePath(o.scene) : o.savePath, solver);
     } else if (file->kind() == scene::SceneKind::Octree) {
         scene::OctreeScene* scene = &file->octree();
         if (windowW == 0) {

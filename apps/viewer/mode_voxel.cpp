@@ -9,6 +9,7 @@
 
 #include "luxel/voxel/camera.h"
 #include "voxel_controls.h"
+#include "voxel_solver_panel.h"
 
 namespace luxel::viewer {
 namespace {
@@ -30,7 +31,8 @@ Vec3d rightOf(const FlyCamera& c) {
 }  // namespace
 
 ModeVoxel::ModeVoxel(voxel::VoxelScene scene, int width, int height, float exposure,
-                     std::unique_ptr<VoxelFrameSource> source, std::string savePath)
+                     std::unique_ptr<VoxelFrameSource> source, std::string savePath,
+                     const VoxelSolverOptions& solver)
     : worldSize_(scene.world.size()),
       saver_(scene.world, scene.shading.materials, std::move(savePath)),
       worker_(std::make_unique<RendererVoxel>(std::move(scene.world), std::move(source))) {
@@ -45,6 +47,7 @@ ModeVoxel::ModeVoxel(voxel::VoxelScene scene, int width, int height, float expos
     state_.shading = scene.shading;
     state_.exposure = exposure + scene.post.tone.exposureStops;
     state_.post = scene.post;
+    state_.solver = solver;
     const Vec3& s = scene.shading.sunDirection;
     sunLength_ = std::sqrt(double(s.x) * s.x + double(s.y) * s.y + double(s.z) * s.z);
     if (sunLength_ > 0) {
@@ -61,12 +64,12 @@ void ModeVoxel::setSun(double azimuthDegrees, double elevationDegrees) {
     state_.shading.sunDirection = Vec3{static_cast<float>(sunLength_ * std::sin(a) * std::cos(e)),
                                        static_cast<float>(sunLength_ * std::sin(e)),
                                        static_cast<float>(sunLength_ * std::cos(a) * std::cos(e))};
-    dirty_ = true;
+    changed();
 }
 
 void ModeVoxel::move(Vec3d direction, double distance) {
     state_.camera.position = state_.camera.position + direction * distance;
-    dirty_ = true;
+    changed();
 }
 
 void ModeVoxel::save() {
@@ -154,11 +157,14 @@ void ModeVoxel::handleKey(SDL_Keycode key, bool shift, bool ctrl) {
         case SDLK_k:
             setSun(sunAzimuth_, sunElevation_ - 10.0);
             break;
+        case SDLK_c:
+            state_.solver.kind = nextVoxelSolver(state_.solver.kind);
+            break;
         default:
             if (!applyVoxelSurfaceKey(static_cast<int>(key), state_)) return;
             break;
     }
-    dirty_ = true;
+    changed();
 }
 
 void ModeVoxel::handleEvent(const SDL_Event& event, const ViewRect& view) {
@@ -197,7 +203,7 @@ void ModeVoxel::handleEvent(const SDL_Event& event, const ViewRect& view) {
                                static_cast<std::uint8_t>(editColour_[2] * 255.0f + 0.5f), 255};
                 state_.edits.push_back(edit);
                 saver_.edit(edit);
-                dirty_ = true;
+                changed();
             }
             break;
         case SDL_MOUSEBUTTONUP:
@@ -209,7 +215,7 @@ void ModeVoxel::handleEvent(const SDL_Event& event, const ViewRect& view) {
                 c.yawDegrees += event.motion.xrel * kLookDegreesPerPixel;
                 c.pitchDegrees = std::clamp(
                     c.pitchDegrees - event.motion.yrel * kLookDegreesPerPixel, -89.0, 89.0);
-                dirty_ = true;
+                changed();
             }
             break;
         default:
@@ -230,6 +236,8 @@ void ModeVoxel::update(double seconds) {
     if (!dirty_) return;
     dirty_ = false;
     ++generation_;
+    state_.restart = restart_;
+    restart_ = false;
     worker_.post(state_, generation_);
     state_.edits.clear();
 }
@@ -241,6 +249,23 @@ std::shared_ptr<const Frame> ModeVoxel::latestFrame(bool* fresh) {
 bool ModeVoxel::frameCurrent() {
     auto frame = worker_.latest();
     return frame && !dirty_ && frame->generation == generation_;
+}
+
+bool ModeVoxel::frameConverged() {
+    auto frame = worker_.latest();
+    return frame && !dirty_ && frame->generation == generation_ && frame->converged;
+}
+
+void ModeVoxel::drawStats() {
+    auto frame = worker_.latest();
+    if (state_.solver.kind != VoxelSolver::PathTrace || !frame || frame->samples == 0) return;
+    ImGui::Text("path tracer: %d / %d samples per pixel%s", frame->samples,
+                state_.solver.path.samplesPerPixel, frame->converged ? " (done)" : "");
+    if (std::isfinite(frame->relativeError)) {
+        ImGui::Text("relative standard error %.2f%%", 100.0 * frame->relativeError);
+    } else {
+        ImGui::TextUnformatted("relative standard error n/a (needs 2 samples and light)");
+    }
 }
 
 // Combo over an enum's values, by name; true when changed.
@@ -255,36 +280,36 @@ bool enumCombo(const char* label, E& value, const char* (&names)[N]) {
 void ModeVoxel::drawSurfacePanel() {
     voxel::ShadeOptions& s = state_.shading;
     post::PostOptions& p = state_.post;
-    bool changed = false;
+    bool touched = false;
     const char* lightings[] = {"classic", "physical"};
-    changed |= enumCombo("lighting (P)", s.lighting, lightings);
+    touched |= enumCombo("lighting (P)", s.lighting, lightings);
     const char* methods[] = {"hard", "exact", "MSM", "VSM", "SDF", "MRMA blend", "flood fill"};
-    changed |= enumCombo("shadow method (V)", s.shadowSettings.method, methods);
+    touched |= enumCombo("shadow method (V)", s.shadowSettings.method, methods);
     float radiusDegrees = static_cast<float>(s.sunAngularRadius * 180.0 / 3.14159265358979323846);
     if (ImGui::SliderFloat("sun angular radius", &radiusDegrees, 0.0f, 5.0f, "%.2f deg")) {
         s.sunAngularRadius = radiusDegrees * 3.14159265358979323846 / 180.0;
-        changed = true;
+        touched = true;
     }
     const char* speculars[] = {"none", "Blinn-Phong", "GGX"};
-    changed |= enumCombo("specular (G)", s.specular, speculars);
+    touched |= enumCombo("specular (G)", s.specular, speculars);
     const char* fresnels[] = {"Schlick", "exact"};
-    changed |= enumCombo("Fresnel (Y)", s.fresnel, fresnels);
-    changed |= ImGui::Checkbox("refraction (R)", &s.refraction);
+    touched |= enumCombo("Fresnel (Y)", s.fresnel, fresnels);
+    touched |= ImGui::Checkbox("refraction (R)", &s.refraction);
     ImGui::SameLine();
-    changed |= ImGui::Checkbox("normal maps (N)", &s.normalMaps);
+    touched |= ImGui::Checkbox("normal maps (N)", &s.normalMaps);
     const char* filters[] = {"nearest", "trilinear", "anisotropic"};
-    changed |= enumCombo("texture filter (X)", s.textureFilter, filters);
-    changed |= ImGui::SliderInt("samples per pixel (, .)", &s.samplesPerPixel, 1, 64);
-    changed |= ImGui::SliderFloat("bloom (O)", &p.bloom.strength, 0.0f, 1.0f, "%.2f");
-    changed |= ImGui::SliderInt("bloom levels", &p.bloom.levels, 1, 8);
-    changed |= ImGui::SliderFloat("internal scale", &p.internalScale, post::kMinInternalScale, 1.0f,
+    touched |= enumCombo("texture filter (X)", s.textureFilter, filters);
+    touched |= ImGui::SliderInt("samples per pixel (, .)", &s.samplesPerPixel, 1, 64);
+    touched |= ImGui::SliderFloat("bloom (O)", &p.bloom.strength, 0.0f, 1.0f, "%.2f");
+    touched |= ImGui::SliderInt("bloom levels", &p.bloom.levels, 1, 8);
+    touched |= ImGui::SliderFloat("internal scale", &p.internalScale, post::kMinInternalScale, 1.0f,
                                   "%.2f");
     const char* upscalers[] = {"bilinear", "edge-aware"};
-    changed |= enumCombo("upscaler", p.upscaler, upscalers);
-    changed |= ImGui::Checkbox("temporal upscaling (reprojection)", &state_.temporal);
-    changed |= ImGui::SliderFloat("sharpening", &p.sharpness, 0.0f, 1.0f, "%.2f");
+    touched |= enumCombo("upscaler", p.upscaler, upscalers);
+    touched |= ImGui::Checkbox("temporal upscaling (reprojection)", &state_.temporal);
+    touched |= ImGui::SliderFloat("sharpening", &p.sharpness, 0.0f, 1.0f, "%.2f");
     ImGui::Text("upscaling (U): %s", upscalingLabel(state_).c_str());
-    if (changed) dirty_ = true;
+    if (touched) changed();
 }
 
 void ModeVoxel::drawPanel() {
@@ -292,23 +317,29 @@ void ModeVoxel::drawPanel() {
     FlyCamera& c = state_.camera;
     ImGui::Text("camera %.1f %.1f %.1f  yaw %.0f pitch %.0f", c.position.x, c.position.y,
                 c.position.z, c.yawDegrees, c.pitchDegrees);
-    if (ImGui::SliderInt("reflections (+/-)", &s.maxReflections, 0, 16)) dirty_ = true;
-    if (ImGui::Checkbox("face shading (F)", &s.faceShading)) dirty_ = true;
+    bool restart = false;
+    if (drawVoxelSolverPanel(state_.solver, &restart)) {
+        dirty_ = true;
+        restart_ = restart_ || restart;
+    }
+    if (ImGui::SliderInt("reflections (+/-)", &s.maxReflections, 0, 16)) changed();
+    if (ImGui::Checkbox("face shading (F)", &s.faceShading)) changed();
     ImGui::SameLine();
-    if (ImGui::Checkbox("shadows (H)", &s.shadows)) dirty_ = true;
+    if (ImGui::Checkbox("shadows (H)", &s.shadows)) changed();
     ImGui::SameLine();
-    if (ImGui::Checkbox("textures (T)", &s.textures)) dirty_ = true;
+    if (ImGui::Checkbox("textures (T)", &s.textures)) changed();
     int mode = s.reflectionMode == voxel::ShadeOptions::ReflectionMode::RunningAverage ? 0 : 1;
     const char* modes[] = {"running average", "energy conserving"};
     if (ImGui::Combo("reflection mode (M)", &mode, modes, 2)) {
         s.reflectionMode = mode == 0 ? voxel::ShadeOptions::ReflectionMode::RunningAverage
                                      : voxel::ShadeOptions::ReflectionMode::EnergyConserving;
-        dirty_ = true;
+        changed();
     }
     float azimuth = static_cast<float>(sunAzimuth_), elevation = static_cast<float>(sunElevation_);
     bool sun = ImGui::SliderFloat("sun azimuth (J/L)", &azimuth, -180.0f, 180.0f, "%.0f deg");
     sun |= ImGui::SliderFloat("sun elevation (I/K)", &elevation, -10.0f, 90.0f, "%.0f deg");
     if (sun) setSun(azimuth, elevation);
+    // Exposure only changes how the light is shown: the path tracer keeps its samples.
     if (ImGui::SliderFloat("exposure", &state_.exposure, -6.0f, 6.0f, "%.1f stops")) dirty_ = true;
     drawSurfacePanel();
     ImGui::ColorEdit3("new voxel colour", editColour_);

@@ -1,6 +1,11 @@
 // World edits and frames for voxel mode.
 #include "renderer_voxel.h"
 
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "luxel/core/parallel.h"
 #include "luxel/core/timer.h"
 #include "luxel/post/finish.h"
 #include "luxel/post/upscale.h"
@@ -47,6 +52,13 @@ void RendererVoxel::setState(VoxelState&& state) {
          state.height != state_.height || state.post.internalScale != state_.post.internalScale)) {
         temporal_.reset();
     }
+    // The path tracer's samples and the sky visibility image belong to one world and view.
+    if (edited || state.restart || state.solver.kind != state_.solver.kind) {
+        path_.clear();
+        skyVisibility_.reset();
+    } else {
+        path_.setTarget(state.solver.path.samplesPerPixel);
+    }
     state.edits.clear();
     state_ = std::move(state);
     dirty_ = true;
@@ -56,7 +68,65 @@ void RendererVoxel::setState(VoxelState&& state) {
 constexpr int kTemporalFrames = 32;
 
 bool RendererVoxel::hasMoreWork() const {
-    return dirty_ || (state_.temporal && temporal_ && temporal_->frames() < kTemporalFrames);
+    if (dirty_) return true;
+    if (state_.solver.kind == VoxelSolver::PathTrace) return path_.active() && !path_.finished();
+    return state_.solver.kind == VoxelSolver::RayCast && state_.temporal && temporal_ &&
+           temporal_->frames() < kTemporalFrames;
+}
+
+namespace {
+
+std::string number(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+}  // namespace
+
+Result<Image> RendererVoxel::renderLight(const voxel::Camera& internal, Frame& frame) {
+    const VoxelSolverOptions& solver = state_.solver;
+    frame.backend = "cpu";  // both run on the CPU, whatever renders the ray caster's frames
+    frame.device = "CPU, " + std::to_string(hardwareThreads()) + " threads";
+    setMetadata(frame.metadata, "luxel.solver", voxelSolverName(solver.kind));
+    if (solver.kind == VoxelSolver::SkyVisibility) {
+        setMetadata(frame.metadata, "luxel.ao.rays", std::to_string(solver.ao.rays));
+        setMetadata(frame.metadata, "luxel.ao.radius", number(solver.ao.radius));
+        setMetadata(frame.metadata, "luxel.seed", std::to_string(solver.ao.seed));
+        if (!skyVisibility_) {
+            Stopwatch clock;
+            auto shaded = voxel::renderSkyVisibility(world_, internal, state_.shading, solver.ao,
+                                                     &source_->textures());
+            if (!shaded) return shaded.error();
+            skyVisibility_ = std::move(shaded->radiance);
+            frame.passes.push_back({"sky visibility", clock.milliseconds()});
+        }
+        return *skyVisibility_;
+    }
+    if (!path_.active()) {
+        if (Status s = path_.restart(world_, internal, state_.shading, solver.path,
+                                     &source_->textures(), solver.path.samplesPerPixel);
+            !s) {
+            return s.error();
+        }
+    }
+    Stopwatch clock;
+    auto traced = path_.step(kPathStepMilliseconds);
+    if (!traced) return traced.error();
+    frame.passes.push_back(
+        {"path trace +" + std::to_string(path_.lastAdded()) + " spp", clock.milliseconds()});
+    frame.samples = traced->samplesPerPixel;
+    frame.converged = path_.finished();
+    frame.accumulating = traced->samplesPerPixel > path_.lastAdded();
+    frame.relativeError = traced->relativeError;
+    setMetadata(frame.metadata, "luxel.samples", std::to_string(traced->samplesPerPixel));
+    setMetadata(frame.metadata, "luxel.path.target", std::to_string(path_.target()));
+    setMetadata(frame.metadata, "luxel.path.max_bounces", std::to_string(solver.path.maxBounces));
+    setMetadata(frame.metadata, "luxel.seed", std::to_string(solver.path.seed));
+    if (std::isfinite(traced->relativeError)) {
+        setMetadata(frame.metadata, "luxel.path.relative_error", number(traced->relativeError));
+    }
+    return std::move(traced->radiance);
 }
 
 Frame RendererVoxel::step() {
@@ -79,7 +149,16 @@ Frame RendererVoxel::step() {
                                      post::internalSide(state_.height, p.internalScale))
                : *camera;
     Result<Image> radiance = Error("");
-    if (state_.temporal) {
+    if (state_.solver.kind != VoxelSolver::RayCast) {
+        temporal_.reset();  // jittered history is the ray caster's
+        radiance = renderLight(internal, frame);
+        if (radiance && scaled) {
+            Stopwatch clock;
+            radiance = post::upscale(*radiance, state_.width, state_.height, p.upscaler);
+            frame.passes.push_back(
+                {std::string("upscale ") + post::upscalerName(p.upscaler), clock.milliseconds()});
+        }
+    } else if (state_.temporal) {
         if (!temporal_) temporal_.emplace(state_.width, state_.height);
         const Vec2d jitter = temporal_->nextJitter();
         radiance = source_->renderJittered(world_, internal, state_.shading, jitter, frame.passes);
@@ -92,6 +171,7 @@ Frame RendererVoxel::step() {
             frame.passes.push_back({"temporal upscale", blend.milliseconds()});
         }
     } else {
+        setMetadata(frame.metadata, "luxel.solver", voxelSolverName(VoxelSolver::RayCast));
         radiance = source_->render(world_, internal, state_.shading, frame.passes);
         if (radiance && scaled) {
             Stopwatch clock;

@@ -11,9 +11,13 @@
 #include "luxel/post/post_options.h"
 #include "luxel/post/temporal.h"
 #include "luxel/voxel/dda.h"
+#include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/shading.h"
+#include "luxel/voxel/sky_visibility.h"
 #include "luxel/voxel/voxel_world.h"
+#include "progressive_path.h"
 #include "voxel_frame_source.h"
+#include "voxel_solver.h"
 
 namespace luxel::viewer {
 
@@ -29,6 +33,15 @@ struct FlyCamera {
     double yawDegrees = 0, pitchDegrees = 0, fovYDegrees = 60;
 };
 
+// The solver and the settings of the two that are not the ray caster (whose are `shading`).
+struct VoxelSolverOptions {
+    VoxelSolver kind = VoxelSolver::RayCast;
+    // samplesPerPixel: where the accumulation stops (the mean is then `luxel render --solver
+    // path --spp N` of the view).
+    voxel::PathTraceOptions path{.samplesPerPixel = kDefaultViewerPathSamples};
+    voxel::SkyVisibilityOptions ao;
+};
+
 struct VoxelState {
     FlyCamera camera;
     int width = 320, height = 180;  // frame resolution (rendered at post.internalScale of it)
@@ -38,7 +51,12 @@ struct VoxelState {
     post::PostOptions post;
     // Temporal upscaling: jittered frames at the internal scale, reprojected history.
     bool temporal = false;
+    VoxelSolverOptions solver;
     std::vector<VoxelEdit> edits;  // new since the previous state
+    // False when this state differs from the previous one only in what the finished picture
+    // shows of the same light (exposure, the path tracer's target): the path tracer keeps its
+    // samples and sky visibility its image.
+    bool restart = true;
 };
 
 // Applies one edit; returns whether a voxel changed, and the changed voxel in `changed`.
@@ -50,16 +68,23 @@ class RendererVoxel {
     RendererVoxel(voxel::VoxelWorld world, std::unique_ptr<VoxelFrameSource> source);
 
     void setState(VoxelState&& state);
-    // Also while the temporal upscaler is still converging on a still view.
+    // Also while the temporal upscaler is still converging on a still view, and while the path
+    // tracer has not reached its target.
     bool hasMoreWork() const;
     Frame step();
 
   private:
+    // Linear radiance of the view at the internal camera by sky visibility or the path tracer;
+    // fills in the frame's samples, convergence, metadata and passes.
+    Result<Image> renderLight(const voxel::Camera& internal, Frame& frame);
+
     voxel::VoxelWorld world_;
     std::unique_ptr<VoxelFrameSource> source_;
     VoxelState state_;
     bool dirty_ = false;
     std::optional<post::TemporalUpscaler> temporal_;
+    ProgressivePath path_;
+    std::optional<Image> skyVisibility_;  // the last sky visibility render, until a restart
 };
 
 }  // namespace luxel::viewer

@@ -31,7 +31,8 @@ Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
         ->check(options::finiteIn(0.05, 4.0));
     app.add_option("--backend", backend, "auto | cpu | gpu");
     app.add_option("--device", o.device, "Vulkan device index or name part");
-    app.add_option("--solver", solver, "2D solver: hrc | rc | reference");
+    app.add_option("--solver", solver,
+                   "2D solver: hrc | rc | reference; voxel solver: raycast | ao | path");
     app.add_option("--merge", merge, "2D RC merge: vanilla | bilinear-fix");
     app.add_option("--exposure", o.exposure, "exposure in stops")
         ->check(options::finiteIn(-64.0, 64.0));
@@ -49,6 +50,18 @@ Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
                    "MagicaVoxel worlds: the animation frame to show (default: the scene's "
                    "\"frame\", else 0)")
         ->check(CLI::Range(0, 1 << 30));
+    app.add_option("--spp", o.path.samplesPerPixel,
+                   "voxel, path tracer: samples per pixel where the accumulation stops")
+        ->check(CLI::Range(1, voxel::kMaxPathSamples));
+    app.add_option("--max-bounces", o.path.maxBounces,
+                   "voxel, path tracer: most reflections of the light reaching the eye")
+        ->check(CLI::Range(0, voxel::kMaxPathBounces));
+    app.add_option("--ao-rays", o.ao.rays, "voxel, sky visibility: rays per surface point")
+        ->check(CLI::Range(1, voxel::kMaxSkyRays));
+    app.add_option("--ao-radius", o.ao.radius,
+                   "voxel, sky visibility: ray length in voxels (inf: whole sky visibility)");
+    std::uint64_t seed = 1;
+    app.add_option("--seed", seed, "voxel, path tracer and sky visibility: random seed");
     app.add_option("--threads", o.threads, "solver threads (0: all)")->check(CLI::Range(0, 1024));
     app.add_flag("--no-overlay", o.hideOverlay, "start with the panels hidden (F1 shows them)");
 
@@ -66,13 +79,29 @@ Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
     // luxel/gpu/backend_policy.h).
     auto parsedBackend = gpu::parseBackend(backend);
     if (!parsedBackend) return parsedBackend.error();
+    // --solver names a 2D or a voxel solver; main() checks it against the scene's kind.
+    if (auto voxelSolver = parseVoxelSolver(solver); voxelSolver) {
+        o.voxelSolver = *voxelSolver;
+        solver = "hrc";
+    } else {
+        o.solver2DGiven = app.count("--solver") > 0;
+    }
     auto parsedSolver = gi2d::parseSolver2D(solver);
-    if (!parsedSolver) return parsedSolver.error();
+    if (!parsedSolver) {
+        return Error(parsedSolver.error().message() + " (voxel scenes: raycast, ao, path)");
+    }
     auto parsedMerge = gi2d::parseRcMerge(merge);
     if (!parsedMerge) return parsedMerge.error();
     o.backend = *parsedBackend;
     o.solver = *parsedSolver;
     o.merge = *parsedMerge;
+    if (!(o.ao.radius > 0.0)) {
+        return Error("--ao-radius must be > 0 voxels (inf: whole sky visibility)");
+    }
+    o.path.seed = o.ao.seed = seed;
+    for (const char* name : {"--spp", "--max-bounces", "--ao-rays", "--ao-radius", "--seed"}) {
+        if (app.count(name) > 0) o.voxelFlagsGiven.push_back(name);
+    }
     if (!size.empty()) {
         auto s = parseWindowSize(size, "--size");
         if (!s) return s.error();

@@ -1,12 +1,17 @@
 // Command-line options of luxel-view, parsed without touching SDL so they can be unit-tested.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "luxel/core/error.h"
 #include "luxel/gi2d/solver_choice.h"
 #include "luxel/gpu/backend_policy.h"
+#include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/sky_visibility.h"
+#include "progressive_path.h"
+#include "voxel_solver.h"
 
 namespace luxel::viewer {
 
@@ -18,9 +23,17 @@ struct ViewerOptions {
     int internalHeight = 0;
     float internalScale =
         0.0f;  // 0: the mode's default (2D: of the canvas; voxel, octree: of the window)
-    gpu::Backend backend = gpu::Backend::Auto;         // --backend auto | cpu | gpu
-    std::string device;                                // Vulkan device index or name part
-    gi2d::Solver2D solver = gi2d::Solver2D::Hrc;       // 2D: --solver hrc | rc | reference
+    gpu::Backend backend = gpu::Backend::Auto;    // --backend auto | cpu | gpu
+    std::string device;                           // Vulkan device index or name part
+    gi2d::Solver2D solver = gi2d::Solver2D::Hrc;  // 2D: --solver hrc | rc | reference
+    bool solver2DGiven = false;                   // --solver named a 2D solver
+    // Voxel scenes: --solver raycast | ao | path (the names of `luxel render --solver`).
+    std::optional<VoxelSolver> voxelSolver;
+    // Voxel scenes: the path tracer (--spp: where it stops, --max-bounces, --seed) and sky
+    // visibility (--ao-rays, --ao-radius, --seed), whichever solver starts.
+    voxel::PathTraceOptions path{.samplesPerPixel = kDefaultViewerPathSamples};
+    voxel::SkyVisibilityOptions ao;
+    std::vector<std::string> voxelFlagsGiven;          // which of those flags were given
     gi2d::RcMerge merge = gi2d::RcMerge::BilinearFix;  // 2D RC: --merge vanilla | bilinear-fix
     float exposure = 0.0f;                             // stops
     std::string script;                                // timed input events (docs/viewer.md)

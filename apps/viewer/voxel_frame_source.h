@@ -24,6 +24,8 @@ class VoxelFrameSource {
     virtual std::string device() const = 0;   // shown in the overlay
     // A hardware GPU, fast enough to render the full window (lavapipe and the CPU are not).
     virtual bool hardwareGpu() const = 0;
+    // The world's face textures, which the CPU solvers (sky visibility, the path tracer) read too.
+    virtual const voxel::TextureSet& textures() const = 0;
     // The world changed inside [min, maxExclusive) (voxel coordinates).
     virtual void worldEdited(const voxel::VoxelWorld& world, Int3 min, Int3 maxExclusive) = 0;
     // Linear radiance, camera.width() x camera.height(); appends its passes to `passes`.

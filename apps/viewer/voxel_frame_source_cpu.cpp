@@ -17,6 +17,7 @@ class CpuVoxelFrameSource final : public VoxelFrameSource {
         return "CPU, " + std::to_string(hardwareThreads()) + " threads";
     }
     bool hardwareGpu() const override { return false; }
+    const voxel::TextureSet& textures() const override { return textures_; }
     void worldEdited(const voxel::VoxelWorld&, Int3, Int3) override {}
     Result<Image> render(const voxel::VoxelWorld& world, const voxel::Camera& camera,
                          const voxel::ShadeOptions& shading,

@@ -101,8 +101,9 @@ TEST_F(CliPath, RefusesPathWhereItDoesNotApply) {
                 "--std-error applies to --solver path");
     expectError("render " + kTerrain + " --solver path --backend gpu" + out,
                 "--solver path runs on the CPU");
-    expectError("render " + kTerrain + " --solver pt" + out,
-                "--solver 'pt' is not one of: reference, hrc, rc (voxel scenes: path, ao, rc)");
+    expectError(
+        "render " + kTerrain + " --solver pt" + out,
+        "--solver 'pt' is not one of: reference, hrc, rc (voxel scenes: raycast, path, ao, rc)");
     // A 2D solver on a voxel scene is refused as before.
     expectError("render " + kTerrain + " --solver hrc" + out, "--solver applies to 2D scenes");
     for (const char* spp : {"0", "-3", "1e9", "nan"}) {

@@ -1,6 +1,8 @@
 // luxel-view's command line.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "viewer_options.h"
 
 namespace luxel::viewer {
@@ -54,6 +56,12 @@ TEST(ViewerOptions, RejectsBadValuesWithTheOptionName) {
         {{"s.json", "--exposure", "nan"}, "--exposure: 'nan' is not a finite number in [-64, 64]"},
         {{"s.json", "--exposure", "inf"}, "--exposure: 'inf'"},
         {{"s.json", "--threads", "-5"}, "--threads"},
+        {{"s.json", "--solver", "raycaster"}, "(voxel scenes: raycast, ao, path)"},
+        {{"s.json", "--spp", "0"}, "--spp"},
+        {{"s.json", "--max-bounces", "-1"}, "--max-bounces"},
+        {{"s.json", "--ao-rays", "0"}, "--ao-rays"},
+        {{"s.json", "--ao-radius", "0"}, "--ao-radius must be > 0 voxels"},
+        {{"s.json", "--ao-radius", "-3"}, "--ao-radius must be > 0 voxels"},
     };
     for (const Case& c : cases) {
         auto parsed = parseViewerOptions(c.args);
@@ -65,6 +73,47 @@ TEST(ViewerOptions, RejectsBadValuesWithTheOptionName) {
     ASSERT_TRUE(help);
     EXPECT_TRUE(help->helpRequested);
     EXPECT_NE(help->helpText.find("--script"), std::string::npos);
+}
+
+TEST(ViewerOptions, VoxelSolversTakeTheNamesOfLuxelRender) {
+    auto parsed =
+        parseViewerOptions({"world.json", "--solver", "path", "--spp", "64", "--max-bounces", "2",
+                            "--seed", "9", "--ao-rays", "32", "--ao-radius", "12.5"});
+    ASSERT_TRUE(parsed) << parsed.error().message();
+    const ViewerOptions& o = parsed->options;
+    ASSERT_TRUE(o.voxelSolver.has_value());
+    EXPECT_EQ(*o.voxelSolver, VoxelSolver::PathTrace);
+    EXPECT_FALSE(o.solver2DGiven);
+    EXPECT_EQ(o.path.samplesPerPixel, 64);
+    EXPECT_EQ(o.path.maxBounces, 2);
+    EXPECT_EQ(o.path.seed, 9u);
+    EXPECT_EQ(o.ao.seed, 9u);
+    EXPECT_EQ(o.ao.rays, 32);
+    EXPECT_EQ(o.ao.radius, 12.5);
+    EXPECT_EQ(o.voxelFlagsGiven.size(), 5u);
+    for (const char* name : {"ao", "raycast"}) {
+        auto other = parseViewerOptions({"world.json", "--solver", name});
+        ASSERT_TRUE(other) << name;
+        ASSERT_TRUE(other->options.voxelSolver.has_value());
+        EXPECT_STREQ(voxelSolverName(*other->options.voxelSolver), name);
+    }
+    // Defaults: no voxel solver named (the ray caster starts), the path tracer stops at 1024
+    // samples, sky visibility sees the whole sky; a 2D name is remembered as given.
+    auto plain = parseViewerOptions({"world.json"});
+    ASSERT_TRUE(plain);
+    EXPECT_FALSE(plain->options.voxelSolver.has_value());
+    EXPECT_FALSE(plain->options.solver2DGiven);
+    EXPECT_EQ(plain->options.path.samplesPerPixel, kDefaultViewerPathSamples);
+    EXPECT_TRUE(std::isinf(plain->options.ao.radius));
+    EXPECT_TRUE(plain->options.voxelFlagsGiven.empty());
+    auto wholeSky = parseViewerOptions({"world.json", "--ao-radius", "inf"});
+    ASSERT_TRUE(wholeSky) << wholeSky.error().message();
+    EXPECT_TRUE(std::isinf(wholeSky->options.ao.radius));
+    EXPECT_FALSE(parseViewerOptions({"world.json", "--ao-radius", "nan"}));
+    auto twoD = parseViewerOptions({"room.json", "--solver", "reference"});
+    ASSERT_TRUE(twoD);
+    EXPECT_TRUE(twoD->options.solver2DGiven);
+    EXPECT_FALSE(twoD->options.voxelSolver.has_value());
 }
 
 }  // namespace

@@ -307,7 +307,8 @@ int runRender(const RenderArgs& args) {
     }
     auto file = loadScene(args.scene, args.size, args.frame);
     if (!file) return reportError(file.error());
-    if ((args.pathSolver || args.aoSolver) && file->kind() != scene::SceneKind::Voxel) {
+    if ((args.pathSolver || args.aoSolver || args.rayCastSolver) &&
+        file->kind() != scene::SceneKind::Voxel) {
         return reportError(Error("--solver " + args.solverName + " applies to voxel scenes; " +
                                  args.scene + " is " + sceneKindPhrase(file->kind())));
     }

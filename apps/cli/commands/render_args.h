@@ -23,7 +23,8 @@ struct RenderArgs {
     gi2d::Solver2D solver = gi2d::Solver2D::Reference;  // parsed from solverName
     bool pathSolver = false;                            // --solver path (voxel scenes)
     bool aoSolver = false;                              // --solver ao (voxel scenes)
-    std::vector<std::string> options2DGiven;            // 2D-only options on the command line
+    bool rayCastSolver = false;  // --solver raycast (voxel scenes: the ray caster, the default)
+    std::vector<std::string> options2DGiven;  // 2D-only options on the command line
     int rays = gi2d::ReferenceOptions{}.rays;
     int threads = 0;
     int supersample = 16;

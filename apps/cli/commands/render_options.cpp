@@ -13,10 +13,11 @@ namespace {
 Status parseChoices(RenderArgs& args) {
     args.pathSolver = args.solverName == "path";
     args.aoSolver = args.solverName == "ao";
-    auto solver = args.pathSolver || args.aoSolver
+    args.rayCastSolver = args.solverName == "raycast";
+    auto solver = args.pathSolver || args.aoSolver || args.rayCastSolver
                       ? Result<gi2d::Solver2D>(gi2d::Solver2D::Reference)
                       : gi2d::parseSolver2D(args.solverName);
-    if (!solver) return Error(solver.error().message() + " (voxel scenes: path, ao, rc)");
+    if (!solver) return Error(solver.error().message() + " (voxel scenes: raycast, path, ao, rc)");
     auto merge = gi2d::parseRcMerge(args.mergeName);
     if (!merge) return merge.error();
     auto backend = gpu::parseBackend(args.backendName);
@@ -57,7 +58,8 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option("scene", args->scene, "scene file (.json)")->required();
     app.add_option(
            "--solver", args->solverName,
-           "light transport solver: reference, hrc, rc (2D scenes); path, ao, rc (voxel scenes)")
+           "light transport solver: reference, hrc, rc (2D scenes); raycast (the default), path, "
+           "ao, rc (voxel scenes)")
         ->capture_default_str();
     app.add_option("--size", args->size, "render size WIDTHxHEIGHT (default: the scene canvas)");
     addVoxFrameOption(app, args->frame);
@@ -178,19 +180,21 @@ Runner addRenderCommand(CLI::App& app) {
         for (const char* name : {"--ao-rays", "--ao-radius"}) {
             if (command->count(name) > 0) args->aoGiven.push_back(name);
         }
-        // --solver path/ao and --seed belong to voxel scenes (runRender refuses them for 2D).
-        const bool path = args->solverName == "path" || args->solverName == "ao";
+        // --solver raycast/path/ao and --seed belong to voxel scenes (runRender refuses them for
+        // 2D).
+        const bool seeded = args->solverName == "path" || args->solverName == "ao";
+        const bool voxelSolver = seeded || args->solverName == "raycast";
         for (const char* name :
              {"--solver", "--rays", "--seed", "--supersample", "--traced-levels", "--no-blur",
               "--frustum", "--cascade", "--merge", "--march", "--probe-spacing", "--base-rays",
               "--base-interval", "--max-cascades", "--view", "--bounces"}) {
-            const bool pathOption =
-                std::string_view(name) == "--solver" || std::string_view(name) == "--seed";
             // rc names a solver of both kinds; --bounces serves both (runRender sorts them out).
             const bool rcOption =
                 args->solverName == "rc" &&
                 (std::string_view(name) == "--solver" || std::string_view(name) == "--bounces");
-            if (command->count(name) > 0 && !(path && pathOption) && !rcOption) {
+            const bool voxelOption = (std::string_view(name) == "--solver" && voxelSolver) ||
+                                     (std::string_view(name) == "--seed" && seeded);
+            if (command->count(name) > 0 && !voxelOption && !rcOption) {
                 args->options2DGiven.push_back(name);
             }
         }

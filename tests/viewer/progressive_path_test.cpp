@@ -1,0 +1,258 @@
+// Voxel mode's solvers without a window: the path tracer's accumulation over frames (how many
+// samples a frame adds, what restarts it, and that the mean is the one-pass render's), and sky
+// visibility, through the same RendererVoxel the viewer's render thread runs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "luxel/post/finish.h"
+#include "luxel/voxel/camera.h"
+#include "luxel/voxel/generators.h"
+#include "progressive_path.h"
+#include "renderer_voxel.h"
+#include "voxel_solver.h"
+
+namespace luxel::viewer {
+namespace {
+
+// A floor and a block under the default sun: sky, sunlit faces and a shadow.
+voxel::VoxelWorld blockWorld() {
+    auto world = voxel::VoxelWorld::create({16, 8, 16}, 8);
+    EXPECT_TRUE(world.ok());
+    voxel::addBox(*world, {0, 0, 0}, {16, 2, 16}, {90, 160, 70, 255});
+    voxel::addBox(*world, {6, 2, 6}, {10, 6, 10}, {200, 120, 90, 255});
+    return std::move(*world);
+}
+
+VoxelState pathState(int target) {
+    VoxelState state;
+    state.camera.position = {8, 7, -6};
+    state.camera.pitchDegrees = -20;
+    state.width = 24;
+    state.height = 16;
+    state.solver.kind = VoxelSolver::PathTrace;
+    state.solver.path.samplesPerPixel = target;
+    state.solver.path.maxBounces = 3;
+    return state;
+}
+
+voxel::Camera cameraOf(const VoxelState& s) {
+    const FlyCamera& c = s.camera;
+    auto camera = voxel::Camera::create(c.position, c.yawDegrees, c.pitchDegrees, c.fovYDegrees,
+                                        s.width, s.height);
+    EXPECT_TRUE(camera.ok());
+    return *camera;
+}
+
+// The picture the viewer shows of linear radiance (no bloom, the state's exposure).
+Image displayed(const Image& radiance, const VoxelState& s) {
+    post::PostOptions finishing = s.post;
+    finishing.tone.exposureStops = s.exposure;
+    return post::finish(radiance, finishing);
+}
+
+void expectSameImage(const Image& a, const Image& b) {
+    ASSERT_EQ(a.width(), b.width());
+    ASSERT_EQ(a.height(), b.height());
+    ASSERT_EQ(a.size(), b.size());
+    int different = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) different += a.data()[i] != b.data()[i];
+    EXPECT_EQ(different, 0) << "of " << a.size() << " values";
+}
+
+const std::string* metadataOf(const Frame& frame, const char* key) {
+    return findMetadata(frame.metadata, key);
+}
+
+TEST(VoxelSolverNames, AreTheCliNamesAndCycle) {
+    for (const char* name : {"raycast", "ao", "path"}) {
+        auto solver = parseVoxelSolver(name);
+        ASSERT_TRUE(solver) << name;
+        EXPECT_STREQ(voxelSolverName(*solver), name);
+    }
+    auto bad = parseVoxelSolver("hrc", "--solver");
+    ASSERT_FALSE(bad);
+    EXPECT_EQ(bad.error().message(), "--solver 'hrc' is not a voxel solver: raycast, ao or path");
+    EXPECT_EQ(nextVoxelSolver(VoxelSolver::RayCast), VoxelSolver::SkyVisibility);
+    EXPECT_EQ(nextVoxelSolver(VoxelSolver::SkyVisibility), VoxelSolver::PathTrace);
+    EXPECT_EQ(nextVoxelSolver(VoxelSolver::PathTrace), VoxelSolver::RayCast);
+}
+
+TEST(ProgressivePathSamples, OneAfterARestartThenWhatFitsTheBudget) {
+    // Nothing measured yet: one sample, the quickest first picture.
+    EXPECT_EQ(nextPathSamples(0, 100, 0, 0.0, 50.0), 1);
+    // 10 ms a sample fits 5 in 50 ms; growth is at most twice the last count.
+    EXPECT_EQ(nextPathSamples(10, 100, 4, 40.0, 50.0), 5);
+    EXPECT_EQ(nextPathSamples(10, 100, 1, 1.0, 50.0), 2);
+    // A sample slower than the budget still adds one.
+    EXPECT_EQ(nextPathSamples(10, 100, 1, 200.0, 50.0), 1);
+    // Never past the target; nothing once it is reached.
+    EXPECT_EQ(nextPathSamples(98, 100, 64, 1.0, 50.0), 2);
+    EXPECT_EQ(nextPathSamples(100, 100, 64, 1.0, 50.0), 0);
+    EXPECT_EQ(nextPathSamples(120, 100, 64, 1.0, 50.0), 0);
+    // A broken timing starts over at one.
+    EXPECT_EQ(nextPathSamples(10, 100, 4, std::nan(""), 50.0), 1);
+    EXPECT_EQ(nextPathSamples(10, 100, 4, 0.0, 50.0), 1);
+}
+
+TEST(ProgressivePath, StepsAddUpToTheOnePassRenderOfTheTarget) {
+    const voxel::VoxelWorld world = blockWorld();
+    const VoxelState s = pathState(7);
+    const voxel::Camera camera = cameraOf(s);
+    ProgressivePath progressive;
+    EXPECT_FALSE(progressive.active());
+    ASSERT_TRUE(progressive.restart(world, camera, s.shading, s.solver.path, nullptr, 7));
+    int steps = 0, previous = 0;
+    voxel::PathTraceImage last;
+    while (!progressive.finished()) {
+        auto image = progressive.step(steps % 2 == 0 ? 0.001 : 1000.0);  // uneven splits
+        ASSERT_TRUE(image) << image.error().message();
+        EXPECT_GT(image->samplesPerPixel, previous);
+        EXPECT_EQ(image->samplesPerPixel - previous, progressive.lastAdded());
+        previous = image->samplesPerPixel;
+        last = std::move(*image);
+        ASSERT_LT(++steps, 20);
+    }
+    EXPECT_GT(steps, 2);
+    EXPECT_EQ(last.samplesPerPixel, 7);
+    voxel::PathTraceOptions once = s.solver.path;
+    once.samplesPerPixel = 7;
+    auto reference = voxel::pathTrace(world, camera, s.shading, once);
+    ASSERT_TRUE(reference);
+    expectSameImage(last.radiance, reference->radiance);
+    expectSameImage(last.standardError, reference->standardError);
+    EXPECT_DOUBLE_EQ(last.relativeError, reference->relativeError);
+    // Finished: a step only reads the mean back.
+    auto again = progressive.step(50.0);
+    ASSERT_TRUE(again);
+    EXPECT_EQ(progressive.lastAdded(), 0);
+    EXPECT_EQ(again->samplesPerPixel, 7);
+    // A higher target goes on from there; clear() forgets everything.
+    progressive.setTarget(9);
+    EXPECT_FALSE(progressive.finished());
+    auto more = progressive.step(1000.0);
+    ASSERT_TRUE(more);
+    EXPECT_EQ(more->samplesPerPixel, 9);
+    progressive.clear();
+    EXPECT_FALSE(progressive.active());
+    EXPECT_EQ(progressive.samples(), 0);
+}
+
+TEST(ProgressivePath, BadOptionsAndTargetsAreErrors) {
+    const voxel::VoxelWorld world = blockWorld();
+    VoxelState s = pathState(4);
+    ProgressivePath progressive;
+    EXPECT_FALSE(progressive.restart(world, cameraOf(s), s.shading, s.solver.path, nullptr, 0));
+    s.shading.sunDirection = {0, 0, 0};
+    auto status = progressive.restart(world, cameraOf(s), s.shading, s.solver.path, nullptr, 4);
+    ASSERT_FALSE(status);
+    EXPECT_NE(status.error().message().find("sun"), std::string::npos) << status.error().message();
+    EXPECT_FALSE(progressive.active());
+}
+
+TEST(RendererVoxelPath, AccumulatesUntilTheTargetAndRestartsOnChanges) {
+    RendererVoxel renderer(blockWorld(), makeCpuVoxelFrameSource());
+    VoxelState s = pathState(6);
+    VoxelState copy = s;
+    renderer.setState(std::move(copy));
+    std::vector<Frame> frames;
+    while (renderer.hasMoreWork()) {
+        frames.push_back(renderer.step());
+        ASSERT_TRUE(frames.back().note.empty()) << frames.back().note;
+        ASSERT_LT(frames.size(), 20u);
+    }
+    ASSERT_GE(frames.size(), 2u);  // one sample first, then more a frame
+    EXPECT_EQ(frames.front().samples, 1);
+    EXPECT_FALSE(frames.front().accumulating);
+    EXPECT_FALSE(frames.front().converged);
+    for (std::size_t i = 1; i < frames.size(); ++i) {
+        EXPECT_GT(frames[i].samples, frames[i - 1].samples);
+        EXPECT_TRUE(frames[i].accumulating);
+    }
+    const Frame& done = frames.back();
+    EXPECT_EQ(done.samples, 6);
+    EXPECT_TRUE(done.converged);
+    EXPECT_TRUE(std::isfinite(done.relativeError));
+    ASSERT_NE(metadataOf(done, "luxel.solver"), nullptr);
+    EXPECT_EQ(*metadataOf(done, "luxel.solver"), "path");
+    ASSERT_NE(metadataOf(done, "luxel.samples"), nullptr);
+    EXPECT_EQ(*metadataOf(done, "luxel.samples"), "6");
+    // The picture is the one-pass render of 6 samples, tone mapped.
+    voxel::PathTraceOptions once = s.solver.path;
+    once.samplesPerPixel = 6;
+    auto reference = voxel::pathTrace(blockWorld(), cameraOf(s), s.shading, once);
+    ASSERT_TRUE(reference);
+    expectSameImage(done.picture, displayed(reference->radiance, s));
+
+    // Exposure and a higher target keep the samples.
+    s.exposure = 1.0f;
+    s.solver.path.samplesPerPixel = 8;
+    s.restart = false;
+    copy = s;
+    renderer.setState(std::move(copy));
+    ASSERT_TRUE(renderer.hasMoreWork());
+    Frame kept = renderer.step();
+    EXPECT_GT(kept.samples, 6);
+    EXPECT_TRUE(kept.accumulating);
+
+    // A moved camera starts again from one sample.
+    s.camera.position.x += 1.0;
+    s.restart = true;
+    copy = s;
+    renderer.setState(std::move(copy));
+    Frame moved = renderer.step();
+    EXPECT_EQ(moved.samples, 1);
+    EXPECT_FALSE(moved.accumulating);
+    while (renderer.hasMoreWork()) moved = renderer.step();
+    EXPECT_EQ(moved.samples, 8);
+
+    // So does an edit, even in a state that would keep the samples otherwise.
+    VoxelEdit edit;
+    edit.ray = {{8.5, 7.5, 8.5}, {0, -1, 0}};  // removes the block's top voxel
+    s.edits = {edit};
+    s.restart = false;
+    copy = s;
+    renderer.setState(std::move(copy));
+    Frame edited = renderer.step();
+    EXPECT_EQ(edited.samples, 1);
+}
+
+TEST(RendererVoxelSkyVisibility, IsTheLibraryRenderAndRendersOncePerView) {
+    RendererVoxel renderer(blockWorld(), makeCpuVoxelFrameSource());
+    VoxelState s = pathState(1);
+    s.solver.kind = VoxelSolver::SkyVisibility;
+    s.solver.ao.rays = 8;
+    s.solver.ao.radius = 6.0;
+    VoxelState copy = s;
+    renderer.setState(std::move(copy));
+    Frame frame = renderer.step();
+    ASSERT_TRUE(frame.note.empty()) << frame.note;
+    EXPECT_FALSE(renderer.hasMoreWork());
+    EXPECT_TRUE(frame.converged);
+    EXPECT_EQ(frame.samples, 0);
+    ASSERT_NE(metadataOf(frame, "luxel.solver"), nullptr);
+    EXPECT_EQ(*metadataOf(frame, "luxel.solver"), "ao");
+    auto reference = voxel::renderSkyVisibility(blockWorld(), cameraOf(s), s.shading, s.solver.ao);
+    ASSERT_TRUE(reference);
+    expectSameImage(frame.picture, displayed(reference->radiance, s));
+    // An exposure change shows the same light: no second render.
+    s.exposure = -1.0f;
+    s.restart = false;
+    copy = s;
+    renderer.setState(std::move(copy));
+    frame = renderer.step();
+    for (const PassTime& p : frame.passes) EXPECT_NE(p.name, "sky visibility");
+    expectSameImage(frame.picture, displayed(reference->radiance, s));
+    // The ray caster's frames say so too.
+    s.solver.kind = VoxelSolver::RayCast;
+    s.restart = true;
+    copy = s;
+    renderer.setState(std::move(copy));
+    frame = renderer.step();
+    ASSERT_NE(metadataOf(frame, "luxel.solver"), nullptr);
+    EXPECT_EQ(*metadataOf(frame, "luxel.solver"), "raycast");
+    EXPECT_FALSE(renderer.hasMoreWork());
+}
+
+}  // namespace
+}  // namespace luxel::viewer
