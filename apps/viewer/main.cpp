@@ -108,7 +108,7 @@ int runViewer(int argc, char** argv) {
     auto file = scene::loadSceneFile(o.scene, {{}, o.voxFrame});
     if (!file) return fail(file.error().message());
     if (file->kind() != scene::SceneKind::Voxel) {
-        if (o.voxelSolver) {
+        if (o.voxelSolver && *o.voxelSolver != VoxelSolver::Cascades) {
             return fail(std::string("--solver ") + voxelSolverName(*o.voxelSolver) +
                         " applies to voxel scenes");
         }
@@ -118,9 +118,9 @@ int runViewer(int argc, char** argv) {
     }
     if (file->kind() == scene::SceneKind::Voxel) {
         voxel::VoxelScene* scene = &file->voxel();
-        if (o.solver2DGiven) {
+        if (o.solver2DGiven && o.voxelSolver != VoxelSolver::Cascades) {
             return fail(std::string("--solver ") + gi2d::solverName(o.solver) +
-                        " is a 2D solver; voxel scenes take raycast, ao or path");
+                        " is a 2D solver; voxel scenes take raycast, ao, path or rc");
         }
         VoxelSolverOptions solver;
         solver.kind = o.voxelSolver.value_or(VoxelSolver::RayCast);

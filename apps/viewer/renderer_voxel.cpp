@@ -53,6 +53,16 @@ void RendererVoxel::setState(VoxelState&& state) {
         temporal_.reset();
     }
     // The path tracer's samples and the sky visibility image belong to one world and view.
+    // The cascades belong to one world; new light keeps their irradiance as the next start.
+    if (edited) cascades_.reset();
+    const voxel::ShadeOptions &now = state.shading, &before = state_.shading;
+    if (!(now.sunDirection.x == before.sunDirection.x &&
+          now.sunDirection.y == before.sunDirection.y &&
+          now.sunDirection.z == before.sunDirection.z &&
+          now.sunIrradiance == before.sunIrradiance && now.skyTop == before.skyTop &&
+          now.skyHorizon == before.skyHorizon)) {
+        cascadesLight_ = true;
+    }
     if (edited || state.restart || state.solver.kind != state_.solver.kind) {
         path_.clear();
         skyVisibility_.reset();
@@ -70,6 +80,9 @@ constexpr int kTemporalFrames = 32;
 bool RendererVoxel::hasMoreWork() const {
     if (dirty_) return true;
     if (state_.solver.kind == VoxelSolver::PathTrace) return path_.active() && !path_.finished();
+    if (state_.solver.kind == VoxelSolver::Cascades) {
+        return !cascades_ || cascadesLight_ || cascadesChange_ >= voxel::CascadeOptions{}.tolerance;
+    }
     return state_.solver.kind == VoxelSolver::RayCast && state_.temporal && temporal_ &&
            temporal_->frames() < kTemporalFrames;
 }
@@ -103,6 +116,7 @@ Result<Image> RendererVoxel::renderLight(const voxel::Camera& internal, Frame& f
         }
         return *skyVisibility_;
     }
+    if (solver.kind == VoxelSolver::Cascades) return renderCascades(internal, frame);
     if (!path_.active()) {
         if (Status s = path_.restart(world_, internal, state_.shading, solver.path,
                                      &source_->textures(), solver.path.samplesPerPixel);
@@ -127,6 +141,34 @@ Result<Image> RendererVoxel::renderLight(const voxel::Camera& internal, Frame& f
         setMetadata(frame.metadata, "luxel.path.relative_error", number(traced->relativeError));
     }
     return std::move(traced->radiance);
+}
+
+Result<Image> RendererVoxel::renderCascades(const voxel::Camera& internal, Frame& frame) {
+    if (!cascades_) {
+        Stopwatch clock;
+        auto built = voxel::RadianceCascades::create(world_, &source_->textures(), state_.shading);
+        if (!built) return built.error();
+        cascades_ = std::move(*built);
+        cascadesLight_ = false;
+        frame.passes.push_back({"cascades build", clock.milliseconds()});
+    } else if (cascadesLight_) {
+        Stopwatch clock;
+        if (Status s = cascades_->setLight(state_.shading); !s) return s.error();
+        cascadesLight_ = false;
+        frame.passes.push_back({"cascades light", clock.milliseconds()});
+    }
+    Stopwatch pass;
+    cascadesChange_ = cascades_->iterate();
+    frame.passes.push_back({"cascades bounce", pass.milliseconds()});
+    Stopwatch picture;
+    auto image = cascades_->render(internal);
+    if (!image) return image.error();
+    frame.passes.push_back({"cascades picture", picture.milliseconds()});
+    const voxel::CascadeStats stats = cascades_->stats();
+    frame.converged = cascadesChange_ < voxel::CascadeOptions{}.tolerance;
+    setMetadata(frame.metadata, "luxel.rc.bounces", std::to_string(stats.bounces));
+    setMetadata(frame.metadata, "luxel.rc.spacing", std::to_string(stats.spacing));
+    return image;
 }
 
 Frame RendererVoxel::step() {

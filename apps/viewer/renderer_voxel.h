@@ -12,6 +12,7 @@
 #include "luxel/post/temporal.h"
 #include "luxel/voxel/dda.h"
 #include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/radiance_cascades.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/sky_visibility.h"
 #include "luxel/voxel/voxel_world.h"
@@ -74,9 +75,12 @@ class RendererVoxel {
     Frame step();
 
   private:
-    // Linear radiance of the view at the internal camera by sky visibility or the path tracer;
-    // fills in the frame's samples, convergence, metadata and passes.
+    // Linear radiance of the view at the internal camera by sky visibility, the path tracer or
+    // the radiance cascades; fills in the frame's samples, convergence, metadata and passes.
     Result<Image> renderLight(const voxel::Camera& internal, Frame& frame);
+    // The radiance cascades' frame: built once per world, new light when the sun or sky change,
+    // one lighting pass (one more reflection) per frame until the light settles.
+    Result<Image> renderCascades(const voxel::Camera& internal, Frame& frame);
 
     voxel::VoxelWorld world_;
     std::unique_ptr<VoxelFrameSource> source_;
@@ -85,6 +89,9 @@ class RendererVoxel {
     std::optional<post::TemporalUpscaler> temporal_;
     ProgressivePath path_;
     std::optional<Image> skyVisibility_;  // the last sky visibility render, until a restart
+    std::optional<voxel::RadianceCascades> cascades_;  // of world_, until an edit
+    bool cascadesLight_ = false;                       // the state's light is not yet set in them
+    double cascadesChange_ = 1.0;                      // the last pass's relative change
 };
 
 }  // namespace luxel::viewer

@@ -80,7 +80,11 @@ Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
     auto parsedBackend = gpu::parseBackend(backend);
     if (!parsedBackend) return parsedBackend.error();
     // --solver names a 2D or a voxel solver; main() checks it against the scene's kind.
-    if (auto voxelSolver = parseVoxelSolver(solver); voxelSolver) {
+    // "rc" names a solver of both kinds: 2D radiance cascades or the voxel ones.
+    if (solver == "rc") {
+        o.voxelSolver = VoxelSolver::Cascades;
+        o.solver2DGiven = app.count("--solver") > 0;
+    } else if (auto voxelSolver = parseVoxelSolver(solver); voxelSolver) {
         o.voxelSolver = *voxelSolver;
         solver = "hrc";
     } else {
@@ -88,7 +92,7 @@ Result<ParsedOptions> parseViewerOptions(const std::vector<std::string>& args) {
     }
     auto parsedSolver = gi2d::parseSolver2D(solver);
     if (!parsedSolver) {
-        return Error(parsedSolver.error().message() + " (voxel scenes: raycast, ao, path)");
+        return Error(parsedSolver.error().message() + " (voxel scenes: raycast, ao, path, rc)");
     }
     auto parsedMerge = gi2d::parseRcMerge(merge);
     if (!parsedMerge) return parsedMerge.error();

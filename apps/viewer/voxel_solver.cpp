@@ -11,7 +11,7 @@ Result<VoxelSolver> parseVoxelSolver(std::string_view text, std::string_view opt
         if (text == voxelSolverName(solver)) return solver;
     }
     return Error(std::string(option) + " '" + std::string(text) +
-                 "' is not a voxel solver: raycast, ao or path");
+                 "' is not a voxel solver: raycast, ao, path or rc");
 }
 
 const char* voxelSolverName(VoxelSolver solver) {
@@ -22,6 +22,8 @@ const char* voxelSolverName(VoxelSolver solver) {
             return "ao";
         case VoxelSolver::PathTrace:
             return "path";
+        case VoxelSolver::Cascades:
+            return "rc";
     }
     return "?";
 }
@@ -34,6 +36,8 @@ const char* voxelSolverLabel(VoxelSolver solver) {
             return "sky visibility (AO)";
         case VoxelSolver::PathTrace:
             return "path tracer";
+        case VoxelSolver::Cascades:
+            return "radiance cascades";
     }
     return "?";
 }

@@ -46,6 +46,9 @@ bool drawVoxelSolverPanel(VoxelSolverOptions& solver, bool* restart) {
             }
         }
     }
+    if (solver.kind == VoxelSolver::Cascades) {
+        ImGui::TextDisabled("one more reflection each frame until the light settles");
+    }
     if (solver.kind != VoxelSolver::RayCast) {
         ImGui::TextDisabled("reflections, shading, shadows, surfaces: the ray caster's only");
     }

@@ -8,6 +8,7 @@
 #include "luxel/post/finish.h"
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/generators.h"
+#include "luxel/voxel/radiance_cascades.h"
 #include "progressive_path.h"
 #include "renderer_voxel.h"
 #include "voxel_solver.h"
@@ -65,17 +66,19 @@ const std::string* metadataOf(const Frame& frame, const char* key) {
 }
 
 TEST(VoxelSolverNames, AreTheCliNamesAndCycle) {
-    for (const char* name : {"raycast", "ao", "path"}) {
+    for (const char* name : {"raycast", "ao", "path", "rc"}) {
         auto solver = parseVoxelSolver(name);
         ASSERT_TRUE(solver) << name;
         EXPECT_STREQ(voxelSolverName(*solver), name);
     }
     auto bad = parseVoxelSolver("hrc", "--solver");
     ASSERT_FALSE(bad);
-    EXPECT_EQ(bad.error().message(), "--solver 'hrc' is not a voxel solver: raycast, ao or path");
+    EXPECT_EQ(bad.error().message(),
+              "--solver 'hrc' is not a voxel solver: raycast, ao, path or rc");
     EXPECT_EQ(nextVoxelSolver(VoxelSolver::RayCast), VoxelSolver::SkyVisibility);
     EXPECT_EQ(nextVoxelSolver(VoxelSolver::SkyVisibility), VoxelSolver::PathTrace);
-    EXPECT_EQ(nextVoxelSolver(VoxelSolver::PathTrace), VoxelSolver::RayCast);
+    EXPECT_EQ(nextVoxelSolver(VoxelSolver::PathTrace), VoxelSolver::Cascades);
+    EXPECT_EQ(nextVoxelSolver(VoxelSolver::Cascades), VoxelSolver::RayCast);
 }
 
 TEST(ProgressivePathSamples, OneAfterARestartThenWhatFitsTheBudget) {
@@ -251,6 +254,55 @@ TEST(RendererVoxelSkyVisibility, IsTheLibraryRenderAndRendersOncePerView) {
     frame = renderer.step();
     ASSERT_NE(metadataOf(frame, "luxel.solver"), nullptr);
     EXPECT_EQ(*metadataOf(frame, "luxel.solver"), "raycast");
+    EXPECT_FALSE(renderer.hasMoreWork());
+}
+
+// Radiance cascades in the viewer: one more reflection per frame, each frame the library's
+// picture after as many passes; a camera move keeps the light, a new sun sets it anew.
+TEST(RendererVoxelCascades, AddsAReflectionPerFrameAndKeepsTheLightWhenTheCameraMoves) {
+    const voxel::VoxelWorld world = blockWorld();
+    RendererVoxel renderer(blockWorld(), makeCpuVoxelFrameSource());
+    VoxelState s = pathState(1);
+    s.solver.kind = VoxelSolver::Cascades;
+    VoxelState copy = s;
+    renderer.setState(std::move(copy));
+    auto library = voxel::RadianceCascades::create(world, nullptr, s.shading);
+    ASSERT_TRUE(library.ok()) << library.error().message();
+    for (int frameIndex = 1; frameIndex <= 3; ++frameIndex) {
+        ASSERT_TRUE(renderer.hasMoreWork());
+        const Frame frame = renderer.step();
+        ASSERT_TRUE(frame.note.empty()) << frame.note;
+        library->iterate();
+        auto expected = library->render(cameraOf(s));
+        ASSERT_TRUE(expected.ok());
+        expectSameImage(frame.picture, displayed(*expected, s));
+        ASSERT_NE(metadataOf(frame, "luxel.rc.bounces"), nullptr);
+        EXPECT_EQ(*metadataOf(frame, "luxel.rc.bounces"), std::to_string(frameIndex));
+        bool built = false;
+        for (const PassTime& p : frame.passes) built |= p.name == "cascades build";
+        EXPECT_EQ(built, frameIndex == 1);
+    }
+    // The camera moves: the light carries on (no new build, the fourth reflection).
+    s.camera.position.x += 1.0;
+    copy = s;
+    renderer.setState(std::move(copy));
+    Frame moved = renderer.step();
+    EXPECT_EQ(*metadataOf(moved, "luxel.rc.bounces"), "4");
+    library->iterate();
+    expectSameImage(moved.picture, displayed(*library->render(cameraOf(s)), s));
+    // The sun moves: new light, same cascades.
+    s.shading.sunDirection = {0.5f, 0.8f, 0.1f};
+    copy = s;
+    renderer.setState(std::move(copy));
+    Frame lit = renderer.step();
+    bool relit = false;
+    for (const PassTime& p : lit.passes) relit |= p.name == "cascades light";
+    EXPECT_TRUE(relit);
+    ASSERT_TRUE(library->setLight(s.shading).ok());
+    library->iterate();
+    expectSameImage(lit.picture, displayed(*library->render(cameraOf(s)), s));
+    // Settled light needs no more frames.
+    for (int i = 0; i < 200 && renderer.hasMoreWork(); ++i) renderer.step();
     EXPECT_FALSE(renderer.hasMoreWork());
 }
 

@@ -56,7 +56,7 @@ TEST(ViewerOptions, RejectsBadValuesWithTheOptionName) {
         {{"s.json", "--exposure", "nan"}, "--exposure: 'nan' is not a finite number in [-64, 64]"},
         {{"s.json", "--exposure", "inf"}, "--exposure: 'inf'"},
         {{"s.json", "--threads", "-5"}, "--threads"},
-        {{"s.json", "--solver", "raycaster"}, "(voxel scenes: raycast, ao, path)"},
+        {{"s.json", "--solver", "raycaster"}, "(voxel scenes: raycast, ao, path, rc)"},
         {{"s.json", "--spp", "0"}, "--spp"},
         {{"s.json", "--max-bounces", "-1"}, "--max-bounces"},
         {{"s.json", "--ao-rays", "0"}, "--ao-rays"},

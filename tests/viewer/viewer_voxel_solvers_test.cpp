@@ -126,6 +126,9 @@ TEST_F(ViewerVoxelSolvers, SkyVisibilityIsLuxelRenderAndCCyclesTheSolvers) {
           "screenshot path.png\n"
           "key C\n"
           "wait_render\n"
+          "screenshot rc.png\n"
+          "key C\n"
+          "wait_render\n"
           "screenshot raycast.png\n"
           "quit\n");
     const std::string ao = " --solver ao --ao-rays 8 --ao-radius 10";
@@ -134,6 +137,7 @@ TEST_F(ViewerVoxelSolvers, SkyVisibilityIsLuxelRenderAndCCyclesTheSolvers) {
     EXPECT_EQ(meta("ao.png", "luxel.solver"), "ao");
     EXPECT_EQ(meta("ao.png", "luxel.ao.rays"), "8");
     EXPECT_EQ(meta("path.png", "luxel.solver"), "path");
+    EXPECT_EQ(meta("rc.png", "luxel.solver"), "rc");
     EXPECT_EQ(meta("raycast.png", "luxel.solver"), "raycast");
     const RunResult c = cli(scene + ao + " --png cli.png");
     ASSERT_EQ(c.exitCode, 0) << c.output;
@@ -149,7 +153,7 @@ TEST_F(ViewerVoxelSolvers, SolversOfTheOtherKindOfSceneAreOneClearLine) {
     RunResult r = view(voxel + " --solver hrc");
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("luxel-view: error: --solver hrc is a 2D solver; voxel scenes take "
-                            "raycast, ao or path"),
+                            "raycast, ao, path or rc"),
               std::string::npos)
         << r.output;
     const std::string room = write("room.json", R"({"canvas": [32, 32], "shapes": []})");
