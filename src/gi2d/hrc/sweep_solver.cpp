@@ -17,7 +17,7 @@ namespace {
 
 namespace shared = gpu::shared;
 
-// Buffers up to this size are kept for the next solve on the same thread (1024^2 needs 48 MiB).
+// Buffers up to this size are kept for the next solve on the same thread (1024^2 needs 40 MiB).
 constexpr std::uint64_t kKeptSweepBytes = std::uint64_t{64} << 20;
 
 // Traced cascades actually used for a frame with `levels` cascades.
