@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <span>
 
 #include "gi2d/hrc/cone_merge.h"
 #include "gi2d/hrc/finish.h"
@@ -51,6 +52,27 @@ float worstRelative(const float* a, const float* b, std::size_t n) {
         worst = std::max(worst, std::abs(a[i] - b[i]) / std::max(1.0f, std::abs(a[i])));
     }
     return worst;
+}
+
+// Two binary16 cone buffers of the same shape: the largest |a - b| relative to max(1, |a|) over
+// the values that differ by more than one rounding step, and how many differ by exactly one (the
+// same float sum, give or take the last bit, rounded to the two halves either side of a midpoint).
+struct ConeDifference {
+    float worst = 0.0f;
+    std::size_t roundingSteps = 0;
+};
+ConeDifference compareCones(std::span<const std::uint16_t> a, std::span<const std::uint16_t> b) {
+    ConeDifference d;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const bool sameSign = ((a[i] ^ b[i]) & 0x8000u) == 0;
+        if (sameSign && std::abs(int{a[i]} - int{b[i]}) == 1) {
+            ++d.roundingSteps;
+            continue;
+        }
+        const float x = halfToFloat(a[i]), y = halfToFloat(b[i]);
+        d.worst = std::max(d.worst, std::abs(x - y) / std::max(1.0f, std::abs(x)));
+    }
+    return d;
 }
 
 float worstRelativeHalves(std::span<const std::uint16_t> a, std::span<const std::uint16_t> b) {
@@ -120,11 +142,17 @@ TEST_F(HrcPasses, MergeMatchesMergeCascade) {
         mergeCascade(tables, n, upper, sky, cpu);
         auto ms = mergeCascadeOnGpu(*context_, tables, n, upper, sky, gpu);
         ASSERT_TRUE(ms.ok()) << ms.error().message();
-        ASSERT_EQ(cpu.data().size(), gpu.data().size());
-        const float worst =
-            worstRelative(&cpu.data()[0].r, &gpu.data()[0].r, cpu.data().size() * 3);
-        std::printf("merge R%d: worst relative difference %.2e\n", n, worst);
-        EXPECT_LT(worst, 1e-4f) << "level " << n;
+        ASSERT_EQ(cpu.halves().size(), gpu.halves().size());
+        // The cones are binary16: a float sum the two sides compute a last bit apart may round
+        // to neighbouring halves. Those are counted, and must stay rare; every other value must
+        // agree as the float sums did.
+        const ConeDifference d = compareCones(cpu.halves(), gpu.halves());
+        std::printf(
+            "merge R%d: worst relative difference %.2e, %zu of %zu values one binary16 "
+            "step apart\n",
+            n, d.worst, d.roundingSteps, cpu.halves().size());
+        EXPECT_LT(d.worst, 1e-4f) << "level " << n;
+        EXPECT_LE(d.roundingSteps * 1000, cpu.halves().size()) << "level " << n;
         upperCpu = std::move(cpu);
     }
 }
@@ -136,7 +164,11 @@ TEST_F(HrcPasses, ReadoutMatchesReadOut) {
         ConeBuffer cones;
         cones.reset(frame.length, 1, frame.rows);  // R_0: one cone per plane
         Pcg32 rng(r + 1);
-        for (Rgb& c : cones.data()) c = Rgb(rng.nextFloat(), rng.nextFloat(), rng.nextFloat());
+        for (int p = 0; p < cones.planes(); ++p) {
+            for (int y = 0; y < cones.rows(); ++y) {
+                cones.set(p, 0, y, Rgb(rng.nextFloat(), rng.nextFloat(), rng.nextFloat()));
+            }
+        }
         Image cpu(w, h, 3), gpu(w, h, 3);
         for (std::size_t i = 0; i < cpu.size(); ++i) cpu.data()[i] = gpu.data()[i] = 0.25f;
         const Rgb sky(0.5f, 0.25f, 2.0f);

@@ -289,7 +289,8 @@ TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
 }
 
 // The element structs of the buffers that used to be bare float/uint arrays: the 2D medium, the
-// RGB buffers (cones, accumulators, cascades, fluence), the HRC table entries, the voxel output.
+// RGB buffers (accumulators, cascades, fluence), the HRC table entries and cone words, the voxel
+// output.
 TEST(GpuSharedLayout, BufferElementStructs) {
     LUXEL_REQUIRE_EMBEDDED_SHADERS();
     const CppLayout medium{
@@ -304,10 +305,14 @@ TEST(GpuSharedLayout, BufferElementStructs) {
         sizeof(RgbTexel),
         {LUXEL_MEMBER(RgbTexel, r), LUXEL_MEMBER(RgbTexel, g), LUXEL_MEMBER(RgbTexel, b)}};
     for (const auto& [shader, binding] :
-         {std::pair{"hrc_merge", 1u}, std::pair{"hrc_merge", 2u}, std::pair{"hrc_readout", 0u},
-          std::pair{"hrc_readout", 1u}, std::pair{"hrc_finish", 1u}, std::pair{"hrc_finish", 2u},
+         {std::pair{"hrc_readout", 1u}, std::pair{"hrc_finish", 1u}, std::pair{"hrc_finish", 2u},
           std::pair{"rc_cascade", 1u}, std::pair{"rc_cascade", 2u}}) {
         expectBuffer(shader, binding, rgb);
+    }
+    const CppLayout cones{sizeof(HrcConePair), {LUXEL_MEMBER(HrcConePair, evenOddRows)}};
+    for (const auto& [shader, binding] :
+         {std::pair{"hrc_merge", 1u}, std::pair{"hrc_merge", 2u}, std::pair{"hrc_readout", 0u}}) {
+        expectBuffer(shader, binding, cones);
     }
     const CppLayout entry{sizeof(HrcTableEntry),
                           {LUXEL_MEMBER(HrcTableEntry, radianceRG),

@@ -2,6 +2,7 @@
 #include "gi2d/hrc/cone_merge.h"
 
 #include "gi2d/hrc/hrc_geometry.h"
+#include "gpu/shaders/shared/hrc_kernels.h"
 #include "luxel/core/parallel.h"
 
 namespace luxel::gi2d::hrc {
@@ -10,7 +11,14 @@ void ConeBuffer::reset(int planes, int cones, int rows) {
     planes_ = planes;
     cones_ = cones;
     rows_ = rows;
-    data_.resize(static_cast<std::size_t>(planes) * cones * rows);
+    stride_ = gpu::shared::hrcConeRowHalves(static_cast<std::uint32_t>(rows));
+    // Padding rows stay zero, as hrc_merge writes them.
+    data_.assign(static_cast<std::size_t>(planes) * cones * 3 * stride_, 0);
+}
+
+std::uint64_t ConeBuffer::bytesFor(int planes, int cones, int rows) {
+    return static_cast<std::uint64_t>(planes) * cones * 3 *
+           gpu::shared::hrcConeRowHalves(static_cast<std::uint32_t>(rows)) * sizeof(std::uint16_t);
 }
 
 std::vector<float> coneWeights(int level) {
@@ -64,7 +72,7 @@ void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb s
                                                          upperRows(p / 2 + 1, y + 2 * dy, axis, j));
                     }
                 }
-                out.at(p, i, y) = toRgb(sum);
+                out.set(p, i, y, toRgb(sum));
             }
         }
     });

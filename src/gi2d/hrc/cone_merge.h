@@ -1,13 +1,17 @@
 // HRC cone merging, top-down (docs/algorithms/holographic-radiance-cascades.md §5; paper Eq 13-17).
 // R_n(p, y, i) is the angular fluence of cone i at probe (plane p, row y) of cascade n: radiance
-// integrated over the cone's angle, everything beyond included. Stored as float RGB, rows
-// innermost: ((p * 2^n + i) * rows + y).
+// integrated over the cone's angle, everything beyond included. Stored as binary16 in the layout of
+// the GPU's hrc_merge (src/gpu/shaders/shared/hrc_layout.h): per (p, i) three channel planes of
+// rows, the rows padded to an even count. Arithmetic is done in float; each merged value is rounded
+// once, as the GPU and the CPU sweep round it.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
 #include "gi2d/hrc/ray_tables.h"
+#include "luxel/core/half.h"
 #include "luxel/core/vec.h"
 
 namespace luxel::gi2d::hrc {
@@ -21,18 +25,31 @@ class ConeBuffer {
     int rows() const { return rows_; }
 
     bool inRange(int p, int y) const { return p >= 0 && p < planes_ && y >= 0 && y < rows_; }
-    Rgb& at(int p, int i, int y) { return data_[index(p, i, y)]; }
-    const Rgb& at(int p, int i, int y) const { return data_[index(p, i, y)]; }
-    // Every entry in memory order (GPU uploads and readbacks: the hrc_merge layout).
-    std::span<Rgb> data() { return data_; }
-    std::span<const Rgb> data() const { return data_; }
+    Rgb at(int p, int i, int y) const {
+        const std::size_t r = index(p, i, 0, y);
+        return {halfToFloat(data_[r]), halfToFloat(data_[r + stride_]),
+                halfToFloat(data_[r + 2 * stride_])};
+    }
+    void set(int p, int i, int y, Rgb value) {
+        const std::size_t r = index(p, i, 0, y);
+        data_[r] = floatToHalf(value.r);
+        data_[r + stride_] = floatToHalf(value.g);
+        data_[r + 2 * stride_] = floatToHalf(value.b);
+    }
+    // Every binary16 value in memory order (GPU uploads and readbacks: the hrc_merge layout).
+    std::span<std::uint16_t> halves() { return data_; }
+    std::span<const std::uint16_t> halves() const { return data_; }
+
+    // Bytes of a buffer of this shape.
+    static std::uint64_t bytesFor(int planes, int cones, int rows);
 
   private:
-    std::size_t index(int p, int i, int y) const {
-        return (static_cast<std::size_t>(p) * cones_ + i) * rows_ + y;
+    std::size_t index(int p, int i, int c, int y) const {
+        return ((static_cast<std::size_t>(p) * cones_ + i) * 3 + c) * stride_ + y;
     }
     int planes_ = 0, cones_ = 0, rows_ = 0;
-    std::vector<Rgb> data_;
+    std::size_t stride_ = 0;  // values per channel plane: the rows padded to an even count
+    std::vector<std::uint16_t> data_;
 };
 
 // Angular weights of cascade n+1's cones (docs/algorithms/holographic-radiance-cascades.md §5, Eq

@@ -49,7 +49,7 @@ Result<double> runOne(gpu::Context& context, const gpu::Dispatch& dispatch) {
 }
 
 std::span<const std::byte> coneBytes(const ConeBuffer& c) {
-    return std::as_bytes(c.data());
+    return std::as_bytes(c.halves());
 }
 
 }  // namespace
@@ -93,7 +93,8 @@ gpu::Dispatch makeMergeDispatch(gpu::Program* program, gpu::Buffer* table, gpu::
     d.buffers = {table, upper ? upper : out, out, weights};
     d.setPush(shared::HrcMergeParams{u32(n), u32(rows), u32(planes), upper ? u32(upperPlanes) : 0u,
                                      upper ? 1u : 0u, sky.r, sky.g, sky.b});
-    d.setThreads(u32(rows), pow2(n), u32(planes));
+    // Two rows per invocation: a 32-bit word holds two rows of binary16 cones (hrc_layout.h).
+    d.setThreads((u32(rows) + 1) / 2, pow2(n), u32(planes));
     return d;
 }
 
@@ -177,13 +178,13 @@ Result<double> mergeCascadeOnGpu(gpu::Context& context, const RayTables& tables,
     if (upper) upperBuffer = scratch.upload(coneBytes(*upper));
     if (!upperBuffer) return upperBuffer.error();
     out.reset(tables.planes(n), pow2(n), tables.rows());
-    auto outBuffer = scratch.create(out.data().size_bytes());
+    auto outBuffer = scratch.create(out.halves().size_bytes());
     if (!outBuffer) return outBuffer.error();
     auto ms = runOne(context, makeMergeDispatch(*program, *table, *upperBuffer, *outBuffer,
                                                 *weightBuffer, n, tables.rows(), tables.planes(n),
                                                 upper ? upper->planes() : 0, sky));
     if (!ms) return ms;
-    if (Status s = context.download(**outBuffer, std::as_writable_bytes(out.data())); !s) {
+    if (Status s = context.download(**outBuffer, std::as_writable_bytes(out.halves())); !s) {
         return s.error();
     }
     return ms;

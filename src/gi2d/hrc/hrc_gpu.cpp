@@ -34,14 +34,14 @@ std::uint64_t tableEntries(int width, int height, int n) {
     return most;
 }
 
-std::uint64_t coneEntries(int width, int height) {
+// Bytes of the largest R_n (binary16, hrc_layout.h) of either frame orientation.
+std::uint64_t coneBytes(int width, int height) {
     std::uint64_t most = 0;
     for (int n = 0; n < hrcCascadeCount(width, height); ++n) {
         for (int r = 0; r < 2; ++r) {
             const FrustumFrame f = makeFrame(static_cast<Frustum>(r), width, height);
             if (n >= cascadeCount(f.length)) continue;
-            most = std::max<std::uint64_t>(
-                most, static_cast<std::uint64_t>(planeCount(f.length, n)) * pow2(n) * f.rows);
+            most = std::max(most, ConeBuffer::bytesFor(planeCount(f.length, n), pow2(n), f.rows));
         }
     }
     return most;
@@ -55,9 +55,9 @@ std::uint64_t estimateHrcGpuMemory(int width, int height) {
         bytes += tableEntries(width, height, n) * LUXEL_HRC_ENTRY_WORDS * 4;
     }
     const std::uint64_t pixels = static_cast<std::uint64_t>(width) * height;
-    bytes += 2 * coneEntries(width, height) * 12;  // two R buffers
-    bytes += 2 * pixels * 24;                      // the canvas medium, row- and column-major
-    bytes += 2 * pixels * 12;                      // accumulator and fluence
+    bytes += 2 * coneBytes(width, height);  // two R buffers
+    bytes += 2 * pixels * 24;               // the canvas medium, row- and column-major
+    bytes += 2 * pixels * 12;               // accumulator and fluence
     return bytes;
 }
 
@@ -108,7 +108,7 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
     }
     std::shared_ptr<gpu::Buffer> cones[2];
     for (auto& c : cones) {
-        auto b = context.createBuffer(coneEntries(w, h) * 12);
+        auto b = context.createBuffer(coneBytes(w, h));
         if (!b) return b.error();
         c = *b;
     }

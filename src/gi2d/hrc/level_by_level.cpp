@@ -20,10 +20,9 @@ std::uint64_t levelByLevelBytes(int width, int height) {
         tables = std::max(tables, RayTables::bytesFor(f.length, f.rows, levels));
         std::uint64_t most = 0;
         for (int n = 0; n < levels; ++n) {
-            most = std::max<std::uint64_t>(
-                most, static_cast<std::uint64_t>(planeCount(f.length, n)) * pow2(n) * f.rows);
+            most = std::max(most, ConeBuffer::bytesFor(planeCount(f.length, n), pow2(n), f.rows));
         }
-        cones = std::max(cones, 2 * most * sizeof(Rgb));
+        cones = std::max(cones, 2 * most);
     }
     // The rotated medium lives while its marcher is built; the marcher lives for the frustum.
     const std::uint64_t frame = mediumBytes(width, height) + RayMarcher::bytesFor(width, height);

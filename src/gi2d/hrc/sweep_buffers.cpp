@@ -161,18 +161,18 @@ std::uint64_t ConeRing::bytesFor(int levels, int rows, int chunk) {
     std::vector<std::size_t> starts;
     const std::size_t total = layOut(
         levels, chunk, [&](int n) { return conesPerPlane(n, rows); }, slots, starts);
-    return (total + kSweepRowPad) * sizeof(float);
+    return (total + kSweepRowPad) * sizeof(std::uint16_t);
 }
 
 ConeRows ConeRing::read(int n, int p, int i, int offset) const {
     ConeRows r;
-    const float* base = data_.data() + index(n, p, i);
+    const std::uint16_t* base = data_.data() + index(n, p, i);
     for (int c = 0; c < 3; ++c) r.plane[c] = base + static_cast<std::size_t>(c) * rows_;
     r.offset = offset;
     return r;
 }
 
-float* ConeRing::plane(int n, int p, int i, int channel) {
+std::uint16_t* ConeRing::plane(int n, int p, int i, int channel) {
     return data_.data() + index(n, p, i) + static_cast<std::size_t>(channel) * rows_;
 }
 

@@ -1,6 +1,6 @@
 // What the streaming HRC solver keeps while it sweeps a frustum from its far end to its near end
 // (docs/algorithms/holographic-radiance-cascades.md §7.1): per cascade the two most recent planes
-// of ray intervals (binary16) and of merged cones (float), and a window of medium columns for the
+// of ray intervals and of merged cones (both binary16), and a window of medium columns for the
 // traced cascades. Everything a plane needs lies at most one plane ahead, so two suffice; memory
 // grows with the frame's rows times 2^levels, not with the rows times the planes of every cascade.
 #pragma once
@@ -84,7 +84,7 @@ class ConeRing {
     void reshape(int levels, int rows, int chunk);
 
     ConeRows read(int n, int p, int i, int offset = 0) const;
-    float* plane(int n, int p, int i, int channel);
+    std::uint16_t* plane(int n, int p, int i, int channel);
 
     static std::uint64_t bytesFor(int levels, int rows, int chunk);
 
@@ -96,7 +96,7 @@ class ConeRing {
     int rows_ = 0;
     std::vector<int> slots_;
     std::vector<std::size_t> levelStart_;
-    std::vector<float> data_;
+    std::vector<std::uint16_t> data_;
 };
 
 // The buffers of one sweep, reused by the frustums: the rings, and a column window per thread.

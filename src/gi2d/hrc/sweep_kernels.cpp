@@ -155,7 +155,7 @@ void ExtendRowsImpl(const IntervalRows& nearARef, const IntervalRows& farARef,
 HWY_INLINE VF LoadCone(const ConeRows& rows, int c, int y) {
     const DF df;
     if (rows.plane[0] == nullptr) return hn::Set(df, rows.fill[c]);
-    return hn::LoadU(df, rows.plane[c] + y + rows.offset);
+    return LoadHalf(rows.plane[c], y + rows.offset);
 }
 
 // (1 - s) a + s b, or a alone when s = 0 (§5.1).
@@ -167,10 +167,10 @@ HWY_INLINE VF UpperRows(const ConeRows& a, const ConeRows& b, int c, int y, floa
 }
 
 void MergeRowsImpl(bool odd, const MergeSide& side0Ref, const MergeSide& side1Ref,
-                   float secondWeight, float* const outRef[3], int y0, int y1) {
+                   float secondWeight, std::uint16_t* const outRef[3], int y0, int y1) {
     // Local copies: stores through `out` cannot alias them, so their pointers stay in registers.
     const MergeSide side0 = side0Ref, side1 = side1Ref;
-    float* const out[3] = {outRef[0], outRef[1], outRef[2]};
+    std::uint16_t* const out[3] = {outRef[0], outRef[1], outRef[2]};
     const DF df;
     const int lanes = static_cast<int>(hn::Lanes(df));
     const VF half = hn::Set(df, 0.5f);
@@ -198,7 +198,7 @@ void MergeRowsImpl(bool odd, const MergeSide& side0Ref, const MergeSide& side1Re
             }
         }
         const int count = std::min(lanes, y1 - y);
-        for (int c = 0; c < 3; ++c) StoreFloats(sum[c], out[c], y, count);
+        for (int c = 0; c < 3; ++c) StoreHalves(sum[c], out[c], y, count);
     }
 }
 
@@ -230,7 +230,7 @@ void extendRows(const IntervalRows& nearA, const IntervalRows& farA, const Inter
 }
 
 void mergeRows(bool odd, const MergeSide& side0, const MergeSide& side1, float secondWeight,
-               float* const out[3], int y0, int y1) {
+               std::uint16_t* const out[3], int y0, int y1) {
     HWY_DYNAMIC_DISPATCH(MergeRowsImpl)(odd, side0, side1, secondWeight, out, y0, y1);
 }
 

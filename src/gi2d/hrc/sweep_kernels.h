@@ -27,10 +27,10 @@ struct IntervalRowsOut {
     std::uint16_t* plane[6] = {};
 };
 
-// A cone-fluence row: three float planes read at row y + offset; `plane[0] == nullptr` reads as
+// A cone-fluence row: three binary16 planes read at row y + offset; `plane[0] == nullptr` reads as
 // the constant `fill` (the sky beyond the frame, times the cone's width).
 struct ConeRows {
-    const float* plane[3] = {};
+    const std::uint16_t* plane[3] = {};
     float fill[3] = {};
     int offset = 0;
 };
@@ -73,8 +73,8 @@ struct MergeSide {
 };
 
 // Rows [y0, y1) of R_n(p, i): the sum over the cone's two rays of Eq 14 (odd planes) or Eq 15-17
-// (even planes), written to out[c][y].
+// (even planes), summed in float and written to out[c][y] as binary16.
 void mergeRows(bool odd, const MergeSide& side0, const MergeSide& side1, float secondWeight,
-               float* const out[3], int y0, int y1);
+               std::uint16_t* const out[3], int y0, int y1);
 
 }  // namespace luxel::gi2d::hrc

@@ -10,13 +10,14 @@
 #include "gi2d/hrc/trace_stencil.h"
 #include "gpu/shaders/shared/hrc_kernels.h"
 #include "luxel/core/check.h"
+#include "luxel/core/half.h"
 
 namespace luxel::gi2d::hrc {
 namespace {
 
 namespace shared = gpu::shared;
 
-// Buffers up to this size are kept for the next solve on the same thread (1024^2 needs 48 MiB).
+// Buffers up to this size are kept for the next solve on the same thread (1024^2 needs 40 MiB).
 constexpr std::uint64_t kKeptSweepBytes = std::uint64_t{64} << 20;
 
 // Traced cascades actually used for a frame with `levels` cascades.
@@ -240,8 +241,8 @@ std::uint64_t FrustumSweep::merge(int n, int p, int y0, int y1) {
             offsets[count++] = side.upperA.offset;
             offsets[count++] = side.upperA2.offset;
         }
-        float* const out[3] = {cones_.plane(n, p, i, 0), cones_.plane(n, p, i, 1),
-                               cones_.plane(n, p, i, 2)};
+        std::uint16_t* const out[3] = {cones_.plane(n, p, i, 0), cones_.plane(n, p, i, 1),
+                                       cones_.plane(n, p, i, 2)};
         forUniformRows(y0, y1, rows_, offsets, count, [&](int a, int b) {
             MergeSide clipped[2] = {sides[0], sides[1]};
             for (MergeSide& side : clipped) {
@@ -254,9 +255,10 @@ std::uint64_t FrustumSweep::merge(int n, int p, int y0, int y1) {
             mergeRows(odd, clipped[0], clipped[1], second, out, a, b);
         });
     }
-    // Per cone: its two rays here (and on the next plane), 2 or 4 upper rows each, the output.
+    // Per cone: its two rays here (and on the next plane), 2 or 4 upper rows each, the output
+    // (intervals 12 bytes, cones 6).
     return static_cast<std::uint64_t>(pow2(n)) * rows_ *
-           (odd ? 2 * 12 + 4 * 12 + 12 : 4 * 12 + 8 * 12 + 12);
+           (odd ? 2 * 12 + 4 * 6 + 6 : 4 * 12 + 8 * 6 + 6);
 }
 
 std::uint64_t FrustumSweep::readOut(int u, int plane, int y0, int y1) {
@@ -272,12 +274,13 @@ std::uint64_t FrustumSweep::readOut(int u, int plane, int y0, int y1) {
     const Rgb sky = medium_.boundaryRadiance * LUXEL_HRC_QUARTER_TURN;
     for (int c = 0; c < 3; ++c) {
         if (plane >= 0) {
-            std::copy_n(cones_.plane(0, plane, 0, c) + y0, band, gathered(u, c));
+            halvesToFloats(cones_.plane(0, plane, 0, c) + y0, gathered(u, c),
+                           static_cast<std::size_t>(band));
         } else {
             std::fill_n(gathered(u, c), band, sky[c]);
         }
     }
-    if (u % kBlock != 0) return static_cast<std::uint64_t>(band) * 24;
+    if (u % kBlock != 0) return static_cast<std::uint64_t>(band) * 18;  // binary16 in, float out
     const int last = std::min(u + kBlock - 1, frame_.length - 1);
     const int width = beyond_.width(), height = beyond_.height();
     auto pixel = [&](int x, int y) {
@@ -305,7 +308,7 @@ std::uint64_t FrustumSweep::readOut(int u, int plane, int y0, int y1) {
             }
             break;
     }
-    return static_cast<std::uint64_t>(band) * (24 + (last - u + 1) * 24);
+    return static_cast<std::uint64_t>(band) * (18 + (last - u + 1) * 24);
 }
 
 void FrustumSweep::run(ThreadTeam& team, int member, SweepTimes* times) {

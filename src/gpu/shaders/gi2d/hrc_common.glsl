@@ -1,5 +1,5 @@
-// GLSL glue of the HRC passes: binary16 table entries (the interval arithmetic is shared with the
-// CPU in shared/hrc_kernels.h).
+// GLSL glue of the HRC passes: binary16 table entries and cones (the interval arithmetic is shared
+// with the CPU in shared/hrc_kernels.h).
 #ifndef LUXEL_HRC_COMMON_GLSL
 #define LUXEL_HRC_COMMON_GLSL
 
@@ -21,6 +21,13 @@ HrcTableEntry packEntry(HrcInterval v) {
 // Entry (p, k, y) of T_level.
 uint tableIndex(uint level, uint p, uint k, uint y, uint rows) {
     return (p * ((1u << level) + 1u) + k) * rows + y;
+}
+
+// Binary16 value `index` of a buffer of 32-bit words, given the word that holds it (even indices
+// in the low half: the cone layout of shared/hrc_layout.h).
+float halfOfWord(uint word, uint index) {
+    const vec2 both = unpackHalf2x16(word);
+    return (index & 1u) == 0u ? both.x : both.y;
 }
 
 #endif

@@ -1,15 +1,15 @@
 // HRC cone merge (docs/algorithms/holographic-radiance-cascades.md §5, paper Eq 13-17; CPU reference: mergeCascade in
-// src/gi2d/hrc/cone_merge.cpp). One invocation per (row, cone, plane).
+// src/gi2d/hrc/cone_merge.cpp). One invocation per (pair of rows, cone, plane): the cones are stored as binary16, two
+// rows per 32-bit word (shared/hrc_layout.h), so each invocation writes whole words.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/hrc_layout.h"
-#include "shared/medium_layout.h"
 #include "gi2d/hrc_common.glsl"
 
 layout(local_size_x = LUXEL_HRC_GROUP_SIZE) in;
 layout(std430, set = 0, binding = 0) readonly buffer Table { HrcTableEntry table[]; };
-layout(std430, set = 0, binding = 1) readonly buffer Upper { RgbTexel upper[]; };
-layout(std430, set = 0, binding = 2) writeonly buffer Cones { RgbTexel cones[]; };
+layout(std430, set = 0, binding = 1) readonly buffer Upper { HrcConePair upper[]; };
+layout(std430, set = 0, binding = 2) writeonly buffer Cones { HrcConePair cones[]; };
 layout(std430, set = 0, binding = 3) readonly buffer Weights { float weight[]; };
 layout(push_constant) uniform Push { HrcMergeParams params; };
 
@@ -27,7 +27,11 @@ vec3 upperAt(int p, int y, int j) {
         return vec3(params.skyR, params.skyG, params.skyB) * weight[j];
     }
     const uint upperCones = 1u << (params.level + 1u);
-    return texelRgb(upper[(uint(p) * upperCones + uint(j)) * params.rows + uint(y)]);
+    const uint r = hrcConeHalf(uint(p), upperCones, uint(j), 0u, uint(y), params.rows);
+    const uint stride = hrcConeRowHalves(params.rows);
+    return vec3(halfOfWord(upper[r >> 1].evenOddRows, r),
+                halfOfWord(upper[(r + stride) >> 1].evenOddRows, r),
+                halfOfWord(upper[(r + 2u * stride) >> 1].evenOddRows, r));
 }
 
 // Row y blended with row y + second (§5.1); row y alone from cascade 2 up.
@@ -37,18 +41,15 @@ vec3 upperRows(int p, int y, int second, int j) {
     return upperAt(p, y, j) * (1.0 - a) + upperAt(p, y + second, j) * a;
 }
 
-void main() {
-    const uint y = gl_GlobalInvocationID.x, i = gl_GlobalInvocationID.y;
-    const uint p = gl_GlobalInvocationID.z;
-    if (y >= params.rows || p >= params.planes) return;
-    const int ip = int(p), iy = int(y);
+// R_level(p, y, i): the sum over the cone's two rays.
+vec3 mergeAt(int ip, int iy, uint i) {
     vec3 sum = vec3(0.0);
     for (int s = 0; s < 2; ++s) {
         const int k = int(i) + s, j = 2 * int(i) + s;
         const int dy = hrcRayOffsetY(int(params.level), k);
         const int axis = hrcTowardsAxis(s);
         const float w = weight[j];
-        if ((p & 1u) == 1u) {  // the ray ends on upper plane (p + 1) / 2 (Eq 14)
+        if ((ip & 1) == 1) {  // the ray ends on upper plane (p + 1) / 2 (Eq 14)
             sum += hrcMergeOdd(tableAt(ip, iy, k), w, upperRows((ip + 1) / 2, iy + dy, axis, j));
         } else {  // near and far merged, then averaged (Eq 15-17)
             sum += hrcMergeEven(upperRows(ip / 2, iy, dy, j),
@@ -56,5 +57,19 @@ void main() {
                                 upperRows(ip / 2 + 1, iy + 2 * dy, axis, j));
         }
     }
-    cones[(p * (1u << params.level) + i) * params.rows + y] = rgbTexel(sum);
+    return sum;
+}
+
+void main() {
+    const uint y = 2u * gl_GlobalInvocationID.x, i = gl_GlobalInvocationID.y;
+    const uint p = gl_GlobalInvocationID.z;
+    if (y >= params.rows || p >= params.planes) return;
+    const vec3 first = mergeAt(int(p), int(y), i);
+    // The padding row of an odd row count stores zero.
+    const vec3 second = y + 1u < params.rows ? mergeAt(int(p), int(y) + 1, i) : vec3(0.0);
+    const uint out0 = hrcConeHalf(p, 1u << params.level, i, 0u, y, params.rows) >> 1;
+    const uint stride = hrcConeRowHalves(params.rows) >> 1;
+    cones[out0].evenOddRows = packHalf2x16(vec2(first.x, second.x));
+    cones[out0 + stride].evenOddRows = packHalf2x16(vec2(first.y, second.y));
+    cones[out0 + 2u * stride].evenOddRows = packHalf2x16(vec2(first.z, second.z));
 }

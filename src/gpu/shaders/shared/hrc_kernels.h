@@ -1,7 +1,8 @@
 // Per-pixel HRC arithmetic both backends run (docs/algorithms/holographic-radiance-cascades.md
 // §6.2, §7): which plane a pixel reads, the opacity gate of the cross blur (paper Eq 21), and the
-// pixel's own half-pixel segment in front of the light arriving at its read-out plane. Compiled
-// as C++ by src/gi2d/hrc/readout.cpp and finish.cpp, and as GLSL by hrc_readout and hrc_finish.
+// pixel's own half-pixel segment in front of the light arriving at its read-out plane, and where a
+// merged cone lies in memory. Compiled as C++ by src/gi2d/hrc/readout.cpp, finish.cpp and
+// cone_merge.cpp, and as GLSL by hrc_merge, hrc_readout and hrc_finish.
 #ifndef LUXEL_GPU_SHARED_HRC_KERNELS_H
 #define LUXEL_GPU_SHARED_HRC_KERNELS_H
 
@@ -75,6 +76,17 @@ LUXEL_FUNC int hrcTowardsAxis(int side) {
 // The second row's weight: 1/2 at cascade 0, 1/4 at cascade 1, none above (chosen by measurement).
 LUXEL_FUNC float hrcSecondRowWeight(int level) {
     return level == 0 ? 0.5f : (level == 1 ? 0.25f : 0.0f);
+}
+
+// Values per channel plane of a merged cone (hrc_layout.h): the rows padded to an even count.
+LUXEL_FUNC uint hrcConeRowHalves(uint rows) {
+    return (rows + 1u) & ~1u;
+}
+
+// Where channel c of cone i of plane p, row y lies among the binary16 values of R_n (hrc_layout.h);
+// `cones` = 2^n.
+LUXEL_FUNC uint hrcConeHalf(uint p, uint cones, uint i, uint c, uint y, uint rows) {
+    return ((p * cones + i) * 3u + c) * hrcConeRowHalves(rows) + y;
 }
 
 // The first plane of cascade `level` at or beyond u + 1: the read-out plane one pixel ahead.

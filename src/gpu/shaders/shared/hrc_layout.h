@@ -4,6 +4,12 @@
 // Ray table T_n in memory (binary16, rows innermost), one entry = 3 words:
 //   word 0: L.r | L.g << 16    word 1: L.b | T.r << 16    word 2: T.g | T.b << 16
 //   entry index = (p * (2^n + 1) + k) * rows + y
+//
+// Merged cones R_n in memory (binary16, channel planes, rows innermost): cone i of plane p holds
+// three planes (r, g, b) of hrcConeRowHalves(rows) values, the rows padded to an even count, so
+// that a 32-bit word holds rows y and y + 1 of one channel (y even in the low half):
+//   half index = ((p * 2^n + i) * 3 + c) * hrcConeRowHalves(rows) + y   (hrc_kernels.h)
+// hrc_merge writes whole words: each invocation merges two rows.
 #ifndef LUXEL_GPU_SHARED_HRC_LAYOUT_H
 #define LUXEL_GPU_SHARED_HRC_LAYOUT_H
 
@@ -24,6 +30,11 @@ struct HrcTableEntry {
     uint radianceRG;               // L.r | L.g << 16 (binary16)
     uint radianceBTransmittanceR;  // L.b | T.r << 16
     uint transmittanceGB;          // T.g | T.b << 16
+};
+
+// One word of a merged-cone buffer (the cone layout above): one channel of two neighbouring rows.
+struct HrcConePair {
+    uint evenOddRows;  // row y | row y + 1 << 16 (binary16, y even)
 };
 
 // Push constants of hrc_extend: builds T_level from T_{level-1}.
@@ -52,7 +63,7 @@ struct HrcTraceParams {
 };
 
 // Push constants of hrc_merge: R_level from R_{level+1} (hasUpper = 0 at the top cascade).
-// R buffers: three floats per entry, index (p * 2^level + i) * rows + y.
+// R buffers: binary16 channel planes, the cone layout above.
 struct HrcMergeParams {
     uint level;
     uint rows;
@@ -62,8 +73,8 @@ struct HrcMergeParams {
     float skyR, skyG, skyB;  // boundary radiance
 };
 
-// Push constants of hrc_readout: adds R_0 at the plane beyond each pixel into the canvas-space
-// accumulator (three floats per canvas pixel).
+// Push constants of hrc_readout: adds R_0 (the cone layout above) at the plane beyond each pixel
+// into the canvas-space accumulator (three floats per canvas pixel).
 struct HrcReadoutParams {
     uint frustum;  // 0 +x, 1 +y, 2 -x, 3 -y
     uint frameLength;
@@ -84,6 +95,7 @@ struct HrcFinishParams {
 
 #ifdef __cplusplus
 static_assert(sizeof(HrcTableEntry) == LUXEL_HRC_ENTRY_WORDS * 4);
+static_assert(sizeof(HrcConePair) == 4);
 static_assert(sizeof(HrcTraceParams) == 32);
 static_assert(offsetof(HrcTraceParams, frustum) == 16);
 static_assert(sizeof(HrcMergeParams) == 32);

@@ -14,8 +14,8 @@ struct MediumTexel {
     float emissionR, emissionG, emissionB;  // emitted radiance per pixel length
 };
 
-// One RGB value of the 2D passes' float buffers (HRC cones and accumulators, RC cascades, the
-// fluence): three floats, 12 bytes, no padding in std430.
+// One RGB value of the 2D passes' float buffers (HRC accumulators, RC cascades, the fluence):
+// three floats, 12 bytes, no padding in std430.
 struct RgbTexel {
     float r, g, b;
 };
