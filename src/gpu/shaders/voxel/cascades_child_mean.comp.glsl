@@ -1,6 +1,6 @@
 // Voxel radiance cascades: each bin's four children averaged by solid angle, for the level below
-// (voxel-radiance-cascades.md §2; CPU: mergeLevel in src/voxel/cascades/cascade_light.cpp). One
-// invocation per (probe, bin of the level below).
+// (docs/algorithms/voxel-radiance-cascades.md §2; CPU: mergeLevel in
+// src/voxel/cascades/cascade_light.cpp). One invocation per (probe, bin of the level below).
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/medium_layout.h"

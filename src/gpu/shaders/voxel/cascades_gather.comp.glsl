@@ -1,6 +1,6 @@
 // Voxel radiance cascades: each face's irradiance through its own segments and level 0
-// (voxel-radiance-cascades.md §4; CPU: lightingPass in src/voxel/cascades/cascade_light.cpp).
-// One invocation per face.
+// (docs/algorithms/voxel-radiance-cascades.md §4; CPU: lightingPass in
+// src/voxel/cascades/cascade_light.cpp). One invocation per face.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/medium_layout.h"
