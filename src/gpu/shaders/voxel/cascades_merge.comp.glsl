@@ -1,6 +1,6 @@
-// Voxel radiance cascades: one level merged from the level above (docs/algorithms/voxel-radiance-
-// cascades.md §4; CPU: mergeLevel in src/voxel/cascades/cascade_light.cpp). One invocation per
-// (probe, bin).
+// Voxel radiance cascades: one level merged from the level above
+// (docs/algorithms/voxel-radiance-cascades.md §4; CPU: mergeLevel in
+// src/voxel/cascades/cascade_light.cpp). One invocation per (probe, bin).
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/medium_layout.h"

@@ -1,6 +1,6 @@
-// Voxel radiance cascades: what each face sends this pass (docs/algorithms/voxel-radiance-
-// cascades.md §4; CPU: lightingPass in src/voxel/cascades/cascade_light.cpp). One invocation per
-// face.
+// Voxel radiance cascades: what each face sends this pass
+// (docs/algorithms/voxel-radiance-cascades.md §4; CPU: lightingPass in
+// src/voxel/cascades/cascade_light.cpp). One invocation per face.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/medium_layout.h"
