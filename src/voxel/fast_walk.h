@@ -19,7 +19,6 @@
 #include <cstdlib>
 #include <limits>
 
-#include "voxel/brick_blocks.h"
 #include "voxel/voxel_world_access.h"
 
 namespace luxel::voxel::fast {
@@ -75,31 +74,68 @@ inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, doub
                static_cast<unsigned>(z.cell) >= static_cast<unsigned>(z.size);
     };
     constexpr int kShift = VoxelWorld::kBrickShift;
-
-    // Leaving the box of empty cells [l, h] around the current cell (voxelLeaveBox). The exit: the
-    // first box plane crossed, lowest axis on ties (tJump = inf when the ray never leaves).
-    struct Box {
-        int lx, ly, lz, hx, hy, hz;
-    };
-    struct Exit {
-        double t;
-        int axis;
-    };
-    const auto boxExit = [&](const Box& b) {
-        const double tx = x.stp != 0 ? x.exitAt(x.stp > 0 ? b.hx : b.lx) : kInf;
-        const double ty = y.stp != 0 ? y.exitAt(y.stp > 0 ? b.hy : b.ly) : kInf;
-        const double tz = z.stp != 0 ? z.exitAt(z.stp > 0 ? b.hz : b.lz) : kInf;
-        Exit e{tx, 0};
-        if (ty < e.t) e = {ty, 1};
-        if (tz < e.t) e = {tz, 2};
-        return e;
-    };
-    // Moves to the cell the per-voxel loop reaches when it leaves the box through `e`; false when
-    // that is outside the world or past tMax.
-    const auto leaveBox = [&](const Box& b, Exit e) {
-        const double tJump = e.t;
-        // A crossing axis other than e.axis: the first cell whose exit the per-voxel loop has not
-        // yet taken when it steps e.axis at tJump (taken: earlier, or tied and a lower axis).
+    for (;;) {
+        if (steps >= cap) return miss(true);
+        ++steps;
+        const int bx = x.cell >> kShift, by = y.cell >> kShift, bz = z.cell >> kShift;
+        const std::uint64_t mask = world.brickMask(bx, by, bz);
+        if (mask != 0) {
+            // Voxels of this brick, one A&W step each, until one is solid or the walk leaves the
+            // brick (the mask stays in a register meanwhile).
+            for (;;) {
+                if ((mask >> VoxelWorld::brickBit(x.cell, y.cell, z.cell)) & 1u) {
+                    return shared::VoxelTrace(true, false, shared::ivec3(x.cell, y.cell, z.cell), t,
+                                              axis, shared::ivec3(x.stp, y.stp, z.stp), steps);
+                }
+                // One A&W step (voxelStepOne): the smallest next boundary, lowest axis on ties.
+                // Branches, not selects: along a ray the axis pattern is regular enough to
+                // predict, and a predicted branch does not wait for the comparison.
+                const auto step = [&](Axis& s, int a, int brick) {
+                    t = s.next;
+                    s.cell += s.stp;
+                    axis = a;
+                    if (static_cast<unsigned>(s.cell) >= static_cast<unsigned>(s.size) ||
+                        t > tMax) {
+                        return -1;
+                    }
+                    s.next = s.exitAt(s.cell);
+                    return (s.cell >> kShift) != brick ? 0 : 1;
+                };
+                int stayed;
+                if (x.next <= y.next ? x.next <= z.next : false) {
+                    if (x.next == kInf) return miss(false);
+                    stayed = step(x, 0, bx);
+                } else if (!(x.next <= y.next) && y.next <= z.next) {
+                    if (y.next == kInf) return miss(false);
+                    stayed = step(y, 1, by);
+                } else {
+                    if (z.next == kInf) return miss(false);
+                    stayed = step(z, 2, bz);
+                }
+                if (stayed < 0) return miss(false);
+                if (stayed == 0) break;  // into another brick: the outer loop reads its mask
+                // The loop head again, for a cell of the same brick.
+                if (steps >= cap) return miss(true);
+                ++steps;
+            }
+            continue;
+        }
+        // An empty brick: leave the empty box of bricks around it (voxelLeaveBox).
+        const int r = world.brickDistance(bx, by, bz) - 1;
+        const auto lo = [&](int b) { return std::max((b - r) << kShift, 0); };
+        const auto hi = [&](int b, int n) { return std::min((b + r + 1) << kShift, n) - 1; };
+        const int lx = lo(bx), ly = lo(by), lz = lo(bz);
+        const int hx = hi(bx, x.size), hy = hi(by, y.size), hz = hi(bz, z.size);
+        const double tx = x.stp != 0 ? x.exitAt(x.stp > 0 ? hx : lx) : kInf;
+        const double ty = y.stp != 0 ? y.exitAt(y.stp > 0 ? hy : ly) : kInf;
+        const double tz = z.stp != 0 ? z.exitAt(z.stp > 0 ? hz : lz) : kInf;
+        int a = 0;
+        double tJump = tx;
+        if (ty < tJump) a = 1, tJump = ty;
+        if (tz < tJump) a = 2, tJump = tz;
+        if (tJump == kInf) return miss(false);
+        // A crossing axis other than a: the first cell whose exit the per-voxel loop has not yet
+        // taken when it steps axis a at tJump (taken: earlier, or tied and a lower axis).
         const auto settle = [&](Axis& s, int boxLo, int boxHi, bool lowerThanA) {
             if (s.stp == 0) return;
             const auto taken = [&](double tc) { return tc < tJump || (tc == tJump && lowerThanA); };
@@ -126,109 +162,25 @@ inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, doub
         const auto cross = [&](Axis& s, int boxLo, int boxHi) {
             s.cell = s.stp > 0 ? boxHi + 1 : boxLo - 1;
         };
-        if (e.axis == 0) {
-            settle(y, b.ly, b.hy, false);
-            settle(z, b.lz, b.hz, false);
-            cross(x, b.lx, b.hx);
-        } else if (e.axis == 1) {
-            settle(x, b.lx, b.hx, true);
-            settle(z, b.lz, b.hz, false);
-            cross(y, b.ly, b.hy);
+        if (a == 0) {
+            settle(y, ly, hy, false);
+            settle(z, lz, hz, false);
+            cross(x, lx, hx);
+        } else if (a == 1) {
+            settle(x, lx, hx, true);
+            settle(z, lz, hz, false);
+            cross(y, ly, hy);
         } else {
-            settle(x, b.lx, b.hx, true);
-            settle(y, b.ly, b.hy, true);
-            cross(z, b.lz, b.hz);
+            settle(x, lx, hx, true);
+            settle(y, ly, hy, true);
+            cross(z, lz, hz);
         }
         t = tJump;
-        axis = e.axis;
-        if (outside() || t > tMax) return false;
-        if (e.axis == 0) x.next = x.exitAt(x.cell);
-        if (e.axis == 1) y.next = y.exitAt(y.cell);
-        if (e.axis == 2) z.next = z.exitAt(z.cell);
-        return true;
-    };
-    // The empty sub-block of the current (non-empty) brick around the cell, crossed in one jump
-    // that counts the per-voxel loop's visits (one per cell step, the Manhattan distance). Taken
-    // only where the per-voxel loop could not end inside: the exit within tMax and the visits
-    // within the step cap (an exit t that overflowed to inf is left to the per-voxel steps too).
-    // 1: crossed (steps counted), 0: not taken, -1: left the world.
-    const auto crossSubBlock = [&](std::uint64_t mask) {
-        if (steps + blocks::kMaxVisits > cap) return 0;
-        const int halved = blocks::emptySubBlock(mask, x.cell & 3, y.cell & 3, z.cell & 3);
-        if (halved < 0) return 0;
-        Box b;
-        blocks::subBlockRange(x.cell, halved & 1, x.size, b.lx, b.hx);
-        blocks::subBlockRange(y.cell, halved & 2, y.size, b.ly, b.hy);
-        blocks::subBlockRange(z.cell, halved & 4, z.size, b.lz, b.hz);
-        const Exit e = boxExit(b);
-        if (!(e.t <= tMax) || e.t == kInf) return 0;
-        const int cx = x.cell, cy = y.cell, cz = z.cell;
-        const bool inside = leaveBox(b, e);
-        steps += std::abs(x.cell - cx) + std::abs(y.cell - cy) + std::abs(z.cell - cz) - 1;
-        return inside ? 1 : -1;
-    };
-
-    for (;;) {
-        if (steps >= cap) return miss(true);
-        ++steps;
-        const int bx = x.cell >> kShift, by = y.cell >> kShift, bz = z.cell >> kShift;
-        const std::uint64_t mask = world.brickMask(bx, by, bz);
-        if (mask != 0) {
-            // Voxels of this brick, one A&W step each (or one jump over an empty sub-block),
-            // until one is solid or the walk leaves the brick (the mask stays in a register
-            // meanwhile).
-            for (;;) {
-                if ((mask >> VoxelWorld::brickBit(x.cell, y.cell, z.cell)) & 1u) {
-                    return shared::VoxelTrace(true, false, shared::ivec3(x.cell, y.cell, z.cell), t,
-                                              axis, shared::ivec3(x.stp, y.stp, z.stp), steps);
-                }
-                int stayed;
-                if (const int crossed = crossSubBlock(mask); crossed != 0) {
-                    if (crossed < 0) return miss(false);
-                    stayed = (x.cell >> kShift) == bx && (y.cell >> kShift) == by &&
-                             (z.cell >> kShift) == bz;
-                } else {
-                    // One A&W step (voxelStepOne): the smallest next boundary, lowest axis on
-                    // ties. Branches, not selects: along a ray the axis pattern is regular enough
-                    // to predict, and a predicted branch does not wait for the comparison.
-                    const auto step = [&](Axis& s, int a, int brick) {
-                        t = s.next;
-                        s.cell += s.stp;
-                        axis = a;
-                        if (static_cast<unsigned>(s.cell) >= static_cast<unsigned>(s.size) ||
-                            t > tMax) {
-                            return -1;
-                        }
-                        s.next = s.exitAt(s.cell);
-                        return (s.cell >> kShift) != brick ? 0 : 1;
-                    };
-                    if (x.next <= y.next ? x.next <= z.next : false) {
-                        if (x.next == kInf) return miss(false);
-                        stayed = step(x, 0, bx);
-                    } else if (!(x.next <= y.next) && y.next <= z.next) {
-                        if (y.next == kInf) return miss(false);
-                        stayed = step(y, 1, by);
-                    } else {
-                        if (z.next == kInf) return miss(false);
-                        stayed = step(z, 2, bz);
-                    }
-                    if (stayed < 0) return miss(false);
-                }
-                if (stayed == 0) break;  // into another brick: the outer loop reads its mask
-                // The loop head again, for a cell of the same brick.
-                if (steps >= cap) return miss(true);
-                ++steps;
-            }
-            continue;
-        }
-        // An empty brick: leave the empty box of bricks around it (voxelLeaveBox).
-        const int r = world.brickDistance(bx, by, bz) - 1;
-        const auto lo = [&](int b) { return std::max((b - r) << kShift, 0); };
-        const auto hi = [&](int b, int n) { return std::min((b + r + 1) << kShift, n) - 1; };
-        const Box box{lo(bx), lo(by), lo(bz), hi(bx, x.size), hi(by, y.size), hi(bz, z.size)};
-        const Exit e = boxExit(box);
-        if (e.t == kInf) return miss(false);
-        if (!leaveBox(box, e)) return miss(false);
+        axis = a;
+        if (outside() || t > tMax) return miss(false);
+        if (a == 0) x.next = x.exitAt(x.cell);
+        if (a == 1) y.next = y.exitAt(y.cell);
+        if (a == 2) z.next = z.exitAt(z.cell);
     }
 }
 

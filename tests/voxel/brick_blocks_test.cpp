@@ -1,8 +1,8 @@
-// Jumps over the empty sub-blocks of non-empty bricks (src/voxel/brick_blocks.h): the sub-block
-// choice against a brute force over the brick's cells, and castRay, occluded and the batch calls
+// Jumps over the empty halves of non-empty bricks (src/voxel/brick_blocks.h, taken by the SIMD
+// walk): the half masks against the brick's cells, and castRay, occluded and the batch calls
 // against the plain per-voxel DDA (every field but `steps`) and the shared kernel (every field,
 // `steps` included) on random worlds whose bricks are partly filled, with tMax and step caps that
-// end rays inside a sub-block, partial bricks at the world's far sides and voxels removed after
+// end rays inside a half, partial bricks at the world's far sides and voxels removed after
 // the distances were computed.
 #include <gtest/gtest.h>
 
@@ -19,80 +19,31 @@ namespace {
 
 constexpr Voxel kStone{90, 90, 90, 255};
 
-bool solidIn(std::uint64_t mask, int x, int y, int z) {
-    return (mask >> VoxelWorld::brickBit(x, y, z)) & 1u;
-}
-
-// Whether the box of local cells halved as `halved` says (bit a: 2 cells along axis a) around
-// (x, y, z) holds no solid voxel, by visiting its cells.
-bool boxEmpty(std::uint64_t mask, int halved, int x, int y, int z) {
-    const int c[3] = {x, y, z};
-    int lo[3], hi[3];
+// Each half mask holds exactly the 32 cells of its half.
+TEST(VoxelBrickBlocks, HalfMasksHoldTheirHalves) {
+    const std::uint64_t* halves[3] = {blocks::kHalfX, blocks::kHalfY, blocks::kHalfZ};
     for (int a = 0; a < 3; ++a) {
-        const bool half = (halved >> a) & 1;
-        lo[a] = c[a] & (half ? ~1 : ~3);
-        hi[a] = lo[a] + (half ? 1 : 3);
-    }
-    for (int k = lo[2]; k <= hi[2]; ++k)
-        for (int j = lo[1]; j <= hi[1]; ++j)
-            for (int i = lo[0]; i <= hi[0]; ++i)
-                if (solidIn(mask, i, j, k)) return false;
-    return true;
-}
-
-TEST(VoxelBrickBlocks, SubBlockIsTheFirstEmptyOneInOrder) {
-    std::mt19937_64 rng(5);
-    const int order[] = {2, 1, 4, 1 | 2, 2 | 4, 1 | 4, 1 | 2 | 4};
-    int found = 0, none = 0;
-    for (int trial = 0; trial < 3000; ++trial) {
-        // Masks from one voxel to half full, and layered ones (a filled lower half).
-        std::uint64_t mask = 0;
-        const int solid = 1 + trial % 24;
-        for (int i = 0; i < solid; ++i) mask |= std::uint64_t{1} << (rng() % 64);
-        if (trial % 5 == 0) mask |= blocks::kHalfY[0];
-        for (int z = 0; z < 4; ++z) {
-            for (int y = 0; y < 4; ++y) {
-                for (int x = 0; x < 4; ++x) {
-                    int expected = -1;
-                    for (int halved : order) {
-                        if (boxEmpty(mask, halved, x, y, z)) {
-                            expected = halved;
-                            break;
+        for (int side = 0; side < 2; ++side) {
+            std::uint64_t expected = 0;
+            for (int z = 0; z < 4; ++z) {
+                for (int y = 0; y < 4; ++y) {
+                    for (int x = 0; x < 4; ++x) {
+                        const int c[3] = {x, y, z};
+                        if ((c[a] >> 1) == side) {
+                            expected |= std::uint64_t{1} << VoxelWorld::brickBit(x, y, z);
                         }
-                    }
-                    ASSERT_EQ(blocks::emptySubBlock(mask, x, y, z), expected)
-                        << std::hex << mask << std::dec << " at " << x << " " << y << " " << z;
-                    if (expected < 0) {
-                        ++none;
-                    } else {
-                        ++found;
                     }
                 }
             }
+            EXPECT_EQ(halves[a][side], expected) << a << " " << side;
         }
     }
-    EXPECT_GT(found, 20000);
-    EXPECT_GT(none, 20000);
-}
-
-TEST(VoxelBrickBlocks, SubBlockRangeIsClippedToTheWorld) {
-    int lo = 0, hi = 0;
-    blocks::subBlockRange(13, true, 64, lo, hi);
-    EXPECT_EQ(lo, 12);
-    EXPECT_EQ(hi, 13);
-    blocks::subBlockRange(14, false, 64, lo, hi);
-    EXPECT_EQ(lo, 12);
-    EXPECT_EQ(hi, 15);
-    blocks::subBlockRange(61, false, 63, lo, hi);  // the last brick holds 3 cells
-    EXPECT_EQ(lo, 60);
-    EXPECT_EQ(hi, 62);
-    blocks::subBlockRange(62, true, 63, lo, hi);
-    EXPECT_EQ(lo, 62);
-    EXPECT_EQ(hi, 62);
+    // A 6-connected walk through a 4x2x4 box visits at most 4 + 2 + 4 - 2 cells.
+    EXPECT_EQ(blocks::kMaxVisits, 8);
 }
 
 // Random voxels of a given density in random bricks, plus ground layers of uneven height: bricks
-// that are partly full, so most visits inside them are in empty sub-blocks.
+// that are partly full, so many visits inside them are in empty halves.
 VoxelWorld randomWorld(Int3 size, std::uint64_t seed) {
     VoxelWorld world = VoxelWorld::create(size, 8).value();
     std::mt19937_64 rng(seed);
@@ -185,7 +136,7 @@ TEST(VoxelBrickBlocks, CastsMatchThePlainWalkOnRandomWorlds) {
     }
 }
 
-// tMax and caps that end the per-voxel walk inside an empty sub-block: the jump must not be
+// tMax and caps that end the per-voxel walk inside an empty half: the jump must not be
 // taken there, so the miss and its `steps` are the per-voxel loop's.
 TEST(VoxelBrickBlocks, TMaxAndStepCapEndRaysInsideSubBlocks) {
     const Int3 size{40, 36, 40};
@@ -203,7 +154,7 @@ TEST(VoxelBrickBlocks, TMaxAndStepCapEndRaysInsideSubBlocks) {
 }
 
 // Removing voxels keeps the distances current (only conservative), so the jumps run on the
-// changed masks: sub-blocks that just became empty are crossed, and still exactly.
+// changed masks: halves that just became empty are crossed, and still exactly.
 TEST(VoxelBrickBlocks, RemovedVoxelsAreCrossedExactly) {
     const Int3 size{44, 40, 44};
     VoxelWorld world = randomWorld(size, 8);
