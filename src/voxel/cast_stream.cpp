@@ -319,7 +319,7 @@ void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::V
             // In a non-empty brick, the empty half around the cell (y first, then x, then z:
             // ground and walls are mostly horizontal or vertical layers) where the step cap allows
             // its visits; hx2 etc.: the axis the half halves (2 cells), the others span the brick.
-            // Quarter columns and octants would save about 2% more visits than their tests cost.
+            // Quarter columns and octants would save 0.5-1.6% more iterations: less than they cost.
             const auto halfMask = [&](V u, const std::uint64_t(&h)[2]) {
                 return hn::IfThenElse(hn::RebindMask(du, hn::Ge(u, two)), hn::Set(du, h[1]),
                                       hn::Set(du, h[0]));
