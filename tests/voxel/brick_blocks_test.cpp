@@ -138,7 +138,7 @@ TEST(VoxelBrickBlocks, CastsMatchThePlainWalkOnRandomWorlds) {
 
 // tMax and caps that end the per-voxel walk inside an empty half: the jump must not be
 // taken there, so the miss and its `steps` are the per-voxel loop's.
-TEST(VoxelBrickBlocks, TMaxAndStepCapEndRaysInsideSubBlocks) {
+TEST(VoxelBrickBlocks, TMaxAndStepCapEndRaysInsideHalves) {
     const Int3 size{40, 36, 40};
     const VoxelWorld world = randomWorld(size, 3);
     const std::vector<Ray> rays = randomRays(size, 3000, 4);
