@@ -69,6 +69,14 @@ void VoxelWorld::set(int x, int y, int z, Voxel v) {
                                       (x >> kBrickShift)];
         if (mask == 0) emptySpaceStale_.value.store(true, std::memory_order_relaxed);
         mask ^= std::uint64_t{1} << brickBit(x, y, z);
+        // A brick that lost its last solid voxel is at least 1 from solid space: its distance
+        // 0 would give traversal an empty box of radius -1 (inverted, left the wrong way).
+        if (mask == 0) {
+            brickDistance_[(static_cast<std::size_t>(z >> kBrickShift) * brickCount_.y +
+                            (y >> kBrickShift)) *
+                               brickCount_.x +
+                           (x >> kBrickShift)] = 1;
+        }
     }
     slot = v;
 }

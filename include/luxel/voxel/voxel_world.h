@@ -69,7 +69,8 @@ class VoxelWorld {
     // brick with a solid voxel (0 for such a brick), capped at kMaxBrickDistance. The box of bricks
     // within distance - 1 holds no solid voxel, so traversal may cross it in one jump.
     // Only meaningful while emptySpaceCurrent(): set() makes the distances stale when a brick gains
-    // its first solid voxel (removals only make them conservative), and refreshEmptySpace()
+    // its first solid voxel (removals only make them conservative; a brick that loses its last
+    // solid voxel gets distance 1, its own empty box), and refreshEmptySpace()
     // recomputes them. Generators, importers and scene loading refresh when they finish.
     static constexpr int kMaxBrickDistance = 32;
     std::uint8_t brickDistance(int bx, int by, int bz) const {
