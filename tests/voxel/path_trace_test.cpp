@@ -8,47 +8,18 @@
 
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/path_trace.h"
+#include "voxel/plain_light_worlds.h"
 
 namespace {
 
 using namespace luxel;
 using namespace luxel::voxel;
+using namespace luxel::voxel::test;
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr Voxel kWhite{255, 255, 255, 255};
-
-VoxelWorld makeWorld(Int3 size) {
-    auto world = VoxelWorld::create(size, 8);
-    EXPECT_TRUE(world.ok());
-    return std::move(*world);
-}
 
 void finish(VoxelWorld& world) {
     world.refreshEmptySpace();
-}
-
-// Light only from the materials and the sky the test sets; plain diffuse blocks.
-ShadeOptions plainLight(float albedo, Rgb emission, Rgb sky) {
-    ShadeOptions o;
-    o.textures = false;
-    o.sunIrradiance = Rgb(0.0f);
-    o.skyTop = o.skyHorizon = sky;
-    Material m;
-    m.name = "test";
-    m.albedo = Rgb(albedo);
-    m.emission = emission;
-    EXPECT_TRUE(o.materials.setPlain(m).ok());
-    return o;
-}
-
-// A one-voxel floor (y = 0) in a world two voxels high: every ray leaving the floor upwards sees
-// the sky at once, as from an infinite plane.
-VoxelWorld floorWorld() {
-    VoxelWorld world = makeWorld({32, 2, 32});
-    for (int z = 0; z < 32; ++z)
-        for (int x = 0; x < 32; ++x) world.set(x, 0, z, kWhite);
-    finish(world);
-    return world;
 }
 
 Camera lookingDown() {

@@ -11,34 +11,15 @@
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/radiance_cascades.h"
+#include "voxel/plain_light_worlds.h"
 
 namespace {
 
 using namespace luxel;
 using namespace luxel::voxel;
+using namespace luxel::voxel::test;
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr Voxel kWhite{255, 255, 255, 255};
-
-VoxelWorld makeWorld(Int3 size) {
-    auto world = VoxelWorld::create(size, 8);
-    EXPECT_TRUE(world.ok());
-    return std::move(*world);
-}
-
-// Light only from the materials and the sky the test sets; plain diffuse blocks.
-ShadeOptions plainLight(float albedo, Rgb emission, Rgb sky) {
-    ShadeOptions o;
-    o.textures = false;
-    o.sunIrradiance = Rgb(0.0f);
-    o.skyTop = o.skyHorizon = sky;
-    Material m;
-    m.name = "test";
-    m.albedo = Rgb(albedo);
-    m.emission = emission;
-    EXPECT_TRUE(o.materials.setPlain(m).ok());
-    return o;
-}
 
 Camera camera(Vec3d at, double yaw, double pitch, double fov, int w, int h) {
     auto c = Camera::create(at, yaw, pitch, fov, w, h);
@@ -108,15 +89,6 @@ TEST(RadianceCascades3D, FurnaceIsExactPassByPassAndConverges) {
     EXPECT_GT(passes, 10);
     EXPECT_LT(passes, kMaxCascadeBounces);
     EXPECT_NEAR(channelMean(picture(solved, cam), 0), e / (1.0 - a), 1e-4);
-}
-
-// A one-voxel floor in a world two voxels high: every chain leaving the floor sees the sky.
-VoxelWorld floorWorld() {
-    VoxelWorld world = makeWorld({32, 2, 32});
-    for (int z = 0; z < 32; ++z)
-        for (int x = 0; x < 32; ++x) world.set(x, 0, z, kWhite);
-    world.refreshEmptySpace();
-    return world;
 }
 
 TEST(RadianceCascades3D, SkyLitPlaneShowsAlbedoTimesSky) {

@@ -48,13 +48,9 @@ double projectedSolidAngle(Vec3d x, Vec3d n, const std::array<Vec3d, 4>& polygon
 
 float visibleFraction(const RadianceCascades::State& state, Vec3d x, const Face& emitter) {
     const Int3 en = normalFromIndex(emitter.normal);
-    const int axis = emitter.normal / 2, a = (axis + 1) % 3, b = (axis + 2) % 3;
-    const Vec3d centre = faceCentre(emitter);
     int seen = 0;
     for (int i = 0; i < 4; ++i) {
-        Vec3d target = centre;
-        target[a] += (i & 1) ? 0.25 : -0.25;
-        target[b] += (i & 2) ? 0.25 : -0.25;
+        const Vec3d target = faceQuarterCentre(emitter, i);
         const Hit hit = castToSurface(*state.world, state.textures, {x, target - x},
                                       state.shading.stepCap, 1.0 + 1e-9)
                             .hit;

@@ -36,15 +36,10 @@ Texel meanOpaqueTexel(const Texture& texture) {
 float sunVisibility(const RadianceCascades::State& state, const Face& face, Vec3d sun) {
     const Int3 n = normalFromIndex(face.normal);
     if (!(n.x * sun.x + n.y * sun.y + n.z * sun.z > 0.0)) return 0.0f;
-    const int axis = face.normal / 2, a = (axis + 1) % 3, b = (axis + 2) % 3;
-    const Vec3d centre = faceCentre(face);
     int lit = 0;
     for (int i = 0; i < 4; ++i) {
-        Vec3d p = centre;
-        p[a] += (i & 1) ? 0.25 : -0.25;
-        p[b] += (i & 2) ? 0.25 : -0.25;
-        lit += !surfaceRayBlocked(*state.world, state.textures, {p, sun}, kInfinity,
-                                  state.shading.stepCap);
+        lit += !surfaceRayBlocked(*state.world, state.textures, {faceQuarterCentre(face, i), sun},
+                                  kInfinity, state.shading.stepCap);
     }
     return lit / 4.0f;
 }

@@ -122,4 +122,12 @@ Vec3d faceCentre(const Face& face) {
     return c + Vec3d{double(n.x), double(n.y), double(n.z)} * 0.5;
 }
 
+Vec3d faceQuarterCentre(const Face& face, int i) {
+    const int axis = face.normal / 2, a = (axis + 1) % 3, b = (axis + 2) % 3;
+    Vec3d p = faceCentre(face);
+    p[a] += (i & 1) ? 0.25 : -0.25;
+    p[b] += (i & 2) ? 0.25 : -0.25;
+    return p;
+}
+
 }  // namespace luxel::voxel::cascades

@@ -45,7 +45,9 @@ class FaceTable {
     std::uint64_t mask_ = 0;
 };
 
-// The centre of a face and a point just in front of it (the cell the face looks into).
+// The centre of a face.
 Vec3d faceCentre(const Face& face);
+// The centre of quarter `i` (0..3) of a face: where the sun and the emitters are sampled.
+Vec3d faceQuarterCentre(const Face& face, int i);
 
 }  // namespace luxel::voxel::cascades

@@ -1,0 +1,44 @@
+// Worlds and light for the voxel global illumination tests (the path tracer, the radiance
+// cascades): plain diffuse blocks lit only by what a test sets, and an open floor.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include "luxel/voxel/shading.h"
+#include "luxel/voxel/voxel_world.h"
+
+namespace luxel::voxel::test {
+
+inline constexpr Voxel kWhite{255, 255, 255, 255};
+
+inline VoxelWorld makeWorld(Int3 size) {
+    auto world = VoxelWorld::create(size, 8);
+    EXPECT_TRUE(world.ok());
+    return std::move(*world);
+}
+
+// Light only from the materials and the sky the test sets; plain diffuse blocks.
+inline ShadeOptions plainLight(float albedo, Rgb emission, Rgb sky) {
+    ShadeOptions o;
+    o.textures = false;
+    o.sunIrradiance = Rgb(0.0f);
+    o.skyTop = o.skyHorizon = sky;
+    Material m;
+    m.name = "test";
+    m.albedo = Rgb(albedo);
+    m.emission = emission;
+    EXPECT_TRUE(o.materials.setPlain(m).ok());
+    return o;
+}
+
+// A one-voxel floor (y = 0) in a world two voxels high: every ray leaving the floor upwards sees
+// the sky at once, as from an infinite plane.
+inline VoxelWorld floorWorld() {
+    VoxelWorld world = makeWorld({32, 2, 32});
+    for (int z = 0; z < 32; ++z)
+        for (int x = 0; x < 32; ++x) world.set(x, 0, z, kWhite);
+    world.refreshEmptySpace();
+    return world;
+}
+
+}  // namespace luxel::voxel::test
