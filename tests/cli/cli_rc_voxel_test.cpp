@@ -1,6 +1,7 @@
 // `luxel render --solver rc` on a voxel scene end to end: the cottage with radiance cascades at a
-// small size (image, provenance, summary), and the refusals: --rc-spacing without it or on a 2D
-// scene, bad spacings and bounce counts, the ray caster's flags, the GPU, an octree scene.
+// small size (image, provenance, summary), the lighting passes on the GPU, and the refusals:
+// --rc-spacing without it or on a 2D scene, bad spacings and bounce counts, the ray caster's
+// flags, an octree scene.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -48,6 +49,28 @@ TEST_F(CliRcVoxel, LightsAVoxelSceneWithRadianceCascades) {
     EXPECT_TRUE(luxel::readPng(path("c.png")).ok());
 }
 
+// --backend gpu runs the lighting passes on the GPU (lavapipe in CI): the same picture.
+TEST_F(CliRcVoxel, GpuPassesGiveTheCpuPicture) {
+    if (runLuxel("devices").exitCode != 0) GTEST_SKIP() << "no Vulkan device";
+    const std::string common = "render " + kCottage + " --solver rc --size 48x27 --out ";
+    const RunResult gpu = runLuxel(common + path("gpu.exr") + " --backend gpu");
+    ASSERT_EQ(gpu.exitCode, 0) << gpu.output;
+    EXPECT_NE(gpu.output.find("gpu: "), std::string::npos) << gpu.output;
+    const RunResult cpu = runLuxel(common + path("cpu.exr") + " --backend cpu");
+    ASSERT_EQ(cpu.exitCode, 0) << cpu.output;
+    auto a = luxel::readExr(path("gpu.exr")), b = luxel::readExr(path("cpu.exr"));
+    ASSERT_TRUE(a.ok() && b.ok());
+    double difference = 0.0, sum = 0.0;
+    for (int y = 0; y < 27; ++y)
+        for (int x = 0; x < 48; ++x)
+            for (int c = 0; c < 3; ++c) {
+                difference += std::abs(a->at(x, y, c) - b->at(x, y, c));
+                sum += b->at(x, y, c);
+            }
+    EXPECT_GT(sum, 0.0);
+    EXPECT_LE(difference, 1e-5 * sum);
+}
+
 TEST_F(CliRcVoxel, RefusesItsOptionsWhereTheyDoNotApply) {
     const std::string out = " --out " + path("x.exr");
     expectError("render " + kCottage + " --rc-spacing 4" + out,
@@ -56,8 +79,6 @@ TEST_F(CliRcVoxel, RefusesItsOptionsWhereTheyDoNotApply) {
                 "--rc-spacing applies to --solver rc on voxel scenes");
     expectError("render " + kCottage + " --solver rc --samples 4" + out,
                 "apply to the ray caster; --solver rc takes --rc-spacing and --bounces");
-    expectError("render " + kCottage + " --solver rc --backend gpu" + out,
-                "--solver rc runs on the CPU");
     expectError("render " + kCottage + " --solver rc --rc-spacing 3" + out,
                 "cascade spacing must be a power of two");
     expectError("render " + kScenes + "octree/world.json --solver rc" + out,

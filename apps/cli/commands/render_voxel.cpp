@@ -1,6 +1,7 @@
 // `luxel render` for voxel scenes: DDA ray casting with shading, shadows and reflections, on the
 // CPU or (--backend) the GPU; or, with --solver path, the CPU path tracer; or, with --solver ao,
-// CPU sky visibility; or, with --solver rc, CPU radiance cascades.
+// CPU sky visibility; or, with --solver rc, radiance cascades (lighting passes on the CPU or the
+// GPU).
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -21,6 +22,7 @@
 #include "luxel/post/upscale.h"
 #include "luxel/post/voxel_frames.h"
 #include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/radiance_cascades_gpu.h"
 #include "luxel/voxel/render_image.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/shadows/sun_visibility.h"
@@ -195,11 +197,15 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
                   "--specular, --fresnel, --no-refraction, --shadows) apply to the "
                   "ray caster; --solver rc takes --rc-spacing and --bounces"));
     }
-    const bool cpuSolver = request.pathSolver || request.aoSolver || request.cascadeSolver;
-    const char* cpuSolverName = request.pathSolver ? "path" : request.aoSolver ? "ao" : "rc";
+    // The cascades' lighting passes run on the GPU too (the build and the picture on the CPU).
+    const bool cpuSolver = request.pathSolver || request.aoSolver;
+    const char* cpuSolverName = request.pathSolver ? "path" : "ao";
     if (!request.pathStdError.empty() && !endsWithExr(request.pathStdError)) {
         return reportError(Error("--std-error '" + request.pathStdError +
                                  "' must be an .exr file (linear float)"));
+    }
+    if (request.cascadeSolver) {
+        if (Status s = voxel::validateCascades(request.cascades); !s) return reportError(s.error());
     }
     if (cpuSolver && request.backend == gpu::Backend::Gpu) {
         return reportError(Error(std::string("--solver ") + cpuSolverName +
@@ -244,8 +250,11 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         if (!shaded) return reportError(shaded.error());
         internal = std::move(shaded->radiance);
     } else if (request.cascadeSolver) {
-        auto shaded = voxel::renderRadianceCascades(scene->world, camera, scene->shading,
-                                                    request.cascades, &scene->textures);
+        auto shaded = *context ? voxel::renderRadianceCascadesGpu(**context, scene->world, camera,
+                                                                  scene->shading, request.cascades,
+                                                                  &scene->textures)
+                               : voxel::renderRadianceCascades(scene->world, camera, scene->shading,
+                                                               request.cascades, &scene->textures);
         if (!shaded) return reportError(shaded.error());
         cascaded = std::move(*shaded);
         internal = std::move(cascaded.radiance);

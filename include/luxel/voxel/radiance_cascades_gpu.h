@@ -28,6 +28,10 @@ class RadianceCascadesGpu {
     Result<double> iterate(int passes = 1);
     // The faces' irradiance into the CPU object (for render() and indirectIrradiance()).
     Status download();
+    // RadianceCascades::solve on the GPU: passes until the options' bounces are done or a pass
+    // changes the faces' total irradiance by less than the tolerance (measured after each pass,
+    // as the CPU does), then download(). Returns the passes run.
+    Result<int> solve();
 
     struct Impl;
 
@@ -35,5 +39,12 @@ class RadianceCascadesGpu {
     explicit RadianceCascadesGpu(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> impl_;
 };
+
+// renderRadianceCascades (radiance_cascades.h) with the lighting passes on `context`; the build
+// and the picture stay on the CPU.
+Result<CascadeImage> renderRadianceCascadesGpu(gpu::Context& context, const VoxelWorld& world,
+                                               const Camera& camera, const ShadeOptions& shading,
+                                               const CascadeOptions& options = {},
+                                               const TextureSet* textures = nullptr);
 
 }  // namespace luxel::voxel

@@ -2,6 +2,7 @@
 // codes, corners and bins flattened into the buffers of src/gpu/shaders/shared/
 // voxel_cascades_layout.h, and the four dispatches of a pass.
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 
@@ -273,6 +274,57 @@ Status RadianceCascadesGpu::download() {
         irradiance[f] = Rgb(t.r, t.g, t.b);
     }
     return Ok{};
+}
+
+Result<int> RadianceCascadesGpu::solve() {
+    const CascadeOptions& options = impl_->state->options;
+    const int limit = options.bounces > 0 ? options.bounces : kMaxCascadeBounces;
+    std::vector<Rgb> before = impl_->state->faces.irradiance;
+    int passes = 0;
+    while (passes < limit) {
+        auto ran = iterate(1);
+        if (!ran) return ran.error();
+        ++passes;
+        if (options.bounces > 0 && passes < limit) continue;
+        if (Status s = download(); !s) return s.error();
+        if (options.bounces > 0) break;
+        // The CPU pass's measure (lightingPass): sum of |change| over the sum of the new values.
+        const std::vector<Rgb>& after = impl_->state->faces.irradiance;
+        double change = 0.0, total = 0.0;
+        for (std::size_t f = 0; f < after.size(); ++f) {
+            for (int c = 0; c < 3; ++c) {
+                change += std::abs(after[f][c] - before[f][c]);
+                total += after[f][c];
+            }
+        }
+        if (!(total > 0.0) || change / total < options.tolerance) break;
+        before = after;
+    }
+    return passes;
+}
+
+Result<CascadeImage> renderRadianceCascadesGpu(gpu::Context& context, const VoxelWorld& world,
+                                               const Camera& camera, const ShadeOptions& shading,
+                                               const CascadeOptions& options,
+                                               const TextureSet* textures) {
+    Result<RadianceCascades> cascades = RadianceCascades::create(world, textures, shading, options);
+    if (!cascades) return cascades.error();
+    auto gpu = RadianceCascadesGpu::create(context, *cascades);
+    if (!gpu) return gpu.error();
+    CascadeImage out;
+    auto start = std::chrono::steady_clock::now();
+    auto solved = gpu->solve();
+    if (!solved) return solved.error();
+    out.lightSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    start = std::chrono::steady_clock::now();
+    Result<Image> image = cascades->render(camera);
+    if (!image) return image.error();
+    out.renderSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.radiance = std::move(*image);
+    out.stats = cascades->stats();
+    return out;
 }
 
 }  // namespace luxel::voxel
