@@ -57,6 +57,8 @@ voxel_row glass 960x540 glass "physical lighting, 4 samples per pixel, bloom 0.3
   --bloom 0.3 --samples 4 --png out/glass.png
 voxel_row cottage 960x540 cottage "a MagicaVoxel model (sample.vox): glass windows, glowing flowers" \
   --png out/cottage.png
+voxel_row cottage 960x540 cottage-rc "global illumination: radiance cascades, sky and bounces" \
+  --solver rc --png out/cottage-rc.png
 voxel_row fence 480x270 fence "2-degree sun, MSM + SDF blend" --lighting physical \
   --png out/fence.png
 voxel_row terrain 960x540 terrain-post "bloom 0.3, rendered at 480x270, edge-aware upscale" \
@@ -93,6 +95,7 @@ open_row "out/$default_scene-hrc-diff.png" "where HRC differs from the reference
 open_row "out/penumbra.png ..." "the other 2D scenes: penumbra, pinhole, fog, thin-walls, many-lights"
 open_row "out/terrain.png" "a voxel world: shadows, reflections, water (out/glass.png: refraction)"
 open_row "out/cottage.png" "a MagicaVoxel .vox model with materials (luxel render any.vox works too)"
+open_row "out/cottage-rc.png" "the same lit by voxel radiance cascades: sky light, glow and bounces"
 open_row "out/octree-terrain.png" "a 4096^3 sparse voxel octree (out/octree-phantom.png: a volume)"
 open_row "out/*.exr" "linear fluence and radiance, for measuring (luxel compare A.exr B.exr)"
 echo "Every image says how it was made: luxel info out/$default_scene.png"
