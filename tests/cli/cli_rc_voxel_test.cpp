@@ -49,6 +49,19 @@ TEST_F(CliRcVoxel, LightsAVoxelSceneWithRadianceCascades) {
     EXPECT_TRUE(luxel::readPng(path("c.png")).ok());
 }
 
+// `luxel info` says what the cascades of a voxel scene would take, as render plans them.
+TEST_F(CliRcVoxel, InfoEstimatesTheCascades) {
+    const RunResult r = runLuxel("info " + kCottage);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("cascades (rc)"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("spacing 2, 4 levels, 1318 probes"), std::string::npos) << r.output;
+    const RunResult render = runLuxel("render " + kCottage + " --solver rc --size 16x9 --out " +
+                                      path("i.exr") + " --backend cpu");
+    ASSERT_EQ(render.exitCode, 0) << render.output;
+    EXPECT_NE(render.output.find("4 levels from spacing 2 (1318 probes)"), std::string::npos)
+        << render.output;
+}
+
 // --backend gpu runs the lighting passes on the GPU (lavapipe in CI): the same picture.
 TEST_F(CliRcVoxel, GpuPassesGiveTheCpuPicture) {
     if (runLuxel("devices").exitCode != 0) GTEST_SKIP() << "no Vulkan device";

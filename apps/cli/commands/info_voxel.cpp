@@ -5,6 +5,7 @@
 #include "commands/command.h"
 #include "commands/render_memory.h"
 #include "luxel/core/memory.h"
+#include "luxel/voxel/radiance_cascades.h"
 #include "luxel/voxel/voxel_gpu.h"
 #include "luxel/voxel/voxel_scene.h"
 
@@ -46,6 +47,12 @@ int infoVoxelScene(const voxel::VoxelScene& loaded) {
                 formatBytes(voxel::estimateVoxelGpuMemory(s, world.chunkSize(), &scene->textures,
                                                           camera.width(), camera.height()))
                     .c_str());
+    // What `luxel render --solver rc` would build (radiance_cascades.h).
+    const voxel::CascadeEstimate rc = voxel::estimateCascades(world);
+    std::printf("  cascades (rc)      %s: spacing %d, %d levels, %lld probes, %lld faces%s\n",
+                formatBytes(rc.bytes).c_str(), rc.spacing, rc.levels,
+                static_cast<long long>(rc.probes), static_cast<long long>(rc.faces),
+                rc.fits ? "" : " (over the limit: luxel render --solver rc refuses it)");
     // The same refusal as `luxel render` on the CPU path.
     if (Status st = checkRenderMemory(camera.width(), camera.height(), frame); !st) {
         return reportError(st.error());

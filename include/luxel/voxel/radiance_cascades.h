@@ -47,6 +47,17 @@ struct CascadeOptions {
 // Options checked: spacing, bounces, tolerance finite and in range; the error names the field.
 Status validateCascades(const CascadeOptions& options);
 
+// What create() plans for a world, without building: the spacing it picks (or the one given),
+// the levels, the probes, the open faces (counted as faces towards empty neighbours) and the
+// bytes. `fits` is false when those bytes exceed the memory limit.
+struct CascadeEstimate {
+    int spacing = 0, levels = 0;
+    std::int64_t probes = 0, faces = 0;
+    std::uint64_t bytes = 0, limit = 0;
+    bool fits = true;
+};
+CascadeEstimate estimateCascades(const VoxelWorld& world, const CascadeOptions& options = {});
+
 struct CascadeStats {
     int faces = 0, levels = 0, spacing = 0;
     std::int64_t probes = 0, segments = 0;

@@ -34,6 +34,28 @@ std::uint64_t memoryLimit(const CascadeOptions& options) {
 
 }  // namespace
 
+CascadeEstimate estimateCascades(const VoxelWorld& world, const CascadeOptions& options) {
+    CascadeEstimate e;
+    e.limit = memoryLimit(options);
+    e.faces = FaceTable::countExposed(world);
+    int binsPerFace = 0;
+    for (const auto& seen : DirectionBins::build(kFaceBinSide).cosine) {
+        binsPerFace = std::max(binsPerFace, int(seen.bin.size()));
+    }
+    e.spacing = options.spacing > 0 ? options.spacing : 2;
+    std::vector<Level> levels = planLevels(world.size(), e.spacing);
+    while (options.spacing == 0 && e.spacing < kMaxCascadeSpacing &&
+           cascadeBytes(levels, e.faces, binsPerFace) > e.limit) {
+        e.spacing *= 2;
+        levels = planLevels(world.size(), e.spacing);
+    }
+    e.levels = int(levels.size());
+    for (const Level& level : levels) e.probes += level.probeCount();
+    e.bytes = cascadeBytes(levels, e.faces, binsPerFace);
+    e.fits = e.bytes <= e.limit;
+    return e;
+}
+
 Status validateCascades(const CascadeOptions& o) {
     if (o.spacing != 0 &&
         (o.spacing < 1 || o.spacing > kMaxCascadeSpacing || (o.spacing & (o.spacing - 1)) != 0)) {
@@ -65,25 +87,17 @@ Result<RadianceCascades> RadianceCascades::create(const VoxelWorld& world,
     if (Status s = validateCascades(options); !s) return s.error();
     if (Status s = validatePathTrace(shading, PathTraceOptions{}); !s) return s.error();
     const auto start = std::chrono::steady_clock::now();
-    const std::uint64_t limit = memoryLimit(options);
-    const std::int64_t exposed = FaceTable::countExposed(world);
+    const CascadeEstimate estimate = estimateCascades(world, options);
+    if (!estimate.fits) {
+        return Error("radiance cascades with probe spacing " + std::to_string(estimate.spacing) +
+                     " need " + formatBytes(estimate.bytes) + ", more than the limit of " +
+                     formatBytes(estimate.limit) + " (try a larger --rc-spacing)");
+    }
+    const std::uint64_t needed = estimate.bytes;
+    const std::int64_t exposed = estimate.faces;
+    const int spacing = estimate.spacing;
+    const std::vector<Level> levels = planLevels(world.size(), spacing);
     DirectionBins faceBins = DirectionBins::build(kFaceBinSide);
-    int binsPerFace = 0;
-    for (const auto& seen : faceBins.cosine)
-        binsPerFace = std::max(binsPerFace, int(seen.bin.size()));
-    int spacing = options.spacing > 0 ? options.spacing : 2;
-    std::vector<Level> levels = planLevels(world.size(), spacing);
-    while (options.spacing == 0 && spacing < kMaxCascadeSpacing &&
-           cascadeBytes(levels, exposed, binsPerFace) > limit) {
-        spacing *= 2;
-        levels = planLevels(world.size(), spacing);
-    }
-    const std::uint64_t needed = cascadeBytes(levels, exposed, binsPerFace);
-    if (needed > limit) {
-        return Error("radiance cascades with probe spacing " + std::to_string(spacing) + " need " +
-                     formatBytes(needed) + ", more than the limit of " + formatBytes(limit) +
-                     " (try a larger --rc-spacing)");
-    }
     if (Status s = checkMemory(needed, "radiance cascades"); !s) return s.error();
 
     auto state = std::make_unique<State>();
