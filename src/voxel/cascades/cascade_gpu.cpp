@@ -2,7 +2,6 @@
 // codes, corners and bins flattened into the buffers of src/gpu/shaders/shared/
 // voxel_cascades_layout.h, and the four dispatches of a pass.
 #include <bit>
-#include <chrono>
 #include <cmath>
 #include <cstring>
 
@@ -58,14 +57,10 @@ void packLight(const RadianceCascades::State& state, std::vector<RgbTexel>& ligh
     const FaceData& faces = state.faces;
     const std::size_t count = faces.table.size();
     light.assign(4 * count, RgbTexel{0, 0, 0});
-    const Vec3d sun = state.sunForVisibility;
     for (std::size_t f = 0; f < count; ++f) {
-        const Int3 n = normalFromIndex(faces.table[int(f)].normal);
-        const double cosSun = std::max(0.0, n.x * sun.x + n.y * sun.y + n.z * sun.z);
         light[f] = texel(faces.albedo[f]);
-        light[count + f] = texel(faces.emittersExact ? Rgb{} : faces.emission[f]);
-        light[2 * count + f] =
-            texel(state.shading.sunIrradiance * float(cosSun * faces.sunVisible[f]));
+        light[count + f] = texel(faceEmitted(faces, int(f)));
+        light[2 * count + f] = texel(faceDirectSun(state, int(f)));
         light[3 * count + f] = texel(faces.emitterIrradiance[f]);
     }
     sky.clear();
@@ -288,16 +283,8 @@ Result<int> RadianceCascadesGpu::solve() {
         if (options.bounces > 0 && passes < limit) continue;
         if (Status s = download(); !s) return s.error();
         if (options.bounces > 0) break;
-        // The CPU pass's measure (lightingPass): sum of |change| over the sum of the new values.
         const std::vector<Rgb>& after = impl_->state->faces.irradiance;
-        double change = 0.0, total = 0.0;
-        for (std::size_t f = 0; f < after.size(); ++f) {
-            for (int c = 0; c < 3; ++c) {
-                change += std::abs(after[f][c] - before[f][c]);
-                total += after[f][c];
-            }
-        }
-        if (!(total > 0.0) || change / total < options.tolerance) break;
+        if (relativeChange(before, after) < options.tolerance) break;
         before = after;
     }
     return passes;
@@ -307,24 +294,14 @@ Result<CascadeImage> renderRadianceCascadesGpu(gpu::Context& context, const Voxe
                                                const Camera& camera, const ShadeOptions& shading,
                                                const CascadeOptions& options,
                                                const TextureSet* textures) {
-    Result<RadianceCascades> cascades = RadianceCascades::create(world, textures, shading, options);
-    if (!cascades) return cascades.error();
-    auto gpu = RadianceCascadesGpu::create(context, *cascades);
-    if (!gpu) return gpu.error();
-    CascadeImage out;
-    auto start = std::chrono::steady_clock::now();
-    auto solved = gpu->solve();
-    if (!solved) return solved.error();
-    out.lightSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    start = std::chrono::steady_clock::now();
-    Result<Image> image = cascades->render(camera);
-    if (!image) return image.error();
-    out.renderSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    out.radiance = std::move(*image);
-    out.stats = cascades->stats();
-    return out;
+    return renderCascadesWith(world, camera, shading, options, textures,
+                              [&](RadianceCascades& cascades) -> Status {
+                                  auto gpu = RadianceCascadesGpu::create(context, cascades);
+                                  if (!gpu) return gpu.error();
+                                  auto solved = gpu->solve();
+                                  if (!solved) return solved.error();
+                                  return Ok{};
+                              });
 }
 
 }  // namespace luxel::voxel

@@ -118,6 +118,29 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
 
 }  // namespace
 
+Rgb faceDirectSun(const RadianceCascades::State& state, int f) {
+    const FaceData& faces = state.faces;
+    const Int3 n = normalFromIndex(faces.table[f].normal);
+    const Vec3d sun = state.sunForVisibility;
+    const double cosSun = std::max(0.0, n.x * sun.x + n.y * sun.y + n.z * sun.z);
+    return state.shading.sunIrradiance * float(cosSun * faces.sunVisible[f]);
+}
+
+Rgb faceEmitted(const FaceData& faces, int f) {
+    return faces.emittersExact ? Rgb{} : faces.emission[f];
+}
+
+double relativeChange(const std::vector<Rgb>& before, const std::vector<Rgb>& after) {
+    double change = 0.0, total = 0.0;
+    for (std::size_t f = 0; f < after.size(); ++f) {
+        for (int c = 0; c < 3; ++c) {
+            total += after[f][c];
+            change += std::abs(after[f][c] - before[f][c]);
+        }
+    }
+    return total > 0.0 ? change / total : 0.0;
+}
+
 void updateFaceLight(RadianceCascades::State& state) {
     FaceData& faces = state.faces;
     const ShadeOptions& shading = state.shading;
@@ -131,6 +154,9 @@ void updateFaceLight(RadianceCascades::State& state) {
     const Vec3d sun = normalised(shading.sunDirection);
     const bool sunMoved =
         faces.sunVisible.size() != std::size_t(count) || !(sun == state.sunForVisibility);
+    // The emitters' light depends on the emission alone (the world is fixed): a new sun or sky
+    // keeps it.
+    const std::vector<Rgb> emissionBefore = faces.emission;
     faces.albedo.resize(count);
     faces.emission.resize(count);
     faces.sunVisible.resize(count);
@@ -158,7 +184,9 @@ void updateFaceLight(RadianceCascades::State& state) {
         }
     });
     state.sunForVisibility = sun;
-    faces.emittersExact = computeEmitterIrradiance(state);
+    if (faces.emitterIrradiance.size() != std::size_t(count) || faces.emission != emissionBefore) {
+        faces.emittersExact = computeEmitterIrradiance(state);
+    }
     faces.sky = skyMeans(faces.bins, shading);
     for (LevelData& level : state.levels) level.sky = skyMeans(level.bins, shading);
 }
@@ -166,18 +194,13 @@ void updateFaceLight(RadianceCascades::State& state) {
 double lightingPass(RadianceCascades::State& state) {
     FaceData& faces = state.faces;
     const int count = faces.table.size();
-    const Vec3d sun = state.sunForVisibility;
-    const Rgb sunIrradiance = state.shading.sunIrradiance;
     parallelForRange(count, 256, [&](int begin, int end) {
         for (int f = begin; f < end; ++f) {
-            const Int3 n = normalFromIndex(faces.table[f].normal);
-            const double cosSun = std::max(0.0, n.x * sun.x + n.y * sun.y + n.z * sun.z);
-            const Rgb direct = sunIrradiance * float(cosSun * faces.sunVisible[f]);
-            // Emission reaches other faces exactly (emitterIrradiance) unless there are too many.
-            const Rgb emitted = faces.emittersExact ? Rgb{} : faces.emission[f];
             faces.outgoing[f] =
-                emitted + faces.albedo[f] *
-                              (direct + faces.irradiance[f] + faces.emitterIrradiance[f]) * kInvPi;
+                faceEmitted(faces, f) +
+                faces.albedo[f] *
+                    (faceDirectSun(state, f) + faces.irradiance[f] + faces.emitterIrradiance[f]) *
+                    kInvPi;
         }
     });
     for (std::size_t k = state.levels.size(); k-- > 0;) mergeLevel(state, k);
@@ -202,15 +225,9 @@ double lightingPass(RadianceCascades::State& state) {
             gathered[f] = irradiance;
         }
     });
-    double change = 0.0, after = 0.0;
-    for (int f = 0; f < count; ++f) {
-        for (int c = 0; c < 3; ++c) {
-            after += gathered[f][c];
-            change += std::abs(gathered[f][c] - faces.irradiance[f][c]);
-        }
-    }
+    const double change = relativeChange(faces.irradiance, gathered);
     faces.irradiance = std::move(gathered);
-    return after > 0.0 ? change / after : 0.0;
+    return change;
 }
 
 }  // namespace luxel::voxel::cascades

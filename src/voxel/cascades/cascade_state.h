@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "cascade_layout.h"
@@ -66,6 +67,22 @@ struct RadianceCascades::State {
 }  // namespace luxel::voxel
 
 namespace luxel::voxel::cascades {
+
+// What face f receives from the sun (Lambert's cosine times its visible fraction) and sends as
+// emission into the chains (nothing when emitterIrradiance carries it exactly): the CPU pass and
+// the GPU upload read the same values (cascade_light.cpp).
+Rgb faceDirectSun(const RadianceCascades::State& state, int f);
+Rgb faceEmitted(const FaceData& faces, int f);
+// A pass's change of the faces' irradiance: sum of |after - before| over the sum of `after`
+// (0 when that is 0); solve() stops below the tolerance.
+double relativeChange(const std::vector<Rgb>& before, const std::vector<Rgb>& after);
+
+// create(), `solve` (the lighting passes, on the CPU or the GPU) and render(), timed:
+// renderRadianceCascades and renderRadianceCascadesGpu (radiance_cascades.cpp).
+Result<CascadeImage> renderCascadesWith(const VoxelWorld& world, const Camera& camera,
+                                        const ShadeOptions& shading, const CascadeOptions& options,
+                                        const TextureSet* textures,
+                                        const std::function<Status(RadianceCascades&)>& solve);
 
 // Casts every segment of the faces and the levels once (cascade_segments.cpp).
 void castSegments(RadianceCascades::State& state);

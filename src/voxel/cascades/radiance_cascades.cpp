@@ -1,5 +1,5 @@
-// The voxel radiance cascades' public face (radiance_cascades.h): building, lighting passes,
-// the per-pixel picture.
+// The voxel radiance cascades' public face (radiance_cascades.h): the plan and its memory,
+// building, lighting passes, the interpolated irradiance.
 #include "luxel/voxel/radiance_cascades.h"
 
 #include <algorithm>
@@ -7,20 +7,15 @@
 #include <cmath>
 #include <sstream>
 
-#include "../path_trace_surface.h"
 #include "cascade_state.h"
 #include "luxel/core/memory.h"
-#include "luxel/core/parallel.h"
 #include "luxel/voxel/path_trace.h"
-#include "luxel/voxel/surface_cast.h"
 
 namespace luxel::voxel {
 
 using namespace cascades;
 
 namespace {
-
-constexpr float kInvPi = float(1.0 / 3.14159265358979323846);
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -188,15 +183,15 @@ CascadeStats RadianceCascades::stats() const {
     return state_->stats;
 }
 
-Result<CascadeImage> renderRadianceCascades(const VoxelWorld& world, const Camera& camera,
-                                            const ShadeOptions& shading,
-                                            const CascadeOptions& options,
-                                            const TextureSet* textures) {
+Result<CascadeImage> cascades::renderCascadesWith(
+    const VoxelWorld& world, const Camera& camera, const ShadeOptions& shading,
+    const CascadeOptions& options, const TextureSet* textures,
+    const std::function<Status(RadianceCascades&)>& solve) {
     Result<RadianceCascades> cascades = RadianceCascades::create(world, textures, shading, options);
     if (!cascades) return cascades.error();
     CascadeImage out;
     auto start = std::chrono::steady_clock::now();
-    cascades->solve();
+    if (Status s = solve(*cascades); !s) return s.error();
     out.lightSeconds = secondsSince(start);
     start = std::chrono::steady_clock::now();
     Result<Image> image = cascades->render(camera);
@@ -205,6 +200,17 @@ Result<CascadeImage> renderRadianceCascades(const VoxelWorld& world, const Camer
     out.radiance = std::move(*image);
     out.stats = cascades->stats();
     return out;
+}
+
+Result<CascadeImage> renderRadianceCascades(const VoxelWorld& world, const Camera& camera,
+                                            const ShadeOptions& shading,
+                                            const CascadeOptions& options,
+                                            const TextureSet* textures) {
+    return renderCascadesWith(world, camera, shading, options, textures,
+                              [](RadianceCascades& cascades) -> Status {
+                                  cascades.solve();
+                                  return Ok{};
+                              });
 }
 
 }  // namespace luxel::voxel
