@@ -115,6 +115,15 @@ std::string formatDuration(double ms) {
     return text;
 }
 
+Status writeLabelledGrid(const std::string& path, std::vector<Image> panels,
+                         const std::vector<std::string>& labels, const ImageMetadata& metadata) {
+    const int scale = post::panelLabelScale(labels, panels.front().width());
+    for (std::size_t i = 0; i < panels.size(); ++i) {
+        post::drawPanelLabel(panels[i], 0, panels[i].width(), labels[i], scale);
+    }
+    return writePng(path, sideBySide(panels), PngEncoding::Srgb, metadata);
+}
+
 Result<RunOutcome> runSolverProcess(const std::string& scene, const std::string& size,
                                     const SolverRun& solver, const std::filesystem::path& dir) {
     const std::string exr = (dir / (std::string(solver.label) + ".exr")).string();
@@ -309,13 +318,9 @@ int runCompareSolvers(const CompareSolversArgs& args) {
             setMetadata(metadata, "luxel.panel" + std::to_string(i + 1) + "." + key,
                         label.substr(label.find('\n') + 1));
         }
-        const int scale = post::panelLabelScale(labels, reference.width());
-        for (std::size_t i = 0; i < 4; ++i) {
-            displays.push_back(runs[i].display);
-            post::drawPanelLabel(displays.back(), 0, displays.back().width(), labels[i], scale);
-        }
+        for (std::size_t i = 0; i < 4; ++i) displays.push_back(runs[i].display);
         setMetadata(metadata, "luxel.content", "display, tonemapped; panels left to right");
-        if (Status s = writePng(args.grid, sideBySide(displays), PngEncoding::Srgb, metadata); !s) {
+        if (Status s = writeLabelledGrid(args.grid, std::move(displays), labels, metadata); !s) {
             return reportError(s.error());
         }
         std::printf("wrote %s (left to right: reference, hrc, rc vanilla, rc bilinear fix)\n",

@@ -10,6 +10,7 @@
 
 #include "luxel/core/error.h"
 #include "luxel/core/image.h"
+#include "luxel/core/image_metadata.h"
 
 namespace luxel::cli {
 
@@ -38,6 +39,11 @@ Result<std::vector<RunOutcome>> runSolverProcesses(const std::string& scene,
 
 // "812 ms" or "59.2 s".
 std::string formatDuration(double ms);
+
+// The panels side by side, each captioned with its label (one text size for all, so every
+// caption fits), as an sRGB PNG with `metadata`: the grids of compare-solvers.
+Status writeLabelledGrid(const std::string& path, std::vector<Image> panels,
+                         const std::vector<std::string>& labels, const ImageMetadata& metadata);
 
 // `luxel compare-solvers` on a voxel scene: the path tracer (the reference), sky visibility,
 // radiance cascades and the ray caster with physical lighting: time, error, low-frequency error,

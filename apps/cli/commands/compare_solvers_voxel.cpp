@@ -10,13 +10,10 @@
 
 #include "commands/command.h"
 #include "commands/compare_solvers_run.h"
-#include "commands/error_image.h"
 #include "commands/render_outputs.h"
-#include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/metrics.h"
 #include "luxel/post/gi_measures.h"
-#include "luxel/post/label.h"
 
 namespace luxel::cli {
 
@@ -71,7 +68,6 @@ int compareVoxelSolvers(const VoxelCompareRequest& request) {
                          (i == 0 ? ", " + std::to_string(request.spp) + " spp" : error));
     }
     if (!request.grid.empty()) {
-        const int scale = post::panelLabelScale(labels, reference.width());
         std::vector<Image> displays;
         ImageMetadata metadata =
             renderMetadata(request.scene, "compare-solvers", reference.width(), reference.height());
@@ -80,15 +76,13 @@ int compareVoxelSolvers(const VoxelCompareRequest& request) {
         std::string order;
         for (std::size_t i = 0; i < runs.size(); ++i) {
             displays.push_back(runs[i].display);
-            post::drawPanelLabel(displays.back(), 0, displays.back().width(), labels[i], scale);
             setMetadata(metadata, "luxel.panel" + std::to_string(i + 1) + "." + solvers[i].label,
                         labels[i].substr(labels[i].find('\n') + 1));
             setNumber(metadata, std::string("luxel.leak.") + solvers[i].label, leaks[i].leak);
             order += (i == 0 ? "" : ", ") + std::string(solvers[i].title);
         }
         setMetadata(metadata, "luxel.content", "display, tonemapped; panels left to right");
-        if (Status s = writePng(request.grid, sideBySide(displays), PngEncoding::Srgb, metadata);
-            !s) {
+        if (Status s = writeLabelledGrid(request.grid, std::move(displays), labels, metadata); !s) {
             return reportError(s.error());
         }
         std::printf("wrote %s (left to right: %s)\n", request.grid.c_str(), order.c_str());

@@ -9,12 +9,9 @@
 
 #include "commands/command.h"
 #include "commands/compare_solvers_run.h"
-#include "commands/error_image.h"
 #include "commands/render_outputs.h"
-#include "luxel/core/image_io.h"
 #include "luxel/core/metrics.h"
 #include "luxel/post/gi_measures.h"
-#include "luxel/post/label.h"
 
 namespace luxel::cli {
 
@@ -80,7 +77,6 @@ int compareVoxelSunSweep(const VoxelCompareRequest& request) {
                           100.0 * flicker[s].flicker);
             labels.push_back(text);
         }
-        const int scale = post::panelLabelScale(labels, first.width());
         ImageMetadata metadata =
             renderMetadata(request.scene, "compare-solvers", first.width(), first.height());
         setNumber(metadata, "luxel.sun_sweep.frames", request.sunSweep);
@@ -88,15 +84,13 @@ int compareVoxelSunSweep(const VoxelCompareRequest& request) {
         setNumber(metadata, "luxel.sun_sweep.reference_change", flicker[0].referenceChange);
         std::string order;
         for (std::size_t s = 0; s < solvers.size(); ++s) {
-            post::drawPanelLabel(firstDisplays[s], 0, firstDisplays[s].width(), labels[s], scale);
             setNumber(metadata, std::string("luxel.flicker.") + solvers[s].label,
                       flicker[s].flicker);
             order += (s == 0 ? "" : ", ") + std::string(solvers[s].title);
         }
         setMetadata(metadata, "luxel.content",
                     "display, tonemapped, the sweep's first frame; panels left to right");
-        if (Status st =
-                writePng(request.grid, sideBySide(firstDisplays), PngEncoding::Srgb, metadata);
+        if (Status st = writeLabelledGrid(request.grid, std::move(firstDisplays), labels, metadata);
             !st) {
             return reportError(st.error());
         }
