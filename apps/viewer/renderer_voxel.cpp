@@ -43,8 +43,8 @@ void RendererVoxel::setState(VoxelState&& state) {
             edited = true;
         }
     }
-    // A voxel added to an empty brick makes the empty-space distances stale; the ray caster is
-    // still exact without them but slower, so bring them up to date before the next frame.
+    // A voxel added to an empty brick makes the brick reach stale; the ray caster is still exact
+    // without it but slower, so bring it up to date before the next frame.
     if (edited) world_.refreshEmptySpace();
     // History of an edited world or of other options would be clamped away slowly; start over.
     if (temporal_ &&

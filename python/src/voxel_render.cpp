@@ -79,7 +79,7 @@ py::array_t<float> renderJob(VoxelJob& job, const ShadingArgs& shading, bool app
                              const RenderCommon& common) {
     checkThreads(common.threads);
     applyShading(shading, job.shading);
-    // Edits through world[x, y, z] = ... leave the empty-space distances stale.
+    // Edits through world[x, y, z] = ... leave the brick reach stale.
     if (!job.world->emptySpaceCurrent()) job.world->refreshEmptySpace();
     const std::unique_ptr<gpu::Context> context =
         openBackendFor(parseBackendArg(common.backend), common.device);

@@ -6,9 +6,11 @@
 // brick is a box of one cell, left by the same exit test as an empty box of bricks (for one cell it
 // picks the A&W step, lowest axis on ties), so each lane follows its ray through the same cells
 // with the same double arithmetic as castRay and the results equal castRay's bit for bit, loop
-// count included (docs/algorithms/voxel-traversal.md §4). In a non-empty brick, a lane in an empty
-// half of it (src/voxel/brick_blocks.h) crosses the half as one box and adds the visits the
-// per-voxel loop makes there (one per cell step), so `steps` still counts that loop's iterations.
+// count included (docs/algorithms/voxel-traversal.md §4). An empty brick is left through the empty
+// cube of bricks its reach gives towards the lane's octant, as in the shared kernel. In a non-empty
+// brick, a lane in an empty half of it (src/voxel/brick_blocks.h) crosses the half as one box and
+// adds the visits the per-voxel loop makes there (one per cell step), so `steps` still counts that
+// loop's iterations.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "voxel/cast_stream.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -55,6 +57,7 @@ enum Field {
     kAxis,
     kSteps,
     kRay,
+    kPlane,  // byte offset of the reach plane of the ray's octant
     kFields
 };
 
@@ -77,7 +80,7 @@ void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::V
     const Int3 size = world.size();
     const Int3 bricks = world.brickCount();
     const std::uint64_t* masks = world.brickMaskData();
-    const std::uint8_t* distances = world.brickDistanceData();
+    const std::uint8_t* reachPlanes = world.brickReachData();
     const std::int64_t brickTotal = std::int64_t{bricks.x} * bricks.y * bricks.z;
     const double tMax = walk.tMax;
 
@@ -88,7 +91,8 @@ void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::V
     const V cap = hn::Set(d, static_cast<double>(walk.cap));
     const V sizeX = hn::Set(d, size.x), sizeY = hn::Set(d, size.y), sizeZ = hn::Set(d, size.z);
     const V bricksX = hn::Set(d, bricks.x), bricksY = hn::Set(d, bricks.y);
-    const auto lastByte = hn::Set(di, brickTotal - 8);
+    // The reach gathers read 8 bytes at a byte offset: the last 8 of the planes at most.
+    const auto lastByte = hn::Set(di, brickTotal * VoxelWorld::kOctants - 8);
     const M none = hn::Lt(zero, zero);
 
     // Rays started (voxelStart, one per lane) but not yet given a lane, as lane arrays.
@@ -180,6 +184,14 @@ void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::V
         inner = hn::IfThenElse(hn::Ge(best, zero), inner, minusOne);
         hn::Store(hn::IfThenElse(fromOutside, enterAxis, inner), d, ray[kAxis]);
         hn::Store(t0, d, ray[kT]);
+        // The reach plane of the ray's octant (VoxelWorld::octantOf; a zero component counts as
+        // positive, as in the shared kernel).
+        V octant = zero;
+        for (int a = 0; a < 3; ++a) {
+            octant = hn::Add(octant,
+                             hn::IfThenElseZero(hn::Lt(stp[a], zero), hn::Set(d, double(1 << a))));
+        }
+        hn::Store(hn::Mul(octant, hn::Set(d, static_cast<double>(brickTotal))), d, ray[kPlane]);
         for (int a = 0; a < 3; ++a) {
             const V k = hn::IfThenElseZero(hn::Gt(stp[a], zero), one);
             hn::Store(inv[a], d, ray[kIx + a]);
@@ -217,7 +229,7 @@ void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::V
 
     struct Packet {
         V ox, oy, oz, ix, iy, iz, dx, dy, dz, sx, sy, sz, kx, ky, kz;
-        V cx, cy, cz, nx, ny, nz, t, axis, steps, ray;
+        V cx, cy, cz, nx, ny, nz, t, axis, steps, ray, plane;
         M active;
     };
     const auto load = [&](Packet& P, int p) {
@@ -246,6 +258,7 @@ void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::V
         P.axis = hn::Load(d, state[p][kAxis]);
         P.steps = hn::Load(d, state[p][kSteps]);
         P.ray = hn::Load(d, state[p][kRay]);
+        P.plane = hn::Load(d, state[p][kPlane]);
         P.active = hn::Ge(P.ray, zero);
     };
     const auto store = [&](const Packet& P, int p) {
@@ -274,6 +287,7 @@ void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::V
         hn::Store(P.axis, d, state[p][kAxis]);
         hn::Store(P.steps, d, state[p][kSteps]);
         hn::Store(P.ray, d, state[p][kRay]);
+        hn::Store(P.plane, d, state[p][kPlane]);
     };
 
     // One iteration of voxelTraverse's loop for every busy lane of P; true when P has ended
@@ -306,16 +320,21 @@ void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::V
             const M occupied = hn::RebindMask(d, hn::Ne(mask, hn::Zero(du)));
             const M live = hn::AndNot(hit, go);
 
-            // The box to leave: the cell itself in a non-empty brick, else the empty box of bricks
-            // within distance - 1 (clipped to the world).
-            const auto offset = hn::Min(brick, lastByte);
+            // The box to leave: the cell itself in a non-empty brick, else the empty cube of
+            // bricks from this one towards the ray's octant (clipped to the world).
+            const auto reachByte = hn::Add(brick, hn::ConvertTo(di, P.plane));
+            const auto offset = hn::Min(reachByte, lastByte);
             const auto word =
-                hn::GatherOffset(di, reinterpret_cast<const std::int64_t*>(distances), offset);
-            const auto shift = hn::ShiftLeft<3>(hn::Sub(brick, offset));
+                hn::GatherOffset(di, reinterpret_cast<const std::int64_t*>(reachPlanes), offset);
+            const auto shift = hn::ShiftLeft<3>(hn::Sub(reachByte, offset));
             const auto byte =
                 hn::And(hn::BitCast(di, hn::BitCast(du, word) >> hn::BitCast(du, shift)),
                         hn::Set(di, 0xFF));
             const V r = hn::Sub(hn::ConvertTo(d, byte), one);
+            // The cube spans r more bricks on the side the ray moves to: below the brick on a
+            // negative axis, above it otherwise.
+            const auto reachDown = [&](V s) { return hn::IfThenElseZero(hn::Lt(s, zero), r); };
+            const auto reachUp = [&](V s) { return hn::IfThenElse(hn::Lt(s, zero), zero, r); };
             // In a non-empty brick, the empty half around the cell (y first, then x, then z:
             // ground and walls are mostly horizontal or vertical layers) where the step cap allows
             // its visits; hx2 etc.: the axis the half halves (2 cells), the others span the brick.
@@ -333,22 +352,22 @@ void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::V
             M sub = hn::And(hn::And(hn::And(occupied, live), hn::Or(hn::Or(eX, eY), eZ)),
                             hn::Le(steps, hn::Sub(cap, hn::Set(d, blocks::kMaxVisits))));
             const M hy2 = eY, hx2 = hn::AndNot(eY, eX), hz2 = hn::AndNot(hn::Or(eX, eY), eZ);
-            const auto boxLo = [&](V b, V c, M half2) {
+            const auto boxLo = [&](V b, V c, V s, M half2) {
                 const V block = hn::IfThenElse(
                     half2, hn::Mul(hn::Floor(hn::Mul(c, hn::Set(d, 0.5))), two), hn::Mul(b, four));
                 return hn::IfThenElse(occupied, hn::IfThenElse(sub, block, c),
-                                      hn::Max(hn::Mul(hn::Sub(b, r), four), zero));
+                                      hn::Max(hn::Mul(hn::Sub(b, reachDown(s)), four), zero));
             };
-            const auto boxHi = [&](V lo, V b, V c, V n, M half2) {
+            const auto boxHi = [&](V lo, V b, V c, V s, V n, M half2) {
                 const V block =
                     hn::Min(hn::Add(lo, hn::IfThenElse(half2, one, three)), hn::Sub(n, one));
                 return hn::IfThenElse(
                     occupied, hn::IfThenElse(sub, block, c),
-                    hn::Sub(hn::Min(hn::Mul(hn::Add(hn::Add(b, r), one), four), n), one));
+                    hn::Sub(hn::Min(hn::Mul(hn::Add(hn::Add(b, reachUp(s)), one), four), n), one));
             };
-            V lx = boxLo(bx, cx, hx2), ly = boxLo(by, cy, hy2), lz = boxLo(bz, cz, hz2);
-            V hx = boxHi(lx, bx, cx, sizeX, hx2), hy = boxHi(ly, by, cy, sizeY, hy2),
-              hz = boxHi(lz, bz, cz, sizeZ, hz2);
+            V lx = boxLo(bx, cx, sx, hx2), ly = boxLo(by, cy, sy, hy2), lz = boxLo(bz, cz, sz, hz2);
+            V hx = boxHi(lx, bx, cx, sx, sizeX, hx2), hy = boxHi(ly, by, cy, sy, sizeY, hy2),
+              hz = boxHi(lz, bz, cz, sz, sizeZ, hz2);
             // exitAt: (cell + k - o) * inv, the one boundary formula.
             const auto exitAt = [&](V c, V k, V o, V inv) {
                 return hn::Mul(hn::Sub(hn::Add(c, k), o), inv);

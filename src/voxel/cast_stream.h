@@ -15,7 +15,6 @@ struct Walk {
 };
 
 // out[i] = the trace castRay makes of rays[i] with jumps (fast::traverseAny), for every ray.
-// The world must have at least 8 bricks (the distance gathers read 8 bytes).
 void trace(const Walk& walk, std::span<const Ray> rays, gpu::shared::VoxelTrace* out);
 
 }  // namespace luxel::voxel::stream

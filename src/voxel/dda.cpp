@@ -1,5 +1,5 @@
 // castRay: the shared traversal kernel (src/gpu/shaders/shared/voxel_dda.h, the same code the GPU
-// runs) in double over a VoxelWorld; conventions in dda.h. With the brick distances current (the
+// runs) in double over a VoxelWorld; conventions in dda.h. With the brick reach current (the
 // usual case) the CPU runs its own loop for that kernel (src/voxel/fast_walk.h), which visits and
 // jumps exactly as the shared one does.
 #include "luxel/voxel/dda.h"
@@ -33,10 +33,9 @@ shared::VoxelTrace trace(const VoxelWorld& world, const Ray& ray, double tMax, i
                                  world.emptySpaceCurrent());
 }
 
-// The SIMD walk needs current distances (else castRay runs the shared kernel) and 8 bricks.
+// The SIMD walk needs the reach current (else castRay runs the shared kernel).
 bool streamable(const VoxelWorld& world) {
-    const Int3 b = world.brickCount();
-    return world.emptySpaceCurrent() && std::int64_t{b.x} * b.y * b.z >= 8;
+    return world.emptySpaceCurrent();
 }
 
 // Runs the SIMD walk over `rays` in blocks, handing each block's traces to `take(first, traces)`.

@@ -1,60 +1,80 @@
-// Chebyshev (L-infinity) distance transform, separable: the exact distance to the nearest occupied
-// brick is min over bricks of max(|dx|, |dy|, |dz|), which factors into a 1D transform along x
-// followed by min-max passes along y and z (each pass only looks as far as the best so far).
+// The largest empty cube of bricks with a corner at a brick, per octant, by dynamic programming:
+// a cube of side k at brick b towards octant (sx, sy, sz) is b itself plus the cubes of side k - 1
+// at the 7 neighbours b + (ix sx, iy sy, iz sz), i in {0, 1}^3 \ {0}, so
+// side(b) = 0 for an occupied brick, else 1 + the smallest side of those neighbours (outside the
+// grid: empty without end, the cap). One sweep per octant, from the far corner back.
 #include "voxel/empty_space.h"
 
 #include <algorithm>
-#include <cstdlib>
+#include <cstddef>
 
 #include "luxel/core/parallel.h"
 
 namespace luxel::voxel {
 namespace {
 
-// One min-max pass along an axis: out[i] = min over j of max(|i - j|, in[j]), for every line of
-// the grid along that axis. `stride` steps along the axis; `lines` enumerates line starts.
-void minMaxPass(std::vector<std::uint8_t>& values, int length, std::size_t stride,
-                const std::vector<std::size_t>& lineStarts, int cap) {
-    parallelForRange(static_cast<int>(lineStarts.size()), 64, [&](int begin, int end) {
-        std::vector<std::uint8_t> line(static_cast<std::size_t>(length));
-        for (int l = begin; l < end; ++l) {
-            const std::size_t start = lineStarts[static_cast<std::size_t>(l)];
-            for (int i = 0; i < length; ++i) line[i] = values[start + i * stride];
-            for (int i = 0; i < length; ++i) {
-                int best = line[i];
-                // Any j farther than `best` cannot improve it: max(|i - j|, .) >= |i - j|.
-                for (int k = 1; k < best; ++k) {
-                    if (i - k >= 0) best = std::min(best, std::max(k, int{line[i - k]}));
-                    if (i + k < length) best = std::min(best, std::max(k, int{line[i + k]}));
+// One octant's plane: `plane[i]` for every brick i, visiting bricks after their neighbours ahead.
+void reachTowards(const std::vector<std::uint64_t>& masks, Int3 count, int cap, int octant,
+                  std::uint8_t* plane) {
+    const int sx = (octant & 1) ? -1 : 1, sy = (octant & 2) ? -1 : 1, sz = (octant & 4) ? -1 : 1;
+    const std::size_t rowStride = static_cast<std::size_t>(count.x);
+    const std::size_t sliceStride = rowStride * count.y;
+    const auto insideAxis = [](int v, int n) { return v >= 0 && v < n; };
+    for (int iz = 0; iz < count.z; ++iz) {
+        const int z = sz > 0 ? count.z - 1 - iz : iz;
+        const bool hasZ = insideAxis(z + sz, count.z);
+        for (int iy = 0; iy < count.y; ++iy) {
+            const int y = sy > 0 ? count.y - 1 - iy : iy;
+            const bool hasY = insideAxis(y + sy, count.y);
+            const std::size_t row = z * sliceStride + y * rowStride;
+            // The rows ahead (null: outside the grid, empty as far as the cap).
+            const std::uint8_t* aheadY =
+                hasY ? plane + row + sy * std::ptrdiff_t(rowStride) : nullptr;
+            const std::uint8_t* aheadZ =
+                hasZ ? plane + row + sz * std::ptrdiff_t(sliceStride) : nullptr;
+            const std::uint8_t* aheadYZ = hasY && hasZ
+                                              ? plane + row + sy * std::ptrdiff_t(rowStride) +
+                                                    sz * std::ptrdiff_t(sliceStride)
+                                              : nullptr;
+            for (int ix = 0; ix < count.x; ++ix) {
+                const int x = sx > 0 ? count.x - 1 - ix : ix;
+                if (masks[row + x] != 0) {
+                    plane[row + x] = 0;
+                    continue;
                 }
-                values[start + i * stride] = static_cast<std::uint8_t>(std::min(best, cap));
+                const bool hasX = insideAxis(x + sx, count.x);
+                const int nx = x + sx;
+                int m = cap;
+                if (hasX) m = std::min<int>(m, plane[row + nx]);
+                if (aheadY) {
+                    m = std::min<int>(m, aheadY[x]);
+                    if (hasX) m = std::min<int>(m, aheadY[nx]);
+                }
+                if (aheadZ) {
+                    m = std::min<int>(m, aheadZ[x]);
+                    if (hasX) m = std::min<int>(m, aheadZ[nx]);
+                }
+                if (aheadYZ) {
+                    m = std::min<int>(m, aheadYZ[x]);
+                    if (hasX) m = std::min<int>(m, aheadYZ[nx]);
+                }
+                plane[row + x] = static_cast<std::uint8_t>(std::min(m + 1, cap));
             }
         }
-    });
+    }
 }
 
 }  // namespace
 
-void computeBrickDistances(const std::vector<std::uint64_t>& masks, Int3 count, int cap,
-                           std::vector<std::uint8_t>& distances) {
-    distances.resize(masks.size());
-    const std::size_t sx = 1, sy = static_cast<std::size_t>(count.x),
-                      sz = static_cast<std::size_t>(count.x) * count.y;
-    for (std::size_t i = 0; i < masks.size(); ++i) {
-        distances[i] = masks[i] != 0 ? 0 : static_cast<std::uint8_t>(cap);
-    }
-    std::vector<std::size_t> starts;
-    for (int z = 0; z < count.z; ++z)
-        for (int y = 0; y < count.y; ++y) starts.push_back(z * sz + y * sy);
-    minMaxPass(distances, count.x, sx, starts, cap);
-    starts.clear();
-    for (int z = 0; z < count.z; ++z)
-        for (int x = 0; x < count.x; ++x) starts.push_back(z * sz + x * sx);
-    minMaxPass(distances, count.y, sy, starts, cap);
-    starts.clear();
-    for (int y = 0; y < count.y; ++y)
-        for (int x = 0; x < count.x; ++x) starts.push_back(y * sy + x * sx);
-    minMaxPass(distances, count.z, sz, starts, cap);
+void computeBrickReach(const std::vector<std::uint64_t>& masks, Int3 count, int cap,
+                       std::vector<std::uint8_t>& reach) {
+    constexpr int kOctants = 8;
+    reach.resize(masks.size() * kOctants);
+    parallelForRange(kOctants, 1, [&](int begin, int end) {
+        for (int o = begin; o < end; ++o) {
+            reachTowards(masks, count, cap, o, reach.data() + o * masks.size());
+        }
+    });
 }
 
 }  // namespace luxel::voxel

@@ -1,5 +1,5 @@
 // The CPU's own loop for the shared voxel traversal (src/gpu/shaders/shared/voxel_dda.h with the
-// brick distances current): the same visits and jumps, in the same order, with the same double
+// brick reach current): the same visits and jumps, in the same order, with the same double
 // arithmetic, hence the same hit, t and loop count bit for bit, but written for a CPU
 // (docs/algorithms/voxel-traversal.md §4):
 // - the per-axis state lives in named scalars (three Axis values the compiler keeps in
@@ -37,7 +37,7 @@ struct Axis {
     double exitAt(int c) const { return (double(c + (stp > 0 ? 1 : 0)) - o) * inv; }
 };
 
-// Whether the fast loop takes this ray: the brick distances are current and every non-zero
+// Whether the fast loop takes this ray: the brick reach is current and every non-zero
 // direction component has a finite reciprocal (a denormal component's is inf, whose products the
 // shared kernel orders by its own rules; it keeps those rays).
 inline bool eligible(const VoxelWorld& world, const Ray& ray) {
@@ -49,7 +49,7 @@ inline bool eligible(const VoxelWorld& world, const Ray& ray) {
     return true;
 }
 
-// The shared kernel's voxelTraverse(jumps = true, distancesCurrent = true) for an eligible ray
+// The shared kernel's voxelTraverse(jumps = true, reachCurrent = true) for an eligible ray
 // (finite, non-zero direction).
 inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, double tMax, int cap) {
     shared::VoxelWalk w;
@@ -74,6 +74,12 @@ inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, doub
                static_cast<unsigned>(z.cell) >= static_cast<unsigned>(z.size);
     };
     constexpr int kShift = VoxelWorld::kBrickShift;
+    // The reach plane of the ray's octant (a zero component counts as positive, as in the
+    // shared kernel).
+    const Int3 bricks = world.brickCount();
+    const std::size_t brickTotal = static_cast<std::size_t>(bricks.x) * bricks.y * bricks.z;
+    const std::uint8_t* reach =
+        world.brickReachData() + brickTotal * VoxelWorld::octantOf(x.stp < 0, y.stp < 0, z.stp < 0);
     for (;;) {
         if (steps >= cap) return miss(true);
         ++steps;
@@ -120,12 +126,17 @@ inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, doub
             }
             continue;
         }
-        // An empty brick: leave the empty box of bricks around it (voxelLeaveBox).
-        const int r = world.brickDistance(bx, by, bz) - 1;
-        const auto lo = [&](int b) { return std::max((b - r) << kShift, 0); };
-        const auto hi = [&](int b, int n) { return std::min((b + r + 1) << kShift, n) - 1; };
-        const int lx = lo(bx), ly = lo(by), lz = lo(bz);
-        const int hx = hi(bx, x.size), hy = hi(by, y.size), hz = hi(bz, z.size);
+        // An empty brick: leave the empty cube of bricks from it towards the ray's octant
+        // (voxelLeaveBox).
+        const int r = reach[(static_cast<std::size_t>(bz) * bricks.y + by) * bricks.x + bx] - 1;
+        const auto lo = [&](const Axis& s, int b) {
+            return s.stp < 0 ? std::max((b - r) << kShift, 0) : b << kShift;
+        };
+        const auto hi = [&](const Axis& s, int b) {
+            return std::min((s.stp < 0 ? b + 1 : b + r + 1) << kShift, s.size) - 1;
+        };
+        const int lx = lo(x, bx), ly = lo(y, by), lz = lo(z, bz);
+        const int hx = hi(x, bx), hy = hi(y, by), hz = hi(z, bz);
         const double tx = x.stp != 0 ? x.exitAt(x.stp > 0 ? hx : lx) : kInf;
         const double ty = y.stp != 0 ? y.exitAt(y.stp > 0 ? hy : ly) : kInf;
         const double tz = z.stp != 0 ? z.exitAt(z.stp > 0 ? hz : lz) : kInf;

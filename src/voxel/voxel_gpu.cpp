@@ -125,7 +125,7 @@ std::uint64_t estimateVoxelGpuMemory(Int3 size, int chunkSize, const TextureSet*
     const std::uint64_t perChunk = static_cast<std::uint64_t>(chunkSize) * chunkSize * chunkSize;
     const int slots = textures ? textures->size() : 0;
     const Int3 bricks{(size.x + 3) / 4, (size.y + 3) / 4, (size.z + 3) / 4};
-    return chunks * perChunk * 4 + chunks * 4 + chunkTotal(bricks) * 12 +
+    return chunks * perChunk * 4 + chunks * 4 + chunkTotal(bricks) * (8 + VoxelWorld::kOctants) +
            std::max(slots, 1) * sizeof(shared::VoxelTextureInfo) +
            std::max<std::uint64_t>(texelCount(textures), 1) * 16 + 256 * 4 +
            sizeof(shared::VoxelRenderParams) + kMaterialBytes +
@@ -139,12 +139,12 @@ struct VoxelGpuRenderer::State {
     Int3 chunks;
     int textureCount = 0;
     std::uint64_t bytes = 0;
-    std::shared_ptr<gpu::Buffer> params, voxels, chunkSolid, brickMasks, brickDistances,
-        textureInfo, texels, srgb, output, materials;
+    std::shared_ptr<gpu::Buffer> params, voxels, chunkSolid, brickMasks, brickReach, textureInfo,
+        texels, srgb, output, materials;
     std::uint64_t outputBytes = 0;
     gpu::Program* program = nullptr;
     gpu::Program* castProgram = nullptr;
-    bool distancesCurrent = false;
+    bool reachCurrent = false;
     // The world and textures given to create (sun visibility is built from them).
     const VoxelWorld* sourceWorld = nullptr;
     const TextureSet* sourceTextures = nullptr;
@@ -226,26 +226,28 @@ struct VoxelGpuRenderer::State {
         return Ok{};
     }
 
-    // Brick masks and distances of the whole world (a fraction of the voxel data: 12 bytes per
-    // 64 voxels), re-sent after every edit.
+    // Brick masks and reach of the whole world (a fraction of the voxel data: 16 bytes per 64
+    // voxels), re-sent after every edit. The reach goes as it is stored: 8 planes of bytes
+    // (VoxelWorld::brickReachData), read as words by voxel_world_access.glsl.
     Status uploadBricks(const VoxelWorld& world) {
         const Int3 n = world.brickCount();
-        std::vector<std::uint32_t> masks, distances;
-        masks.reserve(chunkTotal(n) * 2);
-        distances.reserve(chunkTotal(n));
+        const std::uint64_t bricks = chunkTotal(n);
+        std::vector<std::uint32_t> masks;
+        masks.reserve(bricks * 2);
         for (int bz = 0; bz < n.z; ++bz) {
             for (int by = 0; by < n.y; ++by) {
                 for (int bx = 0; bx < n.x; ++bx) {
                     const std::uint64_t m = world.brickMask(bx, by, bz);
                     masks.push_back(static_cast<std::uint32_t>(m));
                     masks.push_back(static_cast<std::uint32_t>(m >> 32));
-                    distances.push_back(world.brickDistance(bx, by, bz));
                 }
             }
         }
-        distancesCurrent = world.emptySpaceCurrent();
+        reachCurrent = world.emptySpaceCurrent();
         if (Status st = context->upload(*brickMasks, bytesOf(masks)); !st) return st;
-        return context->upload(*brickDistances, bytesOf(distances));
+        return context->upload(
+            *brickReach,
+            std::as_bytes(std::span(world.brickReachData(), bricks * VoxelWorld::kOctants)));
     }
 
     // The world part of the parameters (the rest is filled per render).
@@ -256,7 +258,7 @@ struct VoxelGpuRenderer::State {
         p.chunksX = chunks.x, p.chunksY = chunks.y, p.chunksZ = chunks.z;
         p.bricksX = (size.x + 3) / 4, p.bricksY = (size.y + 3) / 4, p.bricksZ = (size.z + 3) / 4;
         p.stepCap = stepCap > 0 ? stepCap : 3 * (size.x + size.y + size.z);
-        p.flags = distancesCurrent ? LUXEL_VOXEL_DISTANCES_CURRENT : 0u;
+        p.flags = reachCurrent ? LUXEL_VOXEL_REACH_CURRENT : 0u;
     }
 
     Status uploadChunkSolid(const VoxelWorld& world) {
@@ -361,7 +363,8 @@ Result<VoxelGpuRenderer> VoxelGpuRenderer::create(gpu::Context& context, const V
     for (const Allocation& a :
          {Allocation{&s.params, sizeof(shared::VoxelRenderParams)},
           Allocation{&s.voxels, chunks * perChunk * 4}, Allocation{&s.chunkSolid, chunks * 4},
-          Allocation{&s.brickMasks, bricks * 8}, Allocation{&s.brickDistances, bricks * 4},
+          Allocation{&s.brickMasks, bricks * 8},
+          Allocation{&s.brickReach, bricks * VoxelWorld::kOctants},
           Allocation{&s.textureInfo, infos.size() * sizeof(shared::VoxelTextureInfo)},
           Allocation{&s.texels, texels.size() * 16}, Allocation{&s.srgb, srgb.size() * 4},
           Allocation{&s.materials, kMaterialBytes}}) {
@@ -504,11 +507,10 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
         gpu::Dispatch d;
         d.name = "voxel render rows " + std::to_string(row);
         d.program = s.program;
-        d.buffers = {s.params.get(),      s.voxels.get(),     s.chunkSolid.get(),
-                     s.textureInfo.get(), s.texels.get(),     s.srgb.get(),
-                     s.output.get(),      s.brickMasks.get(), s.brickDistances.get(),
-                     s.materials.get(),   s.params.get(),     s.shadow[0].get(),
-                     s.shadow[1].get(),   s.shadow[2].get(),  s.shadow[3].get()};
+        d.buffers = {s.params.get(),     s.voxels.get(),    s.chunkSolid.get(), s.textureInfo.get(),
+                     s.texels.get(),     s.srgb.get(),      s.output.get(),     s.brickMasks.get(),
+                     s.brickReach.get(), s.materials.get(), s.params.get(),     s.shadow[0].get(),
+                     s.shadow[1].get(),  s.shadow[2].get(), s.shadow[3].get()};
         const int rows = std::min(kBandRows, h - row);
         d.setPush(shared::VoxelBandPush{static_cast<std::uint32_t>(row),
                                         static_cast<std::uint32_t>(rows)});
@@ -569,8 +571,8 @@ Result<std::vector<Hit>> VoxelGpuRenderer::castRays(std::span<const Ray> rays, d
     gpu::Dispatch d;
     d.name = "voxel cast rays";
     d.program = s.castProgram;
-    d.buffers = {s.params.get(),   s.voxels.get(),     s.chunkSolid.get(),    rayBuffer->get(),
-                 hitBuffer->get(), s.brickMasks.get(), s.brickDistances.get()};
+    d.buffers = {s.params.get(),   s.voxels.get(),     s.chunkSolid.get(), rayBuffer->get(),
+                 hitBuffer->get(), s.brickMasks.get(), s.brickReach.get()};
     const std::uint32_t cap = p.stepCap;
     d.setPush(shared::VoxelCastPush{static_cast<std::uint32_t>(rays.size()), cap});
     d.setThreads(rays.size());

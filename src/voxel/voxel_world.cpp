@@ -15,9 +15,10 @@ std::uint64_t VoxelWorld::bytesFor(Int3 size, int chunkSize) {
     for (int a = 0; a < 3; ++a)
         chunks *= static_cast<std::uint64_t>((size[a] + chunkSize - 1) / chunkSize);
     const std::uint64_t perChunk = static_cast<std::uint64_t>(chunkSize) * chunkSize * chunkSize;
-    // Bricks tile every chunk (chunk sides are powers of two >= 4), 64 voxels per mask word.
+    // Bricks tile every chunk (chunk sides are powers of two >= 4), 64 voxels per mask word, and
+    // one reach byte per octant.
     return chunks * (perChunk * sizeof(Voxel) + sizeof(std::uint32_t) +
-                     perChunk / 64 * (sizeof(std::uint64_t) + sizeof(std::uint8_t)));
+                     perChunk / 64 * (sizeof(std::uint64_t) + kOctants * sizeof(std::uint8_t)));
 }
 
 Result<VoxelWorld> VoxelWorld::create(Int3 size, int chunkSize) {
@@ -49,8 +50,8 @@ Result<VoxelWorld> VoxelWorld::create(Int3 size, int chunkSize) {
     world.bricks_.assign(
         static_cast<std::size_t>(world.brickCount_.x) * world.brickCount_.y * world.brickCount_.z,
         0);
-    // Nothing is solid yet: every brick is as far from solid as the cap allows.
-    world.brickDistance_.assign(world.bricks_.size(), kMaxBrickDistance);
+    // Nothing is solid yet: every brick reaches as far as the cap allows.
+    world.brickReach_.assign(world.bricks_.size() * kOctants, kMaxBrickReach);
     return world;
 }
 
@@ -63,19 +64,17 @@ void VoxelWorld::set(int x, int y, int z, Voxel v) {
                                                chunks_.x +
                                            (x >> chunkShift_)];
         count = v.solid() ? count + 1 : count - 1;
-        std::uint64_t& mask = bricks_[(static_cast<std::size_t>(z >> kBrickShift) * brickCount_.y +
-                                       (y >> kBrickShift)) *
-                                          brickCount_.x +
-                                      (x >> kBrickShift)];
+        const std::size_t brick =
+            (static_cast<std::size_t>(z >> kBrickShift) * brickCount_.y + (y >> kBrickShift)) *
+                brickCount_.x +
+            (x >> kBrickShift);
+        std::uint64_t& mask = bricks_[brick];
         if (mask == 0) emptySpaceStale_.value.store(true, std::memory_order_relaxed);
         mask ^= std::uint64_t{1} << brickBit(x, y, z);
-        // A brick that lost its last solid voxel is at least 1 from solid space: its distance
-        // 0 would give traversal an empty box of radius -1 (inverted, left the wrong way).
+        // A brick that lost its last solid voxel is an empty cube of side 1 in every octant: its
+        // reach 0 would give traversal an empty box (inverted, left the wrong way).
         if (mask == 0) {
-            brickDistance_[(static_cast<std::size_t>(z >> kBrickShift) * brickCount_.y +
-                            (y >> kBrickShift)) *
-                               brickCount_.x +
-                           (x >> kBrickShift)] = 1;
+            for (int o = 0; o < kOctants; ++o) brickReach_[o * bricks_.size() + brick] = 1;
         }
     }
     slot = v;
@@ -83,7 +82,7 @@ void VoxelWorld::set(int x, int y, int z, Voxel v) {
 
 void VoxelWorld::refreshEmptySpace() {
     if (emptySpaceCurrent()) return;
-    computeBrickDistances(bricks_, brickCount_, kMaxBrickDistance, brickDistance_);
+    computeBrickReach(bricks_, brickCount_, kMaxBrickReach, brickReach_);
     emptySpaceStale_.value = false;
 }
 

@@ -1,5 +1,5 @@
 // The CPU side of the shared voxel traversal (src/gpu/shaders/shared/voxel_dda.h): the walk in
-// double (walk_access.h), and the accessors over a VoxelWorld's brick masks, brick distances and
+// double (walk_access.h), and the accessors over a VoxelWorld's brick masks, brick reach and
 // chunk counts. The GPU side is src/gpu/shaders/voxel/voxel_world_access.glsl.
 #pragma once
 
@@ -28,8 +28,8 @@ inline bool voxelMaskBit(std::uint64_t mask, int bit) {
     return ((mask >> bit) & 1u) != 0;
 }
 
-inline int voxelBrickDistance(const voxel::VoxelWorld& w, ivec3 b) {
-    return w.brickDistance(b.x, b.y, b.z);
+inline int voxelBrickReach(const voxel::VoxelWorld& w, ivec3 b, int octant) {
+    return w.brickReach(octant, b.x, b.y, b.z);
 }
 
 inline bool voxelChunkEmpty(const voxel::VoxelWorld& w, ivec3 cell) {

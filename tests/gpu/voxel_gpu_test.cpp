@@ -65,11 +65,11 @@ ShadeOptions terrainShading(ShadeOptions::ReflectionMode mode) {
 }
 
 TEST(VoxelGpu, MemoryEstimateAndRefusal) {
-    // 512^3 RGBA in 32^3 chunks: 512 MiB of voxels, 24 MiB of brick masks and distances (12
-    // bytes per 4^3 brick), plus small tables and the image.
+    // 512^3 RGBA in 32^3 chunks: 512 MiB of voxels, 32 MiB of brick masks and reach (16 bytes
+    // per 4^3 brick: the mask and a reach byte per octant), plus small tables and the image.
     const std::uint64_t big = estimateVoxelGpuMemory({512, 512, 512}, 32, nullptr, 0, 0);
-    EXPECT_GE(big, std::uint64_t{536} << 20);
-    EXPECT_LT(big, (std::uint64_t{536} << 20) + (1u << 20));
+    EXPECT_GE(big, std::uint64_t{544} << 20);
+    EXPECT_LT(big, (std::uint64_t{544} << 20) + (1u << 20));
     LUXEL_REQUIRE_GPU(context);
     const VoxelWorld world = VoxelWorld::create({64, 64, 64}, 16).value();
     auto refused = VoxelGpuRenderer::create(*context, world, nullptr, 1u << 20);

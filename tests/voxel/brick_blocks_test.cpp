@@ -3,7 +3,7 @@
 // against the plain per-voxel DDA (every field but `steps`) and the shared kernel (every field,
 // `steps` included) on random worlds whose bricks are partly filled, with tMax and step caps that
 // end rays inside a half, partial bricks at the world's far sides and voxels removed after
-// the distances were computed.
+// the reach was computed.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -153,7 +153,7 @@ TEST(VoxelBrickBlocks, TMaxAndStepCapEndRaysInsideHalves) {
     EXPECT_GT(capped, 3000);
 }
 
-// Removing voxels keeps the distances current (only conservative), so the jumps run on the
+// Removing voxels keeps the reach current (only conservative), so the jumps run on the
 // changed masks: halves that just became empty are crossed, and still exactly.
 TEST(VoxelBrickBlocks, RemovedVoxelsAreCrossedExactly) {
     const Int3 size{44, 40, 44};

@@ -1,9 +1,11 @@
-// Brick occupancy masks and empty-space distances of VoxelWorld, and exact traversal with them.
+// Brick occupancy masks and the directional empty-space reach of VoxelWorld, and exact traversal
+// with them.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <random>
+#include <vector>
 
 #include "luxel/voxel/dda.h"
 #include "luxel/voxel/generators.h"
@@ -14,20 +16,54 @@ namespace {
 
 constexpr Voxel kStone{128, 128, 128, 255};
 
-// Chebyshev distance in bricks from (bx, by, bz) to the nearest brick with a solid voxel.
-int bruteForceDistance(const VoxelWorld& world, Int3 b) {
-    int best = VoxelWorld::kMaxBrickDistance;
+// The side of the largest cube of empty bricks with a corner at brick b extending towards
+// `octant` (bricks outside the world empty), grown one shell at a time, capped.
+int bruteForceReach(const VoxelWorld& world, Int3 b, int octant) {
     const Int3 n = world.brickCount();
-    for (int z = 0; z < n.z; ++z) {
-        for (int y = 0; y < n.y; ++y) {
-            for (int x = 0; x < n.x; ++x) {
-                if (world.brickMask(x, y, z) == 0) continue;
-                const int d = std::max({std::abs(x - b.x), std::abs(y - b.y), std::abs(z - b.z)});
-                best = std::min(best, d);
+    const Int3 sign{(octant & 1) ? -1 : 1, (octant & 2) ? -1 : 1, (octant & 4) ? -1 : 1};
+    // Bricks of the world from b towards the octant, per axis: beyond them the cube is outside.
+    const Int3 extent{sign.x > 0 ? n.x - b.x : b.x + 1, sign.y > 0 ? n.y - b.y : b.y + 1,
+                      sign.z > 0 ? n.z - b.z : b.z + 1};
+    for (int side = 1; side <= VoxelWorld::kMaxBrickReach; ++side) {
+        if (side - 1 >= std::max({extent.x, extent.y, extent.z})) break;  // all outside from here
+        // The shell that grows the cube of side - 1 to this side, where it is in the world.
+        for (int k = 0; k < std::min(side, extent.z); ++k) {
+            for (int j = 0; j < std::min(side, extent.y); ++j) {
+                for (int i = 0; i < std::min(side, extent.x); ++i) {
+                    if (std::max({i, j, k}) != side - 1) continue;
+                    if (world.brickMask(b.x + sign.x * i, b.y + sign.y * j, b.z + sign.z * k) !=
+                        0) {
+                        return side - 1;
+                    }
+                }
             }
         }
     }
-    return best;
+    return VoxelWorld::kMaxBrickReach;
+}
+
+// Every brick's reach in every octant against bruteForceReach: equal, or (after removals without
+// a refresh) never more.
+void expectReach(const VoxelWorld& world, bool exact) {
+    const Int3 n = world.brickCount();
+    for (int o = 0; o < VoxelWorld::kOctants; ++o) {
+        for (int bz = 0; bz < n.z; ++bz) {
+            for (int by = 0; by < n.y; ++by) {
+                for (int bx = 0; bx < n.x; ++bx) {
+                    const int truth = bruteForceReach(world, {bx, by, bz}, o);
+                    const int reach = world.brickReach(o, bx, by, bz);
+                    if (exact) {
+                        ASSERT_EQ(reach, truth)
+                            << "brick " << bx << " " << by << " " << bz << ", octant " << o;
+                    } else {
+                        ASSERT_LE(reach, truth)
+                            << "brick " << bx << " " << by << " " << bz << ", octant " << o;
+                        ASSERT_EQ(reach == 0, world.brickMask(bx, by, bz) != 0);
+                    }
+                }
+            }
+        }
+    }
 }
 
 TEST(VoxelEmptySpace, BrickMasksTrackEveryVoxel) {
@@ -46,50 +82,73 @@ TEST(VoxelEmptySpace, BrickMasksTrackEveryVoxel) {
     EXPECT_EQ(world.brickMask(3, 2, 1), std::uint64_t{1} << VoxelWorld::brickBit(12, 8, 5));
 }
 
-TEST(VoxelEmptySpace, DistancesMatchBruteForce) {
-    VoxelWorld world = VoxelWorld::create({70, 50, 90}, 16).value();
-    std::mt19937 rng(5);
-    std::uniform_int_distribution<int> x(0, 69), y(0, 49), z(0, 89);
-    for (int i = 0; i < 12; ++i) world.set(x(rng), y(rng), z(rng), kStone);
-    EXPECT_FALSE(world.emptySpaceCurrent());
-    world.refreshEmptySpace();
-    EXPECT_TRUE(world.emptySpaceCurrent());
-    const Int3 n = world.brickCount();
-    for (int bz = 0; bz < n.z; ++bz) {
-        for (int by = 0; by < n.y; ++by) {
-            for (int bx = 0; bx < n.x; ++bx) {
-                ASSERT_EQ(world.brickDistance(bx, by, bz), bruteForceDistance(world, {bx, by, bz}))
-                    << bx << " " << by << " " << bz;
+TEST(VoxelEmptySpace, ReachIsTheLargestEmptyCubePerOctant) {
+    // Sides that are not multiples of the brick (partial bricks at the edges), sparse and dense.
+    for (const int solids : {3, 25, 400}) {
+        VoxelWorld world = VoxelWorld::create({37, 22, 29}, 8).value();
+        std::mt19937 rng(solids);
+        std::uniform_int_distribution<int> x(0, 36), y(0, 21), z(0, 28);
+        std::vector<Int3> placed;
+        for (int i = 0; i < solids; ++i) {
+            placed.push_back({x(rng), y(rng), z(rng)});
+            world.set(placed.back().x, placed.back().y, placed.back().z, kStone);
+        }
+        EXPECT_FALSE(world.emptySpaceCurrent());
+        world.refreshEmptySpace();
+        EXPECT_TRUE(world.emptySpaceCurrent());
+        expectReach(world, true);
+        // Removals keep the reach usable (never more than the truth; an emptied brick reaches 1).
+        // Every other placed voxel, and the whole brick of the first one.
+        std::vector<Int3> removals;
+        for (std::size_t i = 0; i < placed.size(); i += 2) removals.push_back(placed[i]);
+        for (int i = 0; i < 64; ++i) {
+            removals.push_back({(placed[0].x & ~3) + i % 4, (placed[0].y & ~3) + i / 4 % 4,
+                                (placed[0].z & ~3) + i / 16});
+        }
+        int emptied = 0;
+        for (const Int3& v : removals) {
+            const int vx = v.x, vy = v.y, vz = v.z;
+            if (!world.inside(vx, vy, vz)) continue;
+            const bool was = world.brickMask(vx >> 2, vy >> 2, vz >> 2) != 0;
+            world.set(vx, vy, vz, Voxel{});
+            if (was && world.brickMask(vx >> 2, vy >> 2, vz >> 2) == 0) {
+                ++emptied;
+                for (int o = 0; o < VoxelWorld::kOctants; ++o) {
+                    ASSERT_EQ(world.brickReach(o, vx >> 2, vy >> 2, vz >> 2), 1);
+                }
             }
         }
+        EXPECT_GT(emptied, 0);
+        EXPECT_TRUE(world.emptySpaceCurrent());
+        expectReach(world, false);
+        // A brick gains a voxel: stale until refreshed.
+        const Int3 n = world.brickCount();
+        for (int b = 0; b < n.x * n.y * n.z && world.emptySpaceCurrent(); ++b) {
+            const int bx = b % n.x, by = b / n.x % n.y, bz = b / (n.x * n.y);
+            if (world.brickMask(bx, by, bz) == 0) world.set(4 * bx, 4 * by, 4 * bz, kStone);
+        }
+        EXPECT_FALSE(world.emptySpaceCurrent());
+        world.refreshEmptySpace();
+        expectReach(world, true);
     }
 }
 
-TEST(VoxelEmptySpace, OnlyNewlyOccupiedBricksMakeDistancesStale) {
-    VoxelWorld world = VoxelWorld::create({32, 32, 32}, 8).value();
-    EXPECT_TRUE(world.emptySpaceCurrent());  // empty: every distance is the cap, which is right
-    world.set(3, 3, 3, kStone);
-    EXPECT_FALSE(world.emptySpaceCurrent());
-    world.refreshEmptySpace();
-    world.set(2, 3, 3, kStone);  // same brick: distances unchanged
-    EXPECT_TRUE(world.emptySpaceCurrent());
-    world.set(3, 3, 3, Voxel{});  // removal: distances only become conservative
-    world.set(2, 3, 3, Voxel{});
-    EXPECT_TRUE(world.emptySpaceCurrent());
-    addSphere(world, {20, 20, 20}, 3, kStone);  // generators refresh when they finish
-    EXPECT_TRUE(world.emptySpaceCurrent());
-    EXPECT_EQ(world.brickDistance(5, 5, 5), 0);
+TEST(VoxelEmptySpace, ReachOfAnEmptyWorldIsTheCap) {
+    const VoxelWorld world = VoxelWorld::create({12, 8, 4}, 4).value();
+    ASSERT_TRUE(world.emptySpaceCurrent());
+    expectReach(world, true);  // outside the world counts as empty: no cube ever ends
+    EXPECT_EQ(world.brickReach(5, 2, 1, 0), VoxelWorld::kMaxBrickReach);
 }
 
 // Traversal must give exactly the per-voxel loop's result whichever jumps it takes: compare the
-// three modes (distances current, stale distances = chunk/brick jumps, no jumps) on rays whose
+// three modes (reach current, stale reach = chunk/brick jumps, no jumps) on rays whose
 // small integer directions from cell centres and corners create ties inside jumps.
-TEST(VoxelEmptySpace, DistanceJumpsMatchPlainTraversal) {
+TEST(VoxelEmptySpace, ReachJumpsMatchPlainTraversal) {
     VoxelWorld world = VoxelWorld::create({96, 80, 96}, 16).value();
     std::mt19937 rng(11);
     std::uniform_int_distribution<int> coord(0, 79);
     for (int i = 0; i < 400; ++i) world.set(coord(rng), coord(rng), coord(rng), kStone);
-    addBox(world, {40, 0, 40}, {60, 6, 60}, kStone);  // refreshes the distances
+    addBox(world, {40, 0, 40}, {60, 6, 60}, kStone);  // refreshes the reach
     ASSERT_TRUE(world.emptySpaceCurrent());
     VoxelWorld stale = world;
     stale.set(95, 79, 95, kStone);  // a new brick far from every ray's path below

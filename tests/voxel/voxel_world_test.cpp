@@ -65,12 +65,13 @@ TEST(VoxelWorld, RejectsBadSizesAndChunkSizes) {
 }
 
 TEST(VoxelWorld, MemoryEstimateCoversWholeChunks) {
-    // 512^3 in 32^3 chunks: 4 bytes per voxel plus a counter per chunk.
+    // 512^3 in 32^3 chunks: 4 bytes per voxel plus a counter per chunk, and per 4^3 brick an
+    // 8-byte mask and 8 reach bytes (one per direction octant).
     EXPECT_EQ(VoxelWorld::bytesFor({512, 512, 512}, 32), 512ull * 512 * 512 * 4 + 16 * 16 * 16 * 4 +
                                                              512ull * 512 * 512 / 8 +
-                                                             512ull * 512 * 512 / 64);
+                                                             512ull * 512 * 512 / 8);
     EXPECT_EQ(VoxelWorld::bytesFor({33, 1, 1}, 32),
-              2ull * 32 * 32 * 32 * 4 + 2 * 4 + 2 * 32 * 32 * 32 / 8 + 2 * 32 * 32 * 32 / 64);
+              2ull * 32 * 32 * 32 * 4 + 2 * 4 + 2 * 32 * 32 * 32 / 8 + 2 * 32 * 32 * 32 / 8);
 }
 
 }  // namespace

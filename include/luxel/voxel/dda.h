@@ -56,8 +56,9 @@ struct Hit {
     int steps = 0;  // loop iterations: voxel visits plus block jumps
 };
 
-// Whether castRay jumps over empty space: with the world's brick distances current
-// (VoxelWorld::emptySpaceCurrent) over the largest empty box of bricks around an empty brick, else
+// Whether castRay jumps over empty space: with the world's brick reach current
+// (VoxelWorld::emptySpaceCurrent) over the largest empty cube of bricks from an empty brick
+// towards the ray's direction octant (VoxelWorld::brickReach), else
 // over an empty chunk (chunkSolidCount == 0) or an empty brick (brickMask == 0); voxels are tested
 // through the brick masks. Both settings give the same result except for `steps` (and hence the
 // step cap).

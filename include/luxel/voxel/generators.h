@@ -33,7 +33,7 @@ struct TerrainOptions {
     double caveThreshold = 0.3;  // in (-1, 1); higher = fewer caves
 };
 
-// Every generator leaves the world's empty-space distances current (VoxelWorld::refreshEmptySpace).
+// Every generator leaves the world's brick reach current (VoxelWorld::refreshEmptySpace).
 
 // Checks every option (NaN, out of range) and returns an Error naming the option.
 Status validateTerrainOptions(const TerrainOptions& options);

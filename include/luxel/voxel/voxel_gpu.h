@@ -5,7 +5,7 @@
 // bounds them).
 //
 // The world is uploaded once in VoxelWorld's chunked layout with per-chunk solid counts, brick
-// occupancy masks and brick empty-space distances (the CPU's jumps); edits are re-uploaded chunk by
+// occupancy masks and the directional brick reach (the CPU's jumps); edits are re-uploaded chunk by
 // chunk with updateRegion.
 #pragma once
 

@@ -65,27 +65,36 @@ class VoxelWorld {
         return ((z & m) << (2 * kBrickShift)) | ((y & m) << kBrickShift) | (x & m);
     }
 
-    // Empty-space distance of brick (bx, by, bz): the Chebyshev distance, in bricks, to the nearest
-    // brick with a solid voxel (0 for such a brick), capped at kMaxBrickDistance. The box of bricks
-    // within distance - 1 holds no solid voxel, so traversal may cross it in one jump.
-    // Only meaningful while emptySpaceCurrent(): set() makes the distances stale when a brick gains
-    // its first solid voxel (removals only make them conservative; a brick that loses its last
-    // solid voxel gets distance 1, its own empty box), and refreshEmptySpace()
-    // recomputes them. Generators, importers and scene loading refresh when they finish.
-    static constexpr int kMaxBrickDistance = 32;
-    std::uint8_t brickDistance(int bx, int by, int bz) const {
-        return brickDistance_[(static_cast<std::size_t>(bz) * brickCount_.y + by) * brickCount_.x +
-                              bx];
+    // Directional empty-space reach of brick (bx, by, bz) towards direction octant `octant`
+    // (bit a set: the ray moves towards -inf on axis a; clear: +inf or not at all): the side, in
+    // bricks, of the largest cube of bricks without a solid voxel that has this brick at a corner
+    // and extends from it towards that octant (bricks outside the world count as empty), capped
+    // at kMaxBrickReach; 0 for a brick with a solid voxel. A ray in that octant may cross the cube
+    // in one exact jump (docs/algorithms/voxel-traversal.md §3).
+    // Only meaningful while emptySpaceCurrent(): set() makes the reach stale when a brick gains
+    // its first solid voxel (removals only make it conservative; a brick that loses its last
+    // solid voxel gets reach 1 in every octant, the brick itself), and refreshEmptySpace()
+    // recomputes it. Generators, importers and scene loading refresh when they finish.
+    static constexpr int kMaxBrickReach = 255;
+    static constexpr int kOctants = 8;
+    static constexpr int octantOf(bool negativeX, bool negativeY, bool negativeZ) {
+        return (negativeX ? 1 : 0) | (negativeY ? 2 : 0) | (negativeZ ? 4 : 0);
+    }
+    std::uint8_t brickReach(int octant, int bx, int by, int bz) const {
+        return brickReach_[static_cast<std::size_t>(octant) * bricks_.size() +
+                           (static_cast<std::size_t>(bz) * brickCount_.y + by) * brickCount_.x +
+                           bx];
     }
     bool emptySpaceCurrent() const {
         return !emptySpaceStale_.value.load(std::memory_order_relaxed);
     }
     void refreshEmptySpace();
     Int3 brickCount() const { return brickCount_; }
-    // The masks and distances as arrays, brick-linear with x fastest (index (bz * by + y) * bx + x
-    // for brickCount() (bx, by, bz)), for traversal loops that gather them for several rays.
+    // The masks and reach as arrays, brick-linear with x fastest (index (bz * by + y) * bx + x
+    // for brickCount() (bx, by, bz)), for traversal loops that gather them for several rays. The
+    // reach is 8 such planes of bytes, octant after octant: octant o's at o * (bricks in all).
     const std::uint64_t* brickMaskData() const { return bricks_.data(); }
-    const std::uint8_t* brickDistanceData() const { return brickDistance_.data(); }
+    const std::uint8_t* brickReachData() const { return brickReach_.data(); }
 
     // Same size and the same voxel everywhere (the chunk size does not matter).
     bool operator==(const VoxelWorld& other) const;
@@ -108,7 +117,7 @@ class VoxelWorld {
     std::vector<std::uint32_t> chunkSolid_;
     // One word per brick (bricks tile chunks), so chunk-parallel writers never share one.
     std::vector<std::uint64_t> bricks_;
-    std::vector<std::uint8_t> brickDistance_;
+    std::vector<std::uint8_t> brickReach_;  // kOctants planes of bricks_.size() bytes
     // Written by concurrent set() calls from chunk-parallel generators, hence atomic; copyable so
     // the world stays a value type.
     struct StaleFlag {

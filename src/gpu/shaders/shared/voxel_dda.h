@@ -13,7 +13,8 @@
 //     bool voxelMaskEmpty(LUXEL_BRICK_MASK m), bool voxelMaskBit(LUXEL_BRICK_MASK m, int bit)
 //   with LUXEL_BRICK_MASK the mask's type (uint64 in C++, uvec2 in GLSL) and bits in
 //   VoxelWorld::brickBit order;
-//     int  voxelBrickDistance(LUXEL_VOXEL_WORLD w, ivec3 brick)        empty-space distance
+//     int  voxelBrickReach(LUXEL_VOXEL_WORLD w, ivec3 brick, int octant)  directional reach
+//       (VoxelWorld::brickReach: octant bit a set when the ray moves towards -inf on axis a)
 //     bool voxelChunkEmpty(LUXEL_VOXEL_WORLD w, ivec3 cell)            chunk holding `cell`
 //     bool voxelSolidAt(LUXEL_VOXEL_WORLD w, ivec3 cell)               alpha != 0
 // - what voxel_walk.h needs (voxelNextToward).
@@ -29,12 +30,12 @@
 LUXEL_SHARED_BEGIN
 
 // The first solid voxel along o + t d with entry t in [0, tMax], within `cap` loop iterations.
-// `jumps`: skip empty space (brick masks, then the empty box given by the brick distances when
-// `distancesCurrent`, else the empty chunk or brick); otherwise visit every voxel. Both give the
-// same hit; only `steps` differs. o and d must be finite and d non-zero.
+// `jumps`: skip empty space (brick masks, then the empty cube of bricks the brick's reach gives
+// towards the ray's octant when `reachCurrent`, else the empty chunk or brick); otherwise visit
+// every voxel. Both give the same hit; only `steps` differs. o and d must be finite and d non-zero.
 LUXEL_FUNC_HOT VoxelTrace voxelTraverse(LUXEL_VOXEL_WORLD world, ivec3 size, int chunkShift,
                                         LUXEL_REAL3 o, LUXEL_REAL3 d, LUXEL_REAL tMax, int cap,
-                                        bool jumps, bool distancesCurrent) {
+                                        bool jumps, bool reachCurrent) {
     VoxelWalk w;
     w.o = o;
     w.d = d;
@@ -68,14 +69,18 @@ LUXEL_FUNC_HOT VoxelTrace voxelTraverse(LUXEL_VOXEL_WORLD world, ivec3 size, int
             if (!voxelStepOne(w, tMax)) return voxelMiss(steps, false);
             continue;
         }
-        // An empty brick: leave the empty box of bricks around it when the distances are current,
-        // else the whole chunk when it is empty, else just the brick.
+        // An empty brick: leave the empty cube of bricks from it towards the ray's octant when
+        // the reach is current (it holds the current cell, so the jump is exact), else the whole
+        // chunk when it is empty, else just the brick.
         ivec3 lo, hi;
-        if (distancesCurrent) {
-            const int r = voxelBrickDistance(world, b) - 1;
+        if (reachCurrent) {
+            const int octant =
+                (w.stp[0] < 0 ? 1 : 0) | (w.stp[1] < 0 ? 2 : 0) | (w.stp[2] < 0 ? 4 : 0);
+            const int r = voxelBrickReach(world, b, octant) - 1;
             for (int a = 0; a < 3; ++a) {
-                lo[a] = max((b[a] - r) << brickShift, 0);
-                hi[a] = min((b[a] + r + 1) << brickShift, size[a]) - 1;
+                const bool down = w.stp[a] < 0;
+                lo[a] = max((b[a] - (down ? r : 0)) << brickShift, 0);
+                hi[a] = min((b[a] + (down ? 0 : r) + 1) << brickShift, size[a]) - 1;
             }
         } else {
             const int shift = voxelChunkEmpty(world, c) ? chunkShift : brickShift;

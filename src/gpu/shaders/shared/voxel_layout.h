@@ -16,7 +16,9 @@
 //   6 output: vec4 per pixel (linear RGB, 1), rows top to bottom
 //   7 brick occupancy masks: uvec2 per 4^3 brick (low, high 32 bits of VoxelWorld::brickMask),
 //     bricks ((bz * bricksY + by) * bricksX + bx)
-//   8 brick empty-space distances: one uint per brick, same order (VoxelWorld::brickDistance)
+//   8 brick reach (VoxelWorld::brickReach): 8 planes of one byte per brick, octant after octant,
+//     each in the masks' brick order, packed four to a uint (byte i of the planes is bits
+//     8 * (i & 3) of word i >> 2); VoxelWorld::brickReachData as it is
 //   9 VoxelMaterial[LUXEL_VOXEL_MATERIALS]: the material of texture slot i (0..253), then the
 //     plain blocks' material (physical lighting)
 //   10 unused (the parameters are bound again; keeps the shadow bindings where
@@ -25,7 +27,7 @@
 //      levels; one-word placeholders unless LUXEL_VOXEL_SUN_VISIBILITY is set
 //
 // voxel_cast (a batch of rays; the CPU twin is castRays in dda.h) binds 0-2 as above, then
-// 3 VoxelCastRay per ray, 4 VoxelCastHit per ray, 5 brick masks, 6 brick distances.
+// 3 VoxelCastRay per ray, 4 VoxelCastHit per ray, 5 brick masks, 6 brick reach.
 #ifndef LUXEL_GPU_SHARED_VOXEL_LAYOUT_H
 #define LUXEL_GPU_SHARED_VOXEL_LAYOUT_H
 
@@ -46,8 +48,8 @@ using uint = std::uint32_t;
 #define LUXEL_VOXEL_SHADOWS 2u
 #define LUXEL_VOXEL_PROCEDURAL_TEXTURE 4u
 #define LUXEL_VOXEL_ENERGY_CONSERVING 8u
-// The brick distances are current (VoxelWorld::emptySpaceCurrent); else chunk and brick jumps.
-#define LUXEL_VOXEL_DISTANCES_CURRENT 16u
+// The brick reach is current (VoxelWorld::emptySpaceCurrent); else chunk and brick jumps.
+#define LUXEL_VOXEL_REACH_CURRENT 16u
 // Physical lighting (ShadeOptions::Lighting::Physical), refraction on, exact Fresnel (else
 // Schlick).
 #define LUXEL_VOXEL_PHYSICAL 256u

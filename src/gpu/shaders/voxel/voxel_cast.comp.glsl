@@ -12,7 +12,7 @@ layout(std430, set = 0, binding = 2) readonly buffer ChunkSolid { uint chunkSoli
 layout(std430, set = 0, binding = 3) readonly buffer Rays { VoxelCastRay rays[]; };
 layout(std430, set = 0, binding = 4) writeonly buffer Hits { VoxelCastHit hits[]; };
 layout(std430, set = 0, binding = 5) readonly buffer BrickMasks { uvec2 brickMasks[]; };
-layout(std430, set = 0, binding = 6) readonly buffer BrickDistances { uint brickDistances[]; };
+layout(std430, set = 0, binding = 6) readonly buffer BrickReach { uint brickReach[]; };
 layout(push_constant) uniform Push { VoxelCastPush batch; };
 
 #include "voxel/voxel_world_access.glsl"

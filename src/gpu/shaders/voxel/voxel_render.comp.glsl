@@ -13,7 +13,7 @@ layout(std430, set = 0, binding = 4) readonly buffer Texels { vec4 texels[]; };
 layout(std430, set = 0, binding = 5) readonly buffer SrgbTable { float srgbTable[]; };
 layout(std430, set = 0, binding = 6) writeonly buffer Output { VoxelPixel pixels[]; };
 layout(std430, set = 0, binding = 7) readonly buffer BrickMasks { uvec2 brickMasks[]; };
-layout(std430, set = 0, binding = 8) readonly buffer BrickDistances { uint brickDistances[]; };
+layout(std430, set = 0, binding = 8) readonly buffer BrickReach { uint brickReach[]; };
 layout(std430, set = 0, binding = 9) readonly buffer Materials { VoxelMaterial materials[]; };
 layout(push_constant) uniform Push { VoxelBandPush band; };
 // Bindings 11-14: the sun visibility arrays (shared/shadow_layout.h), declared by the include.

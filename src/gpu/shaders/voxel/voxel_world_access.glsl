@@ -1,7 +1,8 @@
 // The GPU side of the shared voxel traversal (shared/voxel_dda.h; the CPU side is
 // src/voxel/voxel_world_access.h): the walk in float (walk_access.glsl) and the accessors over
-// the world's storage buffers. Needs `params` (VoxelRenderParams), `voxels[]`, `chunkSolid[]`, `brickMasks[]` and
-// `brickDistances[]` declared by the includer (bindings in shared/voxel_layout.h).
+// the world's storage buffers. Needs `params` (VoxelRenderParams), `voxels[]`, `chunkSolid[]`,
+// `brickMasks[]` (uvec2) and `brickReach[]` (uint) declared by the includer (bindings and layout
+// in shared/voxel_layout.h).
 
 #include "voxel/walk_access.glsl"
 
@@ -44,8 +45,11 @@ bool voxelMaskBit(uvec2 mask, int bit) {
     return ((word >> uint(bit & 31)) & 1u) != 0u;
 }
 
-int voxelBrickDistance(uint world, ivec3 brick) {
-    return int(brickDistances[brickIndex(brick)]);
+// Byte `octant * bricks + brick` of the reach planes, four bytes to a word.
+int voxelBrickReach(uint world, ivec3 brick, int octant) {
+    const uint bricks = params.bricksX * params.bricksY * params.bricksZ;
+    const uint i = uint(octant) * bricks + brickIndex(brick);
+    return int((brickReach[i >> 2] >> ((i & 3u) * 8u)) & 0xFFu);
 }
 
 bool voxelChunkEmpty(uint world, ivec3 cell) {
@@ -65,7 +69,7 @@ Hit castRayLimited(vec3 o, vec3 d, float tMax, int cap, bool jumps) {
         return h;
     }
     const ivec3 size = ivec3(params.sizeX, params.sizeY, params.sizeZ);
-    const bool current = (params.flags & LUXEL_VOXEL_DISTANCES_CURRENT) != 0u;
+    const bool current = (params.flags & LUXEL_VOXEL_REACH_CURRENT) != 0u;
     const VoxelTrace trace =
         voxelTraverse(0u, size, int(params.chunkShift), o, d, tMax, cap, jumps, current);
     return hitFromTrace(o, d, trace);
