@@ -225,11 +225,14 @@ Status PathTracerGpu::addSamples(int count) {
                      std::to_string(kMaxPathSamples) + " in all");
     }
     s.gpuMilliseconds = 0.0;
-    for (int done = 0; done < count; done += kPathSamplesPerDownload) {
-        const int chunk = std::min(kPathSamplesPerDownload, count - done);
-        if (Status st = s.trace(s.samples + done, chunk); !st) return st;
+    // Each download's samples count as soon as they are in the totals, so after an error the
+    // image is that of samplesDone() samples.
+    for (int left = count; left > 0;) {
+        const int chunk = std::min(kPathSamplesPerDownload, left);
+        if (Status st = s.trace(s.samples, chunk); !st) return st;
+        s.samples += chunk;
+        left -= chunk;
     }
-    s.samples += count;
     return Ok{};
 }
 

@@ -50,7 +50,8 @@ class PathTracerGpu {
     ~PathTracerGpu();
 
     // Adds samples samplesDone() .. samplesDone() + count - 1 of every pixel, as
-    // PathTracer::addSamples. Fails when the total would exceed kMaxPathSamples.
+    // PathTracer::addSamples. Fails when the total would exceed kMaxPathSamples, and with the
+    // device's error (the samples of the downloads before it stay added: see samplesDone()).
     Status addSamples(int count);
     int samplesDone() const;
     PathTraceImage image() const;
