@@ -25,7 +25,7 @@ int nextPathSamples(int done, int target, int lastCount, double lastMilliseconds
 Status ProgressivePath::restart(const voxel::VoxelWorld& world, const voxel::Camera& camera,
                                 const voxel::ShadeOptions& shading,
                                 const voxel::PathTraceOptions& options,
-                                const voxel::TextureSet* textures, int target) {
+                                const voxel::TextureSet* textures, int target, GpuWorld gpu) {
     clear();
     if (target < 1 || target > voxel::kMaxPathSamples) {
         return Error("path tracing: target " + std::to_string(target) +
@@ -40,15 +40,23 @@ Status ProgressivePath::restart(const voxel::VoxelWorld& world, const voxel::Cam
         !s) {
         return s;
     }
-    auto tracer = voxel::PathTracer::create(world, camera, shading, options, textures);
-    if (!tracer) return tracer.error();
-    tracer_.emplace(std::move(*tracer));
+    if (gpu.context && gpu.renderer) {
+        auto tracer = voxel::PathTracerGpu::create(*gpu.context, *gpu.renderer, world, camera,
+                                                   shading, options);
+        if (!tracer) return tracer.error();
+        gpuTracer_.emplace(std::move(*tracer));
+    } else {
+        auto tracer = voxel::PathTracer::create(world, camera, shading, options, textures);
+        if (!tracer) return tracer.error();
+        tracer_.emplace(std::move(*tracer));
+    }
     target_ = target;
     return Ok{};
 }
 
 void ProgressivePath::clear() {
     tracer_.reset();
+    gpuTracer_.reset();
     lastCount_ = 0;
     added_ = 0;
     lastMilliseconds_ = 0.0;
@@ -59,18 +67,20 @@ void ProgressivePath::setTarget(int target) {
 }
 
 Result<voxel::PathTraceImage> ProgressivePath::step(double budgetMilliseconds) {
-    LUXEL_CHECK(tracer_.has_value());
-    const int count = nextPathSamples(tracer_->samplesDone(), target_, lastCount_,
-                                      lastMilliseconds_, budgetMilliseconds);
+    LUXEL_CHECK(active());
+    const int count =
+        nextPathSamples(samples(), target_, lastCount_, lastMilliseconds_, budgetMilliseconds);
     added_ = count;
     if (count > 0) {
         Stopwatch clock;
-        if (Status s = tracer_->addSamples(count); !s) return s.error();
+        if (Status s = tracer_ ? tracer_->addSamples(count) : gpuTracer_->addSamples(count); !s) {
+            return s.error();
+        }
         lastMilliseconds_ = clock.milliseconds();
     }
     // A step that only reads the mean back keeps the timing of the last one that sampled.
     if (count > 0) lastCount_ = count;
-    return tracer_->image();
+    return tracer_ ? tracer_->image() : gpuTracer_->image();
 }
 
 }  // namespace luxel::viewer

@@ -1,5 +1,6 @@
-// Voxel mode's progressive path tracing: a voxel::PathTracer whose samples are added a frame at a
-// time while the view stays still, and thrown away when anything changes. The path tracer's
+// Voxel mode's progressive path tracing: a voxel::PathTracer (or, on a GPU backend, a
+// voxel::PathTracerGpu over the world the ray caster uploaded) whose samples are added a frame at
+// a time while the view stays still, and thrown away when anything changes. The path tracer's
 // counter-based random numbers make the mean after N samples the same image `luxel render
 // --solver path --spp N` computes, however the samples were split over frames.
 #pragma once
@@ -8,6 +9,8 @@
 
 #include "luxel/core/error.h"
 #include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/path_trace_gpu.h"
+#include "voxel_frame_source.h"
 
 namespace luxel::viewer {
 
@@ -30,18 +33,22 @@ class ProgressivePath {
     // Starts a new accumulation of this view, to stop at `target` samples per pixel
     // (1..kMaxPathSamples). `world` and `textures` must stay unchanged and alive until clear()
     // or the next restart. Fails when the options are invalid (validatePathTrace) or the
-    // running sums do not fit in memory.
+    // running sums do not fit in memory. With `gpu` (the world uploaded by a GPU source, which
+    // must stay alive too) the samples are traced on its device.
     Status restart(const voxel::VoxelWorld& world, const voxel::Camera& camera,
                    const voxel::ShadeOptions& shading, const voxel::PathTraceOptions& options,
-                   const voxel::TextureSet* textures, int target);
+                   const voxel::TextureSet* textures, int target, GpuWorld gpu = {});
     // Forgets the accumulation (the world or the view changed).
     void clear();
     // A new target for the same view: it keeps adding up to it, or stops where it is.
     void setTarget(int target);
 
-    bool active() const { return tracer_.has_value(); }
-    bool finished() const { return !tracer_ || tracer_->samplesDone() >= target_; }
-    int samples() const { return tracer_ ? tracer_->samplesDone() : 0; }
+    bool active() const { return tracer_.has_value() || gpuTracer_.has_value(); }
+    bool onGpu() const { return gpuTracer_.has_value(); }
+    bool finished() const { return !active() || samples() >= target_; }
+    int samples() const {
+        return tracer_ ? tracer_->samplesDone() : gpuTracer_ ? gpuTracer_->samplesDone() : 0;
+    }
     int target() const { return target_; }
     // Samples the last step added (0 when it only read the mean back).
     int lastAdded() const { return added_; }
@@ -52,6 +59,7 @@ class ProgressivePath {
 
   private:
     std::optional<voxel::PathTracer> tracer_;
+    std::optional<voxel::PathTracerGpu> gpuTracer_;
     int target_ = 1;
     int lastCount_ = 0, added_ = 0;
     double lastMilliseconds_ = 0.0;

@@ -99,7 +99,9 @@ std::string number(double value) {
 
 Result<Image> RendererVoxel::renderLight(const voxel::Camera& internal, Frame& frame) {
     const VoxelSolverOptions& solver = state_.solver;
-    frame.backend = "cpu";  // both run on the CPU, whatever renders the ray caster's frames
+    // Sky visibility and the cascades run on the CPU, whatever renders the ray caster's frames;
+    // the path tracer runs on the GPU source's device.
+    frame.backend = "cpu";
     frame.device = "CPU, " + std::to_string(hardwareThreads()) + " threads";
     setMetadata(frame.metadata, "luxel.solver", voxelSolverName(solver.kind));
     if (solver.kind == VoxelSolver::SkyVisibility) {
@@ -118,11 +120,16 @@ Result<Image> RendererVoxel::renderLight(const voxel::Camera& internal, Frame& f
     }
     if (solver.kind == VoxelSolver::Cascades) return renderCascades(internal, frame);
     if (!path_.active()) {
-        if (Status s = path_.restart(world_, internal, state_.shading, solver.path,
-                                     &source_->textures(), solver.path.samplesPerPixel);
+        if (Status s =
+                path_.restart(world_, internal, state_.shading, solver.path, &source_->textures(),
+                              solver.path.samplesPerPixel, source_->gpuWorld());
             !s) {
             return s.error();
         }
+    }
+    if (path_.onGpu()) {
+        frame.backend = source_->backend();
+        frame.device = source_->device();
     }
     Stopwatch clock;
     auto traced = path_.step(kPathStepMilliseconds);

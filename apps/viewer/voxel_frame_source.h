@@ -15,7 +15,22 @@
 #include "luxel/voxel/texture_set.h"
 #include "luxel/voxel/voxel_world.h"
 
+namespace luxel::gpu {
+class Context;
+}  // namespace luxel::gpu
+
+namespace luxel::voxel {
+class VoxelGpuRenderer;
+}  // namespace luxel::voxel
+
 namespace luxel::viewer {
+
+// The world as a GPU source has uploaded it: what the GPU path tracer traces (both null on the
+// CPU).
+struct GpuWorld {
+    gpu::Context* context = nullptr;
+    voxel::VoxelGpuRenderer* renderer = nullptr;
+};
 
 class VoxelFrameSource {
   public:
@@ -26,6 +41,8 @@ class VoxelFrameSource {
     virtual bool hardwareGpu() const = 0;
     // The world's face textures, which the CPU solvers (sky visibility, the path tracer) read too.
     virtual const voxel::TextureSet& textures() const = 0;
+    // The uploaded world, for the progressive path tracer to run on the same device.
+    virtual GpuWorld gpuWorld() { return {}; }
     // The world changed inside [min, maxExclusive) (voxel coordinates).
     virtual void worldEdited(const voxel::VoxelWorld& world, Int3 min, Int3 maxExclusive) = 0;
     // Linear radiance, camera.width() x camera.height(); appends its passes to `passes`.

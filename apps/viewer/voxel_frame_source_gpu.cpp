@@ -26,6 +26,7 @@ class GpuVoxelFrameSource final : public VoxelFrameSource {
     std::string device() const override { return context_->device().name; }
     bool hardwareGpu() const override { return gpu::autoUsesDevice(context_->device()); }
     const voxel::TextureSet& textures() const override { return textures_; }
+    GpuWorld gpuWorld() override { return {context_.get(), renderer_.get()}; }
     void worldEdited(const voxel::VoxelWorld& world, Int3 min, Int3 maxExclusive) override {
         // A failed upload leaves the old chunk on the GPU; the next render reports nothing wrong
         // but shows the edit late, so keep the message for the overlay.

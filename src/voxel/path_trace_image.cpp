@@ -4,16 +4,12 @@
 #include <cmath>
 #include <limits>
 
+#include "luxel/core/check.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/path_trace.h"
 
 namespace luxel::voxel {
 namespace {
-
-// Rec. 709 luminance of linear RGB.
-double luminance(Rgb c) {
-    return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
-}
 
 // The standard error of the mean of n samples with this sum and sum of squares (unbiased
 // variance); 0 for a single sample.
@@ -60,20 +56,14 @@ Status PathTracer::addSamples(int count) {
         for (int y = begin; y < end; ++y) {
             for (int x = 0; x < width; ++x) {
                 const std::uint64_t pixel = std::uint64_t(y) * width + x;
-                PixelSums& sums = sums_[pixel];
+                PathPixelSums& sums = sums_[pixel];
                 for (int k = first; k < first + count; ++k) {
                     PathRng rng(options_.seed, pixel, std::uint64_t(k));
                     const float jx = rng.next(), jy = rng.next();  // uniform in the pixel
                     const Ray ray = camera_.rayAt(x + double(jx), y + double(jy));
                     const Rgb c =
                         tracePath(*world_, textures_, ray, shading_, options_, rng, &emitters_);
-                    for (int i = 0; i < 3; ++i) {
-                        sums.sum[i] += c[i];
-                        sums.sumSquares[i] += double(c[i]) * c[i];
-                    }
-                    const double l = luminance(c);
-                    sums.luminance += l;
-                    sums.luminanceSquares += l * l;
+                    sums.add(c);
                 }
             }
         }
@@ -83,7 +73,13 @@ Status PathTracer::addSamples(int count) {
 }
 
 PathTraceImage PathTracer::image() const {
-    const int width = camera_.width(), height = camera_.height(), n = samples_;
+    return pathTraceImageOf(sums_, camera_.width(), camera_.height(), samples_);
+}
+
+PathTraceImage pathTraceImageOf(std::span<const PathPixelSums> sums, int width, int height,
+                                int samples) {
+    LUXEL_CHECK_EQ(sums.size(), static_cast<std::size_t>(width) * height);
+    const int n = samples;
     PathTraceImage out;
     out.radiance = Image(width, height, 3);
     out.standardError = Image(width, height, 3);
@@ -91,7 +87,7 @@ PathTraceImage PathTracer::image() const {
     double errorSum = 0.0, meanSum = 0.0;
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            const PixelSums& s = sums_[std::size_t(y) * width + x];
+            const PathPixelSums& s = sums[std::size_t(y) * width + x];
             for (int i = 0; i < 3; ++i) {
                 out.radiance.at(x, y, i) = n > 0 ? float(s.sum[i] / n) : 0.0f;
                 out.standardError.at(x, y, i) = float(standardError(s.sum[i], s.sumSquares[i], n));

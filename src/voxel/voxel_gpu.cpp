@@ -413,8 +413,7 @@ Status VoxelGpuRenderer::updateRegion(const VoxelWorld& world, Int3 min, Int3 ma
     return s.uploadBricks(world);
 }
 
-Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions& options,
-                                       std::vector<gpu::PassTiming>* timings) {
+Status VoxelGpuRenderer::prepareRender(const Camera& camera, const ShadeOptions& options) {
     State& s = *state_;
     if (options.materialReflectivity) {
         return Error(
@@ -422,7 +421,6 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
     }
     const int w = camera.width(), h = camera.height();
     const std::uint64_t outputBytes = static_cast<std::uint64_t>(w) * h * 16;
-    Stopwatch upload;
     if (!s.output || s.outputBytes < outputBytes) {
         s.output.reset();
         s.outputBytes = 0;
@@ -500,6 +498,29 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
     if (Status st = s.context->upload(*s.params, std::as_bytes(std::span(&p, 1))); !st) {
         return st.error();
     }
+    return Ok{};
+}
+
+Result<std::vector<gpu::Buffer*>> VoxelGpuRenderer::bindings(const Camera& camera,
+                                                             const ShadeOptions& options) {
+    if (Status st = prepareRender(camera, options); !st) return st.error();
+    return renderBuffers();
+}
+
+std::vector<gpu::Buffer*> VoxelGpuRenderer::renderBuffers() const {
+    const State& s = *state_;
+    return {s.params.get(),     s.voxels.get(),    s.chunkSolid.get(), s.textureInfo.get(),
+            s.texels.get(),     s.srgb.get(),      s.output.get(),     s.brickMasks.get(),
+            s.brickReach.get(), s.materials.get(), s.params.get(),     s.shadow[0].get(),
+            s.shadow[1].get(),  s.shadow[2].get(), s.shadow[3].get()};
+}
+
+Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions& options,
+                                       std::vector<gpu::PassTiming>* timings) {
+    State& s = *state_;
+    Stopwatch upload;
+    if (Status st = prepareRender(camera, options); !st) return st.error();
+    const int w = camera.width(), h = camera.height();
     if (timings) timings->push_back({"upload parameters (CPU)", upload.milliseconds()});
 
     std::vector<gpu::Dispatch> dispatches;
@@ -507,10 +528,7 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
         gpu::Dispatch d;
         d.name = "voxel render rows " + std::to_string(row);
         d.program = s.program;
-        d.buffers = {s.params.get(),     s.voxels.get(),    s.chunkSolid.get(), s.textureInfo.get(),
-                     s.texels.get(),     s.srgb.get(),      s.output.get(),     s.brickMasks.get(),
-                     s.brickReach.get(), s.materials.get(), s.params.get(),     s.shadow[0].get(),
-                     s.shadow[1].get(),  s.shadow[2].get(), s.shadow[3].get()};
+        d.buffers = renderBuffers();
         const int rows = std::min(kBandRows, h - row);
         d.setPush(shared::VoxelBandPush{static_cast<std::uint32_t>(row),
                                         static_cast<std::uint32_t>(rows)});

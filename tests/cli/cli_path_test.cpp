@@ -1,6 +1,7 @@
 // `luxel render --solver path` end to end: a shipped voxel scene path traced at a small size
-// (image, provenance, summary), and the refusals: path on a 2D or octree scene, --spp without
-// --solver path, the ray caster's flags with it, bad sample counts.
+// (image, provenance, summary), on the GPU too (--backend gpu; without a device an error, and
+// auto the CPU), and the refusals: path on a 2D or octree scene, --spp without --solver path, the
+// ray caster's flags with it, bad sample counts.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +15,13 @@ namespace {
 
 using luxel::test::runLuxel;
 using luxel::test::RunResult;
+
+// luxel with no Vulkan driver to find.
+RunResult runWithoutVulkan(const std::string& args) {
+    return luxel::test::runCommand(
+        "VK_DRIVER_FILES=/nonexistent.json VK_ICD_FILENAMES=/nonexistent.json " +
+        std::string(LUXEL_CLI_PATH) + " " + args);
+}
 
 class CliPath : public luxel::test::CliFixture {};
 
@@ -84,6 +92,48 @@ TEST_F(CliPath, PathTracesAVoxelScene) {
         for (int x = 0; x < 32; ++x) ASSERT_EQ(second->at(x, y, 0), exr->at(x, y, 0));
 }
 
+// --backend gpu traces on the GPU (lavapipe in CI) with the CPU's random numbers: the same image
+// within its noise, and the backend in the provenance.
+TEST_F(CliPath, GpuBackendTracesTheSameImage) {
+    const std::string common = "render " + kTerrain +
+                               " --solver path --spp 8 --seed 3 --max-bounces 3 --size 24x14 "
+                               "--std-error ";
+    // No driver: --backend gpu fails with the reason, auto falls back to the CPU.
+    RunResult r =
+        runWithoutVulkan(common + path("ne.exr") + " --out " + path("n.exr") + " --backend gpu");
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("luxel: error: --backend gpu: "), std::string::npos) << r.output;
+    r = runWithoutVulkan(common + path("ae.exr") + " --out " + path("a.exr"));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("; using the CPU"), std::string::npos) << r.output;
+    if (runLuxel("devices").exitCode != 0) GTEST_SKIP() << "no Vulkan device";
+    r = runLuxel(common + path("ge.exr") + " --out " + path("g.exr") + " --backend gpu");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("gpu: "), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("path tracing: 8 samples per pixel"), std::string::npos) << r.output;
+    r = runLuxel(common + path("ce.exr") + " --out " + path("c.exr") + " --backend cpu");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    luxel::ImageMetadata metadata;
+    auto gpu = luxel::readExr(path("g.exr"), &metadata), cpu = luxel::readExr(path("c.exr"));
+    auto gpuError = luxel::readExr(path("ge.exr")), cpuError = luxel::readExr(path("ce.exr"));
+    ASSERT_TRUE(gpu.ok() && cpu.ok() && gpuError.ok() && cpuError.ok());
+    const std::string* backend = luxel::findMetadata(metadata, "luxel.backend");
+    ASSERT_NE(backend, nullptr);
+    EXPECT_EQ(*backend, "gpu");
+    double gpuSum = 0.0, cpuSum = 0.0;
+    int within = 0;
+    for (int y = 0; y < 14; ++y)
+        for (int x = 0; x < 24; ++x) {
+            const double a = gpu->at(x, y, 1), b = cpu->at(x, y, 1);
+            const double se = std::hypot(gpuError->at(x, y, 1), cpuError->at(x, y, 1));
+            within += std::abs(a - b) <= 4.0 * se + 1e-4 * std::abs(b);
+            gpuSum += a, cpuSum += b;
+        }
+    EXPECT_GT(cpuSum, 0.0);
+    EXPECT_NEAR(gpuSum, cpuSum, 0.02 * cpuSum);
+    EXPECT_GE(within, 24 * 14 * 98 / 100);
+}
+
 TEST_F(CliPath, RefusesPathWhereItDoesNotApply) {
     const std::string out = " --out " + path("x.exr");
     expectError("render " + kScenes + "2d/room.json --solver path" + out,
@@ -99,8 +149,6 @@ TEST_F(CliPath, RefusesPathWhereItDoesNotApply) {
                 "' must be an .exr file");
     expectError("render " + kTerrain + " --std-error " + path("e.exr") + out,
                 "--std-error applies to --solver path");
-    expectError("render " + kTerrain + " --solver path --backend gpu" + out,
-                "--solver path runs on the CPU");
     expectError(
         "render " + kTerrain + " --solver pt" + out,
         "--solver 'pt' is not one of: reference, hrc, rc (voxel scenes: raycast, path, ao, rc)");

@@ -233,7 +233,7 @@ TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
                             LUXEL_MEMBER(P, pad0),
                             LUXEL_MEMBER(P, pad1),
                             LUXEL_MEMBER(P, pad2)}};
-    for (const char* shader : {"voxel_render", "voxel_cast"}) {
+    for (const char* shader : {"voxel_render", "voxel_cast", "path_trace"}) {
         expectBuffer(shader, 0, params, /* element= */ false);
     }
     expectBuffer(

@@ -220,6 +220,42 @@ TEST(RendererVoxelPath, AccumulatesUntilTheTargetAndRestartsOnChanges) {
     EXPECT_EQ(edited.samples, 1);
 }
 
+// On a GPU source the samples are traced on its device, over the world it uploaded: the frames
+// name the device, and the picture is the CPU tracer's within its noise (the same random numbers;
+// float paths that graze an edge may differ).
+TEST(RendererVoxelPath, TracesOnTheGpuSourcesDevice) {
+    const voxel::VoxelWorld world = blockWorld();
+    auto source = makeGpuVoxelFrameSource("", /* hardwareOnly= */ false, world, {});
+    if (!source) GTEST_SKIP() << "no Vulkan device: " << source.error().message();
+    RendererVoxel renderer(blockWorld(), std::move(*source));
+    const VoxelState s = pathState(6);
+    VoxelState copy = s;
+    renderer.setState(std::move(copy));
+    Frame done;
+    for (int frames = 0; renderer.hasMoreWork(); ++frames) {
+        done = renderer.step();
+        ASSERT_TRUE(done.note.empty()) << done.note;
+        ASSERT_LT(frames, 20);
+    }
+    EXPECT_EQ(done.backend, "gpu");
+    EXPECT_EQ(done.samples, 6);
+    EXPECT_TRUE(done.converged);
+    EXPECT_TRUE(std::isfinite(done.relativeError));
+    voxel::PathTraceOptions once = s.solver.path;
+    once.samplesPerPixel = 6;
+    auto reference = voxel::pathTrace(world, cameraOf(s), s.shading, once);
+    ASSERT_TRUE(reference);
+    const Image expected = displayed(reference->radiance, s);
+    ASSERT_EQ(done.picture.size(), expected.size());
+    double difference = 0.0, sum = 0.0;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        difference += std::abs(done.picture.data()[i] - expected.data()[i]);
+        sum += expected.data()[i];
+    }
+    EXPECT_GT(sum, 0.0);
+    EXPECT_LT(difference, 0.02 * sum);
+}
+
 TEST(RendererVoxelSkyVisibility, IsTheLibraryRenderAndRendersOncePerView) {
     RendererVoxel renderer(blockWorld(), makeCpuVoxelFrameSource());
     VoxelState s = pathState(1);

@@ -1,7 +1,7 @@
 // `luxel render` for voxel scenes: DDA ray casting with shading, shadows and reflections, on the
-// CPU or (--backend) the GPU; or, with --solver path, the CPU path tracer; or, with --solver ao,
-// CPU sky visibility; or, with --solver rc, radiance cascades (lighting passes on the CPU or the
-// GPU).
+// CPU or (--backend) the GPU; or, with --solver path, the path tracer (CPU or GPU); or, with
+// --solver ao, CPU sky visibility; or, with --solver rc, radiance cascades (lighting passes on the
+// CPU or the GPU).
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -22,6 +22,7 @@
 #include "luxel/post/upscale.h"
 #include "luxel/post/voxel_frames.h"
 #include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/path_trace_gpu.h"
 #include "luxel/voxel/radiance_cascades_gpu.h"
 #include "luxel/voxel/render_image.h"
 #include "luxel/voxel/shading.h"
@@ -197,9 +198,9 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
                   "--specular, --fresnel, --no-refraction, --shadows) apply to the "
                   "ray caster; --solver rc takes --rc-spacing and --bounces"));
     }
-    // The cascades' lighting passes run on the GPU too (the build and the picture on the CPU).
-    const bool cpuSolver = request.pathSolver || request.aoSolver;
-    const char* cpuSolverName = request.pathSolver ? "path" : "ao";
+    // The cascades' lighting passes run on the GPU too (the build and the picture on the CPU), and
+    // so does the path tracer; sky visibility is CPU only.
+    const bool cpuSolver = request.aoSolver;
     if (!request.pathStdError.empty() && !endsWithExr(request.pathStdError)) {
         return reportError(Error("--std-error '" + request.pathStdError +
                                  "' must be an .exr file (linear float)"));
@@ -208,8 +209,7 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         if (Status s = voxel::validateCascades(request.cascades); !s) return reportError(s.error());
     }
     if (cpuSolver && request.backend == gpu::Backend::Gpu) {
-        return reportError(Error(std::string("--solver ") + cpuSolverName +
-                                 " runs on the CPU; --backend gpu does not apply"));
+        return reportError(Error("--solver ao runs on the CPU; --backend gpu does not apply"));
     }
     auto context = cpuSolver ? Result<std::unique_ptr<gpu::Context>>(nullptr)
                              : chooseGpuBackend(request.backend, request.device, request.quiet);
@@ -238,8 +238,10 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
     double relativeError = 0.0;
     voxel::CascadeImage cascaded;
     if (request.pathSolver) {
-        auto traced =
-            voxel::pathTrace(scene->world, camera, scene->shading, request.path, &scene->textures);
+        auto traced = *context ? voxel::pathTraceGpu(**context, scene->world, camera,
+                                                     scene->shading, request.path, &scene->textures)
+                               : voxel::pathTrace(scene->world, camera, scene->shading,
+                                                  request.path, &scene->textures);
         if (!traced) return reportError(traced.error());
         relativeError = traced->relativeError;
         internal = std::move(traced->radiance);

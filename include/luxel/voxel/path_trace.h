@@ -22,6 +22,7 @@
 #include "luxel/voxel/dda.h"
 #include "luxel/voxel/path_trace_emitters.h"
 #include "luxel/voxel/path_trace_rng.h"
+#include "luxel/voxel/path_trace_sums.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/texture_set.h"
 #include "luxel/voxel/voxel_world.h"
@@ -56,15 +57,6 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ra
               const ShadeOptions& shading, const PathTraceOptions& options, PathRng& rng,
               const PathEmitters* emitters = nullptr);
 
-struct PathTraceImage {
-    Image radiance;       // mean linear radiance, RGB
-    Image standardError;  // standard error of that mean per pixel and channel (0 with 1 sample)
-    int samplesPerPixel = 0;
-    // Sum over pixels of the standard error of the mean luminance over the sum of the mean
-    // luminance: the noise left, relative to the image. NaN with 1 sample or a black image.
-    double relativeError = 0.0;
-};
-
 // Per-pixel running sums of the samples (and of their squares), so a render can grow pass by
 // pass: pass after pass gives the same image as one pass of all the samples. Keeps references to
 // the world and the textures, which must outlive it.
@@ -81,10 +73,6 @@ class PathTracer {
     PathTraceImage image() const;
 
   private:
-    struct PixelSums {
-        double sum[3] = {0, 0, 0}, sumSquares[3] = {0, 0, 0};
-        double luminance = 0, luminanceSquares = 0;
-    };
     PathTracer(const VoxelWorld& world, const Camera& camera, const ShadeOptions& shading,
                const PathTraceOptions& options, const TextureSet* textures);
 
@@ -94,7 +82,7 @@ class PathTracer {
     PathTraceOptions options_;
     const TextureSet* textures_;
     PathEmitters emitters_;
-    std::vector<PixelSums> sums_;
+    std::vector<PathPixelSums> sums_;
     int samples_ = 0;
 };
 

@@ -4,6 +4,7 @@
 // that light samples and bounce rays can be combined by multiple importance sampling.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "luxel/core/vec.h"
@@ -23,6 +24,8 @@ class PathEmitters {
 
     bool empty() const { return voxels_.empty(); }
     int size() const { return static_cast<int>(voxels_.size()); }
+    // The emitters in the order sample() picks them (the GPU tracer uploads them).
+    std::span<const Int3> voxels() const { return voxels_; }
 
     struct Sample {
         Int3 voxel;

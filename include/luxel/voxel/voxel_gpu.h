@@ -24,6 +24,7 @@
 #include "luxel/voxel/voxel_world.h"
 
 namespace luxel::gpu {
+class Buffer;
 class Context;
 struct PassTiming;
 }  // namespace luxel::gpu
@@ -70,12 +71,20 @@ class VoxelGpuRenderer {
                                       int stepCap = 0, ChunkSkip skip = ChunkSkip::Enabled,
                                       std::vector<gpu::PassTiming>* timings = nullptr);
 
+    // For other passes over this world that run the ray caster's shader code (the GPU path
+    // tracer, path_trace_gpu.h): uploads what render() would for this camera and options and
+    // returns the buffers voxel_render binds at 0..14 (src/gpu/shaders/shared/voxel_layout.h),
+    // valid until the next call to bindings, render or updateRegion.
+    Result<std::vector<gpu::Buffer*>> bindings(const Camera& camera, const ShadeOptions& options);
+
     // Bytes of device memory held now.
     std::uint64_t deviceBytes() const;
 
   private:
     struct State;
     explicit VoxelGpuRenderer(std::unique_ptr<State> state);
+    Status prepareRender(const Camera& camera, const ShadeOptions& options);
+    std::vector<gpu::Buffer*> renderBuffers() const;
     std::unique_ptr<State> state_;
 };
 

@@ -1,0 +1,261 @@
+// PathTracerGpu: the world through VoxelGpuRenderer's buffers, the emitters, the per-pixel sums,
+// and dispatches of path_trace.comp.glsl in bands of rows and chunks of samples (CPU reference:
+// PathTracer in path_trace.h).
+#include "luxel/voxel/path_trace_gpu.h"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "gpu/shaders/shared/path_trace_layout.h"
+#include "luxel/core/memory.h"
+#include "luxel/gpu/context.h"
+#include "luxel/voxel/voxel_gpu.h"
+
+namespace luxel::voxel {
+
+namespace shared = gpu::shared;
+
+namespace {
+
+// Rows per band and samples per dispatch: at most kMaxPathsPerDispatch paths, at least one row
+// and one sample.
+struct DispatchShape {
+    int rows = 1;
+    int samples = 1;
+};
+
+DispatchShape dispatchShape(int width, int height) {
+    DispatchShape s;
+    const std::int64_t budget = kMaxPathsPerDispatch;
+    s.rows = static_cast<int>(std::clamp<std::int64_t>(budget / width, 1, std::max(height, 1)));
+    s.samples = static_cast<int>(std::clamp<std::int64_t>(budget / (std::int64_t(width) * s.rows),
+                                                          1, kPathSamplesPerDownload));
+    return s;
+}
+
+// The path options as the shader reads them.
+shared::PathTracePush pathPush(const ShadeOptions& shading, const PathTraceOptions& options,
+                               int emitters) {
+    shared::PathTracePush p{};
+    p.seedLow = static_cast<std::uint32_t>(options.seed);
+    p.seedHigh = static_cast<std::uint32_t>(options.seed >> 32);
+    p.maxBounces = static_cast<std::uint32_t>(options.maxBounces);
+    p.rouletteAfter = static_cast<std::uint32_t>(options.rouletteAfter);
+    p.emitters = static_cast<std::uint32_t>(emitters);
+    // Normalised in double, as directSunLight does, then rounded.
+    const Vec3 d = shading.sunDirection;
+    const Vec3d sun = normalize(Vec3d{d.x, d.y, d.z});
+    p.sunX = float(sun.x), p.sunY = float(sun.y), p.sunZ = float(sun.z);
+    p.sunIrradianceR = shading.sunIrradiance.r;
+    p.sunIrradianceG = shading.sunIrradiance.g;
+    p.sunIrradianceB = shading.sunIrradiance.b;
+    return p;
+}
+
+}  // namespace
+
+struct PathTracerGpu::State {
+    gpu::Context* context = nullptr;
+    std::unique_ptr<VoxelGpuRenderer> owned;  // null when the world's upload is borrowed
+    VoxelGpuRenderer* world = nullptr;
+    Camera camera;
+    ShadeOptions shading;
+    PathTraceOptions options;
+    gpu::Program* program = nullptr;
+    std::shared_ptr<gpu::Buffer> emitters, sums;
+    int emitterCount = 0;
+    std::vector<PathPixelSums> totals;  // the running sums, in double
+    int samples = 0;
+    double gpuMilliseconds = 0.0;
+
+    // One submission of `count` samples per pixel (<= kPathSamplesPerDownload) from `first`,
+    // then the sums downloaded and added to the totals.
+    Status trace(int first, int count) {
+        // The ray caster's parameters for this camera and the path tracer's light; no sun
+        // visibility arrays (the path tracer's sun is a shadow ray).
+        ShadeOptions o = shading;
+        o.shadows = false;
+        o.materialReflectivity = nullptr;
+        auto bound = world->bindings(camera, o);
+        if (!bound) return bound.error();
+        std::vector<gpu::Buffer*> buffers = *bound;
+        buffers.push_back(emitters.get());
+        buffers.push_back(sums.get());
+        const int width = camera.width(), height = camera.height();
+        const DispatchShape shape = dispatchShape(width, height);
+        shared::PathTracePush push = pathPush(shading, options, emitterCount);
+        std::vector<gpu::Dispatch> dispatches;
+        for (int done = 0; done < count; done += shape.samples) {
+            const int chunk = std::min(shape.samples, count - done);
+            for (int row = 0; row < height; row += shape.rows) {
+                const int rows = std::min(shape.rows, height - row);
+                gpu::Dispatch d;
+                d.name = "path trace rows " + std::to_string(row) + " samples " +
+                         std::to_string(first + done);
+                d.program = program;
+                d.buffers = buffers;
+                push.rowOffset = static_cast<std::uint32_t>(row);
+                push.rows = static_cast<std::uint32_t>(rows);
+                push.firstSample = static_cast<std::uint32_t>(first + done);
+                push.samples = static_cast<std::uint32_t>(chunk);
+                push.accumulate = done > 0 ? 1u : 0u;
+                d.setPush(push);
+                d.setThreads(static_cast<std::uint64_t>(width), static_cast<std::uint64_t>(rows));
+                dispatches.push_back(std::move(d));
+            }
+        }
+        auto passes = context->run(dispatches);
+        if (!passes) return passes.error();
+        for (const gpu::PassTiming& t : *passes) gpuMilliseconds += t.milliseconds;
+        std::vector<shared::PathPixelSums> pixels(totals.size());
+        if (Status st = context->download(*sums, std::as_writable_bytes(std::span(pixels))); !st) {
+            return st;
+        }
+        // Undo the shift: with m = count, sum x = m s0 + S1 and sum x^2 = m s0^2 + 2 s0 S1 + S2.
+        const double m = count;
+        for (std::size_t i = 0; i < pixels.size(); ++i) {
+            const shared::PathPixelSums& p = pixels[i];
+            PathPixelSums& t = totals[i];
+            const double shift[4] = {p.shiftR, p.shiftG, p.shiftB, p.shiftL};
+            const double sum[4] = {p.sumR, p.sumG, p.sumB, p.sumL};
+            const double squares[4] = {p.squaresR, p.squaresG, p.squaresB, p.squaresL};
+            for (int c = 0; c < 3; ++c) {
+                t.sum[c] += m * shift[c] + sum[c];
+                t.sumSquares[c] += m * shift[c] * shift[c] + 2.0 * shift[c] * sum[c] + squares[c];
+            }
+            t.luminance += m * shift[3] + sum[3];
+            t.luminanceSquares += m * shift[3] * shift[3] + 2.0 * shift[3] * sum[3] + squares[3];
+        }
+        return Ok{};
+    }
+};
+
+PathTracerGpu::PathTracerGpu(std::unique_ptr<State> state) : state_(std::move(state)) {}
+PathTracerGpu::PathTracerGpu(PathTracerGpu&&) noexcept = default;
+PathTracerGpu& PathTracerGpu::operator=(PathTracerGpu&&) noexcept = default;
+PathTracerGpu::~PathTracerGpu() = default;
+
+Result<PathTracerGpu> PathTracerGpu::create(gpu::Context& context, const VoxelWorld& world,
+                                            const Camera& camera, const ShadeOptions& shading,
+                                            const PathTraceOptions& options,
+                                            const TextureSet* textures) {
+    return make(context, nullptr, world, camera, shading, options, textures);
+}
+
+Result<PathTracerGpu> PathTracerGpu::create(gpu::Context& context, VoxelGpuRenderer& uploaded,
+                                            const VoxelWorld& world, const Camera& camera,
+                                            const ShadeOptions& shading,
+                                            const PathTraceOptions& options) {
+    return make(context, &uploaded, world, camera, shading, options, nullptr);
+}
+
+Result<PathTracerGpu> PathTracerGpu::make(gpu::Context& context, VoxelGpuRenderer* uploaded,
+                                          const VoxelWorld& world, const Camera& camera,
+                                          const ShadeOptions& shading,
+                                          const PathTraceOptions& options,
+                                          const TextureSet* textures) {
+    if (Status s = validatePathTrace(shading, options); !s) return s.error();
+    const std::int64_t pixels = std::int64_t(camera.width()) * camera.height();
+    if (pixels > kMaxPathPixels) {
+        return Error("path tracing: image " + std::to_string(camera.width()) + "x" +
+                     std::to_string(camera.height()) + " has more than " +
+                     std::to_string(kMaxPathPixels) + " pixels");
+    }
+    const PathEmitters found =
+        options.sampleEmitters ? PathEmitters::find(world, shading.materials) : PathEmitters{};
+    // The sums on the device and their download and double totals on the host.
+    const std::uint64_t sumBytes = std::uint64_t(pixels) * sizeof(shared::PathPixelSums);
+    const std::uint64_t emitterBytes =
+        std::uint64_t(std::max(found.size(), 1)) * sizeof(shared::PathEmitterVoxel);
+    const std::uint64_t device = context.device().deviceLocalBytes;
+    if (device > 0 && sumBytes + emitterBytes > device) {
+        return Error("path tracing on the GPU: the sums of a " + std::to_string(camera.width()) +
+                     "x" + std::to_string(camera.height()) + " image and " +
+                     std::to_string(found.size()) + " emitters need " +
+                     formatBytes(sumBytes + emitterBytes) + ", the device has " +
+                     formatBytes(device));
+    }
+    if (Status s = checkMemory(
+            std::uint64_t(pixels) * (sizeof(PathPixelSums) + sizeof(shared::PathPixelSums)),
+            "the path tracer's per-pixel sums");
+        !s) {
+        return s.error();
+    }
+    auto program = context.program("path_trace", LUXEL_PATH_BUFFERS, sizeof(shared::PathTracePush));
+    if (!program) return program.error();
+    auto state = std::make_unique<State>();
+    State& s = *state;
+    s.context = &context;
+    s.world = uploaded;
+    if (!uploaded) {
+        auto renderer = VoxelGpuRenderer::create(context, world, textures);
+        if (!renderer) return renderer.error();
+        s.owned = std::make_unique<VoxelGpuRenderer>(std::move(*renderer));
+        s.world = s.owned.get();
+    }
+    s.camera = camera;
+    s.shading = shading;
+    s.options = options;
+    s.program = *program;
+    std::vector<shared::PathEmitterVoxel> voxels;
+    for (const Int3& v : found.voxels()) voxels.push_back({v.x, v.y, v.z, 0});
+    if (voxels.empty()) voxels.push_back({});
+    s.emitterCount = found.size();
+    auto emitters = context.createBuffer(emitterBytes);
+    if (!emitters) return emitters.error();
+    s.emitters = *emitters;
+    if (Status st = context.upload(*s.emitters, std::as_bytes(std::span(voxels))); !st) {
+        return st.error();
+    }
+    auto sums = context.createBuffer(sumBytes);
+    if (!sums) return sums.error();
+    s.sums = *sums;
+    s.totals.resize(static_cast<std::size_t>(pixels));
+    return PathTracerGpu(std::move(state));
+}
+
+Status PathTracerGpu::addSamples(int count) {
+    State& s = *state_;
+    if (count < 1 || count > kMaxPathSamples - s.samples) {
+        return Error("path tracing: " + std::to_string(count) + " more samples after " +
+                     std::to_string(s.samples) + " is outside 1.." +
+                     std::to_string(kMaxPathSamples) + " in all");
+    }
+    s.gpuMilliseconds = 0.0;
+    // Each download's samples count as soon as they are in the totals, so after an error the
+    // image is that of samplesDone() samples.
+    for (int left = count; left > 0;) {
+        const int chunk = std::min(kPathSamplesPerDownload, left);
+        if (Status st = s.trace(s.samples, chunk); !st) return st;
+        s.samples += chunk;
+        left -= chunk;
+    }
+    return Ok{};
+}
+
+int PathTracerGpu::samplesDone() const {
+    return state_->samples;
+}
+
+double PathTracerGpu::lastGpuMilliseconds() const {
+    return state_->gpuMilliseconds;
+}
+
+PathTraceImage PathTracerGpu::image() const {
+    const State& s = *state_;
+    return pathTraceImageOf(s.totals, s.camera.width(), s.camera.height(), s.samples);
+}
+
+Result<PathTraceImage> pathTraceGpu(gpu::Context& context, const VoxelWorld& world,
+                                    const Camera& camera, const ShadeOptions& shading,
+                                    const PathTraceOptions& options, const TextureSet* textures) {
+    auto tracer = PathTracerGpu::create(context, world, camera, shading, options, textures);
+    if (!tracer) return tracer.error();
+    if (Status s = tracer->addSamples(options.samplesPerPixel); !s) return s.error();
+    return tracer->image();
+}
+
+}  // namespace luxel::voxel
