@@ -253,6 +253,37 @@ TEST(PathTraceMaterials, WhiteFurnacesKeepTheSkyWithinSingleScatteringLoss) {
     }
 }
 
+TEST(PathTraceMaterials, SunHighlightIsTheGgxLobeWithAndWithoutTheDisk) {
+    // A rough metal plane (roughness 0.5, F = 1) under a black sky lit by the sun at 40 degrees
+    // from the normal, seen at 30 degrees from the mirror direction's side: the radiance is
+    // D(h) Vis cos_l E. A delta sun gives it with no noise; a 2-degree disk, sampled by light
+    // samples and bounce rays weighted by the power heuristic, gives its mean over the disk.
+    const VoxelWorld plane = floorWorld();
+    ShadeOptions o = plainLight(1.0f, Rgb(0.0f), Rgb(0.0f));
+    ASSERT_TRUE(o.materials.setPlain(metal(0.5f, Rgb(1.0f))).ok());
+    const double sunAngle = 40.0 * kPi / 180, viewAngle = 30.0 * kPi / 180;
+    const Vec3d l{std::sin(sunAngle), std::cos(sunAngle), 0.0};
+    const Vec3d v{-std::sin(viewAngle) * 0.8, std::cos(viewAngle), std::sin(viewAngle) * 0.6};
+    o.sunDirection = {float(l.x), float(l.y), float(l.z)};
+    o.sunIrradiance = Rgb(2.0f);
+    const Vec3d h = normalize(l + v);
+    const double alpha = 0.25;
+    const double expected = 2.0 * gpu::shared::ggxD(float(h.y), float(alpha)) *
+                            gpu::shared::ggxSmithVisibility(float(v.y), float(l.y), float(alpha)) *
+                            l.y;
+    const Ray ray{Vec3d{16.2, 1.0, 16.3} + v, -v};
+    PathTraceOptions p;
+    p.maxBounces = 1;
+    o.sunAngularRadius = 0.0;
+    const Estimate delta = traceRay(plane, ray, o, p, 16);
+    EXPECT_NEAR(delta.mean, expected, 1e-4 * expected);
+    EXPECT_EQ(delta.standardError, 0.0);
+    o.sunAngularRadius = 2.0 * kPi / 180;
+    const Estimate disk = traceRay(plane, ray, o, p, 20000);
+    EXPECT_GT(disk.standardError, 0.0);
+    EXPECT_NEAR(disk.mean, expected, 4.0 * disk.standardError + 0.01 * expected);
+}
+
 bool sameImage(const Image& a, const Image& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
