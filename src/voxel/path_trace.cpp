@@ -1,15 +1,20 @@
 // The path estimator of the voxel path tracer (path_trace.h;
-// docs/algorithms/voxel-path-tracing.md): one path per call, Lambertian bounces, next event
-// estimation towards the sun and the emissive voxels (with multiple importance sampling), Russian
-// roulette.
+// docs/algorithms/voxel-path-tracing.md): one path per call; at each surface the material's BSDF
+// (path_trace_bsdf.h) is lit by next event estimation towards the sun's disk and the emissive
+// voxels (multiple importance sampling) and sampled for the next direction; refracted rays walk
+// the transmissive voxels with Beer-Lambert absorption; Russian roulette.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
+#include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/surface_cast.h"
 #include "path_trace_surface.h"
+#include "voxel/path_trace_bsdf.h"
+#include "voxel/shading_physical.h"
+#include "voxel/sun_disk.h"
 
 namespace luxel::voxel {
 namespace {
@@ -36,30 +41,59 @@ Status finiteNonNegative(const char* field, Rgb c) {
     return Ok{};
 }
 
-// Power-heuristic weight of a strategy of density `mine` against one of density `other`.
-double powerHeuristic(double mine, double other) {
-    const double a = mine * mine, b = other * other;
-    return a + b > 0.0 ? a / (a + b) : 0.0;
+// Beer-Lambert over a path inside a medium: the ray caster's kernel (voxel_shading.h).
+Rgb mediumTransmittance(Rgb absorption, double distance) {
+    const gpu::shared::vec3 t = gpu::shared::voxelTransmittance(
+        {absorption.r, absorption.g, absorption.b}, float(distance));
+    return {t.x, t.y, t.z};
 }
 
 // Next event estimation towards the emissive voxels: one point on one facing face of one
 // emitter, weighted against the bounce ray that could have found it (multiple importance
 // sampling, power heuristic).
 Rgb emitterLight(const VoxelWorld& world, const TextureSet* textures, const PathEmitters& emitters,
-                 const Hit& hit, Rgb albedo, const ShadeOptions& o, PathRng& rng) {
+                 const Hit& hit, const PathBsdf& bsdf, const ShadeOptions& o, PathRng& rng) {
     const float u0 = rng.next(), u1 = rng.next(), u2 = rng.next(), u3 = rng.next();
+    if (!bsdf.smooth()) return {};
     const PathEmitters::Sample s = emitters.sample(hit.point, u0, u1, u2, u3);
     if (!(s.pdf > 0.0)) return {};
-    const double cosSurface = dot(toDouble(hit.normal), s.direction);
-    if (!(cosSurface > 0.0)) return {};
+    if (!(dot(toDouble(hit.normal), s.direction) > 0.0)) return {};
     // Visible when the shadow ray first meets the sampled face itself.
     const Hit seen = castToSurface(world, textures, {hit.point, s.direction}, o.stepCap).hit;
     if (!seen.hit || seen.voxel != s.voxel || seen.normal != s.normal) return {};
     const Voxel v = world.get(s.voxel.x, s.voxel.y, s.voxel.z);
     const Rgb emission = o.materials.forSlot(textureSlotOf(v)).emission;
-    const double bouncePdf = cosSurface / kPi;
-    const double weight = powerHeuristic(s.pdf, bouncePdf);
-    return albedo * emission * float(cosSurface / kPi * weight / s.pdf);
+    return bsdfLight(bsdf, s.direction, emission, s.pdf);
+}
+
+// Next event estimation towards the sun: its centre (a delta light) or a uniform direction in
+// its disk, weighted against the bounce rays that can meet the disk. Draws two numbers when the
+// disk has a size.
+Rgb sunLight(const VoxelWorld& world, const TextureSet* textures, const Hit& hit,
+             const PathBsdf& bsdf, const SunDisk& sun, const ShadeOptions& o, PathRng& rng) {
+    Vec3d l = sun.axis;
+    if (!sun.delta()) {
+        const float u0 = rng.next(), u1 = rng.next();
+        l = sun.sample(u0, u1);
+    }
+    if (!(o.sunIrradiance.maxComponent() > 0.0f) || !bsdf.smooth()) return {};
+    // Rays start on the face; castRay's start-cell rule puts them in the cell in front.
+    if (!(dot(toDouble(hit.normal), l) > 0.0) ||
+        surfaceRayBlocked(world, textures, {hit.point, l}, kInfinity, o.stepCap)) {
+        return {};
+    }
+    if (sun.delta()) return bsdfLight(bsdf, l, o.sunIrradiance, 0.0);
+    return bsdfLight(bsdf, l, sun.radiance(o.sunIrradiance), sun.pdf());
+}
+
+// Whether Russian roulette ends the path at vertex k; else the throughput is divided by the
+// survival probability. Draws one number once roulette has started.
+bool rouletteEnds(int k, const PathTraceOptions& p, float u, Rgb& throughput) {
+    if (k + 1 < p.rouletteAfter) return false;
+    const float q = std::min(1.0f, throughput.maxComponent());
+    if (u >= q) return true;
+    throughput = throughput * (1.0f / q);
+    return false;
 }
 
 }  // namespace
@@ -77,7 +111,7 @@ PathSurface pathSurfaceAt(const VoxelWorld& world, const SurfaceHit& s, const Sh
         o.textures && (s.slot < 0 ? !o.materials.hasSlot(materialSlot) || m.proceduralTexture
                                   : o.materials.hasSlot(s.slot) && m.proceduralTexture);
     if (procedural) colour = colour * textureFactor(hit, o);
-    return {colour, m.emission};
+    return {colour, m.emission, &m};
 }
 
 bool surfaceRayBlocked(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
@@ -93,14 +127,23 @@ bool surfaceRayBlocked(const VoxelWorld& world, const TextureSet* textures, cons
 Rgb directSunLight(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb albedo,
                    const ShadeOptions& o) {
     if (!(o.sunIrradiance.maxComponent() > 0.0f)) return {};
-    const Vec3d sun = normalize(Vec3d{o.sunDirection.x, o.sunDirection.y, o.sunDirection.z});
-    const double cosSun = dot(toDouble(hit.normal), sun);
-    // Rays start on the face; castRay's start-cell rule puts them in the cell in front.
-    if (!(cosSun > 0.0) ||
-        surfaceRayBlocked(world, textures, {hit.point, sun}, kInfinity, o.stepCap)) {
-        return {};
+    const SunDisk sun = SunDisk::make(o.sunDirection, o.sunAngularRadius);
+    const Vec3d n = toDouble(hit.normal);
+    // A delta sun: one shadow ray; a disk: the spiral's rays, each bringing radiance / pdf.
+    const int rays = sun.delta() ? 1 : kSunDiskRays;
+    double sum = 0.0;
+    for (int i = 0; i < rays; ++i) {
+        const Vec3d l = sun.spiral(i, rays);
+        const double cosSun = dot(n, l);
+        // Rays start on the face; castRay's start-cell rule puts them in the cell in front.
+        if (!(cosSun > 0.0) ||
+            surfaceRayBlocked(world, textures, {hit.point, l}, kInfinity, o.stepCap)) {
+            continue;
+        }
+        sum += cosSun;
     }
-    return albedo * o.sunIrradiance * float(cosSun / kPi);
+    if (sun.delta()) return albedo * o.sunIrradiance * float(sum / kPi);
+    return albedo * sun.radianceOverPdf(o.sunIrradiance) * float(sum / (rays * kPi));
 }
 
 Vec3d cosineDirection(Int3 normal, float u1, float u2) {
@@ -147,15 +190,49 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
               const ShadeOptions& o, const PathTraceOptions& p, PathRng& rng,
               const PathEmitters* emitters) {
     if (emitters && emitters->empty()) emitters = nullptr;
+    const SunDisk sun = SunDisk::make(o.sunDirection, o.sunAngularRadius);
     Rgb radiance, throughput(1.0f);
     Ray ray = cameraRay;
     Vec3d bounceOrigin;      // where the last bounce ray started
-    double bouncePdf = 0.0;  // its density in solid angle (0: the camera ray)
-    // Vertex k of the path is reached after k reflections.
-    for (int k = 0;; ++k) {
+    double bouncePdf = 0.0;  // its density in solid angle (0: the camera ray or a delta lobe)
+    bool inside = false;     // the ray travels through the medium of `cell`
+    Int3 cell;
+    // Vertex k of the path is reached after k reflections or refractions.
+    for (int k = 0;;) {
+        if (inside) {
+            // Through the transmissive voxels to where the ray leaves them, dimmed by Beer-Lambert.
+            const Voxel v = world.get(cell.x, cell.y, cell.z);
+            const Material& m = o.materials.forSlot(textureSlotOf(v));
+            const MediumExit exit = walkMedium(world, cell, ray.origin, ray.direction);
+            throughput = throughput * mediumTransmittance(m.absorption, exit.distance);
+            ray.origin = exit.point;
+            if (exit.intoSolid) {  // another solid behind the glass: seen directly, as in the ray
+                inside = false;    // caster (no interface, no vertex)
+                continue;
+            }
+            if (k == p.maxBounces) break;
+            const float uRoulette = k + 1 >= p.rouletteAfter ? rng.next() : 0.0f;
+            const ExitSplit split = splitAtExit(ray.direction, exit.outward, m.ior, o.fresnel);
+            // Reflect back inside with the Fresnel reflectance (always under total internal
+            // reflection), else refract out: the choice carries the weight.
+            const bool reflect = split.total || rng.next() < split.reflectance;
+            ray.direction = reflect ? split.reflected : split.refracted;
+            cell = exit.cell;
+            inside = reflect;
+            bouncePdf = 0.0;
+            if (rouletteEnds(k, p, uRoulette, throughput)) break;
+            ++k;
+            continue;
+        }
         const SurfaceHit s = castToSurface(world, textures, ray, o.stepCap);
         if (!s.hit.hit) {  // left the world (or ran past the step cap): the sky
             radiance += throughput * skyColor(ray.direction, o);
+            // The sun's disk, where a reflected or refracted ray meets it (the camera sees the
+            // sky without it, as in the ray caster).
+            if (k > 0 && sun.contains(ray.direction)) {
+                const double weight = bouncePdf > 0.0 ? powerHeuristic(bouncePdf, sun.pdf()) : 1.0;
+                radiance += throughput * sun.radiance(o.sunIrradiance) * float(weight);
+            }
             break;
         }
         const Hit& hit = s.hit;
@@ -164,7 +241,7 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
         if (surface.emission.maxComponent() > 0.0f) {
             // Seen by a bounce ray that emitter sampling could also have found: MIS-weighted.
             double weight = 1.0;
-            if (emitters && k > 0) {
+            if (emitters && bouncePdf > 0.0) {
                 const double lightPdf =
                     emitters->pdf(bounceOrigin, hit.voxel, hit.normal, hit.point);
                 weight = powerHeuristic(bouncePdf, lightPdf);
@@ -172,24 +249,27 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
             radiance += throughput * surface.emission * float(weight);
         }
         if (k == p.maxBounces) break;
-        // Next event estimation: the sun is a delta light, reached only by this shadow ray.
-        radiance += throughput * directSunLight(world, textures, hit, surface.albedo, o);
+        const PathBsdf bsdf =
+            pathBsdf(*surface.material, surface.albedo, hit.normal, normalize(ray.direction), o);
+        // Next event estimation (the smooth lobes only; a delta lobe counts what its ray meets).
+        radiance += throughput * sunLight(world, textures, hit, bsdf, sun, o, rng);
         if (emitters) {
-            radiance +=
-                throughput * emitterLight(world, textures, *emitters, hit, surface.albedo, o, rng);
+            radiance += throughput * emitterLight(world, textures, *emitters, hit, bsdf, o, rng);
         }
-        // Lambertian bounce by cosine sampling: f cos / pdf = albedo.
-        throughput = throughput * surface.albedo;
+        const float uRoulette = k + 1 >= p.rouletteAfter ? rng.next() : 0.0f;
+        const BsdfSample next = sampleBsdf(bsdf, rng);
+        if (next.lobe == BsdfSample::Lobe::None) break;
+        throughput = throughput * next.weight;
         if (!(throughput.maxComponent() > 0.0f)) break;
-        if (k + 1 >= p.rouletteAfter) {
-            const float q = std::min(1.0f, throughput.maxComponent());
-            if (rng.next() >= q) break;
-            throughput = throughput * (1.0f / q);
-        }
-        const float u1 = rng.next(), u2 = rng.next();
-        ray = {hit.point, cosineDirection(hit.normal, u1, u2)};
+        if (rouletteEnds(k, p, uRoulette, throughput)) break;
+        ray = {hit.point, next.direction};
         bounceOrigin = hit.point;
-        bouncePdf = dot(toDouble(hit.normal), ray.direction) / kPi;
+        bouncePdf = next.pdf;
+        if (next.lobe == BsdfSample::Lobe::Transmission) {
+            inside = true;
+            cell = hit.voxel;
+        }
+        ++k;
     }
     return radiance;
 }

@@ -14,14 +14,21 @@ namespace luxel::voxel {
 
 struct PathSurface {
     Rgb albedo, emission;
+    const Material* material = nullptr;  // the hit voxel's (in shading.materials)
 };
+
+// Shadow rays over the sun's disk per face or pixel of the deterministic soft sun (sun_disk.h)
+// of the sky visibility renderer.
+inline constexpr int kSunDiskRays = 16;
 
 // What the hit face reflects and emits: the physical shading's surface colour (voxel colour x
 // texel x procedural texture x material albedo; nearest texel), every material taken as diffuse.
 PathSurface pathSurfaceAt(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& o);
 
-// Radiance a Lambertian face of this albedo at `hit` reflects from the sun (a delta light, found
-// only by this shadow ray; cutout texels let it through). 0 when the sun is below the face.
+// Radiance a Lambertian face of this albedo at `hit` reflects from the sun: one shadow ray for a
+// delta sun (sunAngularRadius 0), else kSunDiskRays rays over the disk's fixed spiral, each
+// bringing the disk's radiance over its density (cutout texels let them through). 0 when the sun
+// is below the face.
 Rgb directSunLight(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb albedo,
                    const ShadeOptions& o);
 

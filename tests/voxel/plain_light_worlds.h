@@ -17,16 +17,20 @@ inline VoxelWorld makeWorld(Int3 size) {
     return std::move(*world);
 }
 
-// Light only from the materials and the sky the test sets; plain diffuse blocks.
+// Light only from the materials and the sky the test sets; plain diffuse blocks: Lambertian in
+// the path tracer too (ior 1: no index contrast, so no specular layer), and a delta sun unless
+// a test gives it a radius.
 inline ShadeOptions plainLight(float albedo, Rgb emission, Rgb sky) {
     ShadeOptions o;
     o.textures = false;
     o.sunIrradiance = Rgb(0.0f);
+    o.sunAngularRadius = 0.0;
     o.skyTop = o.skyHorizon = sky;
     Material m;
     m.name = "test";
     m.albedo = Rgb(albedo);
     m.emission = emission;
+    m.ior = 1.0f;
     EXPECT_TRUE(o.materials.setPlain(m).ok());
     return o;
 }

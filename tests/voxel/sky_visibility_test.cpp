@@ -26,7 +26,8 @@ VoxelWorld makeWorld(Int3 size) {
     return std::move(*world);
 }
 
-// Plain diffuse blocks of this albedo under a sky from `horizon` to `top` and the given sun.
+// Plain diffuse blocks of this albedo (Lambertian in the path tracer too: ior 1, no specular
+// layer) under a sky from `horizon` to `top` and the given sun (a disk of the default radius).
 ShadeOptions plainLight(float albedo, Rgb top, Rgb horizon, Rgb sun) {
     ShadeOptions o;
     o.textures = false;
@@ -37,6 +38,7 @@ ShadeOptions plainLight(float albedo, Rgb top, Rgb horizon, Rgb sun) {
     Material m;
     m.name = "test";
     m.albedo = Rgb(albedo);
+    m.ior = 1.0f;
     EXPECT_TRUE(o.materials.setPlain(m).ok());
     return o;
 }

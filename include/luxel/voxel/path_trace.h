@@ -1,15 +1,18 @@
 // A progressive Monte Carlo path tracer over the voxel world: the ground truth that faster voxel
 // lighting is measured against (docs/algorithms/voxel-path-tracing.md).
 //
-// Surfaces are Lambertian with albedo = voxel colour x texel x material albedo (as the physical
-// shading computes it); emissive materials emit their `emission`. Light comes from the sun (a
-// delta directional light of `sunIrradiance` towards `sunDirection`, sampled by next event
-// estimation with a shadow ray) and the scene's gradient sky (skyColor in shading.h), which rays
-// leaving the world see; emissive voxels are sampled as lights too, combined with the bounce rays
-// by multiple importance sampling. Bounces sample the cosine-weighted hemisphere; Russian roulette
-// ends paths after `rouletteAfter` bounces. Each sample draws its random numbers from a
-// counter-based generator keyed by (seed, pixel, sample), so images are bit-identical for any
-// thread count and for any split of the samples into progressive passes.
+// Surfaces have the scene's materials as the physical ray caster reads them (surface colour =
+// voxel colour x texel x material albedo): a diffuse base under a Fresnel-weighted GGX or mirror
+// layer, metals, and transmissive voxels that refract light in and out (total internal
+// reflection, Beer-Lambert absorption inside); emissive materials emit their `emission`. Light
+// comes from the sun (a disk of angular radius `sunAngularRadius` giving `sunIrradiance` on a
+// face square to `sunDirection`, or a delta light when the radius is 0), the scene's gradient
+// sky (skyColor in shading.h), which rays leaving the world see, and the emissive voxels; the
+// sun and the emitters are sampled by next event estimation and combined with the bounce rays by
+// multiple importance sampling. Russian roulette ends paths after `rouletteAfter` events. Each
+// sample draws its random numbers from a counter-based generator keyed by (seed, pixel, sample),
+// so images are bit-identical for any thread count and for any split of the samples into
+// progressive passes.
 #pragma once
 
 #include <cstdint>

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "../path_trace_surface.h"
+#include "../sun_disk.h"
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/surface_cast.h"
@@ -14,10 +15,8 @@ namespace luxel::voxel::cascades {
 namespace {
 
 constexpr float kInvPi = float(1.0 / 3.14159265358979323846);
-
-Vec3d normalised(Vec3 v) {
-    return normalize(Vec3d{v.x, v.y, v.z});
-}
+// Shadow rays from each quarter of a face towards a sun of non-zero radius.
+constexpr int kSunRaysPerQuarter = 2;
 
 // The mean colour of a texture's opaque texels: what a face of it reflects on average.
 Texel meanOpaqueTexel(const Texture& texture) {
@@ -32,16 +31,23 @@ Texel meanOpaqueTexel(const Texture& texture) {
     return Texel{float(sum[0] / count), float(sum[1] / count), float(sum[2] / count), 1};
 }
 
-// Fraction of the face's four quarter centres that see the sun (cutouts let it through).
-float sunVisibility(const RadianceCascades::State& state, const Face& face, Vec3d sun) {
+// Fraction of the face's shadow rays that reach the sun (cutouts let them through): from each of
+// its four quarter centres one ray to a delta sun, or kSunRaysPerQuarter rays to a disk (the
+// quarters take turns along the disk's spiral, sun_disk.h, so together they cover all of it).
+float sunVisibility(const RadianceCascades::State& state, const Face& face, const SunDisk& sun) {
     const Int3 n = normalFromIndex(face.normal);
-    if (!(n.x * sun.x + n.y * sun.y + n.z * sun.z > 0.0)) return 0.0f;
+    const Vec3d axis = sun.axis;
+    if (!(n.x * axis.x + n.y * axis.y + n.z * axis.z > 0.0)) return 0.0f;
+    const int perQuarter = sun.delta() ? 1 : kSunRaysPerQuarter;
     int lit = 0;
     for (int i = 0; i < 4; ++i) {
-        lit += !surfaceRayBlocked(*state.world, state.textures, {faceQuarterCentre(face, i), sun},
-                                  kInfinity, state.shading.stepCap);
+        for (int j = 0; j < perQuarter; ++j) {
+            const Vec3d l = sun.spiral(4 * j + i, 4 * perQuarter);
+            lit += !surfaceRayBlocked(*state.world, state.textures, {faceQuarterCentre(face, i), l},
+                                      kInfinity, state.shading.stepCap);
+        }
     }
-    return lit / 4.0f;
+    return lit / float(4 * perQuarter);
 }
 
 // Radiance a segment code brings: a face's, the sky's, or (kContinue) `next`.
@@ -151,9 +157,10 @@ void updateFaceLight(RadianceCascades::State& state) {
             meanTexel.push_back(meanOpaqueTexel((*state.textures)[slot]));
         }
     }
-    const Vec3d sun = normalised(shading.sunDirection);
-    const bool sunMoved =
-        faces.sunVisible.size() != std::size_t(count) || !(sun == state.sunForVisibility);
+    const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
+    const bool sunMoved = faces.sunVisible.size() != std::size_t(count) ||
+                          !(sun.axis == state.sunForVisibility) ||
+                          !(sun.radius == state.sunRadiusForVisibility);
     // The emitters' light depends on the emission alone (the world is fixed): a new sun or sky
     // keeps it.
     const std::vector<Rgb> emissionBefore = faces.emission;
@@ -183,7 +190,8 @@ void updateFaceLight(RadianceCascades::State& state) {
             if (sunMoved) faces.sunVisible[f] = sunVisibility(state, face, sun);
         }
     });
-    state.sunForVisibility = sun;
+    state.sunForVisibility = sun.axis;
+    state.sunRadiusForVisibility = sun.radius;
     if (faces.emitterIrradiance.size() != std::size_t(count) || faces.emission != emissionBefore) {
         faces.emittersExact = computeEmitterIrradiance(state);
     }

@@ -1,8 +1,8 @@
 // The voxel radiance cascades' picture (radiance_cascades.h;
 // docs/algorithms/voxel-radiance-cascades.md §4.2): one primary ray per pixel centre (cutouts
-// honoured), the sun by the path tracer's shadow ray, the faces' irradiance interpolated. (Casting
-// rows several rays at a time, castRayBatch and occludedBatch, measured no faster here: 45-47 ms
-// against 40-46 ms of CPU at 640x360.)
+// honoured), the sun by sky visibility's shadow rays over its disk, the faces' irradiance
+// interpolated. (Casting rows several rays at a time, castRayBatch and occludedBatch, measured no
+// faster here: 45-47 ms against 40-46 ms of CPU at 640x360.)
 #include "../path_trace_surface.h"
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"

@@ -37,7 +37,7 @@ struct FaceData {
     std::vector<std::uint32_t> codes;       // per face, its normal's cosine bins x 8 corners
     std::vector<std::uint32_t> codeOffset;  // per face
     std::vector<Rgb> albedo, emission;
-    std::vector<float> sunVisible;  // fraction of the face the sun reaches
+    std::vector<float> sunVisible;  // fraction of the face's rays over the sun's disk that reach it
     std::vector<Rgb> outgoing;      // radiance the face sends, this pass
     std::vector<Rgb> irradiance;    // indirect irradiance gathered, last pass
     // Irradiance from the emissive faces, exact (cascade_emitters.cpp); when it is computed the
@@ -60,7 +60,8 @@ struct RadianceCascades::State {
     CascadeOptions options;
     cascades::FaceData faces;
     std::vector<cascades::LevelData> levels;
-    Vec3d sunForVisibility{};  // the sun direction sunVisible was found for
+    Vec3d sunForVisibility{};           // the sun direction sunVisible was found for
+    double sunRadiusForVisibility = 0;  // and the sun's angular radius
     CascadeStats stats;
 };
 

@@ -1,0 +1,211 @@
+// The path tracer's surface response (path_trace_bsdf.h). Fresnel and refraction are the ray
+// caster's kernels (src/gpu/shaders/shared/optics.h); GGX's distribution and masking are
+// evaluated in double in the form sin^2 + alpha^2 cos^2, which stays exact for the narrowest
+// lobes (the float form 1 + cos^2 (alpha^2 - 1) cancels below alpha ~ 1e-3).
+#include "voxel/path_trace_bsdf.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "gpu/shaders/shared/optics.h"
+#include "path_trace_surface.h"
+
+namespace luxel::voxel {
+namespace {
+
+namespace shared = gpu::shared;
+
+constexpr double kPi = 3.14159265358979323846;
+
+Vec3d toDouble(Int3 v) {
+    return {double(v.x), double(v.y), double(v.z)};
+}
+shared::vec3 v3(Vec3d v) {
+    return {float(v.x), float(v.y), float(v.z)};
+}
+double mean(Rgb c) {
+    return (double(c.r) + double(c.g) + double(c.b)) / 3.0;
+}
+
+// The face's tangents (any orthonormal pair: GGX is isotropic).
+void faceFrame(Int3 normal, Vec3d& tu, Vec3d& tv) {
+    tu = {0, 0, 1}, tv = {0, 1, 0};
+    if (normal.y != 0) {
+        tu = {1, 0, 0}, tv = {0, 0, 1};
+    } else if (normal.z != 0) {
+        tu = {1, 0, 0}, tv = {0, 1, 0};
+    }
+}
+
+// GGX D for the half vector's cosine (and sine squared) to the normal.
+double ggxDistribution(double cosH, double sin2H, double alpha) {
+    const double a2 = alpha * alpha;
+    const double f = sin2H + a2 * cosH * cosH;
+    return a2 / (kPi * f * f);
+}
+
+// Smith's masking G1 for GGX at cosine c: 2c / (c + sqrt(alpha^2 + (1 - alpha^2) c^2)).
+double ggxMasking(double c, double alpha) {
+    const double a2 = alpha * alpha;
+    return 2.0 * c / (c + std::sqrt(a2 + (1.0 - a2) * c * c));
+}
+
+// Density of the visible-normal sampling finding l: G1(v) D(h) / (4 cos_v).
+double ggxPdf(const PathBsdf& b, Vec3d l) {
+    const Vec3d n = toDouble(b.normal);
+    const Vec3d h = normalize(b.view + l);
+    const double cosH = dot(n, h);
+    if (!(cosH > 0.0)) return 0.0;
+    const Vec3d across = h - n * cosH;
+    return ggxMasking(b.cosView, b.alpha) * ggxDistribution(cosH, dot(across, across), b.alpha) /
+           (4.0 * b.cosView);
+}
+
+// D * Vis (Vis = G2 / (4 cos_l cos_v), height-correlated, optics.h) for a light direction l.
+double ggxReflectance(const PathBsdf& b, Vec3d l, double cosL) {
+    const Vec3d n = toDouble(b.normal);
+    const Vec3d h = normalize(b.view + l);
+    const double cosH = dot(n, h);
+    const Vec3d across = h - n * cosH;
+    return ggxDistribution(cosH, dot(across, across), b.alpha) *
+           shared::ggxSmithVisibility(float(b.cosView), float(cosL), b.alpha);
+}
+
+// A visible normal of GGX (Heitz 2018, "Sampling the GGX Distribution of Visible Normals") in
+// the frame (tu, tv, n), and the view reflected about it.
+Vec3d sampleGgx(const PathBsdf& b, float u1, float u2) {
+    Vec3d tu, tv;
+    faceFrame(b.normal, tu, tv);
+    const Vec3d n = toDouble(b.normal);
+    const double a = b.alpha;
+    const Vec3d v{dot(b.view, tu), dot(b.view, tv), b.cosView};
+    const Vec3d vh = normalize(Vec3d{a * v.x, a * v.y, v.z});
+    const double lensq = vh.x * vh.x + vh.y * vh.y;
+    const Vec3d t1 = lensq > 0.0 ? Vec3d{-vh.y, vh.x, 0.0} / std::sqrt(lensq) : Vec3d{1, 0, 0};
+    const Vec3d t2 = cross(vh, t1);
+    const double r = std::sqrt(double(u1)), phi = 2.0 * kPi * double(u2);
+    const double p1 = r * std::cos(phi);
+    const double s = 0.5 * (1.0 + vh.z);
+    const double p2 = (1.0 - s) * std::sqrt(std::max(0.0, 1.0 - p1 * p1)) + s * r * std::sin(phi);
+    const Vec3d nh = t1 * p1 + t2 * p2 + vh * std::sqrt(std::max(0.0, 1.0 - p1 * p1 - p2 * p2));
+    const Vec3d hLocal = normalize(Vec3d{a * nh.x, a * nh.y, std::max(0.0, nh.z)});
+    const Vec3d h = tu * hLocal.x + tv * hLocal.y + n * hLocal.z;
+    return normalize(h * (2.0 * dot(b.view, h)) - b.view);
+}
+
+float dielectricFresnel(float cosI, float ior, ShadeOptions::FresnelModel model) {
+    if (ior == 1.0f) return 0.0f;  // no index contrast: no interface to reflect
+    return model == ShadeOptions::FresnelModel::Exact
+               ? shared::fresnelDielectricExact(cosI, 1.0f, ior)
+               : shared::fresnelDielectricSchlick(cosI, 1.0f, ior);
+}
+
+}  // namespace
+
+double powerHeuristic(double mine, double other) {
+    const double a = mine * mine, b = other * other;
+    return a + b > 0.0 ? a / (a + b) : 0.0;
+}
+
+PathBsdf pathBsdf(const Material& m, Rgb colour, Int3 normal, Vec3d direction,
+                  const ShadeOptions& o) {
+    PathBsdf b;
+    b.normal = normal;
+    b.view = -direction;
+    b.cosView = std::clamp(dot(toDouble(normal), b.view), 0.0, 1.0);
+    b.alpha = m.roughness * m.roughness;
+    b.ior = m.ior;
+    const float cosV = float(b.cosView);
+    const float fresnel = dielectricFresnel(cosV, m.ior, o.fresnel);
+    const float dielectric = 1.0f - m.metallic;
+    const float transmission = o.refraction ? m.transmission : 0.0f;
+    const shared::vec3 metal =
+        shared::fresnelSchlickRgb(v3(Vec3d{colour.r, colour.g, colour.b}), cosV);
+    b.specular = Rgb(metal.x, metal.y, metal.z) * m.metallic + Rgb(dielectric * fresnel);
+    b.transmission = dielectric * (1.0f - fresnel) * transmission;
+    b.diffuse = colour * (dielectric * (1.0f - fresnel) * (1.0f - transmission));
+    const double s = mean(b.specular), t = b.transmission, d = mean(b.diffuse);
+    const double total = s + t + d;
+    if (total > 0.0) {
+        b.pSpecular = s / total;
+        b.pTransmission = t / total;
+        b.pDiffuse = d / total;
+    }
+    return b;
+}
+
+BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng) {
+    using Lobe = BsdfSample::Lobe;
+    BsdfSample out;
+    const int lobes = (b.pSpecular > 0.0) + (b.pTransmission > 0.0) + (b.pDiffuse > 0.0);
+    if (lobes == 0) return out;
+    Lobe lobe = b.pDiffuse > 0.0    ? Lobe::Diffuse
+                : b.pSpecular > 0.0 ? Lobe::Specular
+                                    : Lobe::Transmission;
+    if (lobes > 1) {
+        const double u = rng.next();
+        lobe = u < b.pSpecular                     ? Lobe::Specular
+               : u < b.pSpecular + b.pTransmission ? Lobe::Transmission
+                                                   : Lobe::Diffuse;
+    }
+    const Vec3d n = toDouble(b.normal);
+    const Vec3d d = -b.view;
+    out.lobe = lobe;
+    if (lobe == Lobe::Diffuse) {
+        // Cosine sampling: f cos / pdf = D.
+        const float u1 = rng.next(), u2 = rng.next();
+        out.direction = cosineDirection(b.normal, u1, u2);
+        out.weight = b.diffuse * float(1.0 / b.pDiffuse);
+        out.pdf = b.pDiffuse * (dot(n, out.direction) / kPi);
+        return out;
+    }
+    if (lobe == Lobe::Transmission) {
+        // Entering the denser medium: never total reflection (eta < 1).
+        const shared::vec3 nIn = v3(n), dir = v3(d);
+        const float cosI = -dot(nIn, dir), eta = 1.0f / b.ior;
+        const float k = shared::opticsRefractK(cosI, eta);
+        const shared::vec3 t = shared::opticsRefract(dir, nIn, eta, cosI, std::max(k, 0.0f));
+        out.direction = normalize(Vec3d{t.x, t.y, t.z});
+        out.weight = Rgb(float(b.transmission / b.pTransmission));
+        out.delta = true;
+        return out;
+    }
+    if (b.mirror()) {
+        out.direction = d - n * (2.0 * dot(n, d));
+        out.weight = b.specular * float(1.0 / b.pSpecular);
+        out.delta = true;
+        return out;
+    }
+    const float u1 = rng.next(), u2 = rng.next();
+    out.direction = sampleGgx(b, u1, u2);
+    const double cosL = dot(n, out.direction);
+    if (!(cosL > 0.0) || !(b.cosView > 0.0)) {  // below the face: lost (single scattering)
+        out.lobe = Lobe::None;
+        return out;
+    }
+    // f cos / pdf = S D Vis cos_l / (G1(v) D / (4 cos_v)) = S 4 cos_v cos_l Vis / G1(v).
+    const double vis = shared::ggxSmithVisibility(float(b.cosView), float(cosL), b.alpha);
+    out.weight = b.specular * float(4.0 * b.cosView * cosL * vis /
+                                    (ggxMasking(b.cosView, b.alpha) * b.pSpecular));
+    out.pdf = b.pSpecular * ggxPdf(b, out.direction);
+    return out;
+}
+
+Rgb bsdfLight(const PathBsdf& b, Vec3d l, Rgb radiance, double lightPdf) {
+    const double cosL = dot(toDouble(b.normal), l);
+    if (!(cosL > 0.0)) return {};
+    const bool deltaLight = !(lightPdf > 0.0);
+    const double divide = deltaLight ? 1.0 : lightPdf;
+    Rgb out;
+    if (b.pDiffuse > 0.0) {
+        const double w = deltaLight ? 1.0 : powerHeuristic(lightPdf, b.pDiffuse * (cosL / kPi));
+        out = b.diffuse * radiance * float(cosL / kPi * w / divide);
+    }
+    if (b.pSpecular > 0.0 && !b.mirror() && b.cosView > 0.0) {
+        const double w = deltaLight ? 1.0 : powerHeuristic(lightPdf, b.pSpecular * ggxPdf(b, l));
+        out += b.specular * radiance * float(ggxReflectance(b, l, cosL) * cosL * w / divide);
+    }
+    return out;
+}
+
+}  // namespace luxel::voxel

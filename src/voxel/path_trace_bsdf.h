@@ -1,0 +1,73 @@
+// The path tracer's surface response (docs/algorithms/voxel-path-tracing.md): one BSDF per
+// material with the meaning of every field the physical ray caster gives it
+// (docs/algorithms/voxel-surfaces.md). At a hit seen with cosine cos_v, F = the dielectric
+// Fresnel reflectance of `ior` (0 for ior 1: no interface) and c the surface colour, three
+// lobes share what arrives:
+//
+//   specular      S = metallic Schlick(c, cos_v) + (1 - metallic) F   GGX (alpha = roughness^2)
+//                                                                      or a mirror (alpha ~ 0)
+//   transmission  T = (1 - metallic)(1 - F) transmission               refracts into the voxel
+//   diffuse       D = (1 - metallic)(1 - F)(1 - transmission) c        Lambertian
+//
+// so S + T + D <= 1 for c <= 1; the GGX lobe loses what single scattering loses (masking).
+// A path picks one lobe with probability proportional to its mean weight and samples it (cosine
+// hemisphere, GGX visible normals, or the delta direction); next event estimation evaluates the
+// smooth lobes and weights each against its own sampling (power heuristic).
+#pragma once
+
+#include "luxel/core/vec.h"
+#include "luxel/voxel/material.h"
+#include "luxel/voxel/path_trace_rng.h"
+#include "luxel/voxel/shading.h"
+
+namespace luxel::voxel {
+
+// Below this GGX alpha (roughness 0.01) the lobe is a delta mirror.
+inline constexpr float kMirrorAlpha = 1e-4f;
+
+struct PathBsdf {
+    Int3 normal;  // the hit face's outward normal
+    Vec3d view;   // unit, from the hit back along the incoming ray
+    double cosView = 0.0;
+    Rgb specular, diffuse;   // lobe weights S and D
+    float transmission = 0;  // lobe weight T
+    float alpha = 0;         // GGX alpha; < kMirrorAlpha: a mirror
+    float ior = 1;           // of the voxel behind the face (transmission)
+    // Lobe selection probabilities, proportional to the lobes' mean weights (sum 1, or all 0
+    // for a black surface).
+    double pSpecular = 0, pTransmission = 0, pDiffuse = 0;
+
+    bool mirror() const { return alpha < kMirrorAlpha; }
+    // Whether a lobe can reflect light from a given direction (next event estimation applies).
+    bool smooth() const { return pDiffuse > 0.0 || (pSpecular > 0.0 && !mirror()); }
+};
+
+// The response of material `m` with surface colour `colour` (voxel colour x texel x procedural
+// factor x albedo) at a face with outward normal `normal`, hit by a ray along unit `direction`.
+// Transmission counts only when shading.refraction is on (else the material is opaque, as in
+// the ray caster); Fresnel is exact or Schlick as shading.fresnel says.
+PathBsdf pathBsdf(const Material& m, Rgb colour, Int3 normal, Vec3d direction,
+                  const ShadeOptions& shading);
+
+struct BsdfSample {
+    enum class Lobe { None, Diffuse, Specular, Transmission };
+    Lobe lobe = Lobe::None;  // None: the path ends (black surface, or a GGX direction below)
+    Vec3d direction;         // unit
+    Rgb weight;              // f cos / (probability x density): what the throughput is scaled by
+    double pdf = 0.0;        // probability x density in solid angle; 0 for the delta lobes
+    bool delta = false;      // mirror or refraction: no light sample could find this direction
+};
+
+// Picks a lobe and samples its direction. Draws one number for the lobe when more than one lobe
+// has a non-zero probability, then two for the direction when the lobe is diffuse or GGX.
+BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng);
+
+// Light of `radiance` arriving from unit direction l that the smooth lobes send towards the
+// view: f cos L / lightPdf, each lobe weighted by the power heuristic against the density with
+// which its own sampling finds l. lightPdf = 0 is a delta light (no weights, no division).
+Rgb bsdfLight(const PathBsdf& b, Vec3d l, Rgb radiance, double lightPdf);
+
+// The power heuristic's weight of a strategy of density `mine` against one of density `other`.
+double powerHeuristic(double mine, double other);
+
+}  // namespace luxel::voxel
