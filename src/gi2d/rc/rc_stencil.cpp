@@ -35,6 +35,7 @@ struct Planes {
     std::int64_t planeSize = 0;  // between pixel rows
     int channels = 1;
     std::vector<float> data[3];
+    std::vector<std::uint8_t> radius;  // StencilMedium::uniformRadius, 0 off the canvas
 
     static std::int64_t cells(int width, int height, int stride) {
         const std::int64_t rowLen = (width + stride - 1) / stride;
@@ -51,10 +52,13 @@ struct Planes {
         for (int c = 0; c < channels; ++c) {
             data[c].assign(static_cast<std::size_t>(cells(w, h, stride)), 0.0f);
         }
+        radius.assign(static_cast<std::size_t>(cells(w, h, stride)), 0);
         parallelForRange(stride * h, 16, [&](int begin, int end) {
             for (int row = begin; row < end; ++row) {
                 const int phase = row / h, y = row % h;
                 const std::int64_t first = index(phase, y);
+                const std::uint8_t* r = medium.uniformRadius() + static_cast<std::size_t>(y) * w;
+                for (int m = 0, x = phase; x < w; ++m, x += stride) radius[first + m] = r[x];
                 for (int c = 0; c < channels; ++c) {
                     const float* in = medium.planeSigma(c) + static_cast<std::size_t>(y) * w;
                     float* out = data[c].data() + first;
@@ -81,6 +85,11 @@ struct Planes {
 struct Stencil {
     std::vector<std::int32_t> cellX, cellY, column, offset;
     std::vector<float> length;
+    // cum[j]: the lengths of entries before j (summed exactly: doubles of floats); firstX[r]:
+    // the first entry r or more columns from the first cell (in the direction of travel), the
+    // entry count past the last; firstY likewise for rows.
+    std::vector<double> cum;
+    std::vector<std::int32_t> firstX, firstY;
     int signX = 1, signY = 1;
     int minY = 0, maxY = 0, minColumn = 0, maxColumn = 0;
     // Along a pixel edge the cells of two probes can differ by a rounding: not served.
@@ -162,6 +171,11 @@ struct Stencil {
         }
         // The walk prefetches kStencilPrefetch entries ahead.
         offset.resize(n + kStencilPrefetch, n > 0 ? offset[n - 1] : 0);
+        cum.resize(n + 1);
+        cum[0] = 0.0;
+        for (std::size_t j = 0; j < n; ++j) cum[j + 1] = cum[j] + length[j];
+        firstAlong(cellX, signX, firstX);
+        firstAlong(cellY, signY, firstY);
     }
 
     // Entries j with lo <= f[j] <= hi, f monotone in the direction `sign`.
@@ -176,6 +190,14 @@ struct Stencil {
     }
 
   private:
+    static void firstAlong(const std::vector<std::int32_t>& cell, int sign,
+                           std::vector<std::int32_t>& first) {
+        const int n = static_cast<int>(cell.size());
+        const int span = n > 0 ? (cell[n - 1] - cell[0]) * sign : 0;
+        first.assign(span + 2, n);
+        for (int j = n - 1; j >= 0; --j) first[(cell[j] - cell[0]) * sign] = j;
+    }
+
     void resize(std::size_t n) {
         cellX.resize(n), cellY.resize(n), column.resize(n), offset.resize(n), length.resize(n);
     }
@@ -202,7 +224,8 @@ bool stencilsFit(int width, int height, int stride) {
 std::uint64_t stencilPassBytes(int width, int height, const RcCascade& cascade, bool fix) {
     const int stride = laneStride(cascade, fix);
     if (!stencilsFit(width, height, stride)) return 0;
-    return static_cast<std::uint64_t>(Planes::cells(width, height, stride)) * 3 * sizeof(float);
+    return static_cast<std::uint64_t>(Planes::cells(width, height, stride)) *
+           (3 * sizeof(float) + 1);
 }
 
 std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedium& medium,
@@ -502,6 +525,7 @@ std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedi
                 }
                 g.grey = planes.channels == 1;
                 g.medium = &medium;
+                g.radius = planes.radius.data();
                 g.laneStride = stride;
                 g.corners = corners;
                 for (int py = y0; py < y1; ++py) {
@@ -538,6 +562,15 @@ std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedi
                                 walk.shiftY = shiftY;
                                 walk.begin = std::max(ya, xa);
                                 walk.end = std::min(yb, xb);
+                                walk.cum = st.cum.data();
+                                walk.firstX = st.firstX.data();
+                                walk.firstY = st.firstY.data();
+                                walk.cellX0 = all > 0 ? st.cellX[0] : 0;
+                                walk.cellY0 = all > 0 ? st.cellY[0] : 0;
+                                walk.signX = st.signX;
+                                walk.signY = st.signY;
+                                walk.spanX = static_cast<int>(st.firstX.size()) - 2;
+                                walk.spanY = static_cast<int>(st.firstY.size()) - 2;
                                 if (!fix) {
                                     g.weight[corner] = 1.0f;
                                     for (int ch = 0; ch < 3; ++ch) {

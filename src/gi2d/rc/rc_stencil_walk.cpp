@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include "gi2d/rc/rc_stencil.h"
 
@@ -25,9 +27,14 @@ using DI = hn::RebindToSigned<D>;
 using VF = hn::Vec<D>;
 using VI = hn::Vec<DI>;
 using MF = hn::Mask<D>;
+using MI = hn::Mask<DI>;
 
 // -ln(1e-6): RayMarcher stops a ray once every channel's transmittance is below 1e-6.
 constexpr float kCutoffDepth = 13.815510557964274f;
+// A walk crosses a uniform square in one step where every lane's is at least this wide (in
+// radius) and the step spans at least kMinSkip entries; below, entry by entry is faster.
+constexpr int kSkipRadius = 2;
+constexpr int kMinSkip = 4;
 
 int LanesImpl() {
     return static_cast<int>(hn::Lanes(D()));
@@ -129,6 +136,7 @@ HWY_INLINE Segment WalkOne(const StencilGroup& g, const StencilGroup::Walk& w) {
     auto step = [&](int j, VF(&tau)[kChannels]) {
         const std::int64_t o = base + offset[j];
         hwy::Prefetch(planes[0] + (base + offset[j + kStencilPrefetch]));
+        hwy::Prefetch(g.radius + (base + offset[j + kStencilPrefetch]));
         const VF s0 = hn::LoadU(df, planes[0] + o);
         const VF length = hn::Set(df, lengths[j]);
         const MF emits =
@@ -145,14 +153,86 @@ HWY_INLINE Segment WalkOne(const StencilGroup& g, const StencilGroup::Walk& w) {
             tau[c] = hn::MulAdd(hn::LoadU(df, planes[c] + o), length, tau[c]);
         }
     };
-    int j = w.begin;
-    for (; j + 1 < w.end; j += 2) {
-        step(j, even);
-        step(j + 1, odd);
-        done = hn::Gt(minDepth(), cutoff);
-        if (HWY_UNLIKELY(hn::AllTrue(df, done))) break;
+    // Lane l reads the canvas for entries enter[l] <= j < exit[l], vacuum outside.
+    // Relative to the first cell, lane l's cells lie on the canvas in columns ra..rb, which
+    // holds for entries onFrom <= j < onTo (firstX), the walk's rows being on the canvas.
+    VI onFrom = hn::Set(di, w.begin), onTo = onFrom;
+    if (w.begin < w.end) {
+        const VI x = hn::Add(hn::Mul(hn::Iota(di, 0), hn::Set(di, g.laneStride)),
+                             hn::Set(di, w.shiftX + w.cellX0));
+        const VI lo = hn::Neg(x), hi = hn::Sub(hn::Set(di, width - 1), x);
+        const bool up = w.signX > 0;
+        const VI ra = hn::Max(up ? lo : hn::Neg(hi), hn::Zero(di));
+        const VI rb = hn::Min(up ? hi : hn::Neg(lo), hn::Set(di, w.spanX));
+        const MI some = hn::And(hn::Not(hn::Lt(rb, ra)), hn::FirstN(di, g.lanes));
+        const VI a = hn::Max(hn::GatherIndex(di, w.firstX, hn::IfThenElseZero(some, ra)), onFrom);
+        const VI b = hn::Min(
+            hn::GatherIndex(di, w.firstX, hn::IfThenElseZero(some, hn::Add(rb, hn::Set(di, 1)))),
+            hn::Set(di, w.end));
+        const MI on = hn::And(some, hn::Lt(a, b));
+        onFrom = hn::IfThenElse(on, a, onFrom);
+        onTo = hn::IfThenElse(on, b, onTo);
     }
-    if (j + 1 == w.end) step(j, even);
+    const hn::Rebind<std::uint8_t, DI> d8;
+    const VI wide = hn::Set(di, kSkipRadius);
+    const VI noLimit = hn::Set(di, std::numeric_limits<std::int32_t>::max());
+    // Crosses entries j.. in one step where every lane that counts lies in a uniform square of
+    // radius kSkipRadius or more (StencilMedium::uniformRadius) that does not emit: the entries
+    // within the smallest such radius of entry j's cell (in both axes, the stencil being
+    // monotone) add sigma times their length. Returns the entry after them, or j.
+    auto skip = [&](int j) {
+        const VI at = hn::Set(di, j);
+        const MF ahead = hn::RebindMask(df, hn::Lt(at, onFrom));
+        const MF live = hn::AndNot(hn::Or(done, ahead), hn::RebindMask(df, hn::Lt(at, onTo)));
+        const std::int64_t o = base + offset[j];
+        const VI radius = hn::PromoteTo(di, hn::LoadU(d8, g.radius + o));
+        const MF narrow = hn::RebindMask(df, hn::Lt(radius, wide));
+        if (!hn::AllFalse(df, hn::And(live, narrow))) return j;
+        // Lanes still off the canvas stop the step where they enter it.
+        int e = w.end;
+        const MF waiting = hn::AndNot(done, ahead);
+        if (!hn::AllFalse(df, waiting)) {
+            e = std::min(e, hn::GetLane(hn::MinOfLanes(
+                                di, hn::IfThenElse(hn::RebindMask(di, waiting), onFrom, noLimit))));
+        }
+        int r = StencilMedium::kMaxUniformRadius;
+        if (!hn::AllFalse(df, live)) {
+            r = hn::GetLane(
+                hn::MinOfLanes(di, hn::IfThenElse(hn::RebindMask(di, live), radius, noLimit)));
+        }
+        const int rx = std::min((w.cellX[j] - w.cellX0) * w.signX + r + 1, w.spanX + 1);
+        const int ry = std::min((w.cellY[j] - w.cellY0) * w.signY + r + 1, w.spanY + 1);
+        e = std::min({e, w.firstX[rx], w.firstY[ry]});
+        if (e - j < kMinSkip) return j;
+        const VF s0 = hn::LoadU(df, planes[0] + o);
+        const MF emits = hn::RebindMask(df, hn::Lt(hn::BitCast(di, s0), hn::Zero(di)));
+        if (!hn::AllFalse(df, hn::And(live, emits))) return j;
+        const VF length = hn::Set(df, static_cast<float>(w.cum[e] - w.cum[j]));
+        even[0] = hn::MulAdd(hn::Abs(s0), length, even[0]);
+        for (int c = 1; c < kChannels; ++c) {
+            even[c] = hn::MulAdd(hn::LoadU(df, planes[c] + o), length, even[c]);
+        }
+        return e;
+    };
+    int j = w.begin;
+    while (j < w.end) {
+        const int next = skip(j);
+        if (next == j) {
+            if (j + 1 < w.end) {
+                step(j, even);
+                step(j + 1, odd);
+                j += 2;
+            } else {
+                step(j, even);
+                j += 1;
+            }
+        } else {
+            j = next;
+        }
+        done = hn::Gt(minDepth(), cutoff);
+        const MF left = hn::RebindMask(df, hn::Not(hn::Lt(hn::Set(di, j), onTo)));
+        if (HWY_UNLIKELY(hn::AllTrue(df, hn::Or(done, left)))) break;
+    }
     if (!hn::AllFalse(df, pending.any)) AddEmission<kGrey>(g, pending, pending.any, out.light);
     for (int c = 0; c < 3; ++c) {
         out.transmittance[c] =
