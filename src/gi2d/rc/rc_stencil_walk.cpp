@@ -35,6 +35,8 @@ constexpr float kCutoffDepth = 13.815510557964274f;
 // radius) and the step spans at least kMinSkip entries; below, entry by entry is faster.
 constexpr int kSkipRadius = 2;
 constexpr int kMinSkip = 4;
+// Walks of fewer entries never try.
+constexpr int kCrossingWalk = 12;
 
 int LanesImpl() {
     return static_cast<int>(hn::Lanes(D()));
@@ -156,8 +158,11 @@ HWY_INLINE Segment WalkOne(const StencilGroup& g, const StencilGroup::Walk& w) {
     // Lane l reads the canvas for entries enter[l] <= j < exit[l], vacuum outside.
     // Relative to the first cell, lane l's cells lie on the canvas in columns ra..rb, which
     // holds for entries onFrom <= j < onTo (firstX), the walk's rows being on the canvas.
-    VI onFrom = hn::Set(di, w.begin), onTo = onFrom;
-    if (w.begin < w.end) {
+    // Short walks (the lower cascades) step entry by entry: the lanes count to the end.
+    const bool crossSquares = w.end - w.begin >= kCrossingWalk;
+    VI onFrom = hn::Set(di, w.begin), onTo = hn::Set(di, w.end);
+    if (crossSquares) {
+        onTo = onFrom;
         const VI x = hn::Add(hn::Mul(hn::Iota(di, 0), hn::Set(di, g.laneStride)),
                              hn::Set(di, w.shiftX + w.cellX0));
         const VI lo = hn::Neg(x), hi = hn::Sub(hn::Set(di, width - 1), x);
@@ -216,7 +221,7 @@ HWY_INLINE Segment WalkOne(const StencilGroup& g, const StencilGroup::Walk& w) {
     };
     int j = w.begin;
     while (j < w.end) {
-        const int next = skip(j);
+        const int next = crossSquares && w.end - j >= kMinSkip ? skip(j) : j;
         if (next == j) {
             if (j + 1 < w.end) {
                 step(j, even);
