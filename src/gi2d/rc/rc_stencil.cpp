@@ -366,7 +366,14 @@ std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedi
         for (int ch = 0; ch < 3; ++ch) {
             std::fill_n(skyRow.begin() + ch * kStencilLanes, kStencilLanes, sky[ch]);
         }
-        std::vector<std::int32_t> groupSource(4 * kStencilLanes);
+        // Groups waiting to be walked, each with its own corner sources.
+        std::array<StencilGroup, kStencilBatch> batch;
+        int batched = 0;
+        auto flush = [&] {
+            if (batched > 0) walkStencilGroups(batch.data(), batched);
+            batched = 0;
+        };
+        std::vector<std::int32_t> groupSources(kStencilBatch * 4 * kStencilLanes);
         std::vector<char> insideX, insideY;
         for (int task = taskBegin; task < taskEnd; ++task) {
             const int s = task / chunks;
@@ -607,7 +614,9 @@ std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedi
                                     nominal = nominalColumn(first + l * step);
                                 }
                                 if (!nominal) {
-                                    std::fill(groupSource.begin(), groupSource.end(), -1);
+                                    std::int32_t* groupSource =
+                                        &groupSources[batched * 4 * kStencilLanes];
+                                    std::fill_n(groupSource, 4 * kStencilLanes, -1);
                                     for (int l = 0; l < n; ++l) {
                                         const int px = first + l * step;
                                         if (marcherOnly(px, py)) continue;
@@ -617,12 +626,14 @@ std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedi
                                                 rowSource[corner % 2][py];
                                         }
                                     }
-                                    g.source = groupSource.data();
+                                    g.source = groupSource;
                                 }
                             }
-                            walkStencilGroup(g);
+                            batch[batched++] = g;
+                            if (batched == kStencilBatch) flush();
                         }
                     }
+                    flush();
                     if (fix) {  // probes no stencil serves
                         auto exact = [&](int px) {
                             addSum(px, py,

@@ -80,8 +80,13 @@ struct StencilGroup {
 // offsets array holds that many more entries).
 inline constexpr int kStencilPrefetch = 32;
 
+// Groups walked together: their walks take turns, so that the memory reads of one overlap
+// the others'.
+inline constexpr int kStencilBatch = 4;
+
 // Lanes per group on this machine (at most kStencilLanes).
 int stencilWalkLanes();
-void walkStencilGroup(const StencilGroup& group);
+// Walks and merges `count` (1..kStencilBatch) groups of one pass.
+void walkStencilGroups(const StencilGroup* groups, int count);
 
 }  // namespace luxel::gi2d::rc

@@ -281,22 +281,10 @@ class Walker {
     int j_;
 };
 
-template <bool kGrey>
-void Group(const StencilGroup& g) {
+// sum += the merge of the group's walks with what lies beyond them.
+void Merge(const StencilGroup& g, const Segment (&walks)[4]) {
     const D df;
     const DI di;
-    Walker<kGrey> walkers[4];
-    for (int c = 0; c < g.corners; ++c) walkers[c].init(g, g.walk[c]);
-    for (bool any = true; any;) {
-        any = false;
-        for (int c = 0; c < g.corners; ++c) {
-            if (walkers[c].finished()) continue;
-            walkers[c].advance();
-            any = true;
-        }
-    }
-    Segment walks[4];
-    for (int c = 0; c < g.corners; ++c) walks[c] = walkers[c].result();
     const MF lanes = hn::FirstN(df, static_cast<std::size_t>(g.lanes));
     VF sum[3];
     for (int ch = 0; ch < 3; ++ch) sum[ch] = hn::LoadU(df, g.sum[ch]);
@@ -326,11 +314,35 @@ void Group(const StencilGroup& g) {
     for (int ch = 0; ch < 3; ++ch) hn::StoreU(sum[ch], df, g.sum[ch]);
 }
 
-void GroupImpl(const StencilGroup& g) {
-    if (g.grey) {
-        Group<true>(g);
+template <bool kGrey>
+void Groups(const StencilGroup* groups, int count) {
+    Walker<kGrey> walkers[kStencilBatch][4];
+    for (int b = 0; b < count; ++b) {
+        for (int c = 0; c < groups[b].corners; ++c)
+            walkers[b][c].init(groups[b], groups[b].walk[c]);
+    }
+    for (bool any = true; any;) {
+        any = false;
+        for (int b = 0; b < count; ++b) {
+            for (int c = 0; c < groups[b].corners; ++c) {
+                if (walkers[b][c].finished()) continue;
+                walkers[b][c].advance();
+                any = true;
+            }
+        }
+    }
+    for (int b = 0; b < count; ++b) {
+        Segment walks[4];
+        for (int c = 0; c < groups[b].corners; ++c) walks[c] = walkers[b][c].result();
+        Merge(groups[b], walks);
+    }
+}
+
+void GroupsImpl(const StencilGroup* groups, int count) {
+    if (groups[0].grey) {
+        Groups<true>(groups, count);
     } else {
-        Group<false>(g);
+        Groups<false>(groups, count);
     }
 }
 
@@ -342,14 +354,14 @@ HWY_AFTER_NAMESPACE();
 namespace luxel::gi2d::rc {
 
 HWY_EXPORT(LanesImpl);
-HWY_EXPORT(GroupImpl);
+HWY_EXPORT(GroupsImpl);
 
 int stencilWalkLanes() {
     return HWY_DYNAMIC_DISPATCH(LanesImpl)();
 }
 
-void walkStencilGroup(const StencilGroup& group) {
-    HWY_DYNAMIC_DISPATCH(GroupImpl)(group);
+void walkStencilGroups(const StencilGroup* groups, int count) {
+    HWY_DYNAMIC_DISPATCH(GroupsImpl)(groups, count);
 }
 
 }  // namespace luxel::gi2d::rc
