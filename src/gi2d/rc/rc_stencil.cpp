@@ -630,11 +630,14 @@ std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedi
                                 }
                             }
                             batch[batched++] = g;
-                            if (batched == kStencilBatch) flush();
+                            if (batched == kStencilBatch ||
+                                (batched + 1) * corners > kStencilBatchWalks) {
+                                flush();
+                            }
                         }
                     }
-                    flush();
-                    if (fix) {  // probes no stencil serves
+                    if (fix) {  // probes no stencil serves, once the walks have added
+                        flush();
                         auto exact = [&](int px) {
                             addSum(px, py,
                                    mergedRay(marcher, c, up, probeCentre(px, py), k, upperValue,
@@ -647,6 +650,7 @@ std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedi
                         }
                     }
                 }
+                flush();  // before `beyond` changes with the direction
             }
             const float scale = 1.0f / static_cast<float>(group);
             for (int py = y0; py < y1; ++py) {

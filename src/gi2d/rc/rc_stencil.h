@@ -80,13 +80,15 @@ struct StencilGroup {
 // offsets array holds that many more entries).
 inline constexpr int kStencilPrefetch = 32;
 
-// Groups walked together: their walks take turns, so that the memory reads of one overlap
-// the others'.
-inline constexpr int kStencilBatch = 4;
+// Groups walked together, and their walks (groups times corners) at most: the walks take
+// turns, so that the memory reads of one overlap the others'.
+inline constexpr int kStencilBatch = 8;
+inline constexpr int kStencilBatchWalks = 16;
 
 // Lanes per group on this machine (at most kStencilLanes).
 int stencilWalkLanes();
-// Walks and merges `count` (1..kStencilBatch) groups of one pass.
+// Walks and merges `count` (1..kStencilBatch) groups of one pass, kStencilBatchWalks walks
+// at most.
 void walkStencilGroups(const StencilGroup* groups, int count);
 
 }  // namespace luxel::gi2d::rc

@@ -92,7 +92,7 @@ class Walker {
   public:
     static constexpr int kChannels = kGrey ? 1 : 3;
 
-    void init(const StencilGroup& g, const StencilGroup::Walk& w) {
+    HWY_INLINE void init(const StencilGroup& g, const StencilGroup::Walk& w) {
         g_ = &g, w_ = &w;
         // Optical depth in two sums, of the even and the odd entries, so that consecutive cells
         // do not wait on each other. Lanes past `lanes` start beyond the cutoff, never counting.
@@ -141,7 +141,7 @@ class Walker {
     bool finished() const { return finished_; }
 
     // One step across a uniform square, or two entries.
-    void advance() {
+    HWY_INLINE void advance() {
         const StencilGroup::Walk& w = *w_;
         int j = j_;
         const int next = crossSquares_ && w.end - j >= kMinSkip ? skip(j) : j;
@@ -316,24 +316,38 @@ void Merge(const StencilGroup& g, const Segment (&walks)[4]) {
 
 template <bool kGrey>
 void Groups(const StencilGroup* groups, int count) {
-    Walker<kGrey> walkers[kStencilBatch][4];
+    // Short walks run one after the other (their state stays in registers); long ones, whose
+    // steps across squares read far apart, take turns.
+    Segment results[kStencilBatchWalks];
+    Walker<kGrey> walkers[kStencilBatchWalks];
+    int slot[kStencilBatchWalks];
+    int n = 0, i = 0;
     for (int b = 0; b < count; ++b) {
-        for (int c = 0; c < groups[b].corners; ++c)
-            walkers[b][c].init(groups[b], groups[b].walk[c]);
-    }
-    for (bool any = true; any;) {
-        any = false;
-        for (int b = 0; b < count; ++b) {
-            for (int c = 0; c < groups[b].corners; ++c) {
-                if (walkers[b][c].finished()) continue;
-                walkers[b][c].advance();
-                any = true;
+        for (int c = 0; c < groups[b].corners; ++c, ++i) {
+            const StencilGroup::Walk& w = groups[b].walk[c];
+            if (w.end - w.begin >= kCrossingWalk) {
+                walkers[n].init(groups[b], w);
+                slot[n++] = i;
+                continue;
             }
+            Walker<kGrey> walker;
+            walker.init(groups[b], w);
+            while (!walker.finished()) walker.advance();
+            results[i] = walker.result();
         }
     }
-    for (int b = 0; b < count; ++b) {
+    for (bool any = n > 0; any;) {
+        any = false;
+        for (int k = 0; k < n; ++k) {
+            if (walkers[k].finished()) continue;
+            walkers[k].advance();
+            any = true;
+        }
+    }
+    for (int k = 0; k < n; ++k) results[slot[k]] = walkers[k].result();
+    for (int b = 0, r = 0; b < count; ++b) {
         Segment walks[4];
-        for (int c = 0; c < groups[b].corners; ++c) walks[c] = walkers[b][c].result();
+        for (int c = 0; c < groups[b].corners; ++c) walks[c] = results[r++];
         Merge(groups[b], walks);
     }
 }
