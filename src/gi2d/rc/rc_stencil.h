@@ -59,7 +59,7 @@ struct StencilGroup {
         const std::int32_t* cellY;
         int shiftX, shiftY;
         int begin, end;  // the entries walked
-        // For crossing uniform squares (Stencil in rc_stencil.cpp): cum[j] is the length of the
+        // For crossing uniform squares (Stencil in rc_stencil_trace.h): cum[j] is the length of the
         // entries before j; firstX[r] is the first entry whose cell lies r columns from the
         // first cell's (relX(j) = (cellX[j] - cellX0) signX), up to spanX + 1; likewise y.
         const double* cum;

@@ -1,17 +1,20 @@
 // The stencil walks' steps across uniform squares (docs/algorithms/radiance-cascades-2d.md §8):
 // the radius every pixel reports, and the pass on media made of large uniform rectangles
 // (fog of several densities, glowing fog, opaque walls, vacuum) that touch the canvas edges,
-// against the exact pass over RayMarcher, cascade by cascade, with a sky behind.
+// against the exact pass over RayMarcher, cascade by cascade, with a sky behind; and the same
+// image on any thread count.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "gi2d/rc/rc_cascade_pass.h"
 #include "gi2d/rc/rc_stencil.h"
+#include "luxel/core/parallel.h"
 #include "luxel/core/rng.h"
 #include "luxel/gi2d/ray_march.h"
 #include "luxel/gi2d/rc_solver.h"
@@ -143,6 +146,27 @@ TEST(RcStencilSkip, CrossingUniformSquaresMatchesTheExactPass) {
                     upper = exact;
                 }
             }
+        }
+    }
+}
+
+// Batches of walks taking turns, squares crossed per group: none of it depends on how the
+// probes are split between threads.
+TEST(RcStencilSkip, ThreadCountDoesNotChangeTheImage) {
+    const Medium2D medium = blockMedium(160, 120, 3, true);
+    for (RcMerge merge : {RcMerge::Vanilla, RcMerge::BilinearFix}) {
+        RcOptions options;
+        options.merge = merge;
+        Image first;
+        for (int threads : {1, 2, 4}) {
+            const ThreadLimit limit(threads);
+            Image got = solveRc(medium, options).value();
+            if (threads == 1) {
+                first = std::move(got);
+                continue;
+            }
+            EXPECT_TRUE(std::equal(got.data(), got.data() + got.size(), first.data()))
+                << threads << " threads";
         }
     }
 }
