@@ -1,5 +1,6 @@
-// Stencil tracing for the CPU RC pass (docs/algorithms/radiance-cascades-2d.md §8): the medium in
-// lane-strided planes, the stencils of each direction, and the pass that walks them.
+// The CPU RC pass by stencil walks (docs/algorithms/radiance-cascades-2d.md §8): per direction,
+// the stencils (gi2d/rc/rc_stencil_trace.h), what lies beyond the intervals, and the groups of
+// probes that walk them.
 #include "gi2d/rc/rc_stencil.h"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 
 #include "gi2d/rc/rc_cascade_pass.h"
 #include "gi2d/rc/rc_internal.h"
+#include "gi2d/rc/rc_stencil_trace.h"
 #include "luxel/core/parallel.h"
 
 namespace luxel::gi2d::rc {
@@ -16,174 +18,9 @@ namespace shared = gpu::shared;
 
 namespace {
 
-int floorDiv(int a, int b) {
-    return a / b - ((a % b != 0 && (a < 0) != (b < 0)) ? 1 : 0);
-}
-
 Vec2d vec(shared::dvec2 v) {
     return {v.x, v.y};
 }
-
-// The medium's absorption split by the phase of x modulo the lane stride L: row y, phase p,
-// column m holds pixel (m L + p, y); each such row of columns is followed by kStencilLanes vacuum
-// cells, and the L phase rows of a pixel row lie together (a ray along x stays near in memory).
-// Lanes l of a group (probes L pixels apart) thus read consecutive floats, and a group reaching
-// past either end of a row reads vacuum. Grey media need one plane set, others three; the first
-// carries the sign bit where the cell emits.
-struct Planes {
-    int stride = 1, rowLen = 0, rowStride = 0;
-    std::int64_t planeSize = 0;  // between pixel rows
-    int channels = 1;
-    std::vector<float> data[3];
-
-    static std::int64_t cells(int width, int height, int stride) {
-        const std::int64_t rowLen = (width + stride - 1) / stride;
-        return static_cast<std::int64_t>(stride) * height * (rowLen + kStencilLanes) +
-               2 * kStencilLanes;
-    }
-
-    Planes(const StencilMedium& medium, int laneStride) : stride(laneStride) {
-        const int w = medium.width(), h = medium.height();
-        rowLen = (w + stride - 1) / stride;
-        rowStride = rowLen + kStencilLanes;
-        planeSize = static_cast<std::int64_t>(stride) * rowStride;
-        channels = medium.grey() ? 1 : 3;
-        for (int c = 0; c < channels; ++c) {
-            data[c].assign(static_cast<std::size_t>(cells(w, h, stride)), 0.0f);
-        }
-        parallelForRange(stride * h, 16, [&](int begin, int end) {
-            for (int row = begin; row < end; ++row) {
-                const int phase = row / h, y = row % h;
-                const std::int64_t first = index(phase, y);
-                for (int c = 0; c < channels; ++c) {
-                    const float* in = medium.planeSigma(c) + static_cast<std::size_t>(y) * w;
-                    float* out = data[c].data() + first;
-                    if (stride == 1) {
-                        std::copy_n(in, w, out);
-                        continue;
-                    }
-                    for (int m = 0, x = phase; x < w; ++m, x += stride) out[m] = in[x];
-                }
-            }
-        });
-    }
-
-    // Plane index of pixel (x, y).
-    std::int64_t index(int x, int y) const {
-        const int m = floorDiv(x, stride);
-        return kStencilLanes + static_cast<std::int64_t>(y) * planeSize +
-               (x - m * stride) * rowStride + m;
-    }
-};
-
-// The cells a segment crosses, in order, with the length inside each: the exact DDA of
-// RayMarcher (unit cells, no runs or blocks), so that the lengths add up to its run lengths.
-struct Stencil {
-    std::vector<std::int32_t> cellX, cellY, column, offset;
-    std::vector<float> length;
-    int signX = 1, signY = 1;
-    int minY = 0, maxY = 0, minColumn = 0, maxColumn = 0;
-    // Along a pixel edge the cells of two probes can differ by a rounding: not served.
-    bool degenerate = false;
-
-    // The segment [from, to] clipped to the box [lo, hi) of cells that can matter (integral
-    // bounds), with each cell's plane column and index.
-    void trace(Vec2d from, Vec2d to, Vec2d lo, Vec2d hi, const Planes& planes) {
-        resize(0);
-        const Vec2d delta = to - from;
-        const double len = std::sqrt(delta.x * delta.x + delta.y * delta.y);
-        degenerate = false;
-        if (!(len > 0.0)) return;
-        const Vec2d dir = delta / len;
-        signX = dir.x < 0 ? -1 : 1;
-        signY = dir.y < 0 ? -1 : 1;
-        if (std::abs(dir.x) < 1e-6 || std::abs(dir.y) < 1e-6) {
-            degenerate = true;
-            return;
-        }
-        double t0 = 0.0, t1 = len;
-        const double o[2] = {from.x, from.y}, d[2] = {dir.x, dir.y}, l[2] = {lo.x, lo.y},
-                     u[2] = {hi.x, hi.y};
-        for (int a = 0; a < 2; ++a) {
-            double ta = (l[a] - o[a]) / d[a], tb = (u[a] - o[a]) / d[a];
-            if (ta > tb) std::swap(ta, tb);
-            t0 = std::max(t0, ta);
-            t1 = std::min(t1, tb);
-        }
-        if (t0 >= t1) return;
-        const Vec2d origin = from + dir * t0;
-        const double maxDistance = t1 - t0;
-        // At most one cell per unit step along each axis, and the first.
-        resize(static_cast<std::size_t>(maxDistance * (std::abs(dir.x) + std::abs(dir.y))) + 8);
-        const double invX = 1.0 / dir.x, invY = 1.0 / dir.y;
-        // The exit plane of cell c along an axis: c + 1 going up, c going down.
-        const double edgeX = dir.x > 0 ? 1.0 - origin.x : -origin.x;
-        const double edgeY = dir.y > 0 ? 1.0 - origin.y : -origin.y;
-        int cx = static_cast<int>(std::floor(origin.x)),
-            cy = static_cast<int>(std::floor(origin.y));
-        double t = 0.0;
-        std::size_t n = 0;
-        while (true) {
-            const double tx = (cx + edgeX) * invX;
-            const double ty = (cy + edgeY) * invY;
-            const double exit = std::min(std::min(tx, ty), maxDistance);
-            // Written always, kept where the cell has length (a corner is crossed in one step).
-            cellX[n] = cx;
-            cellY[n] = cy;
-            length[n] = static_cast<float>(exit - t);
-            n += exit > t ? 1 : 0;
-            t = std::max(t, exit);
-            if (exit >= maxDistance || n + 1 >= cellX.size()) break;
-            cx += tx <= ty ? signX : 0;
-            cy += ty <= tx ? signY : 0;
-        }
-        resize(n);
-        // Plane column and phase of each cell, stepped along (cells move by at most one in x).
-        int col = n > 0 ? floorDiv(cellX[0], planes.stride) : 0;
-        int phase = n > 0 ? cellX[0] - col * planes.stride : 0;
-        for (std::size_t j = 0; j < n; ++j) {
-            if (j > 0 && cellX[j] == cellX[j - 1] + signX) {
-                phase += signX;
-                if (phase == planes.stride) phase = 0, ++col;
-                if (phase < 0) phase = planes.stride - 1, --col;
-            } else if (j > 0 && cellX[j] != cellX[j - 1]) {
-                col = floorDiv(cellX[j], planes.stride);
-                phase = cellX[j] - col * planes.stride;
-            }
-            column[j] = col;
-            offset[j] = static_cast<std::int32_t>(
-                kStencilLanes + static_cast<std::int64_t>(cellY[j]) * planes.planeSize +
-                phase * planes.rowStride + col);
-        }
-        if (n > 0) {
-            minY = std::min(cellY[0], cellY[n - 1]), maxY = std::max(cellY[0], cellY[n - 1]);
-            minColumn = std::min(column[0], column[n - 1]);
-            maxColumn = std::max(column[0], column[n - 1]);
-        }
-        // The walk prefetches kStencilPrefetch entries ahead.
-        offset.resize(n + kStencilPrefetch, n > 0 ? offset[n - 1] : 0);
-    }
-
-    // Entries j with lo <= f[j] <= hi, f monotone in the direction `sign`.
-    static std::pair<int, int> where(const std::vector<std::int32_t>& f, int lo, int hi, int sign) {
-        if (sign >= 0) {
-            return {static_cast<int>(std::lower_bound(f.begin(), f.end(), lo) - f.begin()),
-                    static_cast<int>(std::upper_bound(f.begin(), f.end(), hi) - f.begin())};
-        }
-        const auto first = std::partition_point(f.begin(), f.end(), [&](int v) { return v > hi; });
-        const auto last = std::partition_point(f.begin(), f.end(), [&](int v) { return v >= lo; });
-        return {static_cast<int>(first - f.begin()), static_cast<int>(last - f.begin())};
-    }
-
-  private:
-    void resize(std::size_t n) {
-        cellX.resize(n), cellY.resize(n), column.resize(n), offset.resize(n), length.resize(n);
-    }
-};
-
-}  // namespace
-
-namespace {
 
 // The lane stride of cascade c's walks: probes one apart, or two for the bilinear fix (whose
 // probes of one parity share their upper neighbours' offsets).
@@ -202,7 +39,8 @@ bool stencilsFit(int width, int height, int stride) {
 std::uint64_t stencilPassBytes(int width, int height, const RcCascade& cascade, bool fix) {
     const int stride = laneStride(cascade, fix);
     if (!stencilsFit(width, height, stride)) return 0;
-    return static_cast<std::uint64_t>(Planes::cells(width, height, stride)) * 3 * sizeof(float);
+    return static_cast<std::uint64_t>(Planes::cells(width, height, stride)) *
+           (3 * sizeof(float) + 1);
 }
 
 std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedium& medium,
@@ -343,7 +181,14 @@ std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedi
         for (int ch = 0; ch < 3; ++ch) {
             std::fill_n(skyRow.begin() + ch * kStencilLanes, kStencilLanes, sky[ch]);
         }
-        std::vector<std::int32_t> groupSource(4 * kStencilLanes);
+        // Groups waiting to be walked, each with its own corner sources.
+        std::array<StencilGroup, kStencilBatch> batch;
+        int batched = 0;
+        auto flush = [&] {
+            if (batched > 0) walkStencilGroups(batch.data(), batched);
+            batched = 0;
+        };
+        std::vector<std::int32_t> groupSources(kStencilBatch * 4 * kStencilLanes);
         std::vector<char> insideX, insideY;
         for (int task = taskBegin; task < taskEnd; ++task) {
             const int s = task / chunks;
@@ -502,6 +347,7 @@ std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedi
                 }
                 g.grey = planes.channels == 1;
                 g.medium = &medium;
+                g.radius = planes.radius.data();
                 g.laneStride = stride;
                 g.corners = corners;
                 for (int py = y0; py < y1; ++py) {
@@ -538,6 +384,15 @@ std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedi
                                 walk.shiftY = shiftY;
                                 walk.begin = std::max(ya, xa);
                                 walk.end = std::min(yb, xb);
+                                walk.cum = st.cum.data();
+                                walk.firstX = st.firstX.data();
+                                walk.firstY = st.firstY.data();
+                                walk.cellX0 = all > 0 ? st.cellX[0] : 0;
+                                walk.cellY0 = all > 0 ? st.cellY[0] : 0;
+                                walk.signX = st.signX;
+                                walk.signY = st.signY;
+                                walk.spanX = static_cast<int>(st.firstX.size()) - 2;
+                                walk.spanY = static_cast<int>(st.firstY.size()) - 2;
                                 if (!fix) {
                                     g.weight[corner] = 1.0f;
                                     for (int ch = 0; ch < 3; ++ch) {
@@ -574,7 +429,9 @@ std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedi
                                     nominal = nominalColumn(first + l * step);
                                 }
                                 if (!nominal) {
-                                    std::fill(groupSource.begin(), groupSource.end(), -1);
+                                    std::int32_t* groupSource =
+                                        &groupSources[batched * 4 * kStencilLanes];
+                                    std::fill_n(groupSource, 4 * kStencilLanes, -1);
                                     for (int l = 0; l < n; ++l) {
                                         const int px = first + l * step;
                                         if (marcherOnly(px, py)) continue;
@@ -584,13 +441,18 @@ std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedi
                                                 rowSource[corner % 2][py];
                                         }
                                     }
-                                    g.source = groupSource.data();
+                                    g.source = groupSource;
                                 }
                             }
-                            walkStencilGroup(g);
+                            batch[batched++] = g;
+                            if (batched == kStencilBatch ||
+                                (batched + 1) * corners > kStencilBatchWalks) {
+                                flush();
+                            }
                         }
                     }
-                    if (fix) {  // probes no stencil serves
+                    if (fix) {  // probes no stencil serves, once the walks have added
+                        flush();
                         auto exact = [&](int px) {
                             addSum(px, py,
                                    mergedRay(marcher, c, up, probeCentre(px, py), k, upperValue,
@@ -603,6 +465,7 @@ std::vector<Rgb> cascadePassStencil(const RayMarcher& marcher, const StencilMedi
                         }
                     }
                 }
+                flush();  // before `beyond` changes with the direction
             }
             const float scale = 1.0f / static_cast<float>(group);
             for (int py = y0; py < y1; ++py) {

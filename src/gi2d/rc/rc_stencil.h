@@ -44,6 +44,8 @@ struct StencilGroup {
     const float* planes[3];
     bool grey;
     const StencilMedium* medium;
+    // StencilMedium::uniformRadius laid out as the planes (0 off the canvas).
+    const std::uint8_t* radius;
     int laneStride;
     int lanes;
     int corners;
@@ -57,6 +59,13 @@ struct StencilGroup {
         const std::int32_t* cellY;
         int shiftX, shiftY;
         int begin, end;  // the entries walked
+        // For crossing uniform squares (Stencil in rc_stencil_trace.h): cum[j] is the length of the
+        // entries before j; firstX[r] is the first entry whose cell lies r columns from the
+        // first cell's (relX(j) = (cellX[j] - cellX0) signX), up to spanX + 1; likewise y.
+        const double* cum;
+        const std::int32_t* firstX;
+        const std::int32_t* firstY;
+        int cellX0, cellY0, signX, signY, spanX, spanY;
     } walk[4];
     // Per corner and channel, lane l's value at [l] (kStencilLanes readable).
     const float* beyond[4][3];
@@ -71,8 +80,15 @@ struct StencilGroup {
 // offsets array holds that many more entries).
 inline constexpr int kStencilPrefetch = 32;
 
+// Groups walked together, and their walks (groups times corners) at most: the walks take
+// turns, so that the memory reads of one overlap the others'.
+inline constexpr int kStencilBatch = 8;
+inline constexpr int kStencilBatchWalks = 16;
+
 // Lanes per group on this machine (at most kStencilLanes).
 int stencilWalkLanes();
-void walkStencilGroup(const StencilGroup& group);
+// Walks and merges `count` (1..kStencilBatch) groups of one pass, kStencilBatchWalks walks
+// at most.
+void walkStencilGroups(const StencilGroup* groups, int count);
 
 }  // namespace luxel::gi2d::rc

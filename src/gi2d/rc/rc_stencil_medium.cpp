@@ -1,5 +1,6 @@
 #include "gi2d/rc/rc_stencil_medium.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -50,10 +51,49 @@ StencilMedium::StencilMedium(const Medium2D& medium)
         planeSigma_[c].resize(ids_.size());
         for (std::size_t p = 0; p < ids_.size(); ++p) planeSigma_[c][p] = signedSigma[c][ids_[p]];
     }
+    buildUniformRadius();
+}
+
+void StencilMedium::buildUniformRadius() {
+    // The nearest pixel of another material (or off the canvas) lies at Chebyshev distance D
+    // exactly when the nearest border pixel (one with such an 8-neighbour) lies at D - 1: so the
+    // radius is the chessboard distance to the border pixels, by the two-pass transform.
+    const int w = width_, h = height_;
+    std::vector<std::int32_t> d(ids_.size());
+    auto at = [&](int x, int y) { return static_cast<std::size_t>(y) * w + x; };
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            bool border = x == 0 || y == 0 || x == w - 1 || y == h - 1;
+            for (int dy = -1; dy <= 1 && !border; ++dy) {
+                for (int dx = -1; dx <= 1 && !border; ++dx) {
+                    border = ids_[at(x + dx, y + dy)] != ids_[at(x, y)];
+                }
+            }
+            d[at(x, y)] = border ? 0 : kMaxUniformRadius;
+        }
+    }
+    for (int y = 1; y < h; ++y) {
+        for (int x = 1; x < w - 1; ++x) {
+            std::int32_t& v = d[at(x, y)];
+            v = std::min({v, d[at(x - 1, y)] + 1, d[at(x - 1, y - 1)] + 1, d[at(x, y - 1)] + 1,
+                          d[at(x + 1, y - 1)] + 1});
+        }
+    }
+    for (int y = h - 2; y >= 0; --y) {
+        for (int x = w - 2; x >= 1; --x) {
+            std::int32_t& v = d[at(x, y)];
+            v = std::min({v, d[at(x + 1, y)] + 1, d[at(x + 1, y + 1)] + 1, d[at(x, y + 1)] + 1,
+                          d[at(x - 1, y + 1)] + 1});
+        }
+    }
+    uniformRadius_.resize(ids_.size());
+    for (std::size_t p = 0; p < d.size(); ++p) {
+        uniformRadius_[p] = static_cast<std::uint8_t>(d[p]);
+    }
 }
 
 std::uint64_t StencilMedium::bytesFor(std::uint64_t width, std::uint64_t height) {
-    return width * height * (sizeof(std::uint32_t) + 9 * sizeof(float) + 16);
+    return width * height * (sizeof(std::uint32_t) + 9 * sizeof(float) + 16 + 5);
 }
 
 std::vector<Rgb> toSlotMajor(const std::vector<Rgb>& probeMajor, int stored) {

@@ -37,6 +37,12 @@ class StencilMedium {
     // set where the pixel emits (the planes of the walks are copies).
     const float* planeSigma(int c) const { return planeSigma_[c].data(); }
 
+    // Per pixel, row-major: the largest r (at most kMaxUniformRadius) such that every pixel within
+    // Chebyshev distance r lies on the canvas and has this pixel's material. A walk may cross
+    // those pixels in one step (docs/algorithms/radiance-cascades-2d.md §8).
+    const std::uint8_t* uniformRadius() const { return uniformRadius_.data(); }
+    static constexpr int kMaxUniformRadius = 255;
+
     // Bytes held for a medium of this size (at most: every pixel distinct).
     static std::uint64_t bytesFor(std::uint64_t width, std::uint64_t height);
 
@@ -46,6 +52,9 @@ class StencilMedium {
     std::vector<std::uint32_t> ids_;
     std::vector<float> sigma_[3], emission_[3];
     std::vector<float> planeSigma_[3];
+    std::vector<std::uint8_t> uniformRadius_;
+
+    void buildUniformRadius();
 };
 
 // Probe-major ((p * stored + s), what cascadePass and readOut use) to slot-major ((s * probes + p))
