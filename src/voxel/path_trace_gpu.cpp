@@ -63,8 +63,7 @@ shared::PathTracePush pathPush(const ShadeOptions& shading, const PathTraceOptio
         disk.frame(t, b);
         p.sunOneMinusCos = float(disk.oneMinusCos);
         p.sunPdf = float(disk.pdf());
-        const double s = std::sin(disk.radius);
-        p.sunRadianceScale = float(1.0 / (3.14159265358979323846 * s * s));
+        p.sunRadianceScale = disk.radiance(Rgb(1.0f)).r;  // 1 / (pi sin^2 r)
         p.sunTangentX = float(t.x), p.sunTangentY = float(t.y), p.sunTangentZ = float(t.z);
         p.sunBitangentX = float(b.x), p.sunBitangentY = float(b.y), p.sunBitangentZ = float(b.z);
     }

@@ -63,6 +63,14 @@ TEST(PathTraceGpuMaterials, GlassWithAbsorptionAgreesWithTheCpu) {
     PathTraceOptions p;
     p.samplesPerPixel = 32;
     expectParity(*context, s.world, s.camera, s.o, p, nullptr, "glass with absorption");
+    // The options the GPU reads from its own push constants, whatever the ray caster's lighting:
+    // Schlick's Fresnel, and refraction off (the glass opaque).
+    MaterialScene schlick(glass(Rgb(0.1f, 0.3f, 0.6f)));
+    schlick.o.fresnel = ShadeOptions::FresnelModel::Schlick;
+    expectParity(*context, schlick.world, schlick.camera, schlick.o, p, nullptr, "glass, Schlick");
+    MaterialScene opaque(glass(Rgb(0.1f, 0.3f, 0.6f)));
+    opaque.o.refraction = false;
+    expectParity(*context, opaque.world, opaque.camera, opaque.o, p, nullptr, "glass, opaque");
 }
 
 TEST(PathTraceGpuMaterials, MirrorAndRoughMetalAgreeWithTheCpu) {
