@@ -13,6 +13,7 @@
 #include "luxel/core/memory.h"
 #include "luxel/gpu/context.h"
 #include "luxel/voxel/voxel_gpu.h"
+#include "voxel/sun_disk.h"
 
 namespace luxel::voxel {
 
@@ -52,6 +53,20 @@ shared::PathTracePush pathPush(const ShadeOptions& shading, const PathTraceOptio
     p.sunIrradianceR = shading.sunIrradiance.r;
     p.sunIrradianceG = shading.sunIrradiance.g;
     p.sunIrradianceB = shading.sunIrradiance.b;
+    p.materialFlags =
+        (shading.refraction ? LUXEL_PATH_REFRACTION : 0u) |
+        (shading.fresnel == ShadeOptions::FresnelModel::Exact ? LUXEL_PATH_FRESNEL_EXACT : 0u);
+    // The disk as SunDisk has it, in double, rounded once.
+    const SunDisk disk = SunDisk::make(d, shading.sunAngularRadius);
+    if (!disk.delta()) {
+        Vec3d t, b;
+        disk.frame(t, b);
+        p.sunOneMinusCos = float(disk.oneMinusCos);
+        p.sunPdf = float(disk.pdf());
+        p.sunRadianceScale = disk.radiance(Rgb(1.0f)).r;  // 1 / (pi sin^2 r)
+        p.sunTangentX = float(t.x), p.sunTangentY = float(t.y), p.sunTangentZ = float(t.z);
+        p.sunBitangentX = float(b.x), p.sunBitangentY = float(b.y), p.sunBitangentZ = float(b.z);
+    }
     return p;
 }
 

@@ -73,4 +73,8 @@ Vec3d SunDisk::spiral(int i, int count) const {
     return coneDirection(axis, u * oneMinusCos, golden * i);
 }
 
+void SunDisk::frame(Vec3d& t, Vec3d& b) const {
+    tangents(axis, t, b);
+}
+
 }  // namespace luxel::voxel

@@ -32,6 +32,8 @@ struct SunDisk {
     // Direction i of a fixed spiral of `count` directions spread evenly over the cone (Vogel's
     // golden-angle spiral): the same for every caller, so deterministic soft shadows agree.
     Vec3d spiral(int i, int count) const;
+    // The orthonormal tangents sample() turns about the axis (the GPU tracer's cone uses them).
+    void frame(Vec3d& t, Vec3d& b) const;
 };
 
 }  // namespace luxel::voxel

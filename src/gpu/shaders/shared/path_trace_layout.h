@@ -20,6 +20,9 @@ using uint = std::uint32_t;
 #define LUXEL_PATH_GROUP_X 8
 #define LUXEL_PATH_GROUP_Y 8
 #define LUXEL_PATH_BUFFERS 17
+// PathTracePush::materialFlags (the path tracer reads them whatever the ray caster's lighting).
+#define LUXEL_PATH_REFRACTION 1u
+#define LUXEL_PATH_FRESNEL_EXACT 2u
 
 // Push constants: the rows and the samples one dispatch traces, and the path options.
 struct PathTracePush {
@@ -32,6 +35,14 @@ struct PathTracePush {
     float sunX, sunY, sunZ;     // unit, towards the sun
     float sunIrradianceR, sunIrradianceG, sunIrradianceB;
     uint accumulate;  // 0: write the pixels' sums; 1: add to those there (same shift)
+    // The sun's disk (SunDisk, computed in double and rounded): 1 - cos r (0: a delta sun), the
+    // density of its cone 1 / (2 pi (1 - cos r)), its radiance per irradiance 1 / (pi sin^2 r)
+    // and the tangents of the axis its samples turn about.
+    float sunOneMinusCos, sunPdf, sunRadianceScale;
+    float sunTangentX, sunTangentY, sunTangentZ;
+    float sunBitangentX, sunBitangentY, sunBitangentZ;
+    uint materialFlags;  // LUXEL_PATH_* below: ShadeOptions::refraction and ::fresnel
+    uint pad0, pad1;
 };
 
 struct PathEmitterVoxel {
@@ -49,7 +60,9 @@ struct PathPixelSums {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(PathTracePush) == 64);
+static_assert(sizeof(PathTracePush) == 112);
+static_assert(offsetof(PathTracePush, sunOneMinusCos) == 64);
+static_assert(offsetof(PathTracePush, sunBitangentZ) == 96);
 static_assert(offsetof(PathTracePush, seedLow) == 16);
 static_assert(offsetof(PathTracePush, emitters) == 32);
 static_assert(offsetof(PathTracePush, sunIrradianceR) == 48);

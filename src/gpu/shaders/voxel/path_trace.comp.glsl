@@ -2,8 +2,8 @@
 // firstSample .. firstSample + samples - 1 with the estimator of src/voxel/path_trace.cpp (its CPU
 // reference, tracePath and PathTracer::addSamples) and the same random numbers (shared/path_rng.h),
 // in float, and writes or adds their shifted sums (shared/path_trace_layout.h). The traversal,
-// cutouts, sky and textures are the ray caster's (voxel_shading.glsl); the surface response is
-// path_surface.glsl.
+// cutouts, sky, textures and the walk through transmissive voxels are the ray caster's
+// (voxel_shading.glsl, voxel_physical.glsl); the surface response is path_surface.glsl.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/voxel_layout.h"
@@ -31,6 +31,7 @@ layout(push_constant) uniform Push { PathTracePush path; };
 #include "voxel/texture_sample.glsl"
 #include "voxel/voxel_shading.glsl"
 #include "shared/path_rng.h"
+#include "shared/path_bsdf.h"
 #include "voxel/path_emitters.glsl"
 #include "voxel/path_surface.glsl"
 
@@ -38,88 +39,148 @@ float maxComponent(vec3 c) {
     return max(c.x, max(c.y, c.z));
 }
 
-// Power-heuristic weight of a strategy of density `mine` against one of density `other`, as a
-// ratio so that large densities do not overflow float.
-float powerHeuristic(float mine, float other) {
-    if (!(mine > 0.0)) return 0.0;
-    const float r = other / mine;
-    return 1.0 / (1.0 + r * r);
+vec3 sunAxis() {
+    return vec3(path.sunX, path.sunY, path.sunZ);
 }
 
-// Next event estimation towards the sun: a delta light, found only by this shadow ray.
-vec3 sunLight(Hit hit, PathSurface surface, vec3 towardsEye) {
+// Next event estimation towards the sun (sunLight in path_trace.cpp): its centre (a delta light)
+// or a uniform direction in its disk, weighted against the bounce rays that can meet the disk.
+// Draws two numbers when the disk has a size, whatever the surface.
+vec3 sunLight(Hit hit, PathBsdf b, inout uvec2 rng) {
+    vec3 l = sunAxis();
+    const bool delta = !(path.sunOneMinusCos > 0.0);
+    if (!delta) {
+        const float u0 = pathRngNext(rng), u1 = pathRngNext(rng);
+        l = pathConeDirection(l, vec3(path.sunTangentX, path.sunTangentY, path.sunTangentZ),
+                              vec3(path.sunBitangentX, path.sunBitangentY, path.sunBitangentZ),
+                              u0 * path.sunOneMinusCos, 2.0 * LUXEL_PATH_PI * u1);
+    }
     const vec3 irradiance = vec3(path.sunIrradianceR, path.sunIrradianceG, path.sunIrradianceB);
-    if (!(maxComponent(irradiance) > 0.0)) return vec3(0.0);
-    const vec3 sun = vec3(path.sunX, path.sunY, path.sunZ);
-    if (!(dot(vec3(hit.normal), sun) > 0.0) || castToSurface(hit.point, sun).hit.hit) {
+    if (!(maxComponent(irradiance) > 0.0) || !pathSmooth(b)) return vec3(0.0);
+    if (!(dot(vec3(hit.normal), l) > 0.0) || castToSurface(hit.point, l).hit.hit) {
         return vec3(0.0);
     }
-    return pathSurfaceReflect(surface, hit.normal, towardsEye, sun) * irradiance;
+    if (delta) return pathBsdfLight(b, l, irradiance, 0.0);
+    return pathBsdfLight(b, l, irradiance * path.sunRadianceScale, path.sunPdf);
 }
 
 // Next event estimation towards the emissive voxels, weighted against the bounce ray that could
-// have found the same point (multiple importance sampling).
-vec3 emitterLight(Hit hit, PathSurface surface, vec3 towardsEye, inout uvec2 rng) {
+// have found the same point (multiple importance sampling). Draws four numbers.
+vec3 emitterLight(Hit hit, PathBsdf b, inout uvec2 rng) {
     const float u0 = pathRngNext(rng), u1 = pathRngNext(rng);
     const float u2 = pathRngNext(rng), u3 = pathRngNext(rng);
+    if (!pathSmooth(b)) return vec3(0.0);
     const PathLightSample s = pathSampleEmitter(hit.point, u0, u1, u2, u3);
     if (!(s.pdf > 0.0) || !(dot(vec3(hit.normal), s.direction) > 0.0)) return vec3(0.0);
     // Visible when the shadow ray first meets the sampled face itself.
     const Hit seen = castToSurface(hit.point, s.direction).hit;
     if (!seen.hit || seen.voxel != s.voxel || seen.normal != s.normal) return vec3(0.0);
     const VoxelMaterial m = materials[materialIndex(voxelValue(s.voxel))];
-    const float bouncePdf = pathSurfacePdf(surface, hit.normal, towardsEye, s.direction);
-    const float weight = powerHeuristic(s.pdf, bouncePdf);
-    return pathSurfaceReflect(surface, hit.normal, towardsEye, s.direction) *
-           vec3(m.emissionR, m.emissionG, m.emissionB) * (weight / s.pdf);
+    return pathBsdfLight(b, s.direction, vec3(m.emissionR, m.emissionG, m.emissionB), s.pdf);
 }
 
-// tracePath (path_trace.cpp): one path sample along the camera ray.
+// Whether Russian roulette ends the path at vertex k with the number u (drawn once roulette has
+// started); else the throughput is divided by the survival probability.
+bool rouletteEnds(int k, float u, inout vec3 throughput) {
+    if (k + 1 < int(path.rouletteAfter)) return false;
+    const float q = min(1.0, maxComponent(throughput));
+    if (u >= q) return true;
+    throughput = throughput * (1.0 / q);
+    return false;
+}
+
+// tracePath (path_trace.cpp): one path sample along the camera ray, the same random numbers in
+// the same order.
 vec3 tracePath(vec3 origin, vec3 direction, inout uvec2 rng) {
     vec3 radiance = vec3(0.0), throughput = vec3(1.0);
     vec3 o = origin, d = direction;
     vec3 bounceOrigin = vec3(0.0);
-    float bouncePdf = 0.0;  // the last bounce ray's density (0: the camera ray)
+    float bouncePdf = 0.0;  // the last bounce ray's density (0: the camera ray or a delta lobe)
+    bool inside = false;    // the ray travels through the medium of `cell`
+    ivec3 cell = ivec3(0);
     const bool sampleEmitters = path.emitters > 0u;
-    // Vertex k of the path is reached after k reflections.
-    for (int k = 0;; ++k) {
+    const int maxBounces = int(path.maxBounces);
+    // Vertex k of the path is reached after k reflections or refractions.
+    for (int k = 0;;) {
+        if (inside) {
+            // Through the transmissive voxels to where the ray leaves them (walkMedium,
+            // voxel_physical.glsl), dimmed by Beer-Lambert.
+            const VoxelMaterial m = materials[materialIndex(voxelValue(cell))];
+            const MediumExit e = walkMedium(cell, o, d);
+            throughput = throughput * voxelTransmittance(
+                                          vec3(m.absorptionR, m.absorptionG, m.absorptionB),
+                                          e.distance);
+            o = e.point;
+            if (e.intoSolid) {  // another solid behind the glass: seen directly
+                inside = false;
+                continue;
+            }
+            if (k == maxBounces) break;
+            const bool roulette = k + 1 >= int(path.rouletteAfter);
+            const float uRoulette = roulette ? pathRngNext(rng) : 0.0;
+            // splitAtExit (shading_physical.cpp): total internal reflection, or reflect back
+            // inside with the Fresnel reflectance and refract out otherwise.
+            const vec3 nIn = -vec3(e.outward);
+            const float cosI = -dot(nIn, d);
+            const float kk = opticsRefractK(cosI, m.ior);
+            const bool total = kk < 0.0;
+            bool reflect = total;
+            if (!total) reflect = pathRngNext(rng) < pathFresnel(cosI, m.ior, 1.0);
+            d = reflect ? normalize(opticsReflect(d, nIn))
+                        : normalize(opticsRefract(d, nIn, m.ior, cosI, kk));
+            cell = e.cell;
+            inside = reflect;
+            bouncePdf = 0.0;
+            if (rouletteEnds(k, uRoulette, throughput)) break;
+            ++k;
+            continue;
+        }
         const SurfaceHit s = castToSurface(o, d);
         if (!s.hit.hit) {  // left the world (or ran past the step cap): the sky
             radiance += throughput * skyColor(d);
+            // The sun's disk, where a reflected or refracted ray meets it (the camera sees the
+            // sky without it, as in the ray caster).
+            if (k > 0 && pathConeContains(sunAxis(), path.sunOneMinusCos, d)) {
+                const float weight =
+                    bouncePdf > 0.0 ? pathPowerHeuristic(bouncePdf, path.sunPdf) : 1.0;
+                radiance += throughput *
+                            vec3(path.sunIrradianceR, path.sunIrradianceG, path.sunIrradianceB) *
+                            path.sunRadianceScale * weight;
+            }
             break;
         }
         const Hit hit = s.hit;
         if (hit.normal == ivec3(0)) break;  // started inside a solid voxel: no light
         const PathSurface surface = pathSurfaceAt(s);
         if (maxComponent(surface.emission) > 0.0) {
+            // Seen by a bounce ray that emitter sampling could also have found: MIS-weighted.
             float weight = 1.0;
-            if (sampleEmitters && k > 0) {
-                weight = powerHeuristic(
+            if (sampleEmitters && bouncePdf > 0.0) {
+                weight = pathPowerHeuristic(
                     bouncePdf, pathEmitterPdf(bounceOrigin, hit.voxel, hit.normal, hit.point));
             }
             radiance += throughput * surface.emission * weight;
         }
-        if (k == int(path.maxBounces)) break;
-        const vec3 towardsEye = -d;
-        radiance += throughput * sunLight(hit, surface, towardsEye);
-        if (sampleEmitters) radiance += throughput * emitterLight(hit, surface, towardsEye, rng);
-        // The roulette number, then the bounce's two, as the CPU draws them (a path that ends
-        // here draws nothing more).
-        const bool roulette = k + 1 >= int(path.rouletteAfter);
-        const float survive = roulette ? pathRngNext(rng) : 0.0;
-        const float u1 = pathRngNext(rng), u2 = pathRngNext(rng);
-        const PathBounce bounce = pathSurfaceBounce(surface, hit.normal, towardsEye, u1, u2);
-        throughput = throughput * bounce.weight;
+        if (k == maxBounces) break;
+        const PathBsdf b = pathBsdfAt(surface, hit.normal, normalize(d));
+        // Next event estimation (the smooth lobes only; a delta lobe counts what its ray meets).
+        radiance += throughput * sunLight(hit, b, rng);
+        if (sampleEmitters) radiance += throughput * emitterLight(hit, b, rng);
+        const float uRoulette = k + 1 >= int(path.rouletteAfter) ? pathRngNext(rng) : 0.0;
+        const PathBounce next = pathSampleBsdf(b, rng);
+        if (next.lobe == LUXEL_PATH_LOBE_NONE) break;
+        throughput = throughput * next.weight;
         if (!(maxComponent(throughput) > 0.0)) break;
-        if (roulette) {
-            const float q = min(1.0, maxComponent(throughput));
-            if (survive >= q) break;
-            throughput = throughput * (1.0 / q);
-        }
+        if (rouletteEnds(k, uRoulette, throughput)) break;
         o = hit.point;
-        d = bounce.direction;
+        d = next.direction;
         bounceOrigin = hit.point;
-        bouncePdf = bounce.pdf;
+        bouncePdf = next.pdf;
+        if (next.lobe == LUXEL_PATH_LOBE_TRANSMISSION) {
+            inside = true;
+            cell = hit.voxel;
+        }
+        ++k;
     }
     return radiance;
 }
