@@ -6,14 +6,16 @@
 #include <array>
 #include <cmath>
 
+#include "gpu/shaders/shared/voxel_shading.h"
 #include "path_trace_surface.h"
 #include "voxel/path_trace_bsdf.h"
+#include "voxel/shading_physical.h"
 
 namespace luxel::voxel {
 namespace {
 
-constexpr int kAlbedoCosines = 32, kAlbedoAlphas = 32;
-constexpr int kAlbedoSamples = 1024;  // per entry; stratified, so the error is well below 1e-3
+constexpr int kAlbedoCosines = 24, kAlbedoAlphas = 24;
+constexpr int kAlbedoSamples = 4096;  // per entry: a standard error below 0.5%
 
 // A GGX-only lobe of reflectance 1 at a face facing +y, seen with cosine cosView.
 PathBsdf specularOnly(double cosView, double alpha) {
@@ -52,6 +54,43 @@ Vec3d toDouble(Int3 v) {
     return {double(v.x), double(v.y), double(v.z)};
 }
 
+// Interfaces a transmitted ray may meet inside a medium before what is left is dropped.
+constexpr int kMaxMediumExits = 8;
+
+// What the transmission lobe shows: the camera ray refracted into the medium of the hit voxel
+// and followed as the path tracer follows it (walkMedium, Beer-Lambert, the Fresnel split at each
+// exit), every exit's refracted part bringing the solver's light along its direction; the part
+// reflected inside goes on, up to kMaxMediumExits interfaces.
+Rgb transmitted(const VoxelWorld& world, const SurfaceHit& s, const PathBsdf& b,
+                const ShadeOptions& shading, const SolverLight& light, PathRng& rng) {
+    PathBsdf entering = b;
+    entering.pSpecular = entering.pDiffuse = 0.0;
+    entering.pTransmission = 1.0;
+    const BsdfSample in = sampleBsdf(entering, rng);  // a delta lobe: draws no numbers
+    Rgb weight(b.transmission), out;
+    Ray ray{s.hit.point, in.direction};
+    Int3 cell = s.hit.voxel;
+    for (int exits = 0; exits < kMaxMediumExits && weight.maxComponent() > 1e-4f; ++exits) {
+        const Voxel v = world.get(cell.x, cell.y, cell.z);
+        const Material& m = shading.materials.forSlot(textureSlotOf(v));
+        const MediumExit exit = walkMedium(world, cell, ray.origin, ray.direction);
+        const gpu::shared::vec3 t = gpu::shared::voxelTransmittance(
+            {m.absorption.r, m.absorption.g, m.absorption.b}, float(exit.distance));
+        weight = weight * Rgb(t.x, t.y, t.z);
+        // Another solid behind the medium: seen directly, as the path tracer sees it.
+        if (exit.intoSolid) return out + weight * light.radianceAlong({exit.point, ray.direction});
+        const ExitSplit split = splitAtExit(ray.direction, exit.outward, m.ior, shading.fresnel);
+        if (!split.total) {
+            out += weight * (1.0f - split.reflectance) *
+                   light.radianceAlong({exit.point, split.refracted});
+            weight = weight * split.reflectance;
+        }
+        ray = {exit.point, split.reflected};
+        cell = exit.cell;
+    }
+    return out;
+}
+
 }  // namespace
 
 double directionalAlbedoGgx(double cosView, double alpha) {
@@ -83,6 +122,9 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
               directSunLobes(world, textures, s.hit, b.diffuse,
                              glossy && !b.mirror() ? &specular : nullptr, shading) +
               b.diffuse * light.diffuseRadiance;
+    if (b.transmission > 0.0f && b.cosView > 0.0) {
+        out += transmitted(world, s, b, shading, light, rng);
+    }
     if (!glossy) return out;
     const Vec3d n = toDouble(s.hit.normal);
     if (b.mirror()) {

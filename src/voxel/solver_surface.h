@@ -9,8 +9,9 @@
 // where A is the GGX lobe's directional albedo (directionalAlbedoGgx) and Lbar the radiance
 // arriving about the reflection direction: the mean of a few GGX-sampled directions' radiance,
 // weighted by their sampling weights (split-sum: exact under light the same from every
-// direction). A mirror takes one ray along the reflection. Transmission is not followed: glass
-// reflects, and what it transmits is not shown (see the doc).
+// direction). A mirror takes one ray along the reflection. The transmission lobe T follows the
+// refracted camera ray through the medium as the path tracer does (walkMedium, Beer-Lambert,
+// Fresnel at each exit) and takes the solver's light along each ray that leaves it.
 #pragma once
 
 #include <functional>
