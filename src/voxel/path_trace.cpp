@@ -126,12 +126,20 @@ bool surfaceRayBlocked(const VoxelWorld& world, const TextureSet* textures, cons
 
 Rgb directSunLight(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb albedo,
                    const ShadeOptions& o) {
+    return directSunLobes(world, textures, hit, albedo, nullptr, o);
+}
+
+Rgb directSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
+                   const PathBsdf* specular, const ShadeOptions& o) {
     if (!(o.sunIrradiance.maxComponent() > 0.0f)) return {};
     const SunDisk sun = SunDisk::make(o.sunDirection, o.sunAngularRadius);
     const Vec3d n = toDouble(hit.normal);
     // A delta sun: one shadow ray; a disk: the spiral's rays, each bringing radiance / pdf.
     const int rays = sun.delta() ? 1 : kSunDiskRays;
+    const Rgb perRay =
+        sun.delta() ? o.sunIrradiance : sun.radianceOverPdf(o.sunIrradiance) * float(1.0 / rays);
     double sum = 0.0;
+    Rgb glossy;
     for (int i = 0; i < rays; ++i) {
         const Vec3d l = sun.spiral(i, rays);
         const double cosSun = dot(n, l);
@@ -141,9 +149,11 @@ Rgb directSunLight(const VoxelWorld& world, const TextureSet* textures, const Hi
             continue;
         }
         sum += cosSun;
+        // Each ray of the disk is a delta light of its share (lightPdf 0: no MIS weight).
+        if (specular) glossy += bsdfLight(*specular, l, perRay, 0.0);
     }
-    if (sun.delta()) return albedo * o.sunIrradiance * float(sum / kPi);
-    return albedo * sun.radianceOverPdf(o.sunIrradiance) * float(sum / (rays * kPi));
+    if (sun.delta()) return diffuse * o.sunIrradiance * float(sum / kPi) + glossy;
+    return diffuse * sun.radianceOverPdf(o.sunIrradiance) * float(sum / (rays * kPi)) + glossy;
 }
 
 Vec3d cosineDirection(Int3 normal, float u1, float u2) {

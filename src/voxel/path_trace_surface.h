@@ -12,6 +12,8 @@
 
 namespace luxel::voxel {
 
+struct PathBsdf;
+
 struct PathSurface {
     Rgb albedo, emission;
     const Material* material = nullptr;  // the hit voxel's (in shading.materials)
@@ -31,6 +33,12 @@ PathSurface pathSurfaceAt(const VoxelWorld& world, const SurfaceHit& s, const Sh
 // is below the face.
 Rgb directSunLight(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb albedo,
                    const ShadeOptions& o);
+
+// directSunLight's Lambertian term of `diffuse` plus, when `specular` is given, what its smooth
+// lobes reflect of each unshadowed ray of the disk (bsdfLight, each ray a delta light of its
+// share; pass a PathBsdf whose diffuse lobe is off so it is not counted twice).
+Rgb directSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
+                   const PathBsdf* specular, const ShadeOptions& o);
 
 // A cosine-weighted unit direction about the axis-aligned normal n from two uniform numbers in
 // [0, 1): pdf cos / pi, so a Lambertian bounce weighs albedo exactly.

@@ -9,8 +9,26 @@
 #include "luxel/voxel/sky_visibility.h"
 #include "luxel/voxel/surface_cast.h"
 #include "path_trace_surface.h"
+#include "solver_surface.h"
 
 namespace luxel::voxel {
+
+namespace {
+
+// What a specular lobe sees along r: the sky, or an emissive face within the radius, as the
+// diffuse estimate's rays see them (occluders within the radius are black).
+Rgb reflectedLight(const VoxelWorld& world, const TextureSet* textures, const Ray& r,
+                   const ShadeOptions& shading, double radius) {
+    if (shading.materials.anyEmission()) {
+        const SurfaceHit s = castToSurface(world, textures, r, shading.stepCap);
+        if (s.hit.hit && s.hit.t <= radius) return pathSurfaceAt(world, s, shading).emission;
+    } else if (surfaceRayBlocked(world, textures, r, radius, shading.stepCap)) {
+        return {};
+    }
+    return skyColor(r.direction, shading);
+}
+
+}  // namespace
 
 Status validateSkyVisibility(const ShadeOptions& shading, const SkyVisibilityOptions& options) {
     if (options.rays < 1 || options.rays > kMaxSkyRays) {
@@ -75,14 +93,15 @@ Result<SkyVisibilityImage> renderSkyVisibility(const VoxelWorld& world, const Ca
                     radiance = skyColor(ray.direction, shading);
                     visibility = 1.0;
                 } else if (s.hit.normal != Int3{}) {  // else the camera is inside a solid voxel
-                    const PathSurface surface = pathSurfaceAt(world, s, shading);
                     PathRng rng(options.seed, std::uint64_t(y) * width + x, 0);
                     const SkyVisibility v = estimateSkyVisibility(
                         world, textures, s.hit.point, s.hit.normal, shading, options, rng);
                     visibility = v.visibility;
-                    radiance = surface.emission +
-                               directSunLight(world, textures, s.hit, surface.albedo, shading) +
-                               surface.albedo * (v.skyLight + v.emitterLight);
+                    const SolverLight light{v.skyLight + v.emitterLight, [&](const Ray& r) {
+                                                return reflectedLight(world, textures, r, shading,
+                                                                      options.radius);
+                                            }};
+                    radiance = shadeSolverSurface(world, textures, s, ray, shading, light, rng);
                 }
                 for (int c = 0; c < 3; ++c) out.radiance.at(x, y, c) = radiance[c];
                 out.visibility.at(x, y, 0) = float(visibility);

@@ -92,8 +92,10 @@ class RadianceCascades {
     // Irradiance from everything but the direct sun at a point on a face (voxel, axis normal),
     // interpolated between the face and its coplanar neighbours.
     Rgb indirectIrradiance(Int3 voxel, Int3 normal, Vec3d point) const;
-    // The picture: one primary ray per pixel centre (cutouts honoured), shaded as
-    // emission + direct sun (shadow ray) + albedo x indirectIrradiance / pi; rows in parallel.
+    // The picture: one primary ray per pixel centre (cutouts honoured), shaded with the
+    // material model (docs/algorithms/voxel-radiance-cascades.md §4.2): emission, the diffuse
+    // lobe x (direct sun + indirectIrradiance / pi), the specular lobe's sun highlight and its
+    // split-sum reflection of what a few GGX rays meet; rows in parallel.
     Result<Image> render(const Camera& camera) const;
 
     CascadeStats stats() const;
@@ -103,6 +105,9 @@ class RadianceCascades {
   private:
     friend class RadianceCascadesGpu;
     explicit RadianceCascades(std::unique_ptr<State> state);
+    // The radiance arriving along a ray leaving a face: the sky, or the face met shaded
+    // Lambertian with its sun and indirectIrradiance.
+    Rgb reflectedLight(const Ray& r) const;
     std::unique_ptr<State> state_;
 };
 

@@ -4,6 +4,7 @@
 // interpolated. (Casting rows several rays at a time, castRayBatch and occludedBatch, measured no
 // faster here: 45-47 ms against 40-46 ms of CPU at 640x360.)
 #include "../path_trace_surface.h"
+#include "../solver_surface.h"
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/path_trace.h"
@@ -13,7 +14,21 @@ namespace luxel::voxel {
 
 namespace {
 constexpr float kInvPi = float(1.0 / 3.14159265358979323846);
+constexpr std::uint64_t kReflectionSeed = 0x7265666c;  // the picture's GGX directions
 }  // namespace
+
+Rgb RadianceCascades::reflectedLight(const Ray& r) const {
+    const VoxelWorld& world = *state_->world;
+    const ShadeOptions& shading = state_->shading;
+    const SurfaceHit s = castToSurface(world, state_->textures, r, shading.stepCap);
+    if (!s.hit.hit) return skyColor(r.direction, shading);
+    if (s.hit.normal == Int3{}) return {};
+    // The face met, Lambertian: its emission, sun and the cascades' irradiance.
+    const PathSurface surface = pathSurfaceAt(world, s, shading);
+    return surface.emission +
+           directSunLight(world, state_->textures, s.hit, surface.albedo, shading) +
+           surface.albedo * indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point) * kInvPi;
+}
 
 Result<Image> RadianceCascades::render(const Camera& camera) const {
     const int width = camera.width(), height = camera.height();
@@ -35,12 +50,11 @@ Result<Image> RadianceCascades::render(const Camera& camera) const {
                 if (!s.hit.hit) {
                     radiance = skyColor(ray.direction, shading);
                 } else if (s.hit.normal != Int3{}) {  // else the camera is inside a solid voxel
-                    const PathSurface surface = pathSurfaceAt(world, s, shading);
-                    radiance = surface.emission +
-                               directSunLight(world, textures, s.hit, surface.albedo, shading) +
-                               surface.albedo *
-                                   indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point) *
-                                   kInvPi;
+                    PathRng rng(kReflectionSeed, std::uint64_t(y) * width + x, 0);
+                    const SolverLight light{
+                        indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point) * kInvPi,
+                        [&](const Ray& r) { return reflectedLight(r); }};
+                    radiance = shadeSolverSurface(world, textures, s, ray, shading, light, rng);
                 }
                 for (int c = 0; c < 3; ++c) out.at(x, y, c) = radiance[c];
             }

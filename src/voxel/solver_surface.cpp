@@ -1,0 +1,151 @@
+// The material model at a real-time solver's visible surface (solver_surface.h). Every lobe
+// weight, the GGX reflectance and the GGX sampling are the path tracer's (path_trace_bsdf.h).
+#include "solver_surface.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "gpu/shaders/shared/voxel_shading.h"
+#include "path_trace_surface.h"
+#include "voxel/path_trace_bsdf.h"
+#include "voxel/shading_physical.h"
+
+namespace luxel::voxel {
+namespace {
+
+constexpr int kAlbedoCosines = 24, kAlbedoAlphas = 24;
+constexpr int kAlbedoSamples = 4096;  // per entry: a standard error below 0.5%
+
+// A GGX-only lobe of reflectance 1 at a face facing +y, seen with cosine cosView.
+PathBsdf specularOnly(double cosView, double alpha) {
+    PathBsdf b;
+    b.normal = {0, 1, 0};
+    const double c = std::clamp(cosView, 1e-4, 1.0);
+    b.view = {std::sqrt(std::max(0.0, 1.0 - c * c)), c, 0.0};
+    b.cosView = c;
+    b.alpha = float(alpha);
+    b.specular = Rgb(1.0f);
+    b.pSpecular = 1.0;
+    return b;
+}
+
+// The table of directionalAlbedoGgx: entry (i, j) at cosView = i / (n - 1) and alpha = j / (n - 1),
+// the mean of the path tracer's GGX sample weights (f cos / pdf).
+std::array<float, kAlbedoCosines * kAlbedoAlphas> makeAlbedoTable() {
+    std::array<float, kAlbedoCosines * kAlbedoAlphas> table{};
+    for (int i = 0; i < kAlbedoCosines; ++i) {
+        for (int j = 0; j < kAlbedoAlphas; ++j) {
+            const double alpha = std::max(double(j) / (kAlbedoAlphas - 1), double(kMirrorAlpha));
+            const PathBsdf b = specularOnly(double(i) / (kAlbedoCosines - 1), alpha);
+            PathRng rng(0x5eed, std::uint64_t(i * kAlbedoAlphas + j), 0);
+            double sum = 0.0;
+            for (int k = 0; k < kAlbedoSamples; ++k) {
+                const BsdfSample s = sampleBsdf(b, rng);
+                if (s.lobe == BsdfSample::Lobe::Specular) sum += s.weight.r;
+            }
+            table[i * kAlbedoAlphas + j] = float(sum / kAlbedoSamples);
+        }
+    }
+    return table;
+}
+
+Vec3d toDouble(Int3 v) {
+    return {double(v.x), double(v.y), double(v.z)};
+}
+
+// Interfaces a transmitted ray may meet inside a medium before what is left is dropped.
+constexpr int kMaxMediumExits = 8;
+
+// What the transmission lobe shows: the camera ray refracted into the medium of the hit voxel
+// and followed as the path tracer follows it (walkMedium, Beer-Lambert, the Fresnel split at each
+// exit), every exit's refracted part bringing the solver's light along its direction; the part
+// reflected inside goes on, up to kMaxMediumExits interfaces.
+Rgb transmitted(const VoxelWorld& world, const SurfaceHit& s, const PathBsdf& b,
+                const ShadeOptions& shading, const SolverLight& light, PathRng& rng) {
+    PathBsdf entering = b;
+    entering.pSpecular = entering.pDiffuse = 0.0;
+    entering.pTransmission = 1.0;
+    const BsdfSample in = sampleBsdf(entering, rng);  // a delta lobe: draws no numbers
+    Rgb weight(b.transmission), out;
+    Ray ray{s.hit.point, in.direction};
+    Int3 cell = s.hit.voxel;
+    for (int exits = 0; exits < kMaxMediumExits && weight.maxComponent() > 1e-4f; ++exits) {
+        const Voxel v = world.get(cell.x, cell.y, cell.z);
+        const Material& m = shading.materials.forSlot(textureSlotOf(v));
+        const MediumExit exit = walkMedium(world, cell, ray.origin, ray.direction);
+        const gpu::shared::vec3 t = gpu::shared::voxelTransmittance(
+            {m.absorption.r, m.absorption.g, m.absorption.b}, float(exit.distance));
+        weight = weight * Rgb(t.x, t.y, t.z);
+        // Another solid behind the medium: seen directly, as the path tracer sees it.
+        if (exit.intoSolid) return out + weight * light.radianceAlong({exit.point, ray.direction});
+        const ExitSplit split = splitAtExit(ray.direction, exit.outward, m.ior, shading.fresnel);
+        if (!split.total) {
+            out += weight * (1.0f - split.reflectance) *
+                   light.radianceAlong({exit.point, split.refracted});
+            weight = weight * split.reflectance;
+        }
+        ray = {exit.point, split.reflected};
+        cell = exit.cell;
+    }
+    return out;
+}
+
+}  // namespace
+
+double directionalAlbedoGgx(double cosView, double alpha) {
+    static const auto table = makeAlbedoTable();
+    const double x = std::clamp(cosView, 0.0, 1.0) * (kAlbedoCosines - 1);
+    const double y = std::clamp(alpha, 0.0, 1.0) * (kAlbedoAlphas - 1);
+    const int i = std::min(int(x), kAlbedoCosines - 2), j = std::min(int(y), kAlbedoAlphas - 2);
+    const double fx = x - i, fy = y - j;
+    const auto at = [&](int a, int b) { return double(table[a * kAlbedoAlphas + b]); };
+    return (at(i, j) * (1 - fy) + at(i, j + 1) * fy) * (1 - fx) +
+           (at(i + 1, j) * (1 - fy) + at(i + 1, j + 1) * fy) * fx;
+}
+
+Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, const SurfaceHit& s,
+                       const Ray& ray, const ShadeOptions& shading, const SolverLight& light,
+                       PathRng& rng) {
+    const PathSurface surface = pathSurfaceAt(world, s, shading);
+    const Vec3d direction = normalize(ray.direction);
+    const PathBsdf b =
+        pathBsdf(*surface.material, surface.albedo, s.hit.normal, direction, shading);
+    const bool glossy = b.pSpecular > 0.0 && b.cosView > 0.0;
+    // The specular lobe alone, for the sun's highlight (the diffuse lobe is lit apart).
+    PathBsdf specular = b;
+    specular.diffuse = Rgb(0.0f);
+    specular.pDiffuse = 0.0;
+    specular.transmission = 0.0f;
+    specular.pTransmission = 0.0;
+    Rgb out = surface.emission +
+              directSunLobes(world, textures, s.hit, b.diffuse,
+                             glossy && !b.mirror() ? &specular : nullptr, shading) +
+              b.diffuse * light.diffuseRadiance;
+    if (b.transmission > 0.0f && b.cosView > 0.0) {
+        out += transmitted(world, s, b, shading, light, rng);
+    }
+    if (!glossy) return out;
+    const Vec3d n = toDouble(s.hit.normal);
+    if (b.mirror()) {
+        const Vec3d r = direction - n * (2.0 * dot(n, direction));
+        return out + b.specular * light.radianceAlong({s.hit.point, r});
+    }
+    // Split sum: S A(cos_v, alpha) times the weighted mean radiance of GGX-sampled directions.
+    specular.specular = Rgb(1.0f);
+    specular.pSpecular = 1.0;
+    Rgb weighted;
+    double weights = 0.0;
+    for (int k = 0; k < kSolverSpecularRays; ++k) {
+        const BsdfSample sample = sampleBsdf(specular, rng);
+        if (sample.lobe != BsdfSample::Lobe::Specular) continue;
+        const double w = sample.weight.r;
+        weighted += light.radianceAlong({s.hit.point, sample.direction}) * float(w);
+        weights += w;
+    }
+    if (!(weights > 0.0)) return out;
+    const double albedo = directionalAlbedoGgx(b.cosView, b.alpha);
+    return out + b.specular * weighted * float(albedo / weights);
+}
+
+}  // namespace luxel::voxel
