@@ -130,12 +130,12 @@ Rgb directSunLight(const VoxelWorld& world, const TextureSet* textures, const Hi
 }
 
 Rgb directSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
-                   const PathBsdf* specular, const ShadeOptions& o) {
+                   const PathBsdf* specular, const ShadeOptions& o, int sunRays) {
     if (!(o.sunIrradiance.maxComponent() > 0.0f)) return {};
     const SunDisk sun = SunDisk::make(o.sunDirection, o.sunAngularRadius);
     const Vec3d n = toDouble(hit.normal);
     // A delta sun: one shadow ray; a disk: the spiral's rays, each bringing radiance / pdf.
-    const int rays = sun.delta() ? 1 : kSunDiskRays;
+    const int rays = sun.delta() ? 1 : std::max(sunRays, 1);
     const Rgb perRay =
         sun.delta() ? o.sunIrradiance : sun.radianceOverPdf(o.sunIrradiance) * float(1.0 / rays);
     double sum = 0.0;

@@ -38,7 +38,7 @@ Rgb directSunLight(const VoxelWorld& world, const TextureSet* textures, const Hi
 // lobes reflect of each unshadowed ray of the disk (bsdfLight, each ray a delta light of its
 // share; pass a PathBsdf whose diffuse lobe is off so it is not counted twice).
 Rgb directSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
-                   const PathBsdf* specular, const ShadeOptions& o);
+                   const PathBsdf* specular, const ShadeOptions& o, int sunRays = kSunDiskRays);
 
 // A cosine-weighted unit direction about the axis-aligned normal n from two uniform numbers in
 // [0, 1): pdf cos / pi, so a Lambertian bounce weighs albedo exactly.

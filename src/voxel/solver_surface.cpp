@@ -120,7 +120,7 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
     specular.pTransmission = 0.0;
     Rgb out = surface.emission +
               directSunLobes(world, textures, s.hit, b.diffuse,
-                             glossy && !b.mirror() ? &specular : nullptr, shading) +
+                             glossy && !b.mirror() ? &specular : nullptr, shading, light.sunRays) +
               b.diffuse * light.diffuseRadiance;
     if (b.transmission > 0.0f && b.cosView > 0.0) {
         out += transmitted(world, s, b, shading, light, rng);
@@ -136,7 +136,7 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
     specular.pSpecular = 1.0;
     Rgb weighted;
     double weights = 0.0;
-    for (int k = 0; k < kSolverSpecularRays; ++k) {
+    for (int k = 0; k < light.specularRays; ++k) {
         const BsdfSample sample = sampleBsdf(specular, rng);
         if (sample.lobe != BsdfSample::Lobe::Specular) continue;
         const double w = sample.weight.r;

@@ -16,6 +16,8 @@
 
 #include <functional>
 
+#include "path_trace_surface.h"
+
 #include "luxel/core/vec.h"
 #include "luxel/voxel/dda.h"
 #include "luxel/voxel/path_trace_rng.h"
@@ -39,6 +41,10 @@ struct SolverLight {
     Rgb diffuseRadiance;
     // The radiance arriving at the face along a ray leaving it (unit direction).
     std::function<Rgb(const Ray&)> radianceAlong;
+    // Shadow rays over the sun's disk (its fixed spiral; one for a delta sun).
+    int sunRays = kSunDiskRays;
+    // GGX directions for the specular reflection of the surroundings.
+    int specularRays = kSolverSpecularRays;
 };
 
 // The radiance leaving the surface `s` towards the camera ray `ray` (s.hit.normal non-zero).

@@ -15,6 +15,10 @@ namespace luxel::voxel {
 namespace {
 constexpr float kInvPi = float(1.0 / 3.14159265358979323846);
 constexpr std::uint64_t kReflectionSeed = 0x7265666c;  // the picture's GGX directions
+// Shadow rays per pixel over the sun's disk: a quarter of sky visibility's, for the frame rate
+// (docs/algorithms/voxel-radiance-cascades.md §4.2); the penumbra is drawn in 5 steps.
+constexpr int kPictureSunRays = 4;
+constexpr int kPictureSpecularRays = 2;  // and half its reflection rays
 }  // namespace
 
 Rgb RadianceCascades::reflectedLight(const Ray& r) const {
@@ -23,11 +27,15 @@ Rgb RadianceCascades::reflectedLight(const Ray& r) const {
     const SurfaceHit s = castToSurface(world, state_->textures, r, shading.stepCap);
     if (!s.hit.hit) return skyColor(r.direction, shading);
     if (s.hit.normal == Int3{}) return {};
-    // The face met, Lambertian: its emission, sun and the cascades' irradiance.
+    // The face met, Lambertian: its emission, the sun its face's rays found when the cascades
+    // were lit (no shadow rays per pixel: a reflection is blurred by its lobe anyway) and the
+    // cascades' irradiance.
     const PathSurface surface = pathSurfaceAt(world, s, shading);
+    const int face = state_->faces.table.find(s.hit.voxel, cascades::normalIndex(s.hit.normal));
+    const Rgb sun = face >= 0 ? cascades::faceDirectSun(*state_, face) : Rgb{};
     return surface.emission +
-           directSunLight(world, state_->textures, s.hit, surface.albedo, shading) +
-           surface.albedo * indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point) * kInvPi;
+           surface.albedo * (sun + indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point)) *
+               kInvPi;
 }
 
 Result<Image> RadianceCascades::render(const Camera& camera) const {
@@ -53,7 +61,8 @@ Result<Image> RadianceCascades::render(const Camera& camera) const {
                     PathRng rng(kReflectionSeed, std::uint64_t(y) * width + x, 0);
                     const SolverLight light{
                         indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point) * kInvPi,
-                        [&](const Ray& r) { return reflectedLight(r); }};
+                        [&](const Ray& r) { return reflectedLight(r); }, kPictureSunRays,
+                        kPictureSpecularRays};
                     radiance = shadeSolverSurface(world, textures, s, ray, shading, light, rng);
                 }
                 for (int c = 0; c < 3; ++c) out.at(x, y, c) = radiance[c];
