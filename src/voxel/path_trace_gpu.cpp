@@ -172,13 +172,8 @@ Result<PathTracerGpu> PathTracerGpu::make(gpu::Context& context, VoxelGpuRendere
                                           const ShadeOptions& shading,
                                           const PathTraceOptions& options,
                                           const TextureSet* textures) {
-    if (Status s = validatePathTrace(shading, options); !s) return s.error();
+    if (Status s = validatePathTrace(shading, options, camera); !s) return s.error();
     const std::int64_t pixels = std::int64_t(camera.width()) * camera.height();
-    if (pixels > kMaxPathPixels) {
-        return Error("path tracing: image " + std::to_string(camera.width()) + "x" +
-                     std::to_string(camera.height()) + " has more than " +
-                     std::to_string(kMaxPathPixels) + " pixels");
-    }
     const PathEmitters found =
         options.sampleEmitters ? PathEmitters::find(world, shading.materials) : PathEmitters{};
     // The sums on the device and their download and double totals on the host.

@@ -32,16 +32,21 @@ PathTracer::PathTracer(const VoxelWorld& world, const Camera& camera, const Shad
                                        : PathEmitters{}),
       sums_(static_cast<std::size_t>(camera.width()) * camera.height()) {}
 
-Result<PathTracer> PathTracer::create(const VoxelWorld& world, const Camera& camera,
-                                      const ShadeOptions& shading, const PathTraceOptions& options,
-                                      const TextureSet* textures) {
-    if (Status s = validatePathTrace(shading, options); !s) return s.error();
-    const std::int64_t pixels = std::int64_t(camera.width()) * camera.height();
-    if (pixels > kMaxPathPixels) {
+Status validatePathTrace(const ShadeOptions& shading, const PathTraceOptions& options,
+                         const Camera& camera) {
+    if (Status s = validatePathTrace(shading, options); !s) return s;
+    if (std::int64_t(camera.width()) * camera.height() > kMaxPathPixels) {
         return Error("path tracing: image " + std::to_string(camera.width()) + "x" +
                      std::to_string(camera.height()) + " has more than " +
                      std::to_string(kMaxPathPixels) + " pixels");
     }
+    return Ok{};
+}
+
+Result<PathTracer> PathTracer::create(const VoxelWorld& world, const Camera& camera,
+                                      const ShadeOptions& shading, const PathTraceOptions& options,
+                                      const TextureSet* textures) {
+    if (Status s = validatePathTrace(shading, options, camera); !s) return s.error();
     return PathTracer(world, camera, shading, options, textures);
 }
 

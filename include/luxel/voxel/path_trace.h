@@ -52,6 +52,9 @@ struct PathTraceOptions {
 // The options and the scene light (ShadeOptions' sun direction and irradiance, sky colours)
 // checked: finite, in range, a non-zero sun direction; the error names the field.
 Status validatePathTrace(const ShadeOptions& shading, const PathTraceOptions& options);
+// The same, and an image of at most kMaxPathPixels pixels (both backends check this).
+Status validatePathTrace(const ShadeOptions& shading, const PathTraceOptions& options,
+                         const Camera& camera);
 
 // Radiance carried by one path sample along `ray`, drawing its random numbers from `rng`.
 // `shading` and `options` must be valid (validatePathTrace). `emitters` (PathEmitters::find of
