@@ -16,25 +16,6 @@ using namespace luxel;
 using namespace luxel::voxel;
 using namespace luxel::voxel::test;
 
-Material glass(Rgb absorption) {
-    Material m;
-    m.name = "glass";
-    m.ior = 1.5f;
-    m.roughness = 0.0f;
-    m.transmission = 1.0f;
-    m.absorption = absorption;
-    return m;
-}
-
-Material metal(float roughness, Rgb albedo) {
-    Material m;
-    m.name = "metal";
-    m.metallic = 1.0f;
-    m.roughness = roughness;
-    m.albedo = albedo;
-    return m;
-}
-
 // A default-material floor (a rough dielectric, ior 1.5), a block of slot 0's material and a
 // default-material pillar under a gradient sky and the sun.
 struct MaterialScene {

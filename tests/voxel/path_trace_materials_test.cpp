@@ -46,25 +46,6 @@ PathTraceOptions deepPaths() {
     return p;
 }
 
-Material glass(Rgb absorption = Rgb(0.0f)) {
-    Material m;
-    m.name = "glass";
-    m.ior = 1.5f;
-    m.roughness = 0.0f;
-    m.transmission = 1.0f;
-    m.absorption = absorption;
-    return m;
-}
-
-Material metal(float roughness, Rgb albedo) {
-    Material m;
-    m.name = "metal";
-    m.metallic = 1.0f;
-    m.roughness = roughness;
-    m.albedo = albedo;
-    return m;
-}
-
 TEST(PathTraceMaterials, MirrorFloorShowsAlbedoTimesSky) {
     const VoxelWorld world = floorWorld();
     const float sky = 1.5f;

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "luxel/voxel/material.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/voxel_world.h"
 
@@ -43,6 +44,26 @@ inline VoxelWorld floorWorld() {
         for (int x = 0; x < 32; ++x) world.set(x, 0, z, kWhite);
     world.refreshEmptySpace();
     return world;
+}
+
+// Clear glass (ior 1.5, smooth, fully transmissive) absorbing `absorption` per voxel inside.
+inline Material glass(Rgb absorption = Rgb(0.0f)) {
+    Material m;
+    m.name = "glass";
+    m.ior = 1.5f;
+    m.roughness = 0.0f;
+    m.transmission = 1.0f;
+    m.absorption = absorption;
+    return m;
+}
+
+inline Material metal(float roughness, Rgb albedo) {
+    Material m;
+    m.name = "metal";
+    m.metallic = 1.0f;
+    m.roughness = roughness;
+    m.albedo = albedo;
+    return m;
 }
 
 }  // namespace luxel::voxel::test
