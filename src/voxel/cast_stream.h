@@ -8,10 +8,18 @@
 
 namespace luxel::voxel::stream {
 
+// Which rays take SIMD lanes. The one-ray loop (fast::traverse) is faster for rays that start
+// inside the world (secondary rays from surfaces, cameras inside the world: they begin with
+// voxel steps in the start brick, which the one-ray loop takes with the mask in a register),
+// the lanes for rays from outside (long runs of jumps after the slab clip)
+// (docs/algorithms/voxel-traversal.md §4.2). Every ray in lanes: for the tests of the SIMD walk.
+enum class Lanes { FromOutside, Every };
+
 struct Walk {
     const VoxelWorld* world;
     double tMax;
     int cap;  // the step cap, already resolved (> 0)
+    Lanes lanes = Lanes::FromOutside;
 };
 
 // out[i] = the trace castRay makes of rays[i] with jumps (fast::traverseAny), for every ray.

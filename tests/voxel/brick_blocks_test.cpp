@@ -13,6 +13,7 @@
 
 #include "luxel/voxel/dda.h"
 #include "voxel/brick_blocks.h"
+#include "voxel/lane_walk.h"
 
 namespace luxel::voxel {
 namespace {
@@ -94,11 +95,12 @@ void compareAll(const VoxelWorld& world, const std::vector<Ray>& rays, double tM
     std::vector<std::uint8_t> blocked(rays.size());
     castRayBatch(world, rays, batch, tMax, stepCap);
     occludedBatch(world, rays, blocked, tMax, stepCap);
+    const std::vector<Hit> lanes = castRayLanes(world, rays, tMax, stepCap);
     hits = 0;
     for (std::size_t i = 0; i < rays.size(); ++i) {
         const Hit mine = castRay(world, rays[i], tMax, stepCap);
         const Hit shared = castRayShared(world, rays[i], tMax, stepCap);
-        const Hit* fast[] = {&mine, &batch[i]};
+        const Hit* fast[] = {&mine, &batch[i], &lanes[i]};
         for (const Hit* h : fast) {
             ASSERT_EQ(h->hit, shared.hit) << "ray " << i;
             ASSERT_EQ(h->capped, shared.capped) << "ray " << i;

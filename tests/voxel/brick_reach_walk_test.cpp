@@ -12,6 +12,7 @@
 #include "luxel/voxel/dda.h"
 #include "luxel/voxel/generators.h"
 #include "luxel/voxel/voxel_world.h"
+#include "voxel/lane_walk.h"
 
 namespace luxel::voxel {
 namespace {
@@ -81,6 +82,7 @@ void compareWithPlain(const VoxelWorld& world, const std::vector<Ray>& rays, dou
     std::vector<std::uint8_t> blocked(rays.size());
     castRayBatch(world, rays, batch, tMax, 0);
     occludedBatch(world, rays, blocked, tMax, 0);
+    const std::vector<Hit> lanes = castRayLanes(world, rays, tMax, 0);
     for (int i = 0; i < static_cast<int>(rays.size()); ++i) {
         const Hit plain = castRay(world, rays[i], tMax, 0, ChunkSkip::Disabled);
         const Hit fast = castRay(world, rays[i], tMax);
@@ -88,8 +90,10 @@ void compareWithPlain(const VoxelWorld& world, const std::vector<Ray>& rays, dou
         expectSameHit(fast, plain, i);
         expectSameHit(shared, plain, i);
         expectSameHit(batch[i], plain, i);
+        expectSameHit(lanes[i], plain, i);
         ASSERT_EQ(fast.steps, shared.steps) << "ray " << i;
         ASSERT_EQ(batch[i].steps, shared.steps) << "ray " << i;
+        ASSERT_EQ(lanes[i].steps, shared.steps) << "ray " << i;
         ASSERT_EQ(blocked[i] != 0, plain.hit) << "ray " << i;
         ASSERT_EQ(occluded(world, rays[i], tMax), plain.hit) << "ray " << i;
         totals.hits += plain.hit;

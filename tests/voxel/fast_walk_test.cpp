@@ -12,6 +12,7 @@
 
 #include "luxel/voxel/dda.h"
 #include "luxel/voxel/generators.h"
+#include "voxel/lane_walk.h"
 
 namespace luxel::voxel {
 namespace {
@@ -56,11 +57,13 @@ Counts compare(const VoxelWorld& world, const std::vector<Ray>& rays, double tMa
     std::vector<std::uint8_t> blocked(rays.size());
     castRayBatch(world, rays, batch, tMax, stepCap);
     occludedBatch(world, rays, blocked, tMax, stepCap);
+    const std::vector<Hit> lanes = castRayLanes(world, rays, tMax, stepCap);
     for (int i = 0; i < static_cast<int>(rays.size()); ++i) {
         const Hit mine = castRay(world, rays[i], tMax, stepCap);
         const Hit reference = castRayShared(world, rays[i], tMax, stepCap);
         expectIdentical(mine, reference, i);
         expectIdentical(batch[i], reference, i);
+        expectIdentical(lanes[i], reference, i);
         EXPECT_EQ(occluded(world, rays[i], tMax, stepCap), reference.hit) << "ray " << i;
         EXPECT_EQ(blocked[i] != 0, reference.hit) << "ray " << i;
         counts.hits += reference.hit;
