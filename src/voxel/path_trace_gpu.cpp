@@ -127,6 +127,7 @@ struct PathTracerGpu::State {
     std::uint64_t emitterUploadBytes = 0;
     std::vector<PathPixelSums> totals;  // the running sums, in double
     int samples = 0;
+    bool ready = false;  // false after a restart that failed half way: no samples until another
     double gpuMilliseconds = 0.0;
 
     // A new accumulation of this view (create and restart): the checks, the memory, the emitters
@@ -161,8 +162,9 @@ struct PathTracerGpu::State {
             !s) {
             return s;
         }
+        // From here the old view is gone; a failure leaves the tracer waiting for a restart.
+        ready = false;
         samples = 0;
-        camera = newCamera, shading = newShading, options = newOptions;
         if (findEmitters) {
             emitterGeneration = 0;  // until the upload succeeds
             std::vector<shared::PathEmitterVoxel> voxels;
@@ -194,7 +196,9 @@ struct PathTracerGpu::State {
             sums = *b;
             sumsBytes = need.sums;
         }
+        camera = newCamera, shading = newShading, options = newOptions;
         totals.assign(std::size_t(newCamera.width()) * newCamera.height(), PathPixelSums{});
+        ready = true;
         return Ok{};
     }
 
@@ -322,6 +326,7 @@ Status PathTracerGpu::restart(const Camera& camera, const ShadeOptions& shading,
     State& s = *state_;
     if (Status st = s.prepare(camera, shading, options); !st) {
         s.samples = 0;
+        std::fill(s.totals.begin(), s.totals.end(), PathPixelSums{});
         return st;
     }
     return Ok{};
@@ -329,6 +334,9 @@ Status PathTracerGpu::restart(const Camera& camera, const ShadeOptions& shading,
 
 Status PathTracerGpu::addSamples(int count) {
     State& s = *state_;
+    if (!s.ready) {
+        return Error("path tracing on the GPU: the last restart failed; restart the tracer again");
+    }
     if (count < 1 || count > kMaxPathSamples - s.samples) {
         return Error("path tracing: " + std::to_string(count) + " more samples after " +
                      std::to_string(s.samples) + " is outside 1.." +

@@ -131,6 +131,10 @@ TEST(PathTraceGpuReuse, ARestartChecksAsCreateDoesAndMayGrowTheImage) {
     ASSERT_FALSE(refused.ok());
     EXPECT_NE(refused.error().message().find("max bounces"), std::string::npos);
     EXPECT_EQ(tracer->samplesDone(), 0);
+    // The view it had goes on from no samples: a new tracer's image.
+    ASSERT_TRUE(tracer->addSamples(4).ok());
+    EXPECT_TRUE(sameImage(tracer->image().radiance,
+                          traceGpu(*context, room.world, small, room.o, p).radiance));
     // A larger image, and emitters turned off (the list is sent again, empty: one placeholder).
     const Camera large = *Camera::lookAt({6.0, 4.0, 7.0}, {6.0, 2.0, 0.5}, 70.0, 16, 12);
     p.sampleEmitters = false;

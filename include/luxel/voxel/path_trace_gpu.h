@@ -69,7 +69,8 @@ class PathTracerGpu {
     // its parameters), the emitters are found and sent again only when the world's generation
     // (VoxelGpuRenderer::worldGeneration: after updateRegion) or the materials' emission
     // changed, and the sums are reallocated only for a larger image. The same checks as create;
-    // after a failure the tracer holds no samples.
+    // after a failure the tracer holds no samples (and, when the failure came from the device,
+    // adds none until a restart succeeds).
     Status restart(const Camera& camera, const ShadeOptions& shading,
                    const PathTraceOptions& options);
     // The world upload the tracer reads: its own, or the one given to create.
