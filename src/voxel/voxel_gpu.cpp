@@ -160,7 +160,7 @@ struct VoxelGpuRenderer::State {
     std::uint64_t shadowBytes = 0;
     std::optional<ShadowKey> shadowKey;
 
-    // Sends `bytes` to `buffer` at `offset`, counted in `counter`.
+    // Sends `data` to `buffer` at `offset`, counted in `counter`.
     Status send(gpu::Buffer& buffer, std::span<const std::byte> data, std::uint64_t& counter,
                 std::uint64_t offset = 0) {
         if (Status st = context->upload(buffer, data, offset); !st) return st;
@@ -428,12 +428,12 @@ Status VoxelGpuRenderer::updateRegion(const VoxelWorld& world, Int3 min, Int3 ma
         lo[a] /= s.chunkSize;
         hi[a] = (hi[a] - 1) / s.chunkSize + 1;
     }
+    ++s.generation;  // the device's copy changes from here
     for (int cz = lo.z; cz < hi.z; ++cz) {
         for (int cy = lo.y; cy < hi.y; ++cy) {
             if (Status st = s.uploadChunkRow(world, lo.x, hi.x, cy, cz); !st) return st;
         }
     }
-    ++s.generation;  // the device's copy changes from here
     if (Status st = s.uploadChunkSolid(world); !st) return st;
     s.shadowKey.reset();  // the maps saw the old world
     return s.uploadBricks(world);

@@ -46,7 +46,7 @@ class PathTracerGpu {
                                         const TextureSet* textures = nullptr);
     // The same over a world already uploaded by `uploaded` (VoxelGpuRenderer::create of `world`
     // and its textures on `context`), which must outlive the tracer: the viewer's progressive
-    // mode starts a tracer per view without uploading the world again.
+    // mode traces over the ray caster's upload and restarts its tracer for each new view.
     static Result<PathTracerGpu> create(gpu::Context& context, VoxelGpuRenderer& uploaded,
                                         const VoxelWorld& world, const Camera& camera,
                                         const ShadeOptions& shading,
