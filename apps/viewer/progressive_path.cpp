@@ -41,11 +41,20 @@ Status ProgressivePath::restart(const voxel::VoxelWorld& world, const voxel::Cam
         return s;
     }
     if (gpu.context && gpu.renderer) {
-        auto tracer = voxel::PathTracerGpu::create(*gpu.context, *gpu.renderer, world, camera,
-                                                   shading, options);
-        if (!tracer) return tracer.error();
-        gpuTracer_.emplace(std::move(*tracer));
+        // The last view's tracer over the same upload starts over without sending the world.
+        if (gpuTracer_ && &gpuTracer_->uploaded() == gpu.renderer && gpuWorld_ == &world) {
+            if (Status s = gpuTracer_->restart(camera, shading, options); !s) return s;
+        } else {
+            gpuTracer_.reset();
+            auto tracer = voxel::PathTracerGpu::create(*gpu.context, *gpu.renderer, world, camera,
+                                                       shading, options);
+            if (!tracer) return tracer.error();
+            gpuTracer_.emplace(std::move(*tracer));
+            gpuWorld_ = &world;
+        }
+        gpuActive_ = true;
     } else {
+        gpuTracer_.reset();  // its device may go away: keep nothing of it
         auto tracer = voxel::PathTracer::create(world, camera, shading, options, textures);
         if (!tracer) return tracer.error();
         tracer_.emplace(std::move(*tracer));
@@ -56,7 +65,7 @@ Status ProgressivePath::restart(const voxel::VoxelWorld& world, const voxel::Cam
 
 void ProgressivePath::clear() {
     tracer_.reset();
-    gpuTracer_.reset();
+    gpuActive_ = false;
     lastCount_ = 0;
     added_ = 0;
     lastMilliseconds_ = 0.0;

@@ -1,6 +1,8 @@
 // Voxel mode's progressive path tracing: a voxel::PathTracer (or, on a GPU backend, a
 // voxel::PathTracerGpu over the world the ray caster uploaded) whose samples are added a frame at
-// a time while the view stays still, and thrown away when anything changes. The path tracer's
+// a time while the view stays still, and thrown away when anything changes. The GPU tracer itself
+// is kept for the next view (PathTracerGpu::restart: no world, emitters or sums sent again
+// unless the world or its emitting materials changed). The path tracer's
 // counter-based random numbers make the mean after N samples the same image `luxel render
 // --solver path --spp N` computes, however the samples were split over frames.
 #pragma once
@@ -34,20 +36,21 @@ class ProgressivePath {
     // (1..kMaxPathSamples). `world` and `textures` must stay unchanged and alive until clear()
     // or the next restart. Fails when the options are invalid (validatePathTrace) or the
     // running sums do not fit in memory. With `gpu` (the world uploaded by a GPU source, which
-    // must stay alive too) the samples are traced on its device.
+    // must stay alive too, as long as this object or until a restart without it) the samples are
+    // traced on its device, by the tracer of the last view when it read the same upload.
     Status restart(const voxel::VoxelWorld& world, const voxel::Camera& camera,
                    const voxel::ShadeOptions& shading, const voxel::PathTraceOptions& options,
                    const voxel::TextureSet* textures, int target, GpuWorld gpu = {});
-    // Forgets the accumulation (the world or the view changed).
+    // Forgets the accumulation (the world or the view changed); a GPU tracer stays for reuse.
     void clear();
     // A new target for the same view: it keeps adding up to it, or stops where it is.
     void setTarget(int target);
 
-    bool active() const { return tracer_.has_value() || gpuTracer_.has_value(); }
-    bool onGpu() const { return gpuTracer_.has_value(); }
+    bool active() const { return tracer_.has_value() || gpuActive_; }
+    bool onGpu() const { return gpuActive_; }
     bool finished() const { return !active() || samples() >= target_; }
     int samples() const {
-        return tracer_ ? tracer_->samplesDone() : gpuTracer_ ? gpuTracer_->samplesDone() : 0;
+        return tracer_ ? tracer_->samplesDone() : gpuActive_ ? gpuTracer_->samplesDone() : 0;
     }
     int target() const { return target_; }
     // Samples the last step added (0 when it only read the mean back).
@@ -60,6 +63,8 @@ class ProgressivePath {
   private:
     std::optional<voxel::PathTracer> tracer_;
     std::optional<voxel::PathTracerGpu> gpuTracer_;
+    bool gpuActive_ = false;                       // gpuTracer_ holds the current view
+    const voxel::VoxelWorld* gpuWorld_ = nullptr;  // the world gpuTracer_ was created for
     int target_ = 1;
     int lastCount_ = 0, added_ = 0;
     double lastMilliseconds_ = 0.0;

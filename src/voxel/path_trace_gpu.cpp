@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "gpu/shaders/shared/path_trace_layout.h"
+#include "gpu/shaders/shared/voxel_layout.h"
 #include "luxel/core/memory.h"
 #include "luxel/gpu/context.h"
 #include "luxel/voxel/voxel_gpu.h"
@@ -70,21 +71,136 @@ shared::PathTracePush pathPush(const ShadeOptions& shading, const PathTraceOptio
     return p;
 }
 
+// Which texture slots' materials emit (the plain one last): with the world, all the emitter list
+// depends on.
+std::vector<bool> emittingSlots(const MaterialTable& materials) {
+    std::vector<bool> out;
+    for (int slot = 0; slot < LUXEL_VOXEL_PLAIN_MATERIAL; ++slot) {
+        out.push_back(materials.forSlot(slot).emission.maxComponent() > 0.0f);
+    }
+    out.push_back(materials.plain().emission.maxComponent() > 0.0f);
+    return out;
+}
+
+std::string sizeText(const Camera& camera) {
+    return std::to_string(camera.width()) + "x" + std::to_string(camera.height());
+}
+
+// What the host's part of the estimate is for, in checkMemory's refusal.
+std::string hostWhat(const Camera& camera) {
+    return "path tracing " + sizeText(camera) + " on the GPU (the running sums and a download)";
+}
+
 }  // namespace
+
+PathTraceMemory estimatePathTraceGpuMemory(const VoxelWorld& world, const TextureSet* textures,
+                                           int width, int height, int emitters) {
+    const std::uint64_t pixels =
+        std::uint64_t(std::max(width, 0)) * std::uint64_t(std::max(height, 0));
+    PathTraceMemory m;
+    m.host = pixels * (sizeof(PathPixelSums) + sizeof(shared::PathPixelSums));
+    // The world without the ray caster's image (binding 6 is not allocated for path tracing).
+    m.world = estimateVoxelGpuMemory(world.size(), world.chunkSize(), textures, 0, 0);
+    m.sums = pixels * sizeof(shared::PathPixelSums);
+    m.emitters = std::uint64_t(std::max(emitters, 1)) * sizeof(shared::PathEmitterVoxel);
+    return m;
+}
 
 struct PathTracerGpu::State {
     gpu::Context* context = nullptr;
     std::unique_ptr<VoxelGpuRenderer> owned;  // null when the world's upload is borrowed
     VoxelGpuRenderer* world = nullptr;
+    const VoxelWorld* source = nullptr;
+    const TextureSet* textures = nullptr;
     Camera camera;
     ShadeOptions shading;
     PathTraceOptions options;
     gpu::Program* program = nullptr;
     std::shared_ptr<gpu::Buffer> emitters, sums;
+    std::uint64_t emittersBytes = 0, sumsBytes = 0;  // their sizes
     int emitterCount = 0;
+    // What the uploaded emitters were found in: the world's generation, the emitting slots and
+    // whether emitters are sampled at all (0: none uploaded yet).
+    std::uint64_t emitterGeneration = 0;
+    std::vector<bool> emitterSlots;
+    bool emittersSampled = false;
+    std::uint64_t emitterUploadBytes = 0;
     std::vector<PathPixelSums> totals;  // the running sums, in double
     int samples = 0;
+    bool ready = false;  // false after a restart that failed half way: no samples until another
     double gpuMilliseconds = 0.0;
+
+    // A new accumulation of this view (create and restart): the checks, the memory, the emitters
+    // when the world or their materials changed, the sums when the image grew.
+    Status prepare(const Camera& newCamera, const ShadeOptions& newShading,
+                   const PathTraceOptions& newOptions) {
+        if (Status s = validatePathTrace(newShading, newOptions, newCamera); !s) return s;
+        const std::vector<bool> slots = emittingSlots(newShading.materials);
+        const bool findEmitters =
+            emitterGeneration == 0 || emitterGeneration != world->worldGeneration() ||
+            emittersSampled != newOptions.sampleEmitters || emitterSlots != slots;
+        PathEmitters found;
+        if (findEmitters && newOptions.sampleEmitters) {
+            found = PathEmitters::find(*source, newShading.materials);
+        }
+        PathTraceMemory need =
+            estimatePathTraceGpuMemory(*source, textures, newCamera.width(), newCamera.height(),
+                                       findEmitters ? found.size() : emitterCount);
+        // The world is on the device already (make checks the estimate before its upload).
+        need.world = world->deviceBytes();
+        const std::uint64_t device = context->device().deviceLocalBytes;
+        if (device > 0 && need.device() > device) {
+            return Error("path tracing " + sizeText(newCamera) + " on the GPU needs " +
+                         formatBytes(need.device()) + " of device memory (world " +
+                         formatBytes(need.world) + ", sums " + formatBytes(need.sums) + ", " +
+                         std::to_string(findEmitters ? found.size() : emitterCount) + " emitters " +
+                         formatBytes(need.emitters) + "), the device has " + formatBytes(device));
+        }
+        // The running sums are replaced, not added to: count what stays.
+        const std::uint64_t held = totals.size() * sizeof(PathPixelSums);
+        if (Status s = checkMemory(need.host > held ? need.host - held : 0, hostWhat(newCamera));
+            !s) {
+            return s;
+        }
+        // From here the old view is gone; a failure leaves the tracer waiting for a restart.
+        ready = false;
+        samples = 0;
+        if (findEmitters) {
+            emitterGeneration = 0;  // until the upload succeeds
+            std::vector<shared::PathEmitterVoxel> voxels;
+            for (const Int3& v : found.voxels()) voxels.push_back({v.x, v.y, v.z, 0});
+            if (voxels.empty()) voxels.push_back({});
+            const std::uint64_t bytes = voxels.size() * sizeof(shared::PathEmitterVoxel);
+            if (!emitters || emittersBytes < bytes) {
+                emitters.reset();
+                emittersBytes = 0;
+                auto b = context->createBuffer(bytes);
+                if (!b) return b.error();
+                emitters = *b;
+                emittersBytes = bytes;
+            }
+            if (Status st = context->upload(*emitters, std::as_bytes(std::span(voxels))); !st) {
+                return st;
+            }
+            emitterUploadBytes += bytes;
+            emitterCount = found.size();
+            emitterGeneration = world->worldGeneration();
+            emitterSlots = slots;
+            emittersSampled = newOptions.sampleEmitters;
+        }
+        if (!sums || sumsBytes < need.sums) {
+            sums.reset();
+            sumsBytes = 0;
+            auto b = context->createBuffer(need.sums);
+            if (!b) return b.error();
+            sums = *b;
+            sumsBytes = need.sums;
+        }
+        camera = newCamera, shading = newShading, options = newOptions;
+        totals.assign(std::size_t(newCamera.width()) * newCamera.height(), PathPixelSums{});
+        ready = true;
+        return Ok{};
+    }
 
     // One submission of `count` samples per pixel (<= kPathSamplesPerDownload) from `first`,
     // then the sums downloaded and added to the totals.
@@ -173,62 +289,54 @@ Result<PathTracerGpu> PathTracerGpu::make(gpu::Context& context, VoxelGpuRendere
                                           const PathTraceOptions& options,
                                           const TextureSet* textures) {
     if (Status s = validatePathTrace(shading, options, camera); !s) return s.error();
-    const std::int64_t pixels = std::int64_t(camera.width()) * camera.height();
-    const PathEmitters found =
-        options.sampleEmitters ? PathEmitters::find(world, shading.materials) : PathEmitters{};
-    // The sums on the device and their download and double totals on the host.
-    const std::uint64_t sumBytes = std::uint64_t(pixels) * sizeof(shared::PathPixelSums);
-    const std::uint64_t emitterBytes =
-        std::uint64_t(std::max(found.size(), 1)) * sizeof(shared::PathEmitterVoxel);
-    const std::uint64_t device = context.device().deviceLocalBytes;
-    if (device > 0 && sumBytes + emitterBytes > device) {
-        return Error("path tracing on the GPU: the sums of a " + std::to_string(camera.width()) +
-                     "x" + std::to_string(camera.height()) + " image and " +
-                     std::to_string(found.size()) + " emitters need " +
-                     formatBytes(sumBytes + emitterBytes) + ", the device has " +
-                     formatBytes(device));
-    }
-    if (Status s = checkMemory(
-            std::uint64_t(pixels) * (sizeof(PathPixelSums) + sizeof(shared::PathPixelSums)),
-            "the path tracer's per-pixel sums");
-        !s) {
-        return s.error();
-    }
-    auto program = context.program("path_trace", LUXEL_PATH_BUFFERS, sizeof(shared::PathTracePush));
-    if (!program) return program.error();
     auto state = std::make_unique<State>();
     State& s = *state;
     s.context = &context;
+    s.source = &world;
+    s.textures = textures;
     s.world = uploaded;
+    // The estimate before anything is allocated or uploaded (prepare checks it again with the
+    // emitters found).
+    const PathTraceMemory need =
+        estimatePathTraceGpuMemory(world, textures, camera.width(), camera.height(), 0);
+    const std::uint64_t device = context.device().deviceLocalBytes;
+    const std::uint64_t deviceNeed = need.device() - (uploaded ? need.world : 0);
+    if (device > 0 && deviceNeed > device) {
+        return Error("path tracing " + sizeText(camera) + " on the GPU needs " +
+                     formatBytes(deviceNeed) + " of device memory (world " +
+                     formatBytes(uploaded ? 0 : need.world) + ", sums " + formatBytes(need.sums) +
+                     "), the device has " + formatBytes(device));
+    }
+    if (Status st = checkMemory(need.host, hostWhat(camera)); !st) return st.error();
+    auto program = context.program("path_trace", LUXEL_PATH_BUFFERS, sizeof(shared::PathTracePush));
+    if (!program) return program.error();
+    s.program = *program;
     if (!uploaded) {
         auto renderer = VoxelGpuRenderer::create(context, world, textures);
         if (!renderer) return renderer.error();
         s.owned = std::make_unique<VoxelGpuRenderer>(std::move(*renderer));
         s.world = s.owned.get();
     }
-    s.camera = camera;
-    s.shading = shading;
-    s.options = options;
-    s.program = *program;
-    std::vector<shared::PathEmitterVoxel> voxels;
-    for (const Int3& v : found.voxels()) voxels.push_back({v.x, v.y, v.z, 0});
-    if (voxels.empty()) voxels.push_back({});
-    s.emitterCount = found.size();
-    auto emitters = context.createBuffer(emitterBytes);
-    if (!emitters) return emitters.error();
-    s.emitters = *emitters;
-    if (Status st = context.upload(*s.emitters, std::as_bytes(std::span(voxels))); !st) {
-        return st.error();
-    }
-    auto sums = context.createBuffer(sumBytes);
-    if (!sums) return sums.error();
-    s.sums = *sums;
-    s.totals.resize(static_cast<std::size_t>(pixels));
+    if (Status st = s.prepare(camera, shading, options); !st) return st.error();
     return PathTracerGpu(std::move(state));
+}
+
+Status PathTracerGpu::restart(const Camera& camera, const ShadeOptions& shading,
+                              const PathTraceOptions& options) {
+    State& s = *state_;
+    if (Status st = s.prepare(camera, shading, options); !st) {
+        s.samples = 0;
+        std::fill(s.totals.begin(), s.totals.end(), PathPixelSums{});
+        return st;
+    }
+    return Ok{};
 }
 
 Status PathTracerGpu::addSamples(int count) {
     State& s = *state_;
+    if (!s.ready) {
+        return Error("path tracing on the GPU: the last restart failed; restart the tracer again");
+    }
     if (count < 1 || count > kMaxPathSamples - s.samples) {
         return Error("path tracing: " + std::to_string(count) + " more samples after " +
                      std::to_string(s.samples) + " is outside 1.." +
@@ -252,6 +360,14 @@ int PathTracerGpu::samplesDone() const {
 
 double PathTracerGpu::lastGpuMilliseconds() const {
     return state_->gpuMilliseconds;
+}
+
+const VoxelGpuRenderer& PathTracerGpu::uploaded() const {
+    return *state_->world;
+}
+
+std::uint64_t PathTracerGpu::emitterUploadBytes() const {
+    return state_->emitterUploadBytes;
 }
 
 PathTraceImage PathTracerGpu::image() const {

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "luxel/core/check.h"
+#include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/path_trace.h"
 
@@ -43,10 +44,23 @@ Status validatePathTrace(const ShadeOptions& shading, const PathTraceOptions& op
     return Ok{};
 }
 
+PathTraceMemory estimatePathTraceMemory(int width, int height) {
+    PathTraceMemory m;
+    m.host = std::uint64_t(std::max(width, 0)) * std::uint64_t(std::max(height, 0)) *
+             sizeof(PathPixelSums);
+    return m;
+}
+
 Result<PathTracer> PathTracer::create(const VoxelWorld& world, const Camera& camera,
                                       const ShadeOptions& shading, const PathTraceOptions& options,
                                       const TextureSet* textures) {
     if (Status s = validatePathTrace(shading, options, camera); !s) return s.error();
+    if (Status s = checkMemory(estimatePathTraceMemory(camera.width(), camera.height()).host,
+                               "path tracing " + std::to_string(camera.width()) + "x" +
+                                   std::to_string(camera.height()) + " (the running sums)");
+        !s) {
+        return s.error();
+    }
     return PathTracer(world, camera, shading, options, textures);
 }
 

@@ -3,7 +3,6 @@
 #include "solver_surface.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 
 #include "gpu/shaders/shared/voxel_shading.h"
@@ -13,42 +12,6 @@
 
 namespace luxel::voxel {
 namespace {
-
-constexpr int kAlbedoCosines = 24, kAlbedoAlphas = 24;
-constexpr int kAlbedoSamples = 4096;  // per entry: a standard error below 0.5%
-
-// A GGX-only lobe of reflectance 1 at a face facing +y, seen with cosine cosView.
-PathBsdf specularOnly(double cosView, double alpha) {
-    PathBsdf b;
-    b.normal = {0, 1, 0};
-    const double c = std::clamp(cosView, 1e-4, 1.0);
-    b.view = {std::sqrt(std::max(0.0, 1.0 - c * c)), c, 0.0};
-    b.cosView = c;
-    b.alpha = float(alpha);
-    b.specular = Rgb(1.0f);
-    b.pSpecular = 1.0;
-    return b;
-}
-
-// The table of directionalAlbedoGgx: entry (i, j) at cosView = i / (n - 1) and alpha = j / (n - 1),
-// the mean of the path tracer's GGX sample weights (f cos / pdf).
-std::array<float, kAlbedoCosines * kAlbedoAlphas> makeAlbedoTable() {
-    std::array<float, kAlbedoCosines * kAlbedoAlphas> table{};
-    for (int i = 0; i < kAlbedoCosines; ++i) {
-        for (int j = 0; j < kAlbedoAlphas; ++j) {
-            const double alpha = std::max(double(j) / (kAlbedoAlphas - 1), double(kMirrorAlpha));
-            const PathBsdf b = specularOnly(double(i) / (kAlbedoCosines - 1), alpha);
-            PathRng rng(0x5eed, std::uint64_t(i * kAlbedoAlphas + j), 0);
-            double sum = 0.0;
-            for (int k = 0; k < kAlbedoSamples; ++k) {
-                const BsdfSample s = sampleBsdf(b, rng);
-                if (s.lobe == BsdfSample::Lobe::Specular) sum += s.weight.r;
-            }
-            table[i * kAlbedoAlphas + j] = float(sum / kAlbedoSamples);
-        }
-    }
-    return table;
-}
 
 Vec3d toDouble(Int3 v) {
     return {double(v.x), double(v.y), double(v.z)};
@@ -92,17 +55,6 @@ Rgb transmitted(const VoxelWorld& world, const SurfaceHit& s, const PathBsdf& b,
 }
 
 }  // namespace
-
-double directionalAlbedoGgx(double cosView, double alpha) {
-    static const auto table = makeAlbedoTable();
-    const double x = std::clamp(cosView, 0.0, 1.0) * (kAlbedoCosines - 1);
-    const double y = std::clamp(alpha, 0.0, 1.0) * (kAlbedoAlphas - 1);
-    const int i = std::min(int(x), kAlbedoCosines - 2), j = std::min(int(y), kAlbedoAlphas - 2);
-    const double fx = x - i, fy = y - j;
-    const auto at = [&](int a, int b) { return double(table[a * kAlbedoAlphas + b]); };
-    return (at(i, j) * (1 - fy) + at(i, j + 1) * fy) * (1 - fx) +
-           (at(i + 1, j) * (1 - fy) + at(i + 1, j + 1) * fy) * fx;
-}
 
 Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, const SurfaceHit& s,
                        const Ray& ray, const ShadeOptions& shading, const SolverLight& light,

@@ -16,6 +16,7 @@
 
 #include <functional>
 
+#include "ggx_albedo.h"
 #include "path_trace_surface.h"
 
 #include "luxel/core/vec.h"
@@ -30,11 +31,6 @@ namespace luxel::voxel {
 
 // GGX directions sampled per pixel for the specular reflection of the surroundings.
 inline constexpr int kSolverSpecularRays = 4;
-
-// The single-scattering directional albedo of a GGX lobe of reflectance 1 (the integral over
-// the hemisphere of D Vis cos_l), interpolated from a table the path tracer's GGX sampling
-// fills once; cosView and alpha are clamped to [0, 1].
-double directionalAlbedoGgx(double cosView, double alpha);
 
 struct SolverLight {
     // Mean cosine-weighted radiance arriving at the face apart from the sun (E / pi).

@@ -143,6 +143,11 @@ struct VoxelGpuRenderer::State {
         texels, srgb, output, materials;
     std::uint64_t outputBytes = 0;
     gpu::Program* program = nullptr;
+    VoxelGpuUploads sent;          // bytes sent to the device so far, by kind
+    std::uint64_t generation = 1;  // +1 per updateRegion that re-sent chunks
+    // What params and materials hold now (empty: unknown), so unchanged ones are not sent again.
+    std::vector<std::byte> paramsHeld;
+    std::vector<shared::VoxelMaterial> materialsHeld;
     gpu::Program* castProgram = nullptr;
     bool reachCurrent = false;
     // The world and textures given to create (sun visibility is built from them).
@@ -155,12 +160,32 @@ struct VoxelGpuRenderer::State {
     std::uint64_t shadowBytes = 0;
     std::optional<ShadowKey> shadowKey;
 
+    // Sends `data` to `buffer` at `offset`, counted in `counter`.
+    Status send(gpu::Buffer& buffer, std::span<const std::byte> data, std::uint64_t& counter,
+                std::uint64_t offset = 0) {
+        if (Status st = context->upload(buffer, data, offset); !st) return st;
+        counter += data.size();
+        return Ok{};
+    }
+
     template <typename T>
     Result<std::shared_ptr<gpu::Buffer>> uploaded(const std::vector<T>& data) {
         auto b = context->createBuffer(data.size() * sizeof(T));
         if (!b) return b.error();
-        if (Status st = context->upload(**b, bytesOf(data)); !st) return st.error();
+        if (Status st = send(**b, bytesOf(data), sent.shadows); !st) return st.error();
         return *b;
+    }
+
+    // The parameters, unless the buffer holds these already.
+    Status sendParams(const shared::VoxelRenderParams& p) {
+        const auto data = std::as_bytes(std::span(&p, 1));
+        if (std::equal(data.begin(), data.end(), paramsHeld.begin(), paramsHeld.end())) {
+            return Ok{};
+        }
+        paramsHeld.clear();
+        if (Status st = send(*params, data, sent.parameters); !st) return st;
+        paramsHeld.assign(data.begin(), data.end());
+        return Ok{};
     }
 
     Status setShadowArrays(const ShadowUpload& u) {
@@ -244,10 +269,10 @@ struct VoxelGpuRenderer::State {
             }
         }
         reachCurrent = world.emptySpaceCurrent();
-        if (Status st = context->upload(*brickMasks, bytesOf(masks)); !st) return st;
-        return context->upload(
-            *brickReach,
-            std::as_bytes(std::span(world.brickReachData(), bricks * VoxelWorld::kOctants)));
+        if (Status st = send(*brickMasks, bytesOf(masks), sent.world); !st) return st;
+        return send(*brickReach,
+                    std::as_bytes(std::span(world.brickReachData(), bricks * VoxelWorld::kOctants)),
+                    sent.world);
     }
 
     // The world part of the parameters (the rest is filled per render).
@@ -270,7 +295,7 @@ struct VoxelGpuRenderer::State {
                     counts[i++] = world.chunkSolidCount(cx, cy, cz);
             }
         }
-        return context->upload(*chunkSolid, bytesOf(counts));
+        return send(*chunkSolid, bytesOf(counts), sent.world);
     }
 
     // Uploads chunks [cx0, cx1) of row (cy, cz): contiguous in the GPU layout.
@@ -284,7 +309,7 @@ struct VoxelGpuRenderer::State {
         });
         const std::uint64_t firstChunk =
             (static_cast<std::uint64_t>(cz) * chunks.y + cy) * chunks.x + cx0;
-        return context->upload(*voxels, bytesOf(words), firstChunk * perChunk * 4);
+        return send(*voxels, bytesOf(words), sent.world, firstChunk * perChunk * 4);
     }
 };
 
@@ -384,9 +409,9 @@ Result<VoxelGpuRenderer> VoxelGpuRenderer::create(gpu::Context& context, const V
     }
     if (Status st = s.uploadChunkSolid(world); !st) return st.error();
     if (Status st = s.uploadBricks(world); !st) return st.error();
-    if (Status st = context.upload(*s.textureInfo, bytesOf(infos)); !st) return st.error();
-    if (Status st = context.upload(*s.texels, bytesOf(texels)); !st) return st.error();
-    if (Status st = context.upload(*s.srgb, bytesOf(srgb)); !st) return st.error();
+    if (Status st = s.send(*s.textureInfo, bytesOf(infos), s.sent.textures); !st) return st.error();
+    if (Status st = s.send(*s.texels, bytesOf(texels), s.sent.textures); !st) return st.error();
+    if (Status st = s.send(*s.srgb, bytesOf(srgb), s.sent.textures); !st) return st.error();
     return VoxelGpuRenderer(std::move(state));
 }
 
@@ -403,6 +428,7 @@ Status VoxelGpuRenderer::updateRegion(const VoxelWorld& world, Int3 min, Int3 ma
         lo[a] /= s.chunkSize;
         hi[a] = (hi[a] - 1) / s.chunkSize + 1;
     }
+    ++s.generation;  // the device's copy changes from here
     for (int cz = lo.z; cz < hi.z; ++cz) {
         for (int cy = lo.y; cy < hi.y; ++cy) {
             if (Status st = s.uploadChunkRow(world, lo.x, hi.x, cy, cz); !st) return st;
@@ -413,7 +439,8 @@ Status VoxelGpuRenderer::updateRegion(const VoxelWorld& world, Int3 min, Int3 ma
     return s.uploadBricks(world);
 }
 
-Status VoxelGpuRenderer::prepareRender(const Camera& camera, const ShadeOptions& options) {
+Status VoxelGpuRenderer::prepareRender(const Camera& camera, const ShadeOptions& options,
+                                       bool image) {
     State& s = *state_;
     if (options.materialReflectivity) {
         return Error(
@@ -421,7 +448,7 @@ Status VoxelGpuRenderer::prepareRender(const Camera& camera, const ShadeOptions&
     }
     const int w = camera.width(), h = camera.height();
     const std::uint64_t outputBytes = static_cast<std::uint64_t>(w) * h * 16;
-    if (!s.output || s.outputBytes < outputBytes) {
+    if (image && (!s.output || s.outputBytes < outputBytes)) {
         s.output.reset();
         s.outputBytes = 0;
         auto b = s.context->createBuffer(outputBytes);
@@ -485,9 +512,12 @@ Status VoxelGpuRenderer::prepareRender(const Camera& camera, const ShadeOptions&
             p.flags |= LUXEL_VOXEL_SUN_VISIBILITY;
         }
     }
-    if (Status st = s.context->upload(*s.materials, bytesOf(gpuMaterials(options.materials)));
-        !st) {
-        return st.error();
+    if (std::vector<shared::VoxelMaterial> m = gpuMaterials(options.materials);
+        m.size() != s.materialsHeld.size() ||
+        std::memcmp(m.data(), s.materialsHeld.data(), m.size() * sizeof(m[0])) != 0) {
+        s.materialsHeld.clear();
+        if (Status st = s.send(*s.materials, bytesOf(m), s.sent.materials); !st) return st.error();
+        s.materialsHeld = std::move(m);
     }
     // Anti-aliasing and filtering as render_image.cpp's shadePixel and shading.cpp.
     const int samples = samplesPerPixel(options);
@@ -495,16 +525,24 @@ Status VoxelGpuRenderer::prepareRender(const Camera& camera, const ShadeOptions&
     p.textureFilter = static_cast<std::uint32_t>(options.textureFilter);
     p.maxAnisotropy = static_cast<std::uint32_t>(std::max(options.maxAnisotropy, 1));
     p.coneSpread = static_cast<float>(primaryCone(camera).spread / std::sqrt(double(samples)));
-    if (Status st = s.context->upload(*s.params, std::as_bytes(std::span(&p, 1))); !st) {
-        return st.error();
-    }
+    if (Status st = s.sendParams(p); !st) return st.error();
     return Ok{};
 }
 
 Result<std::vector<gpu::Buffer*>> VoxelGpuRenderer::bindings(const Camera& camera,
                                                              const ShadeOptions& options) {
-    if (Status st = prepareRender(camera, options); !st) return st.error();
-    return renderBuffers();
+    if (Status st = prepareRender(camera, options, /*image=*/false); !st) return st.error();
+    std::vector<gpu::Buffer*> buffers = renderBuffers();
+    buffers[6] = state_->params.get();  // no image: the parameters stand in, as at 10
+    return buffers;
+}
+
+const VoxelGpuUploads& VoxelGpuRenderer::uploads() const {
+    return state_->sent;
+}
+
+std::uint64_t VoxelGpuRenderer::worldGeneration() const {
+    return state_->generation;
 }
 
 std::vector<gpu::Buffer*> VoxelGpuRenderer::renderBuffers() const {
@@ -519,7 +557,7 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
                                        std::vector<gpu::PassTiming>* timings) {
     State& s = *state_;
     Stopwatch upload;
-    if (Status st = prepareRender(camera, options); !st) return st.error();
+    if (Status st = prepareRender(camera, options, /*image=*/true); !st) return st.error();
     const int w = camera.width(), h = camera.height();
     if (timings) timings->push_back({"upload parameters (CPU)", upload.milliseconds()});
 
@@ -581,10 +619,8 @@ Result<std::vector<Hit>> VoxelGpuRenderer::castRays(std::span<const Ray> rays, d
     if (!hitBuffer) return hitBuffer.error();
     shared::VoxelRenderParams p{};
     s.fillWorld(p, stepCap);
-    if (Status st = s.context->upload(*s.params, std::as_bytes(std::span(&p, 1))); !st) {
-        return st.error();
-    }
-    if (Status st = s.context->upload(**rayBuffer, bytesOf(in)); !st) return st.error();
+    if (Status st = s.sendParams(p); !st) return st.error();
+    if (Status st = s.send(**rayBuffer, bytesOf(in), s.sent.rays); !st) return st.error();
 
     gpu::Dispatch d;
     d.name = "voxel cast rays";

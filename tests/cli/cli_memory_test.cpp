@@ -68,6 +68,24 @@ TEST_F(CliMemory, VoxelRenderAndInfoRefuseTheSameSize) {
     EXPECT_TRUE(std::filesystem::exists(path("s.png")));
 }
 
+// At 6000x6000 the frames fit under the limit and the path tracer's 2.1 GiB of running sums on
+// top do not: render refuses, and info's path line says so.
+TEST_F(CliMemory, PathRenderAndInfoAgreeOnTheRunningSums) {
+    expectRefusal(runLimited(kLimitKiB, "render " + kTerrain +
+                                            " --solver path --backend cpu --size 6000x6000 --out " +
+                                            path("p.exr")),
+                  "luxel: error: rendering 6000x6000 needs ");
+    const RunResult info = runLimited(kLimitKiB, "info " + kTerrain + " --size 6000x6000");
+    EXPECT_EQ(info.exitCode, 0) << info.output;
+    EXPECT_NE(info.output.find("running sums of 6000x6000 pixels (over the limit: luxel render "
+                               "--solver path refuses it)\n"),
+              std::string::npos)
+        << info.output;
+    const RunResult fits = runLimited(kLimitKiB, "info " + kTerrain + " --size 640x360");
+    EXPECT_NE(fits.output.find("running sums of 640x360 pixels\n"), std::string::npos)
+        << fits.output;
+}
+
 TEST_F(CliMemory, TwoDimensionalRenderAndInfoRefuseTheSameSizeForEverySolver) {
     const std::string scene = write("small.json", R"({"canvas": [48, 32], "shapes": [
         {"type": "circle", "center": [12, 16], "radius": 5, "emission": 2, "opaque": true}]})");

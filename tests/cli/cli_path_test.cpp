@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "luxel/core/image_io.h"
 #include "luxel/core/image_metadata.h"
+#include "luxel/core/memory.h"
 #include "support/cli_fixture.h"
 
 namespace {
@@ -132,6 +134,27 @@ TEST_F(CliPath, GpuBackendTracesTheSameImage) {
     EXPECT_GT(cpuSum, 0.0);
     EXPECT_NEAR(gpuSum, cpuSum, 0.02 * cpuSum);
     EXPECT_GE(within, 24 * 14 * 98 / 100);
+}
+
+// `luxel info` says what `render --solver path` would take on the CPU and on the GPU: the
+// running sums (64 bytes a pixel; 112 with the GPU's download), the world's upload, the device's
+// sums (48 bytes a pixel) and the emitters (16 bytes each). The cottage's lamps and windows emit.
+TEST_F(CliPath, InfoEstimatesThePathTracer) {
+    const RunResult r = runLuxel("info " + kScenes + "voxel/cottage.json --size 64x48");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const std::uint64_t pixels = 64 * 48;
+    EXPECT_NE(r.output.find("  path (cpu)         " + luxel::formatBytes(pixels * 64) +
+                            ": running sums of 64x48 pixels\n"),
+              std::string::npos)
+        << r.output;
+    const std::string gpu =
+        "  path (gpu)         host " + luxel::formatBytes(pixels * 112) + ", device ";
+    const std::size_t at = r.output.find(gpu);
+    ASSERT_NE(at, std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(", sums " + luxel::formatBytes(pixels * 48) + ", ", at),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find(" emitters ", at), std::string::npos) << r.output;
 }
 
 TEST_F(CliPath, RefusesPathWhereItDoesNotApply) {

@@ -3,14 +3,18 @@
 // visibility, through the same RendererVoxel the viewer's render thread runs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "luxel/post/finish.h"
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/generators.h"
+#include "luxel/voxel/path_trace_gpu.h"
 #include "luxel/voxel/radiance_cascades.h"
+#include "luxel/voxel/voxel_gpu.h"
 #include "progressive_path.h"
 #include "renderer_voxel.h"
+#include "support/gpu_test_context.h"
 #include "voxel_solver.h"
 
 namespace luxel::viewer {
@@ -139,6 +143,50 @@ TEST(ProgressivePath, StepsAddUpToTheOnePassRenderOfTheTarget) {
     progressive.clear();
     EXPECT_FALSE(progressive.active());
     EXPECT_EQ(progressive.samples(), 0);
+}
+
+TEST(ProgressivePath, OnTheGpuANewViewSendsNoWorldAgain) {
+    gpu::Context* context = luxel::test::sharedGpuContext();
+    if (!context) GTEST_SKIP() << "no Vulkan device";
+    const voxel::VoxelWorld world = blockWorld();
+    auto uploaded = voxel::VoxelGpuRenderer::create(*context, world);
+    ASSERT_TRUE(uploaded) << uploaded.error().message();
+    const GpuWorld gpu{context, &*uploaded};
+    VoxelState s = pathState(4);
+    ProgressivePath progressive;
+    ASSERT_TRUE(progressive.restart(world, cameraOf(s), s.shading, s.solver.path, nullptr, 4, gpu));
+    EXPECT_TRUE(progressive.onGpu());
+    while (!progressive.finished()) ASSERT_TRUE(progressive.step(1000.0));
+    const voxel::VoxelGpuUploads first = uploaded->uploads();
+    // The camera moves: the view starts over with the same tracer, sending only its parameters.
+    progressive.clear();
+    EXPECT_FALSE(progressive.active());
+    s.camera.position = {4, 6, -5};
+    ASSERT_TRUE(progressive.restart(world, cameraOf(s), s.shading, s.solver.path, nullptr, 4, gpu));
+    EXPECT_TRUE(progressive.onGpu());
+    EXPECT_EQ(progressive.samples(), 0);
+    voxel::PathTraceImage last;
+    while (!progressive.finished()) {
+        auto image = progressive.step(1000.0);
+        ASSERT_TRUE(image) << image.error().message();
+        last = std::move(*image);
+    }
+    const voxel::VoxelGpuUploads now = uploaded->uploads();
+    EXPECT_EQ(now.world, first.world);
+    EXPECT_EQ(now.textures, first.textures);
+    EXPECT_EQ(now.materials, first.materials);
+    EXPECT_GT(now.parameters, first.parameters);
+    // The mean is a new GPU tracer's of the new view (to float precision: the passes split
+    // differently).
+    voxel::PathTraceOptions once = s.solver.path;
+    once.samplesPerPixel = 4;
+    auto reference = voxel::pathTraceGpu(*context, world, cameraOf(s), s.shading, once);
+    ASSERT_TRUE(reference) << reference.error().message();
+    ASSERT_EQ(last.samplesPerPixel, 4);
+    for (std::size_t i = 0; i < last.radiance.size(); ++i) {
+        const float a = last.radiance.data()[i], b = reference->radiance.data()[i];
+        ASSERT_NEAR(a, b, 1e-5f * std::max(1.0f, std::abs(b))) << i;
+    }
 }
 
 TEST(ProgressivePath, BadOptionsAndTargetsAreErrors) {

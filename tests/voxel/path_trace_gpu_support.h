@@ -39,13 +39,12 @@ inline PathTraceImage traceGpu(gpu::Context& context, const VoxelWorld& world, c
 
 // The CPU and GPU images of the same samples: within their standard errors, and nearly all
 // equal (the same random numbers; only paths that graze an edge in float go another way).
-inline void expectParity(gpu::Context& context, const VoxelWorld& world, const Camera& camera,
-                         const ShadeOptions& o, const PathTraceOptions& p,
-                         const TextureSet* textures, const char* name) {
-    const PathTraceImage cpu = traceCpu(world, camera, o, p, textures);
-    const PathTraceImage gpu = traceGpu(context, world, camera, o, p, textures);
-    ASSERT_EQ(gpu.samplesPerPixel, p.samplesPerPixel);
-    const int w = camera.width(), h = camera.height();
+inline void expectSameSamples(const PathTraceImage& cpu, const PathTraceImage& gpu,
+                              const char* name) {
+    ASSERT_EQ(gpu.samplesPerPixel, cpu.samplesPerPixel) << name;
+    ASSERT_EQ(gpu.radiance.width(), cpu.radiance.width()) << name;
+    ASSERT_EQ(gpu.radiance.height(), cpu.radiance.height()) << name;
+    const int w = cpu.radiance.width(), h = cpu.radiance.height();
     int within = 0, close = 0;
     double cpuMean = 0.0, gpuMean = 0.0, worst = 0.0;
     for (int y = 0; y < h; ++y)
@@ -70,6 +69,16 @@ inline void expectParity(gpu::Context& context, const VoxelWorld& world, const C
     EXPECT_GT(cpuMean, 0.0) << name;
     EXPECT_NEAR(gpuMean, cpuMean, 0.01 * cpuMean) << name;
     EXPECT_NEAR(gpu.relativeError, cpu.relativeError, 0.05 * cpu.relativeError) << name;
+}
+
+// The CPU and GPU tracers' images of the same options (expectSameSamples).
+inline void expectParity(gpu::Context& context, const VoxelWorld& world, const Camera& camera,
+                         const ShadeOptions& o, const PathTraceOptions& p,
+                         const TextureSet* textures, const char* name) {
+    const PathTraceImage cpu = traceCpu(world, camera, o, p, textures);
+    const PathTraceImage gpu = traceGpu(context, world, camera, o, p, textures);
+    ASSERT_EQ(gpu.samplesPerPixel, p.samplesPerPixel);
+    expectSameSamples(cpu, gpu, name);
 }
 
 }  // namespace luxel::voxel::test

@@ -5,6 +5,9 @@
 #include "commands/command.h"
 #include "commands/render_memory.h"
 #include "luxel/core/memory.h"
+#include "luxel/post/upscale.h"
+#include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/path_trace_gpu.h"
 #include "luxel/voxel/radiance_cascades.h"
 #include "luxel/voxel/voxel_gpu.h"
 #include "luxel/voxel/voxel_scene.h"
@@ -53,6 +56,25 @@ int infoVoxelScene(const voxel::VoxelScene& loaded) {
                 formatBytes(rc.bytes).c_str(), rc.spacing, rc.levels,
                 static_cast<long long>(rc.probes), static_cast<long long>(rc.faces),
                 rc.fits ? "" : " (over the limit: luxel render --solver rc refuses it)");
+    // What `luxel render --solver path` would allocate (path_trace.h, path_trace_gpu.h), at the
+    // internal size it traces at; the CPU line says whether render would refuse it.
+    const float scale = scene->post.internalScale;
+    const int width = scale < 1.0f ? post::internalSide(camera.width(), scale) : camera.width();
+    const int height = scale < 1.0f ? post::internalSide(camera.height(), scale) : camera.height();
+    const voxel::PathTraceMemory pathCpu = voxel::estimatePathTraceMemory(width, height);
+    const std::uint64_t available = availableMemoryBytes();
+    std::printf("  path (cpu)         %s: running sums of %dx%d pixels%s\n",
+                formatBytes(pathCpu.host).c_str(), width, height,
+                available > 0 && frame + pathCpu.host > available
+                    ? " (over the limit: luxel render --solver path refuses it)"
+                    : "");
+    const int emitters = voxel::PathEmitters::find(world, shading.materials).size();
+    const voxel::PathTraceMemory pathGpu =
+        voxel::estimatePathTraceGpuMemory(world, &scene->textures, width, height, emitters);
+    std::printf("  path (gpu)         host %s, device %s (world %s, sums %s, %d emitters %s)\n",
+                formatBytes(pathGpu.host).c_str(), formatBytes(pathGpu.device()).c_str(),
+                formatBytes(pathGpu.world).c_str(), formatBytes(pathGpu.sums).c_str(), emitters,
+                formatBytes(pathGpu.emitters).c_str());
     // The same refusal as `luxel render` on the CPU path.
     if (Status st = checkRenderMemory(camera.width(), camera.height(), frame); !st) {
         return reportError(st.error());

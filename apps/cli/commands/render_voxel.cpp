@@ -222,12 +222,16 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
                                   post::internalSide(height, post.internalScale))
             : scene->camera;
     // Refuse before the first frame buffer (`luxel info` reports the same estimate).
-    // The path tracer adds its running sums: 8 doubles a pixel.
-    // Sky visibility adds its visibility image and its radiance: 4 floats a pixel.
-    const std::uint64_t pathBytes = std::uint64_t(camera.width()) * camera.height() *
-                                    (request.pathSolver ? 64
-                                     : request.aoSolver ? 16
-                                                        : 0);
+    // The path tracer adds its running sums (estimatePathTraceMemory; on the GPU also their
+    // download). Sky visibility adds its visibility image and its radiance: 4 floats a pixel.
+    const std::uint64_t pathBytes =
+        request.pathSolver
+            ? (*context ? voxel::estimatePathTraceGpuMemory(scene->world, &scene->textures,
+                                                            camera.width(), camera.height(), 0)
+                        : voxel::estimatePathTraceMemory(camera.width(), camera.height()))
+                  .host
+        : request.aoSolver ? std::uint64_t(camera.width()) * camera.height() * 16
+                           : 0;
     if (Status s = checkRenderMemory(
             width, height, frameBytes(width, height, post, *context != nullptr) + pathBytes);
         !s) {

@@ -49,6 +49,21 @@ struct PathTraceOptions {
     bool sampleEmitters = true;
 };
 
+// Memory the path tracer needs for an image, estimated before it allocates: PathTracer and
+// PathTracerGpu refuse, with these numbers, what does not fit, and `luxel info` prints them.
+struct PathTraceMemory {
+    // Host: the running sums in double (PathPixelSums, 64 bytes a pixel), and on the GPU one
+    // download of the float sums (48 bytes a pixel).
+    std::uint64_t host = 0;
+    // Device (GPU only): the world's upload (estimateVoxelGpuMemory without an image), the float
+    // sums (48 bytes a pixel) and the emissive voxels (16 bytes each, at least one).
+    std::uint64_t world = 0, sums = 0, emitters = 0;
+    std::uint64_t device() const { return world + sums + emitters; }
+};
+
+// The CPU tracer's memory at width x height.
+PathTraceMemory estimatePathTraceMemory(int width, int height);
+
 // The options and the scene light (ShadeOptions' sun direction and irradiance, sky colours)
 // checked: finite, in range, a non-zero sun direction; the error names the field.
 Status validatePathTrace(const ShadeOptions& shading, const PathTraceOptions& options);
@@ -68,6 +83,7 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ra
 // the world and the textures, which must outlive it.
 class PathTracer {
   public:
+    // Refuses, with the bytes, running sums that do not fit in memory (estimatePathTraceMemory).
     static Result<PathTracer> create(const VoxelWorld& world, const Camera& camera,
                                      const ShadeOptions& shading, const PathTraceOptions& options,
                                      const TextureSet* textures = nullptr);

@@ -39,6 +39,18 @@ std::uint64_t estimateVoxelGpuMemory(Int3 size, int chunkSize, const TextureSet*
 // lighting with these settings uploads for a world of this size, on top of the above.
 std::uint64_t estimateVoxelShadowGpuMemory(Int3 size, const ShadowSettings& settings);
 
+// Bytes a VoxelGpuRenderer has sent to the device since create, by kind: after create, a new
+// camera sends only the parameters, the same camera and options nothing, and updateRegion the
+// chunks it touches with every chunk's count, brick mask and reach (tests check this).
+struct VoxelGpuUploads {
+    std::uint64_t world = 0;       // voxels, solid counts per chunk, brick masks and reach
+    std::uint64_t textures = 0;    // texture table, texels and mip chains, sRGB table
+    std::uint64_t materials = 0;   // the material table, when it changed
+    std::uint64_t parameters = 0;  // camera, light and options, when they changed
+    std::uint64_t shadows = 0;     // sun visibility arrays
+    std::uint64_t rays = 0;        // castRays batches
+};
+
 class VoxelGpuRenderer {
   public:
     // Uploads the world and textures. Refuses, with the numbers, when the estimate (for a
@@ -72,18 +84,27 @@ class VoxelGpuRenderer {
                                       std::vector<gpu::PassTiming>* timings = nullptr);
 
     // For other passes over this world that run the ray caster's shader code (the GPU path
-    // tracer, path_trace_gpu.h): uploads what render() would for this camera and options and
-    // returns the buffers voxel_render binds at 0..14 (src/gpu/shaders/shared/voxel_layout.h),
-    // valid until the next call to bindings, render or updateRegion.
+    // tracer, path_trace_gpu.h): uploads what render() would for this camera and options (only
+    // what changed) and returns the buffers voxel_render binds at 0..14
+    // (src/gpu/shaders/shared/voxel_layout.h), valid until the next call to bindings, render or
+    // updateRegion. No image is allocated: binding 6 is the parameters buffer, as 10 is.
     Result<std::vector<gpu::Buffer*>> bindings(const Camera& camera, const ShadeOptions& options);
 
     // Bytes of device memory held now.
     std::uint64_t deviceBytes() const;
+    // What has been sent to the device since create.
+    const VoxelGpuUploads& uploads() const;
+    // The version of the world on the device: 1 after create, +1 for every updateRegion that
+    // re-sent chunks (passes that derive data from the world, such as the path tracer's
+    // emitters, compare it).
+    std::uint64_t worldGeneration() const;
 
   private:
     struct State;
     explicit VoxelGpuRenderer(std::unique_ptr<State> state);
-    Status prepareRender(const Camera& camera, const ShadeOptions& options);
+    // The parameters and materials for this camera and options, and with `image` the output
+    // buffer for its pixels.
+    Status prepareRender(const Camera& camera, const ShadeOptions& options, bool image);
     std::vector<gpu::Buffer*> renderBuffers() const;
     std::unique_ptr<State> state_;
 };
