@@ -9,23 +9,41 @@
 #include "luxel/voxel/sky_visibility.h"
 #include "luxel/voxel/surface_cast.h"
 #include "path_trace_surface.h"
+#include "solver_sun.h"
 #include "solver_surface.h"
 
 namespace luxel::voxel {
 
 namespace {
 
-// What a specular lobe sees along r: the sky, or an emissive face within the radius, as the
-// diffuse estimate's rays see them (occluders within the radius are black).
-Rgb reflectedLight(const VoxelWorld& world, const TextureSet* textures, const Ray& r,
-                   const ShadeOptions& shading, double radius) {
-    if (shading.materials.anyEmission()) {
+// What a reflected or transmitted ray sees along r: the sky (with the sun's disk behind a delta
+// lobe), or an emissive face within the radius, as the diffuse estimate's rays see them
+// (occluders within the radius are black); glass within the radius is followed (its material,
+// what lies behind it) up to kSolverFollowDepth deep.
+Rgb reflectedLight(const VoxelWorld& world, const TextureSet* textures, const Ray& r, bool delta,
+                   int depth, const ShadeOptions& shading, double radius, PathRng& rng) {
+    const bool glass =
+        depth < kSolverFollowDepth && shading.refraction && shading.materials.anyTransmission();
+    if (shading.materials.anyEmission() || glass) {
         const SurfaceHit s = castToSurface(world, textures, r, shading.stepCap);
-        if (s.hit.hit && s.hit.t <= radius) return pathSurfaceAt(world, s, shading).emission;
+        if (s.hit.hit && s.hit.t <= radius) {
+            if (glass && s.hit.normal != Int3{} && solverSeesThrough(world, s, shading)) {
+                // Sky visibility has no light for the faces it meets: none for the glass's.
+                const SolverLight behind{{},
+                                         [&](const Ray& q, bool d) {
+                                             return reflectedLight(world, textures, q, d, depth + 1,
+                                                                   shading, radius, rng);
+                                         },
+                                         1,
+                                         1};
+                return shadeSolverSurface(world, textures, s, r, shading, behind, rng);
+            }
+            return pathSurfaceAt(world, s, shading).emission;
+        }
     } else if (surfaceRayBlocked(world, textures, r, radius, shading.stepCap)) {
         return {};
     }
-    return skyColor(r.direction, shading);
+    return skyColor(r.direction, shading) + (delta ? sunDiskAlong(r.direction, shading) : Rgb{});
 }
 
 }  // namespace
@@ -97,9 +115,10 @@ Result<SkyVisibilityImage> renderSkyVisibility(const VoxelWorld& world, const Ca
                     const SkyVisibility v = estimateSkyVisibility(
                         world, textures, s.hit.point, s.hit.normal, shading, options, rng);
                     visibility = v.visibility;
-                    const SolverLight light{v.skyLight + v.emitterLight, [&](const Ray& r) {
-                                                return reflectedLight(world, textures, r, shading,
-                                                                      options.radius);
+                    const SolverLight light{v.skyLight + v.emitterLight,
+                                            [&](const Ray& r, bool delta) {
+                                                return reflectedLight(world, textures, r, delta, 0,
+                                                                      shading, options.radius, rng);
                                             }};
                     radiance = shadeSolverSurface(world, textures, s, ray, shading, light, rng);
                 }

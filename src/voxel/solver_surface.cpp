@@ -10,6 +10,7 @@
 #include "path_trace_surface.h"
 #include "voxel/path_trace_bsdf.h"
 #include "voxel/shading_physical.h"
+#include "voxel/solver_sun.h"
 
 namespace luxel::voxel {
 namespace {
@@ -78,11 +79,13 @@ Rgb transmitted(const VoxelWorld& world, const SurfaceHit& s, const PathBsdf& b,
             {m.absorption.r, m.absorption.g, m.absorption.b}, float(exit.distance));
         weight = weight * Rgb(t.x, t.y, t.z);
         // Another solid behind the medium: seen directly, as the path tracer sees it.
-        if (exit.intoSolid) return out + weight * light.radianceAlong({exit.point, ray.direction});
+        if (exit.intoSolid) {
+            return out + weight * light.radianceAlong({exit.point, ray.direction}, true);
+        }
         const ExitSplit split = splitAtExit(ray.direction, exit.outward, m.ior, shading.fresnel);
         if (!split.total) {
             out += weight * (1.0f - split.reflectance) *
-                   light.radianceAlong({exit.point, split.refracted});
+                   light.radianceAlong({exit.point, split.refracted}, true);
             weight = weight * split.reflectance;
         }
         ray = {exit.point, split.reflected};
@@ -104,6 +107,13 @@ double directionalAlbedoGgx(double cosView, double alpha) {
            (at(i + 1, j) * (1 - fy) + at(i + 1, j + 1) * fy) * fx;
 }
 
+bool solverSeesThrough(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& shading) {
+    if (!shading.refraction || !shading.materials.anyTransmission()) return false;
+    const Voxel v = world.get(s.hit.voxel.x, s.hit.voxel.y, s.hit.voxel.z);
+    const Material& m = shading.materials.forSlot(textureSlotOf(v));
+    return m.transmission > 0.0f && m.metallic < 1.0f;
+}
+
 Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, const SurfaceHit& s,
                        const Ray& ray, const ShadeOptions& shading, const SolverLight& light,
                        PathRng& rng) {
@@ -119,7 +129,7 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
     specular.transmission = 0.0f;
     specular.pTransmission = 0.0;
     Rgb out = surface.emission +
-              directSunLobes(world, textures, s.hit, b.diffuse,
+              solverSunLobes(world, textures, s.hit, b.diffuse,
                              glossy && !b.mirror() ? &specular : nullptr, shading, light.sunRays) +
               b.diffuse * light.diffuseRadiance;
     if (b.transmission > 0.0f && b.cosView > 0.0) {
@@ -129,7 +139,7 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
     const Vec3d n = toDouble(s.hit.normal);
     if (b.mirror()) {
         const Vec3d r = direction - n * (2.0 * dot(n, direction));
-        return out + b.specular * light.radianceAlong({s.hit.point, r});
+        return out + b.specular * light.radianceAlong({s.hit.point, r}, true);
     }
     // Split sum: S A(cos_v, alpha) times the weighted mean radiance of GGX-sampled directions.
     specular.specular = Rgb(1.0f);
@@ -140,7 +150,7 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
         const BsdfSample sample = sampleBsdf(specular, rng);
         if (sample.lobe != BsdfSample::Lobe::Specular) continue;
         const double w = sample.weight.r;
-        weighted += light.radianceAlong({s.hit.point, sample.direction}) * float(w);
+        weighted += light.radianceAlong({s.hit.point, sample.direction}, false) * float(w);
         weights += w;
     }
     if (!(weights > 0.0)) return out;
