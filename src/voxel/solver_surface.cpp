@@ -107,11 +107,23 @@ double directionalAlbedoGgx(double cosView, double alpha) {
            (at(i + 1, j) * (1 - fy) + at(i + 1, j + 1) * fy) * fx;
 }
 
-bool solverSeesThrough(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& shading) {
-    if (!shading.refraction || !shading.materials.anyTransmission()) return false;
+bool solverFollows(const Material& m, const ShadeOptions& shading) {
+    const bool passes = shading.refraction && m.transmission > 0.0f && m.metallic < 1.0f;
+    return passes || (m.metallic > 0.0f && m.roughness <= kSolverFollowRoughness);
+}
+
+bool solverFollows(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& shading) {
     const Voxel v = world.get(s.hit.voxel.x, s.hit.voxel.y, s.hit.voxel.z);
-    const Material& m = shading.materials.forSlot(textureSlotOf(v));
-    return m.transmission > 0.0f && m.metallic < 1.0f;
+    return solverFollows(shading.materials.forSlot(textureSlotOf(v)), shading);
+}
+
+bool solverFollowsAny(const ShadeOptions& shading) {
+    const MaterialTable& table = shading.materials;
+    if (solverFollows(table.plain(), shading)) return true;
+    for (int slot = 0; slot < table.slotCount(); ++slot) {
+        if (table.hasSlot(slot) && solverFollows(table.forSlot(slot), shading)) return true;
+    }
+    return false;
 }
 
 Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, const SurfaceHit& s,

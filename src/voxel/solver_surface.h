@@ -37,14 +37,20 @@ inline constexpr int kSolverSpecularRays = 4;
 // fills once; cosView and alpha are clamped to [0, 1].
 double directionalAlbedoGgx(double cosView, double alpha);
 
-// Glass a reflection or transmission ray may meet and follow, one inside another, before the
-// face it meets is shaded as an opaque one (each level shades the glass with its material).
+// Glass and polished metal a reflection or transmission ray may meet and follow, one inside
+// another, before the face it meets is shaded as an opaque Lambertian one (each level shades the
+// face with its material).
 inline constexpr int kSolverFollowDepth = 2;
+// Metals at most this rough are followed: their reflection is sharp.
+inline constexpr float kSolverFollowRoughness = 0.1f;
 
-// Whether light passes through the voxel `s` met (its material's transmission lobe, with
-// shading.refraction on): a ray that meets it follows it with shadeSolverSurface rather than
-// taking its face as opaque.
-bool solverSeesThrough(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& shading);
+// Whether a ray that meets a voxel of material `m` follows it with shadeSolverSurface rather than
+// taking its face as opaque and Lambertian: glass and water (a transmission lobe, with
+// shading.refraction on: what lies behind shows) and polished metal (what it reflects shows).
+bool solverFollows(const Material& m, const ShadeOptions& shading);
+bool solverFollows(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& shading);
+// Whether any material of shading.materials is followed.
+bool solverFollowsAny(const ShadeOptions& shading);
 
 struct SolverLight {
     // Mean cosine-weighted radiance arriving at the face apart from the sun (E / pi).

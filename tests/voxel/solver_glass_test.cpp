@@ -2,8 +2,9 @@
 // docs/algorithms/voxel-radiance-cascades.md §4.2): the sun's shadow rays pass through glass
 // with its Fresnel transmission and Beer-Lambert absorption along the straight line; a mirror
 // that shows a glass block shows what lies behind it; a mirror and a glass pane show the sun's
-// disk. Each picture of before (glass opaque to the sun, the glass seen in the mirror an opaque
-// face, no disk) is outside the bounds.
+// disk; a mirror seen through glass shows what it reflects. Each picture of before (glass opaque
+// to the sun, the glass or mirror met by a reflected ray an opaque face, no disk) is outside the
+// bounds.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -197,6 +198,45 @@ TEST(SolverGlass, MirrorShowsWhatLiesBehindGlass) {
         for (int x = 0; x < 4; ++x) {
             EXPECT_NEAR(p.ao.at(x, y, 0), want, 0.005 * want) << "sky visibility " << x << "," << y;
             EXPECT_NEAR(p.rc.at(x, y, 0), want, 0.005 * want) << "cascades " << x << "," << y;
+        }
+}
+
+// Polished metal met by a followed ray is followed too: looking along -x through a clear glass
+// slab (x = 8..9, absorbing 0.2 per voxel) at a mirror wall (x = 0) that reflects a glowing wall
+// behind the camera (x = 15), the sky black. The pixel is the slab's reflection of the glowing
+// wall, 2 R with R = F + (1 - F)^2 F t^2 / (1 - F^2 t^2), plus the wall seen through the slab
+// twice by way of the mirror, 2 S^2 with S = (1 - F)^2 t / (1 - F^2 t^2); the mirror shaded as
+// an opaque face gave 2 R alone.
+TEST(SolverGlass, MirrorSeenThroughGlassShowsWhatItReflects) {
+    VoxelWorld world = makeWorld({16, 8, 8});
+    for (int z = 0; z < 8; ++z)
+        for (int y = 0; y < 8; ++y) {
+            world.set(0, y, z, kSlot1);
+            for (int x = 8; x < 10; ++x) world.set(x, y, z, kGlass);
+            world.set(15, y, z, Voxel{255, 255, 255, 3});
+        }
+    world.refreshEmptySpace();
+    ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
+    Material g = glass(Rgb(0.2f));
+    g.albedo = Rgb(0.0f);
+    ASSERT_TRUE(o.materials.setSlot(0, g).ok());
+    ASSERT_TRUE(o.materials.setSlot(1, metal(0.0f, Rgb(1.0f))).ok());
+    Material lamp;
+    lamp.name = "lamp";
+    lamp.albedo = Rgb(0.0f);
+    lamp.emission = Rgb(2.0f);
+    ASSERT_TRUE(o.materials.setSlot(2, lamp).ok());
+    const double f = 0.04, t = std::exp(-0.2 * 2.0);
+    const double slab = (1 - f) * (1 - f) * t / (1 - f * f * t * t);
+    const double reflected = f + (1 - f) * (1 - f) * f * t * t / (1 - f * f * t * t);
+    const double want = 2.0 * reflected + 2.0 * slab * slab;
+
+    const Camera camera = *Camera::create({14.0, 4.3, 4.2}, -90.0, 0.0, 4.0, 4, 4);
+    const Pictures p = renderBoth(world, o, camera);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x) {
+            EXPECT_NEAR(p.ao.at(x, y, 0), want, 0.01 * want) << "sky visibility " << x << "," << y;
+            EXPECT_NEAR(p.rc.at(x, y, 0), want, 0.01 * want) << "cascades " << x << "," << y;
         }
 }
 

@@ -32,8 +32,9 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
     }
     if (s.hit.normal == Int3{}) return {};
     const Rgb irradiance = indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point);
-    if (depth < kSolverFollowDepth && solverSeesThrough(world, s, shading)) {
-        // Glass: shaded with its material, what lies behind it followed as the camera's ray does.
+    if (depth < kSolverFollowDepth && solverFollows(world, s, shading)) {
+        // Glass or polished metal: shaded with its material, what lies behind it or what it
+        // reflects followed as for the camera's ray.
         const SolverLight behind{
             irradiance * kInvPi,
             [&](const Ray& q, bool d) { return reflectedLight(q, d, depth + 1, rng); }, 1, 1};
