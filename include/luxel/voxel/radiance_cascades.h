@@ -107,9 +107,9 @@ class RadianceCascades {
     friend class RadianceCascadesGpu;
     explicit RadianceCascades(std::unique_ptr<State> state);
     // The radiance arriving along a ray leaving a face: the sky (and the sun's disk behind a
-    // delta lobe), glass followed with its material `depth` < kSolverFollowDepth, or the face met
-    // shaded Lambertian with its sun and indirectIrradiance. `rng` draws what the glass's GGX
-    // directions need.
+    // delta lobe), glass or polished metal shaded with its material and followed while `depth`
+    // < kSolverFollowDepth (src/voxel/solver_surface.h), or the face met shaded Lambertian with
+    // its sun and indirectIrradiance. `rng` draws the followed faces' GGX directions.
     Rgb reflectedLight(const Ray& r, bool delta, int depth, PathRng& rng) const;
     std::unique_ptr<State> state_;
 };
