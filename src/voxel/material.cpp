@@ -55,13 +55,13 @@ Status validateMaterial(const Material& m) {
 }
 
 MaterialTable::MaterialTable() : plain_(defaultMaterial()) {
-    updateEmission();
+    updateFlags();
 }
 
 Status MaterialTable::setPlain(Material material) {
     if (Status s = validateMaterial(material); !s) return s;
     plain_ = std::move(material);
-    updateEmission();
+    updateFlags();
     return Ok{};
 }
 
@@ -77,7 +77,7 @@ Status MaterialTable::setSlot(int slot, Material material) {
     }
     slots_[slot] = std::move(material);
     set_[slot] = true;
-    updateEmission();
+    updateFlags();
     return Ok{};
 }
 
@@ -85,10 +85,16 @@ bool MaterialTable::hasSlot(int slot) const {
     return slot >= 0 && slot < slotCount() && set_[slot];
 }
 
-void MaterialTable::updateEmission() {
+void MaterialTable::updateFlags() {
+    const auto transmits = [](const Material& m) {
+        return m.transmission > 0.0f && m.metallic < 1.0f;
+    };
     emits_ = plain_.emission.maxComponent() > 0.0f;
-    for (std::size_t i = 0; i < slots_.size() && !emits_; ++i) {
-        emits_ = set_[i] && slots_[i].emission.maxComponent() > 0.0f;
+    transmits_ = transmits(plain_);
+    for (std::size_t i = 0; i < slots_.size(); ++i) {
+        if (!set_[i]) continue;
+        emits_ = emits_ || slots_[i].emission.maxComponent() > 0.0f;
+        transmits_ = transmits_ || transmits(slots_[i]);
     }
 }
 

@@ -9,23 +9,42 @@
 #include "luxel/voxel/sky_visibility.h"
 #include "luxel/voxel/surface_cast.h"
 #include "path_trace_surface.h"
+#include "solver_sun.h"
 #include "solver_surface.h"
 
 namespace luxel::voxel {
 
 namespace {
 
-// What a specular lobe sees along r: the sky, or an emissive face within the radius, as the
-// diffuse estimate's rays see them (occluders within the radius are black).
-Rgb reflectedLight(const VoxelWorld& world, const TextureSet* textures, const Ray& r,
-                   const ShadeOptions& shading, double radius) {
-    if (shading.materials.anyEmission()) {
+// What a reflected or transmitted ray sees along r: the sky (with the sun's disk behind a delta
+// lobe), or an emissive face within the radius, as the diffuse estimate's rays see them
+// (occluders within the radius are black); glass and polished metal within the radius are
+// followed (solverFollows: their material, what lies behind or what they reflect) up to
+// kSolverFollowDepth deep when `follow` (some material is followed).
+Rgb reflectedLight(const VoxelWorld& world, const TextureSet* textures, const Ray& r, bool delta,
+                   int depth, bool follow, const ShadeOptions& shading, double radius,
+                   PathRng& rng) {
+    const bool followed = follow && depth < kSolverFollowDepth;
+    if (shading.materials.anyEmission() || followed) {
         const SurfaceHit s = castToSurface(world, textures, r, shading.stepCap);
-        if (s.hit.hit && s.hit.t <= radius) return pathSurfaceAt(world, s, shading).emission;
+        if (s.hit.hit && s.hit.t <= radius) {
+            if (followed && s.hit.normal != Int3{} && solverFollows(world, s, shading)) {
+                // Sky visibility has no light for the faces it meets: none for the followed one's.
+                const SolverLight behind{{},
+                                         [&](const Ray& q, bool d) {
+                                             return reflectedLight(world, textures, q, d, depth + 1,
+                                                                   follow, shading, radius, rng);
+                                         },
+                                         1,
+                                         1};
+                return shadeSolverSurface(world, textures, s, r, shading, behind, rng);
+            }
+            return pathSurfaceAt(world, s, shading).emission;
+        }
     } else if (surfaceRayBlocked(world, textures, r, radius, shading.stepCap)) {
         return {};
     }
-    return skyColor(r.direction, shading);
+    return skyColor(r.direction, shading) + (delta ? sunDiskAlong(r.direction, shading) : Rgb{});
 }
 
 }  // namespace
@@ -82,6 +101,7 @@ Result<SkyVisibilityImage> renderSkyVisibility(const VoxelWorld& world, const Ca
                      " pixels");
     }
     SkyVisibilityImage out{Image(width, height, 3), Image(width, height, 1)};
+    const bool follow = solverFollowsAny(shading);
     parallelForRange(height, 1, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {
             for (int x = 0; x < width; ++x) {
@@ -97,10 +117,11 @@ Result<SkyVisibilityImage> renderSkyVisibility(const VoxelWorld& world, const Ca
                     const SkyVisibility v = estimateSkyVisibility(
                         world, textures, s.hit.point, s.hit.normal, shading, options, rng);
                     visibility = v.visibility;
-                    const SolverLight light{v.skyLight + v.emitterLight, [&](const Ray& r) {
-                                                return reflectedLight(world, textures, r, shading,
-                                                                      options.radius);
-                                            }};
+                    const SolverLight light{
+                        v.skyLight + v.emitterLight, [&](const Ray& r, bool delta) {
+                            return reflectedLight(world, textures, r, delta, 0, follow, shading,
+                                                  options.radius, rng);
+                        }};
                     radiance = shadeSolverSurface(world, textures, s, ray, shading, light, rng);
                 }
                 for (int c = 0; c < 3; ++c) out.radiance.at(x, y, c) = radiance[c];

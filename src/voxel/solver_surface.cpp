@@ -9,6 +9,7 @@
 #include "path_trace_surface.h"
 #include "voxel/path_trace_bsdf.h"
 #include "voxel/shading_physical.h"
+#include "voxel/solver_sun.h"
 
 namespace luxel::voxel {
 namespace {
@@ -41,11 +42,13 @@ Rgb transmitted(const VoxelWorld& world, const SurfaceHit& s, const PathBsdf& b,
             {m.absorption.r, m.absorption.g, m.absorption.b}, float(exit.distance));
         weight = weight * Rgb(t.x, t.y, t.z);
         // Another solid behind the medium: seen directly, as the path tracer sees it.
-        if (exit.intoSolid) return out + weight * light.radianceAlong({exit.point, ray.direction});
+        if (exit.intoSolid) {
+            return out + weight * light.radianceAlong({exit.point, ray.direction}, true);
+        }
         const ExitSplit split = splitAtExit(ray.direction, exit.outward, m.ior, shading.fresnel);
         if (!split.total) {
             out += weight * (1.0f - split.reflectance) *
-                   light.radianceAlong({exit.point, split.refracted});
+                   light.radianceAlong({exit.point, split.refracted}, true);
             weight = weight * split.reflectance;
         }
         ray = {exit.point, split.reflected};
@@ -55,6 +58,25 @@ Rgb transmitted(const VoxelWorld& world, const SurfaceHit& s, const PathBsdf& b,
 }
 
 }  // namespace
+
+bool solverFollows(const Material& m, const ShadeOptions& shading) {
+    const bool passes = shading.refraction && m.transmission > 0.0f && m.metallic < 1.0f;
+    return passes || (m.metallic > 0.0f && m.roughness <= kSolverFollowRoughness);
+}
+
+bool solverFollows(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& shading) {
+    const Voxel v = world.get(s.hit.voxel.x, s.hit.voxel.y, s.hit.voxel.z);
+    return solverFollows(shading.materials.forSlot(textureSlotOf(v)), shading);
+}
+
+bool solverFollowsAny(const ShadeOptions& shading) {
+    const MaterialTable& table = shading.materials;
+    if (solverFollows(table.plain(), shading)) return true;
+    for (int slot = 0; slot < table.slotCount(); ++slot) {
+        if (table.hasSlot(slot) && solverFollows(table.forSlot(slot), shading)) return true;
+    }
+    return false;
+}
 
 Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, const SurfaceHit& s,
                        const Ray& ray, const ShadeOptions& shading, const SolverLight& light,
@@ -71,7 +93,7 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
     specular.transmission = 0.0f;
     specular.pTransmission = 0.0;
     Rgb out = surface.emission +
-              directSunLobes(world, textures, s.hit, b.diffuse,
+              solverSunLobes(world, textures, s.hit, b.diffuse,
                              glossy && !b.mirror() ? &specular : nullptr, shading, light.sunRays) +
               b.diffuse * light.diffuseRadiance;
     if (b.transmission > 0.0f && b.cosView > 0.0) {
@@ -81,7 +103,7 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
     const Vec3d n = toDouble(s.hit.normal);
     if (b.mirror()) {
         const Vec3d r = direction - n * (2.0 * dot(n, direction));
-        return out + b.specular * light.radianceAlong({s.hit.point, r});
+        return out + b.specular * light.radianceAlong({s.hit.point, r}, true);
     }
     // Split sum: S A(cos_v, alpha) times the weighted mean radiance of GGX-sampled directions.
     specular.specular = Rgb(1.0f);
@@ -92,7 +114,7 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
         const BsdfSample sample = sampleBsdf(specular, rng);
         if (sample.lobe != BsdfSample::Lobe::Specular) continue;
         const double w = sample.weight.r;
-        weighted += light.radianceAlong({s.hit.point, sample.direction}) * float(w);
+        weighted += light.radianceAlong({s.hit.point, sample.direction}, false) * float(w);
         weights += w;
     }
     if (!(weights > 0.0)) return out;

@@ -11,7 +11,8 @@
 // weighted by their sampling weights (split-sum: exact under light the same from every
 // direction). A mirror takes one ray along the reflection. The transmission lobe T follows the
 // refracted camera ray through the medium as the path tracer does (walkMedium, Beer-Lambert,
-// Fresnel at each exit) and takes the solver's light along each ray that leaves it.
+// Fresnel at each exit) and takes the solver's light along each ray that leaves it. The sun's
+// shadow rays pass through glass with a transmittance (solver_sun.h).
 #pragma once
 
 #include <functional>
@@ -32,11 +33,29 @@ namespace luxel::voxel {
 // GGX directions sampled per pixel for the specular reflection of the surroundings.
 inline constexpr int kSolverSpecularRays = 4;
 
+// Glass and polished metal a reflection or transmission ray may meet and follow, one inside
+// another, before the face it meets is shaded as an opaque Lambertian one (each level shades the
+// face with its material).
+inline constexpr int kSolverFollowDepth = 2;
+// Metals at most this rough are followed: their reflection is sharp.
+inline constexpr float kSolverFollowRoughness = 0.1f;
+
+// Whether a ray that meets a voxel of material `m` follows it with shadeSolverSurface rather than
+// taking its face as opaque and Lambertian: glass and water (a transmission lobe, with
+// shading.refraction on: what lies behind shows) and polished metal (what it reflects shows).
+bool solverFollows(const Material& m, const ShadeOptions& shading);
+bool solverFollows(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& shading);
+// Whether any material of shading.materials is followed.
+bool solverFollowsAny(const ShadeOptions& shading);
+
 struct SolverLight {
     // Mean cosine-weighted radiance arriving at the face apart from the sun (E / pi).
     Rgb diffuseRadiance;
-    // The radiance arriving at the face along a ray leaving it (unit direction).
-    std::function<Rgb(const Ray&)> radianceAlong;
+    // The radiance arriving at the face along a ray leaving it (unit direction). `delta`: the ray
+    // left a delta lobe (a mirror, a refraction), so where it escapes to the sky within the sun's
+    // disk the disk counts (sunDiskAlong, solver_sun.h); a GGX direction leaves the disk to the
+    // sun's highlight.
+    std::function<Rgb(const Ray&, bool delta)> radianceAlong;
     // Shadow rays over the sun's disk (its fixed spiral; one for a delta sun).
     int sunRays = kSunDiskRays;
     // GGX directions for the specular reflection of the surroundings.

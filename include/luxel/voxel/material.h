@@ -54,6 +54,9 @@ class MaterialTable {
     // Whether any material (plain or a slot's) emits light (kept up to date by the setters, so
     // renderers may ask per pixel).
     bool anyEmission() const { return emits_; }
+    // Whether any material lets light through (transmission > 0 and not fully metallic): the
+    // solvers' sun rays need to look for glass only then.
+    bool anyTransmission() const { return transmits_; }
     // Slots that have a material of their own are 0..slotCount() - 1 at most.
     int slotCount() const { return static_cast<int>(slots_.size()); }
 
@@ -62,8 +65,9 @@ class MaterialTable {
     std::vector<Material> slots_;
     std::vector<bool> set_;
     bool emits_ = false;
+    bool transmits_ = false;
 
-    void updateEmission();
+    void updateFlags();
 };
 
 }  // namespace luxel::voxel

@@ -23,6 +23,7 @@
 #include "luxel/core/error.h"
 #include "luxel/core/image.h"
 #include "luxel/voxel/camera.h"
+#include "luxel/voxel/path_trace_rng.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/texture_set.h"
 #include "luxel/voxel/voxel_world.h"
@@ -105,9 +106,11 @@ class RadianceCascades {
   private:
     friend class RadianceCascadesGpu;
     explicit RadianceCascades(std::unique_ptr<State> state);
-    // The radiance arriving along a ray leaving a face: the sky, or the face met shaded
-    // Lambertian with its sun and indirectIrradiance.
-    Rgb reflectedLight(const Ray& r) const;
+    // The radiance arriving along a ray leaving a face: the sky (and the sun's disk behind a
+    // delta lobe), glass or polished metal shaded with its material and followed while `depth`
+    // < kSolverFollowDepth (src/voxel/solver_surface.h), or the face met shaded Lambertian with
+    // its sun and indirectIrradiance. `rng` draws the followed faces' GGX directions.
+    Rgb reflectedLight(const Ray& r, bool delta, int depth, PathRng& rng) const;
     std::unique_ptr<State> state_;
 };
 

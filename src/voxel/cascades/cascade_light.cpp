@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "../path_trace_surface.h"
+#include "../solver_sun.h"
 #include "../sun_disk.h"
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"
@@ -31,23 +32,24 @@ Texel meanOpaqueTexel(const Texture& texture) {
     return Texel{float(sum[0] / count), float(sum[1] / count), float(sum[2] / count), 1};
 }
 
-// Fraction of the face's shadow rays that reach the sun (cutouts let them through): from each of
-// its four quarter centres one ray to a delta sun, or kSunRaysPerQuarter rays to a disk (the
-// quarters take turns along the disk's spiral, sun_disk.h, so together they cover all of it).
-float sunVisibility(const RadianceCascades::State& state, const Face& face, const SunDisk& sun) {
+// Mean transmittance of the face's shadow rays (sunRayTransmittance: cutouts let them through,
+// glass dims them): from each of its four quarter centres one ray to a delta sun, or
+// kSunRaysPerQuarter rays to a disk (the quarters take turns along the disk's spiral, sun_disk.h,
+// so together they cover all of it).
+Rgb sunPassing(const RadianceCascades::State& state, const Face& face, const SunDisk& sun) {
     const Int3 n = normalFromIndex(face.normal);
     const Vec3d axis = sun.axis;
-    if (!(n.x * axis.x + n.y * axis.y + n.z * axis.z > 0.0)) return 0.0f;
+    if (!(n.x * axis.x + n.y * axis.y + n.z * axis.z > 0.0)) return {};
     const int perQuarter = sun.delta() ? 1 : kSunRaysPerQuarter;
-    int lit = 0;
+    Rgb passing;
     for (int i = 0; i < 4; ++i) {
         for (int j = 0; j < perQuarter; ++j) {
             const Vec3d l = sun.spiral(4 * j + i, 4 * perQuarter);
-            lit += !surfaceRayBlocked(*state.world, state.textures, {faceQuarterCentre(face, i), l},
-                                      kInfinity, state.shading.stepCap);
+            passing += sunRayTransmittance(*state.world, state.textures,
+                                           {faceQuarterCentre(face, i), l}, state.shading);
         }
     }
-    return lit / float(4 * perQuarter);
+    return passing * (1.0f / float(4 * perQuarter));
 }
 
 // Radiance a segment code brings: a face's, the sky's, or (kContinue) `next`.
@@ -129,7 +131,7 @@ Rgb faceDirectSun(const RadianceCascades::State& state, int f) {
     const Int3 n = normalFromIndex(faces.table[f].normal);
     const Vec3d sun = state.sunForVisibility;
     const double cosSun = std::max(0.0, n.x * sun.x + n.y * sun.y + n.z * sun.z);
-    return state.shading.sunIrradiance * float(cosSun * faces.sunVisible[f]);
+    return state.shading.sunIrradiance * faces.sunPassing[f] * float(cosSun);
 }
 
 Rgb faceEmitted(const FaceData& faces, int f) {
@@ -158,7 +160,7 @@ void updateFaceLight(RadianceCascades::State& state) {
         }
     }
     const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
-    const bool sunMoved = faces.sunVisible.size() != std::size_t(count) ||
+    const bool sunMoved = faces.sunPassing.size() != std::size_t(count) ||
                           !(sun.axis == state.sunForVisibility) ||
                           !(sun.radius == state.sunRadiusForVisibility);
     // The emitters' light depends on the emission alone (the world is fixed): a new sun or sky
@@ -166,7 +168,7 @@ void updateFaceLight(RadianceCascades::State& state) {
     const std::vector<Rgb> emissionBefore = faces.emission;
     faces.albedo.resize(count);
     faces.emission.resize(count);
-    faces.sunVisible.resize(count);
+    faces.sunPassing.resize(count);
     if (faces.irradiance.size() != std::size_t(count)) faces.irradiance.assign(count, Rgb{});
     faces.outgoing.resize(count);
     parallelForRange(count, 64, [&](int begin, int end) {
@@ -187,7 +189,7 @@ void updateFaceLight(RadianceCascades::State& state) {
             const PathSurface surface = pathSurfaceAt(*state.world, s, shading);
             faces.albedo[f] = surface.albedo;
             faces.emission[f] = surface.emission;
-            if (sunMoved) faces.sunVisible[f] = sunVisibility(state, face, sun);
+            if (sunMoved) faces.sunPassing[f] = sunPassing(state, face, sun);
         }
     });
     state.sunForVisibility = sun.axis;

@@ -4,6 +4,7 @@
 // interpolated. (Casting rows several rays at a time, castRayBatch and occludedBatch, measured no
 // faster here: 45-47 ms against 40-46 ms of CPU at 640x360.)
 #include "../path_trace_surface.h"
+#include "../solver_sun.h"
 #include "../solver_surface.h"
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"
@@ -21,21 +22,31 @@ constexpr int kPictureSunRays = 4;
 constexpr int kPictureSpecularRays = 2;  // and half its reflection rays
 }  // namespace
 
-Rgb RadianceCascades::reflectedLight(const Ray& r) const {
+Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRng& rng) const {
     const VoxelWorld& world = *state_->world;
     const ShadeOptions& shading = state_->shading;
     const SurfaceHit s = castToSurface(world, state_->textures, r, shading.stepCap);
-    if (!s.hit.hit) return skyColor(r.direction, shading);
+    if (!s.hit.hit) {
+        return skyColor(r.direction, shading) +
+               (delta ? sunDiskAlong(r.direction, shading) : Rgb{});
+    }
     if (s.hit.normal == Int3{}) return {};
+    const Rgb irradiance = indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point);
+    if (depth < kSolverFollowDepth && solverFollows(world, s, shading)) {
+        // Glass or polished metal: shaded with its material, what lies behind it or what it
+        // reflects followed as for the camera's ray.
+        const SolverLight behind{
+            irradiance * kInvPi,
+            [&](const Ray& q, bool d) { return reflectedLight(q, d, depth + 1, rng); }, 1, 1};
+        return shadeSolverSurface(world, state_->textures, s, r, shading, behind, rng);
+    }
     // The face met, Lambertian: its emission, the sun its face's rays found when the cascades
     // were lit (no shadow rays per pixel: a reflection is blurred by its lobe anyway) and the
     // cascades' irradiance.
     const PathSurface surface = pathSurfaceAt(world, s, shading);
     const int face = state_->faces.table.find(s.hit.voxel, cascades::normalIndex(s.hit.normal));
     const Rgb sun = face >= 0 ? cascades::faceDirectSun(*state_, face) : Rgb{};
-    return surface.emission +
-           surface.albedo * (sun + indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point)) *
-               kInvPi;
+    return surface.emission + surface.albedo * (sun + irradiance) * kInvPi;
 }
 
 Result<Image> RadianceCascades::render(const Camera& camera) const {
@@ -61,8 +72,8 @@ Result<Image> RadianceCascades::render(const Camera& camera) const {
                     PathRng rng(kReflectionSeed, std::uint64_t(y) * width + x, 0);
                     const SolverLight light{
                         indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point) * kInvPi,
-                        [&](const Ray& r) { return reflectedLight(r); }, kPictureSunRays,
-                        kPictureSpecularRays};
+                        [&](const Ray& r, bool delta) { return reflectedLight(r, delta, 0, rng); },
+                        kPictureSunRays, kPictureSpecularRays};
                     radiance = shadeSolverSurface(world, textures, s, ray, shading, light, rng);
                 }
                 for (int c = 0; c < 3; ++c) out.at(x, y, c) = radiance[c];

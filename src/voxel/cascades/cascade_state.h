@@ -37,9 +37,11 @@ struct FaceData {
     std::vector<std::uint32_t> codes;       // per face, its normal's cosine bins x 8 corners
     std::vector<std::uint32_t> codeOffset;  // per face
     std::vector<Rgb> albedo, emission;
-    std::vector<float> sunVisible;  // fraction of the face's rays over the sun's disk that reach it
-    std::vector<Rgb> outgoing;      // radiance the face sends, this pass
-    std::vector<Rgb> irradiance;    // indirect irradiance gathered, last pass
+    // Mean transmittance of the face's rays over the sun's disk (0 blocked, 1 open, a colour
+    // through glass: sunRayTransmittance, solver_sun.h).
+    std::vector<Rgb> sunPassing;
+    std::vector<Rgb> outgoing;    // radiance the face sends, this pass
+    std::vector<Rgb> irradiance;  // indirect irradiance gathered, last pass
     // Irradiance from the emissive faces, exact (cascade_emitters.cpp); when it is computed the
     // chains carry reflected light only.
     std::vector<Rgb> emitterIrradiance;
@@ -60,7 +62,7 @@ struct RadianceCascades::State {
     CascadeOptions options;
     cascades::FaceData faces;
     std::vector<cascades::LevelData> levels;
-    Vec3d sunForVisibility{};           // the sun direction sunVisible was found for
+    Vec3d sunForVisibility{};           // the sun direction sunPassing was found for
     double sunRadiusForVisibility = 0;  // and the sun's angular radius
     CascadeStats stats;
 };

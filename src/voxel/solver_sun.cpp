@@ -1,0 +1,123 @@
+// The real-time solvers' sun (solver_sun.h): shadow rays through transmissive voxels along the
+// straight line, and the sun's disk behind delta lobes.
+#include "solver_sun.h"
+
+#include <algorithm>
+
+#include "gpu/shaders/shared/optics.h"
+#include "gpu/shaders/shared/voxel_shading.h"
+#include "luxel/voxel/surface_cast.h"
+#include "voxel/path_trace_bsdf.h"
+#include "voxel/shading_physical.h"
+#include "voxel/sun_disk.h"
+
+namespace luxel::voxel {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// Below this the light that is left counts as none (and the walk stops).
+constexpr float kDarkTransmittance = 1e-4f;
+
+Vec3d toDouble(Int3 v) {
+    return {double(v.x), double(v.y), double(v.z)};
+}
+
+// The share of the light that enters the medium of `m` through a face with outward normal
+// `normal` along `direction`: its transmission lobe weight (0 for opaque materials).
+float entryTransmission(const Material& m, Int3 normal, Vec3d direction,
+                        const ShadeOptions& shading) {
+    return pathBsdf(m, Rgb(1.0f), normal, direction, shading).transmission;
+}
+
+// 1 - F where a straight line leaves the medium through a face with outward normal `outward`:
+// the Fresnel reflectance at the line's angle to the face, as if it came in from the air (for a
+// slab this is the exit's reflectance after refraction, by symmetry).
+float exitTransmission(const Material& m, Vec3d direction, Int3 outward,
+                       const ShadeOptions& shading) {
+    if (m.ior == 1.0f) return 1.0f;  // no index contrast: no interface
+    const float cosI = float(std::clamp(dot(direction, toDouble(outward)), 0.0, 1.0));
+    const float f = shading.fresnel == ShadeOptions::FresnelModel::Exact
+                        ? gpu::shared::fresnelDielectricExact(cosI, 1.0f, m.ior)
+                        : gpu::shared::fresnelDielectricSchlick(cosI, 1.0f, m.ior);
+    return 1.0f - f;
+}
+
+// Through the run of transmissive voxels entered at `hit` (the face the ray met); returns the
+// transmittance and moves `origin` to where the line leaves into the air (0: blocked inside).
+Rgb throughMedia(const VoxelWorld& world, const Hit& hit, Vec3d direction,
+                 const ShadeOptions& shading, Vec3d& origin, int& media) {
+    Rgb t(1.0f);
+    Int3 cell = hit.voxel, normal = hit.normal;
+    Vec3d point = hit.point;
+    for (;;) {
+        const Voxel v = world.get(cell.x, cell.y, cell.z);
+        const Material& m = shading.materials.forSlot(textureSlotOf(v));
+        t = t * entryTransmission(m, normal, direction, shading);
+        if (!(t.maxComponent() > kDarkTransmittance) || ++media > kMaxSunRayMedia) return {};
+        const MediumExit exit = walkMedium(world, cell, point, direction);
+        const gpu::shared::vec3 a = gpu::shared::voxelTransmittance(
+            {m.absorption.r, m.absorption.g, m.absorption.b}, float(exit.distance));
+        t = t * Rgb(a.x, a.y, a.z);
+        if (!exit.intoSolid) {
+            origin = exit.point;
+            return t * exitTransmission(m, direction, exit.outward, shading);
+        }
+        // Another solid touches the medium: entered directly, with no interface to the air.
+        cell = {exit.cell.x + exit.outward.x, exit.cell.y + exit.outward.y,
+                exit.cell.z + exit.outward.z};
+        normal = {-exit.outward.x, -exit.outward.y, -exit.outward.z};
+        point = exit.point;
+    }
+}
+
+}  // namespace
+
+Rgb sunRayTransmittance(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
+                        const ShadeOptions& shading) {
+    if (!shading.refraction || !shading.materials.anyTransmission()) {
+        const bool blocked = surfaceRayBlocked(world, textures, ray, kInfinity, shading.stepCap);
+        return blocked ? Rgb{} : Rgb(1.0f);
+    }
+    Rgb t(1.0f);
+    Vec3d origin = ray.origin;
+    int media = 0;
+    for (;;) {
+        const SurfaceHit s =
+            castToSurface(world, textures, {origin, ray.direction}, shading.stepCap);
+        if (!s.hit.hit) return t;               // the sky (or past the step cap)
+        if (s.hit.normal == Int3{}) return {};  // started inside a solid voxel
+        t = t * throughMedia(world, s.hit, ray.direction, shading, origin, media);
+        if (!(t.maxComponent() > kDarkTransmittance)) return {};
+    }
+}
+
+Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
+                   const PathBsdf* specular, const ShadeOptions& shading, int sunRays) {
+    if (!(shading.sunIrradiance.maxComponent() > 0.0f)) return {};
+    if (!(diffuse.maxComponent() > 0.0f) && !specular) return {};
+    const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
+    const Vec3d n = toDouble(hit.normal);
+    // A delta sun: one shadow ray; a disk: the spiral's rays, each bringing radiance / pdf.
+    const int rays = sun.delta() ? 1 : std::max(sunRays, 1);
+    const Rgb perRay = sun.radianceOverPdf(shading.sunIrradiance) * float(1.0 / rays);
+    Rgb cosines, glossy;  // the sum of cos x transmittance; the smooth lobes' light
+    for (int i = 0; i < rays; ++i) {
+        const Vec3d l = sun.spiral(i, rays);
+        const double cosSun = dot(n, l);
+        // Rays start on the face; castRay's start-cell rule puts them in the cell in front.
+        if (!(cosSun > 0.0)) continue;
+        const Rgb t = sunRayTransmittance(world, textures, {hit.point, l}, shading);
+        if (!(t.maxComponent() > 0.0f)) continue;
+        cosines += t * float(cosSun);
+        // Each ray of the disk is a delta light of its share (lightPdf 0: no MIS weight).
+        if (specular) glossy += bsdfLight(*specular, l, perRay, 0.0) * t;
+    }
+    return diffuse * perRay * cosines * float(1.0 / kPi) + glossy;
+}
+
+Rgb sunDiskAlong(Vec3d direction, const ShadeOptions& shading) {
+    const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
+    return sun.contains(direction) ? sun.radiance(shading.sunIrradiance) : Rgb{};
+}
+
+}  // namespace luxel::voxel

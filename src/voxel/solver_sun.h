@@ -1,0 +1,47 @@
+// The sun as the real-time solvers see it (sky visibility, radiance cascades;
+// docs/algorithms/voxel-radiance-cascades.md §4.2, docs/algorithms/voxel-sky-visibility.md):
+// shadow rays that pass through glass and water with a transmittance, and the sun's disk where a
+// mirror or a refracted ray shows it.
+//
+// The transmittance is taken along the straight line (no refraction): the entry's transmission
+// lobe weight, Beer-Lambert over the path inside, the Fresnel transmission where the line leaves.
+// On average this conserves the energy that passes; the focusing of refraction (caustics) is
+// not drawn.
+#pragma once
+
+#include "path_trace_surface.h"
+
+#include "luxel/core/vec.h"
+#include "luxel/voxel/dda.h"
+#include "luxel/voxel/shading.h"
+#include "luxel/voxel/texture_set.h"
+#include "luxel/voxel/voxel_world.h"
+
+namespace luxel::voxel {
+
+// Media (runs of touching transmissive voxels) a sun ray passes before it counts as blocked.
+inline constexpr int kMaxSunRayMedia = 8;
+
+// What of the light arriving along `ray` from infinity reaches its origin (ray: leaving a
+// surface, unit direction): 1 when it meets nothing (cutout texels let it through), 0 at an
+// opaque voxel, and through each transmissive voxel it meets (when shading.refraction is on) the
+// product of the entry's transmission lobe weight (pathBsdf: (1 - metallic)(1 - F) transmission),
+// Beer-Lambert over the straight path inside (the path tracer's absorption) and 1 - F where it
+// leaves into the air. A transmissive voxel of another material touching the first is entered
+// with its own lobe weight and no exit between them, as the path tracer's rays do.
+Rgb sunRayTransmittance(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
+                        const ShadeOptions& shading);
+
+// directSunLobes (path_trace_surface.h) with each shadow ray's sunRayTransmittance in place of its
+// visibility: the diffuse lobe `diffuse` and, when given, the smooth lobes of `specular` (whose
+// diffuse lobe must be off) lit by the sun's disk over `sunRays` rays of its spiral (one for a
+// delta sun). No rays when neither lobe can reflect.
+Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
+                   const PathBsdf* specular, const ShadeOptions& shading,
+                   int sunRays = kSunDiskRays);
+
+// The radiance of the sun's disk along a unit direction that escapes to the sky after a delta lobe
+// (a mirror, a refraction), as the path tracer adds it: 0 outside the disk and for a delta sun.
+Rgb sunDiskAlong(Vec3d direction, const ShadeOptions& shading);
+
+}  // namespace luxel::voxel
