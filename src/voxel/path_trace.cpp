@@ -124,38 +124,6 @@ bool surfaceRayBlocked(const VoxelWorld& world, const TextureSet* textures, cons
     return occluded(world, ray, tMax, stepCap);
 }
 
-Rgb directSunLight(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb albedo,
-                   const ShadeOptions& o) {
-    return directSunLobes(world, textures, hit, albedo, nullptr, o);
-}
-
-Rgb directSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
-                   const PathBsdf* specular, const ShadeOptions& o, int sunRays) {
-    if (!(o.sunIrradiance.maxComponent() > 0.0f)) return {};
-    const SunDisk sun = SunDisk::make(o.sunDirection, o.sunAngularRadius);
-    const Vec3d n = toDouble(hit.normal);
-    // A delta sun: one shadow ray; a disk: the spiral's rays, each bringing radiance / pdf.
-    const int rays = sun.delta() ? 1 : std::max(sunRays, 1);
-    const Rgb perRay =
-        sun.delta() ? o.sunIrradiance : sun.radianceOverPdf(o.sunIrradiance) * float(1.0 / rays);
-    double sum = 0.0;
-    Rgb glossy;
-    for (int i = 0; i < rays; ++i) {
-        const Vec3d l = sun.spiral(i, rays);
-        const double cosSun = dot(n, l);
-        // Rays start on the face; castRay's start-cell rule puts them in the cell in front.
-        if (!(cosSun > 0.0) ||
-            surfaceRayBlocked(world, textures, {hit.point, l}, kInfinity, o.stepCap)) {
-            continue;
-        }
-        sum += cosSun;
-        // Each ray of the disk is a delta light of its share (lightPdf 0: no MIS weight).
-        if (specular) glossy += bsdfLight(*specular, l, perRay, 0.0);
-    }
-    if (sun.delta()) return diffuse * o.sunIrradiance * float(sum / kPi) + glossy;
-    return diffuse * sun.radianceOverPdf(o.sunIrradiance) * float(sum / (rays * kPi)) + glossy;
-}
-
 Vec3d cosineDirection(Int3 normal, float u1, float u2) {
     const Vec3d n = toDouble(normal);
     Vec3d tu{0, 0, 1}, tv{0, 1, 0};

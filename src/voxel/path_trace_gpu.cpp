@@ -47,7 +47,7 @@ shared::PathTracePush pathPush(const ShadeOptions& shading, const PathTraceOptio
     p.maxBounces = static_cast<std::uint32_t>(options.maxBounces);
     p.rouletteAfter = static_cast<std::uint32_t>(options.rouletteAfter);
     p.emitters = static_cast<std::uint32_t>(emitters);
-    // Normalised in double, as directSunLight does, then rounded.
+    // Normalised in double, as the CPU tracer's SunDisk does, then rounded.
     const Vec3 d = shading.sunDirection;
     const Vec3d sun = normalize(Vec3d{d.x, d.y, d.z});
     p.sunX = float(sun.x), p.sunY = float(sun.y), p.sunZ = float(sun.z);

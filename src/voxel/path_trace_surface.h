@@ -27,19 +27,6 @@ inline constexpr int kSunDiskRays = 16;
 // texel x procedural texture x material albedo; nearest texel), every material taken as diffuse.
 PathSurface pathSurfaceAt(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& o);
 
-// Radiance a Lambertian face of this albedo at `hit` reflects from the sun: one shadow ray for a
-// delta sun (sunAngularRadius 0), else kSunDiskRays rays over the disk's fixed spiral, each
-// bringing the disk's radiance over its density (cutout texels let them through). 0 when the sun
-// is below the face.
-Rgb directSunLight(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb albedo,
-                   const ShadeOptions& o);
-
-// directSunLight's Lambertian term of `diffuse` plus, when `specular` is given, what its smooth
-// lobes reflect of each unshadowed ray of the disk (bsdfLight, each ray a delta light of its
-// share; pass a PathBsdf whose diffuse lobe is off so it is not counted twice).
-Rgb directSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
-                   const PathBsdf* specular, const ShadeOptions& o, int sunRays = kSunDiskRays);
-
 // A cosine-weighted unit direction about the axis-aligned normal n from two uniform numbers in
 // [0, 1): pdf cos / pi, so a Lambertian bounce weighs albedo exactly.
 Vec3d cosineDirection(Int3 normal, float u1, float u2);

@@ -32,10 +32,10 @@ inline constexpr int kMaxSunRayMedia = 8;
 Rgb sunRayTransmittance(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
                         const ShadeOptions& shading);
 
-// directSunLobes (path_trace_surface.h) with each shadow ray's sunRayTransmittance in place of its
-// visibility: the diffuse lobe `diffuse` and, when given, the smooth lobes of `specular` (whose
-// diffuse lobe must be off) lit by the sun's disk over `sunRays` rays of its spiral (one for a
-// delta sun). No rays when neither lobe can reflect.
+// The sun's light on a face, each shadow ray weighted by its sunRayTransmittance: the diffuse
+// lobe `diffuse` and, when given, the smooth lobes of `specular` (whose diffuse lobe must be off;
+// each ray a delta light of its share, bsdfLight) lit by the sun's disk over `sunRays` rays of
+// its spiral (one for a delta sun). No rays when neither lobe can reflect.
 Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
                    const PathBsdf* specular, const ShadeOptions& shading,
                    int sunRays = kSunDiskRays);
