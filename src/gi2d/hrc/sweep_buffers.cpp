@@ -85,10 +85,7 @@ void ColumnWindow::at(int x, CellTransfer* out) const {
 }
 
 int ringSlots(int n, int chunk) {
-    const int needed = std::max(2, (chunk >> n) + 1);
-    int slots = 1;
-    while (slots < needed) slots *= 2;
-    return slots;
+    return std::max(2, (chunk >> n) + 1);
 }
 
 namespace {
