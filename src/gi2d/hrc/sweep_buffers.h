@@ -34,7 +34,8 @@ class ColumnWindow {
     int span() const { return span_; }
     int lengths() const { return static_cast<int>(lengths_.size()); }
 
-    static std::uint64_t bytesFor(int span, int lengths, int rows);
+    // `bandRows`: the most rows one member loads (its band and the rows its stencils reach).
+    static std::uint64_t bytesFor(int span, int lengths, int rows, int bandRows);
 
   private:
     std::size_t offset(int slot, int length, int c) const {
@@ -44,7 +45,8 @@ class ColumnWindow {
     int span_ = 1, rows_ = 0, pad_ = 0, stride_ = 0;
     std::vector<float> lengths_;
     std::vector<float> data_;
-    // The raw sigma and E of the current block of columns: [column][6][row].
+    // The raw sigma and E of the current block of columns for the rows this member loads:
+    // [column][6][row - v0].
     std::vector<float> block_;
 };
 
