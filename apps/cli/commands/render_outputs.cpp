@@ -100,6 +100,7 @@ ImageRows toneMappedRows(const ImageRows& hdr, const ToneMapSettings& tone,
 ImageRows countingClipped(const ImageRows& display, const Image* lightSources,
                           const ToneMapSettings& tone, ClippedPixels& count) {
     ImageRows rows = display;
+    rows.image = nullptr;  // every strip goes through the count
     rows.read = [display, lightSources, tone, &count](int y0, int y1, float* out) {
         display.read(y0, y1, out);
         const std::size_t pixels = static_cast<std::size_t>(y1 - y0) * display.width;
