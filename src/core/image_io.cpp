@@ -74,10 +74,11 @@ Status writeImages(const std::vector<ImageFile>& files) {
             AtomicFile::create(entry.path, format == ImageFormat::Png ? "PNG" : "EXR");
         if (!file) return file.error();
         const ImageMetadata& metadata = entry.metadata != nullptr ? *entry.metadata : kNone;
-        const Status s =
-            format == ImageFormat::Png
-                ? detail::writePngInto(*file, *entry.image, PngEncoding::Srgb, metadata)
-                : detail::writeExrInto(*file, *entry.image, metadata);
+        LUXEL_CHECK(entry.rows != nullptr || entry.image != nullptr);
+        const ImageRows rows = entry.rows != nullptr ? *entry.rows : rowsOf(*entry.image);
+        const Status s = format == ImageFormat::Png
+                             ? detail::writePngInto(*file, rows, PngEncoding::Srgb, metadata)
+                             : detail::writeExrInto(*file, rows, metadata);
         if (!s) return s;
         written.push_back(std::move(*file));
     }

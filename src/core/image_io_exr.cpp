@@ -10,6 +10,7 @@
 #include <ImfStringAttribute.h>
 #include <ImfThreading.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -203,12 +204,21 @@ Result<Image> readExrImpl(Imf::IStream& stream, std::uint64_t totalBytes, const 
     return image;
 }
 
-Status writeExrImpl(AtomicFile& out, const Image& image, const ImageMetadata& metadata) {
+int openExrThreads() {
+    // ZIP compression of the line blocks runs on OpenEXR's thread pool, one thread per core.
+    static const int threads = [] {
+        Imf::setGlobalThreadCount(hardwareThreads());
+        return Imf::globalThreadCount();
+    }();
+    return threads;
+}
+
+Status writeExrImpl(AtomicFile& out, const ImageRows& image, const ImageMetadata& metadata) {
     static const std::vector<std::string> kNames[] = {
         {"Y"}, {"Y", "A"}, {"R", "G", "B"}, {"R", "G", "B", "A"}};
-    const std::vector<std::string>& names = kNames[image.channels() - 1];
+    const std::vector<std::string>& names = kNames[image.channels - 1];
 
-    Imf::Header header(image.width(), image.height());
+    Imf::Header header(image.width, image.height);
     for (const std::string& name : names) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
     for (const MetadataEntry& entry : metadata) {
         // The header's own attributes (channels, compression, dataWindow, ...) keep their types.
@@ -220,23 +230,23 @@ Status writeExrImpl(AtomicFile& out, const Image& image, const ImageMetadata& me
     }
     AtomicFileStream stream(out);
     {
-        // ZIP compression of the line blocks runs on OpenEXR's thread pool, one thread per core.
-        static const int threads = [] {
-            Imf::setGlobalThreadCount(hardwareThreads());
-            return Imf::globalThreadCount();
-        }();
-        Imf::OutputFile file(stream, header, threads);
-
-        const std::size_t xStride = sizeof(float) * image.channels();
-        const std::size_t yStride = xStride * static_cast<std::size_t>(image.width());
-        Imf::FrameBuffer frameBuffer;
-        for (int c = 0; c < image.channels(); ++c) {
-            frameBuffer.insert(names[c],
-                               Imf::Slice::Make(Imf::FLOAT, image.data() + c, Imath::V2i(0, 0),
-                                                image.width(), image.height(), xStride, yStride));
-        }
-        file.setFrameBuffer(frameBuffer);
-        file.writePixels(image.height());
+        Imf::OutputFile file(stream, header, openExrThreads());
+        const std::size_t xStride = sizeof(float) * image.channels;
+        const std::size_t yStride = xStride * static_cast<std::size_t>(image.width);
+        // An image is read in place in one call; rows made on demand go strip by strip, each a
+        // frame buffer of its own (OpenEXR takes a new one between writePixels calls).
+        const int stripRows = image.image != nullptr ? image.height : detail::exrStripRows();
+        forEachStrip(image, stripRows, [&](int y0, int y1, const float* strip) {
+            Imf::FrameBuffer frameBuffer;
+            for (int c = 0; c < image.channels; ++c) {
+                // Slice::Make places the strip's first row at row y0 without overflow.
+                frameBuffer.insert(names[c],
+                                   Imf::Slice::Make(Imf::FLOAT, strip + c, Imath::V2i(0, y0),
+                                                    image.width, y1 - y0, xStride, yStride));
+            }
+            file.setFrameBuffer(frameBuffer);
+            file.writePixels(y1 - y0);
+        });
     }
     if (stream.error() != 0) return out.failure(std::generic_category().message(stream.error()));
     return Ok{};
@@ -272,8 +282,12 @@ Result<Image> decodeExr(std::span<const std::uint8_t> bytes, const std::string& 
 
 namespace detail {
 
-Status writeExrInto(AtomicFile& file, const Image& image, const ImageMetadata& metadata) {
-    if (image.empty() || image.channels() < 1 || image.channels() > 4) {
+int exrStripRows() {
+    return 2 * 16 * std::max(1, openExrThreads());
+}
+
+Status writeExrInto(AtomicFile& file, const ImageRows& image, const ImageMetadata& metadata) {
+    if (image.empty() || image.channels < 1 || image.channels > 4) {
         return file.failure("the image is empty");
     }
     if (Status s = checkMetadata(metadata); !s) return file.failure(s.error().message());
@@ -294,7 +308,7 @@ Status writeExr(const std::string& path, const Image& image, const ImageMetadata
     }
     Result<AtomicFile> file = AtomicFile::create(path, "EXR");
     if (!file) return file.error();
-    if (Status s = detail::writeExrInto(*file, image, metadata); !s) return s;
+    if (Status s = detail::writeExrInto(*file, rowsOf(image), metadata); !s) return s;
     return file->commit();
 }
 

@@ -142,15 +142,26 @@ bool readPngEnd(png_structp png, png_infop info) {
     return true;
 }
 
-bool writePngRows(png_structp png, png_infop info, const PngHeader* header, int colorType,
-                  bool srgb, const png_text* text, int textCount, png_bytepp rows) {
+bool writePngHead(png_structp png, png_infop info, const PngHeader* header, int colorType,
+                  bool srgb, const png_text* text, int textCount) {
     if (setjmp(png_jmpbuf(png))) return false;
     png_set_IHDR(png, info, header->width, header->height, 8, colorType, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     if (srgb) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     if (textCount > 0) png_set_text(png, info, text, textCount);
     png_write_info(png, info);
-    png_write_image(png, rows);
+    return true;
+}
+
+// Rows go in one call per strip; libpng writes them one by one, as png_write_image would.
+bool writePngStrip(png_structp png, png_bytepp rows, png_uint_32 count) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_write_rows(png, rows, count);
+    return true;
+}
+
+bool writePngEnd(png_structp png) {
+    if (setjmp(png_jmpbuf(png))) return false;
     png_write_end(png, nullptr);
     return true;
 }
@@ -300,34 +311,25 @@ Result<Image> readPngImpl(const FilePtr& file, std::uint64_t streamBytes, const 
     return image;
 }
 
-Status writePngImpl(AtomicFile& file, const Image& image, PngEncoding encoding,
+Status writePngImpl(AtomicFile& file, const ImageRows& image, PngEncoding encoding,
                     const ImageMetadata& metadata) {
     if (image.empty()) return file.failure("the image is empty");
     if (Status s = checkMetadata(metadata); !s) return file.failure(s.error().message());
     const std::vector<png_text> text = detail::pngTextChunks(metadata);
-    const int width = image.width();
-    const int height = image.height();
-    const int channels = image.channels();
+    const int channels = image.channels;
     const int alpha = alphaChannel(channels);
     const bool srgb = encoding == PngEncoding::Srgb;
-
-    std::vector<png_byte> bytes(image.size());
-    const float* in = image.data();
-    for (std::size_t i = 0; i < bytes.size(); ++i) {
-        const float v = in[i];
-        const bool colour = srgb && static_cast<int>(i % channels) != alpha;
-        // linearToSrgb clamps to [0, 1] and maps NaN to 0; the plain path does the same here.
-        const float encoded = colour ? linearToSrgb(v) : (v > 0.0f ? std::min(v, 1.0f) : 0.0f);
-        bytes[i] = static_cast<png_byte>(encoded * 255.0f + 0.5f);
-    }
-    const std::size_t rowBytes = static_cast<std::size_t>(width) * channels;
-    std::vector<png_bytep> rows(height);
-    for (int y = 0; y < height; ++y) rows[y] = bytes.data() + y * rowBytes;
+    const std::size_t rowBytes = image.rowFloats();
 
     int colorType = PNG_COLOR_TYPE_GRAY;
     if (channels == 2) colorType = PNG_COLOR_TYPE_GRAY_ALPHA;
     if (channels == 3) colorType = PNG_COLOR_TYPE_RGB;
     if (channels == 4) colorType = PNG_COLOR_TYPE_RGB_ALPHA;
+
+    // One strip of encoded rows at a time: no 8-bit copy of the whole image.
+    std::vector<png_byte> bytes(rowBytes * std::min(kImageStripRows, image.height));
+    std::vector<png_bytep> rows(static_cast<std::size_t>(std::min(kImageStripRows, image.height)));
+    for (std::size_t y = 0; y < rows.size(); ++y) rows[y] = bytes.data() + y * rowBytes;
 
     PngContext context;
     context.file = file.file();
@@ -342,10 +344,26 @@ Status writePngImpl(AtomicFile& file, const Image& image, PngEncoding encoding,
         } else {
             png_set_write_fn(structs.png, &context, writeToFile, flushFile);
             PngHeader header;
-            header.width = static_cast<png_uint_32>(width);
-            header.height = static_cast<png_uint_32>(height);
-            written = writePngRows(structs.png, structs.info, &header, colorType, srgb, text.data(),
-                                   static_cast<int>(text.size()), rows.data());
+            header.width = static_cast<png_uint_32>(image.width);
+            header.height = static_cast<png_uint_32>(image.height);
+            written = writePngHead(structs.png, structs.info, &header, colorType, srgb, text.data(),
+                                   static_cast<int>(text.size()));
+            forEachStrip(image, kImageStripRows, [&](int y0, int y1, const float* in) {
+                if (!written) return;
+                const std::size_t count = static_cast<std::size_t>(y1 - y0) * rowBytes;
+                for (std::size_t i = 0; i < count; ++i) {
+                    const float v = in[i];
+                    const bool colour = srgb && static_cast<int>(i % channels) != alpha;
+                    // linearToSrgb clamps to [0, 1] and maps NaN to 0; the plain path does the
+                    // same here.
+                    const float encoded =
+                        colour ? linearToSrgb(v) : (v > 0.0f ? std::min(v, 1.0f) : 0.0f);
+                    bytes[i] = static_cast<png_byte>(encoded * 255.0f + 0.5f);
+                }
+                written =
+                    writePngStrip(structs.png, rows.data(), static_cast<png_uint_32>(y1 - y0));
+            });
+            written = written && writePngEnd(structs.png);
         }
     }
     // The temporary is removed by AtomicFile unless the caller publishes it.
@@ -390,7 +408,7 @@ Result<Image> decodePng(std::span<const std::uint8_t> bytes, const std::string& 
 
 namespace detail {
 
-Status writePngInto(AtomicFile& file, const Image& image, PngEncoding encoding,
+Status writePngInto(AtomicFile& file, const ImageRows& image, PngEncoding encoding,
                     const ImageMetadata& metadata) {
     try {
         return writePngImpl(file, image, encoding, metadata);
@@ -408,7 +426,7 @@ Status writePng(const std::string& path, const Image& image, PngEncoding encodin
     try {
         Result<AtomicFile> file = AtomicFile::create(path, "PNG");
         if (!file) return file.error();
-        if (Status s = detail::writePngInto(*file, image, encoding, metadata); !s) return s;
+        if (Status s = detail::writePngInto(*file, rowsOf(image), encoding, metadata); !s) return s;
         return file->commit();
     } catch (const std::exception& e) {
         return writeError(path, e.what());

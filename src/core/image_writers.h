@@ -7,8 +7,12 @@
 
 namespace luxel::detail {
 
-Status writePngInto(AtomicFile& file, const Image& image, PngEncoding encoding,
+Status writePngInto(AtomicFile& file, const ImageRows& image, PngEncoding encoding,
                     const ImageMetadata& metadata);
-Status writeExrInto(AtomicFile& file, const Image& image, const ImageMetadata& metadata);
+Status writeExrInto(AtomicFile& file, const ImageRows& image, const ImageMetadata& metadata);
+
+// Rows an EXR strip holds when its rows are made on demand: line blocks of 16 rows, two per
+// OpenEXR thread, so the threads still compress side by side.
+int exrStripRows();
 
 }  // namespace luxel::detail

@@ -57,32 +57,41 @@ const char* toneCurveName(ToneCurve curve) {
 Image toneMap(const Image& hdr, const ToneMapSettings& settings) {
     if (hdr.empty()) return Image();
     Image out = hdr;
-    const float scale = std::exp2(settings.exposureStops);
-    const int channels = hdr.channels();
-    // 2 channels are grey + alpha (as readPng returns them), so only the first is colour.
-    const int colourChannels = channels == 2 ? 1 : std::min(channels, 3);
-    float* p = out.data();
-    const std::size_t pixels = out.pixelCount();
-    for (std::size_t i = 0; i < pixels; ++i, p += channels) {
-        for (int c = 0; c < colourChannels; ++c) p[c] = applyCurve(p[c], scale, settings.curve);
-    }
+    toneMapPixels(out.data(), out.pixelCount(), out.channels(), settings);
     return out;
 }
 
+void toneMapPixels(float* data, std::size_t pixels, int channels, const ToneMapSettings& settings) {
+    const float scale = std::exp2(settings.exposureStops);
+    // 2 channels are grey + alpha (as readPng returns them), so only the first is colour.
+    const int colourChannels = channels == 2 ? 1 : std::min(channels, 3);
+    float* p = data;
+    for (std::size_t i = 0; i < pixels; ++i, p += channels) {
+        for (int c = 0; c < colourChannels; ++c) p[c] = applyCurve(p[c], scale, settings.curve);
+    }
+}
+
 float autoExposureStops(const Image& hdr, ToneCurve curve) {
+    return autoExposureStops(rowsOf(hdr), curve);
+}
+
+float autoExposureStops(const ImageRows& hdr, ToneCurve curve) {
     if (hdr.empty()) return 0.0f;
-    const int channels = hdr.channels();
+    const int channels = hdr.channels;
     const int colourChannels = channels == 2 ? 1 : std::min(channels, 3);
     std::vector<float> brightest;
-    brightest.reserve(hdr.pixelCount());
-    const float* p = hdr.data();
-    for (std::size_t i = 0; i < hdr.pixelCount(); ++i, p += channels) {
-        float v = 0.0f;
-        for (int c = 0; c < colourChannels; ++c) {
-            if (std::isfinite(p[c])) v = std::max(v, p[c]);
+    // Pages of the reserve that no lit pixel reaches are never touched.
+    brightest.reserve(static_cast<std::size_t>(hdr.width) * hdr.height);
+    forEachStrip(hdr, kImageStripRows, [&](int y0, int y1, const float* p) {
+        const std::size_t pixels = static_cast<std::size_t>(y1 - y0) * hdr.width;
+        for (std::size_t i = 0; i < pixels; ++i, p += channels) {
+            float v = 0.0f;
+            for (int c = 0; c < colourChannels; ++c) {
+                if (std::isfinite(p[c])) v = std::max(v, p[c]);
+            }
+            if (v > 0.0f) brightest.push_back(v);
         }
-        if (v > 0.0f) brightest.push_back(v);
-    }
+    });
     if (brightest.empty()) return 0.0f;
     const auto at = brightest.begin() +
                     static_cast<std::ptrdiff_t>(kAutoExposurePercentile * (brightest.size() - 1));
@@ -102,25 +111,37 @@ double clippedFraction(const Image& display, const Image* ignore) {
     if (display.empty()) return 0.0;
     LUXEL_CHECK(ignore == nullptr ||
                 (ignore->width() == display.width() && ignore->height() == display.height()));
+    ClippedPixels count;
+    count.add(display.data(), display.channels(), ignore != nullptr ? ignore->data() : nullptr,
+              ignore != nullptr ? ignore->channels() : 0, display.pixelCount());
+    return count.fraction();
+}
+
+void ClippedPixels::add(const float* display, int channels, const float* ignore, int ignoreChannels,
+                        std::size_t pixels) {
     const float white = displayWhiteLevel();
-    const int channels = display.channels();
     const int colourChannels = channels == 2 ? 1 : std::min(channels, 3);
-    std::size_t clipped = 0, counted = 0;
-    for (int y = 0; y < display.height(); ++y) {
-        for (int x = 0; x < display.width(); ++x) {
-            if (ignore != nullptr) {
-                const Rgb v = ignore->rgb(x, y);
-                if (v.r > 0.0f || v.g > 0.0f || v.b > 0.0f) continue;
-            }
-            ++counted;
-            for (int c = 0; c < colourChannels; ++c) {
-                if (display.at(x, y, c) >= white) {
-                    ++clipped;
-                    break;
-                }
+    // An ignore image of fewer than 3 channels reads as grey (Image::rgb).
+    const int ignoreColours = ignoreChannels < 3 ? 1 : 3;
+    for (std::size_t i = 0; i < pixels; ++i) {
+        if (ignore != nullptr) {
+            const float* v = ignore + i * static_cast<std::size_t>(ignoreChannels);
+            bool lit = false;
+            for (int c = 0; c < ignoreColours; ++c) lit = lit || v[c] > 0.0f;
+            if (lit) continue;
+        }
+        ++counted;
+        const float* p = display + i * static_cast<std::size_t>(channels);
+        for (int c = 0; c < colourChannels; ++c) {
+            if (p[c] >= white) {
+                ++clipped;
+                break;
             }
         }
     }
+}
+
+double ClippedPixels::fraction() const {
     return counted > 0 ? static_cast<double>(clipped) / static_cast<double>(counted) : 0.0;
 }
 

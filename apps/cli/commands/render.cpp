@@ -217,16 +217,20 @@ Result<Image> solveBouncing(const RenderArgs& args, const SizedScene& sized,
     return std::move(result->fluence);
 }
 
-// Marks the probe centres of cascade --cascade (RC layout) on the display image.
-void drawProbes(const RenderArgs& args, Image& display) {
-    const auto cascades = gi2d::rcCascades(display.width(), display.height(), rcOptions(args));
+// Marks the probe centres of cascade --cascade (RC layout) on canvas rows [y0, y1) of the display
+// image (RGB floats, `width` pixels a row).
+void drawProbes(const RenderArgs& args, int width, int height, float* rows, int y0, int y1) {
+    const auto cascades = gi2d::rcCascades(width, height, rcOptions(args));
     const int c = std::clamp(args.cascade, 0, static_cast<int>(cascades.size()) - 1);
     const gi2d::RcCascade& cascade = cascades[c];
     for (int py = 0; py < cascade.probesY; ++py) {
+        const int y = static_cast<int>((py + 0.5) * cascade.spacing);
+        if (y < y0 || y >= y1) continue;
         for (int px = 0; px < cascade.probesX; ++px) {
             const int x = static_cast<int>((px + 0.5) * cascade.spacing);
-            const int y = static_cast<int>((py + 0.5) * cascade.spacing);
-            if (display.inside(x, y)) display.setRgb(x, y, Rgb(1.0f, 0.2f, 0.1f));
+            if (x < 0 || x >= width) continue;
+            float* pixel = rows + (static_cast<std::size_t>(y - y0) * width + x) * 3;
+            pixel[0] = 1.0f, pixel[1] = 0.2f, pixel[2] = 0.1f;
         }
     }
 }
@@ -400,25 +404,29 @@ int runRender(const RenderArgs& args) {
     if (!fluence) return reportError(fluence.error());
     const double solveSeconds = solveTime.seconds();
 
-    // What the display image shows before tone mapping: the light sources and the light.
-    Image hdr(w, h, 3);
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x)
-            hdr.setRgb(x, y, medium->emission.rgb(x, y) + fluence->rgb(x, y));
-    }
+    // Only the light sources are read from here on (the display shows them with the light): the
+    // rest of the medium goes before the images are written.
+    medium->absorption = Image();
+    medium->scattering = Image();
+    medium->reflectance = Image();
     RenderImages images;
     images.out = args.out;
     images.png = args.png;
     images.linear = &*fluence;
     images.linearName = "fluence";
-    images.displayHdr = &hdr;
+    // What the display image shows before tone mapping: the light sources and the light.
+    images.displayHdr = &*fluence;
+    images.displayAdd = &medium->emission;
     images.tone = tone;
     images.autoExposure = args.exposure.automatic;
     images.quiet = args.quiet;
     images.lightSources = &medium->emission;
     images.metadata = metadata2D(args, w, h, detail, bounceNote, rasterSeconds, solveSeconds);
-    if (args.view == "probes")
-        images.drawOnDisplay = [&](Image& display) { drawProbes(args, display); };
+    if (args.view == "probes") {
+        images.drawOnDisplay = [&](float* rows, int, int y0, int y1) {
+            drawProbes(args, w, h, rows, y0, y1);
+        };
+    }
     // --out and --png change together or not at all.
     if (Status s = writeRenderImages(std::move(images)); !s) return reportError(s.error());
     if (args.stats) std::printf("stats solve_seconds=%.6f\n", solveSeconds);

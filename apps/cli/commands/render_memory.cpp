@@ -4,6 +4,7 @@
 #include <string>
 
 #include "luxel/core/image.h"
+#include "luxel/core/image_rows.h"
 #include "luxel/core/memory.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/medium2d.h"
@@ -28,8 +29,11 @@ Memory2D estimate2D(int width, int height, gi2d::Solver2D solver, const gi2d::Rc
             m.solver = gi2d::estimateRcMemory(width, height, rc);
             break;
     }
-    // The fluence (or its tone-mapped copy) and the display image, and a PNG encoder's rows.
-    m.outputs = imageBytes(width, height, 3) * 2 + imageBytes(width, height, 3) / sizeof(float);
+    // The fluence; the brightest channel of each pixel for --exposure auto; the writers' strips
+    // (two files of a strip of floats and of 8-bit rows, the light sources' strip for the
+    // clipping count), counted as 4 strips of 4-channel floats.
+    m.outputs = imageBytes(width, height, 3) + imageBytes(width, height, 1) +
+                4 * imageBytes(width, kImageStripRows, 4);
     // solveWithBounces: scattering + reflectance, the re-lit medium copy, the next source and the
     // previous fluence while the next one is solved.
     if (bounces) m.bounce = 4 * imageBytes(width, height, 3) + gi2d::mediumBytes(width, height);

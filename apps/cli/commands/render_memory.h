@@ -2,6 +2,7 @@
 // and `luxel info` (which reports the same refusal), so both say the same thing.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -12,11 +13,13 @@
 
 namespace luxel::cli {
 
-// A 2D render at width x height: the medium, the solver's buffers, the images written, and with
-// bounce light the albedo images, the medium re-lit by the bounced source and the source images.
+// A 2D render at width x height: the medium, the solver's buffers (its fluence included), what
+// writing the images needs once the solver's buffers are gone (the fluence, auto exposure's list,
+// the writers' strips: render_outputs.h), and with bounce light the albedo images, the medium
+// re-lit by the bounced source and the source images. The solve and the writing do not overlap.
 struct Memory2D {
     std::uint64_t medium = 0, solver = 0, outputs = 0, bounce = 0;
-    std::uint64_t total() const { return medium + solver + outputs + bounce; }
+    std::uint64_t total() const { return medium + bounce + std::max(solver, outputs); }
 };
 Memory2D estimate2D(int width, int height, gi2d::Solver2D solver, const gi2d::RcOptions& rc,
                     bool bounces = false);

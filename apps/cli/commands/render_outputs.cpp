@@ -5,12 +5,14 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 #include "commands/command.h"
 #include "commands/scene_warnings.h"
 #include "luxel/core/file_io.h"
 #include "luxel/core/image_io.h"
+#include "luxel/core/image_rows.h"
 
 namespace luxel::cli {
 
@@ -63,37 +65,71 @@ void setNumber(ImageMetadata& metadata, const std::string& key, double value) {
 
 namespace {
 
-// A blown-out picture: more than kClippedWarningFraction of its pixels at white.
-void warnIfClipped(const Image& display, const Image& hdr, const ToneMapSettings& tone,
-                   const Image* lightSources) {
-    // A light at white is not a blown-out picture; only what it lights counts.
-    Image whiteLights;
-    if (lightSources != nullptr) {
-        whiteLights = toneMap(*lightSources, tone);
-        const float white = displayWhiteLevel();
-        for (int y = 0; y < whiteLights.height(); ++y) {
-            for (int x = 0; x < whiteLights.width(); ++x) {
-                const Rgb v = whiteLights.rgb(x, y);
-                const bool lightAtWhite = v.r >= white || v.g >= white || v.b >= white;
-                whiteLights.setRgb(x, y, Rgb(lightAtWhite ? 1.0f : 0.0f));
+// The rows of `base`, plus `add` pixel by pixel when it is given.
+ImageRows hdrRows(const Image& base, const Image* add) {
+    if (add == nullptr) return rowsOf(base);
+    LUXEL_CHECK(add->width() == base.width() && add->height() == base.height() &&
+                add->channels() == base.channels());
+    ImageRows rows = rowsOf(base);
+    rows.image = nullptr;
+    rows.read = [&base, add, rowFloats = rows.rowFloats()](int y0, int y1, float* out) {
+        const std::size_t first = static_cast<std::size_t>(y0) * rowFloats;
+        const std::size_t count = static_cast<std::size_t>(y1 - y0) * rowFloats;
+        const float* a = add->data() + first;
+        const float* b = base.data() + first;
+        for (std::size_t i = 0; i < count; ++i) out[i] = a[i] + b[i];
+    };
+    return rows;
+}
+
+// `hdr` tonemapped strip by strip, then `draw` on each strip (when set).
+ImageRows toneMappedRows(const ImageRows& hdr, const ToneMapSettings& tone,
+                         const std::function<void(float*, int, int, int)>& draw) {
+    ImageRows rows = hdr;
+    rows.image = nullptr;
+    rows.read = [hdr, tone, draw](int y0, int y1, float* out) {
+        hdr.read(y0, y1, out);
+        toneMapPixels(out, static_cast<std::size_t>(y1 - y0) * hdr.width, hdr.channels, tone);
+        if (draw) draw(out, hdr.width, y0, y1);
+    };
+    return rows;
+}
+
+// Counts the clipped pixels of the rows people look at as they are read for writing: pixels where
+// a light source alone shows at white are lights seen directly, not a blown-out picture.
+ImageRows countingClipped(const ImageRows& display, const Image* lightSources,
+                          const ToneMapSettings& tone, ClippedPixels& count) {
+    ImageRows rows = display;
+    rows.image = nullptr;  // every strip goes through the count
+    rows.read = [display, lightSources, tone, &count](int y0, int y1, float* out) {
+        display.read(y0, y1, out);
+        const std::size_t pixels = static_cast<std::size_t>(y1 - y0) * display.width;
+        std::vector<float> ignore;
+        if (lightSources != nullptr) {
+            const ImageRows lights = rowsOf(*lightSources);
+            std::vector<float> toned(pixels * lights.channels);
+            lights.read(y0, y1, toned.data());
+            toneMapPixels(toned.data(), pixels, lights.channels, tone);
+            const float white = displayWhiteLevel();
+            const int colours = lights.channels < 3 ? 1 : 3;  // as Image::rgb reads them
+            ignore.resize(pixels);
+            for (std::size_t i = 0; i < pixels; ++i) {
+                const float* v = &toned[i * lights.channels];
+                bool atWhite = false;
+                for (int c = 0; c < colours; ++c) atWhite = atWhite || v[c] >= white;
+                ignore[i] = atWhite ? 1.0f : 0.0f;
             }
         }
-    }
-    const double clipped =
-        clippedFraction(display, lightSources != nullptr ? &whiteLights : nullptr);
-    if (clipped <= kClippedWarningFraction) return;
-    char text[256];
-    std::snprintf(text, sizeof text,
-                  "%.1f%% of the lit display pixels are clipped to white at exposure %.2f; try "
-                  "--exposure %.2f (or --exposure auto)",
-                  100.0 * clipped, tone.exposureStops, autoExposureStops(hdr, tone.curve));
-    printWarning(text);
+        count.add(out, display.channels, ignore.empty() ? nullptr : ignore.data(), 1, pixels);
+    };
+    return rows;
 }
 
 }  // namespace
 
 Status writeRenderImages(RenderImages images) {
-    const Image& hdr = images.displayHdr != nullptr ? *images.displayHdr : *images.linear;
+    const ImageRows hdr = hdrRows(
+        images.displayHdr != nullptr ? *images.displayHdr : *images.linear, images.displayAdd);
     if (images.autoExposure) {
         images.tone.exposureStops = autoExposureStops(hdr, images.tone.curve);
         if (!images.quiet) {
@@ -105,17 +141,17 @@ Status writeRenderImages(RenderImages images) {
     setMetadata(images.metadata, "luxel.tonemap", toneCurveName(images.tone.curve));
 
     const bool outIsPng = hasExtension(images.out, ".png");
-    Image outImage;
-    if (outIsPng) outImage = toneMap(*images.linear, images.tone);
-    Image display;
-    if (!images.png.empty()) {
-        display = toneMap(hdr, images.tone);
-        if (images.drawOnDisplay) images.drawOnDisplay(display);
-    }
+    const bool hasDisplay = !images.png.empty();
+    ImageRows outRows = outIsPng ? toneMappedRows(rowsOf(*images.linear), images.tone, nullptr)
+                                 : rowsOf(*images.linear);
+    ImageRows displayRows;
+    if (hasDisplay) displayRows = toneMappedRows(hdr, images.tone, images.drawOnDisplay);
     // The picture people look at: --png, else a PNG --out.
-    if (!images.quiet && (!display.empty() || outIsPng)) {
-        warnIfClipped(display.empty() ? outImage : display, display.empty() ? *images.linear : hdr,
-                      images.tone, images.lightSources);
+    const bool warn = !images.quiet && (hasDisplay || outIsPng);
+    ClippedPixels clipped;
+    if (warn) {
+        ImageRows& looked = hasDisplay ? displayRows : outRows;
+        looked = countingClipped(looked, images.lightSources, images.tone, clipped);
     }
     ImageMetadata outMetadata = images.metadata;
     setMetadata(outMetadata, "luxel.content",
@@ -123,11 +159,20 @@ Status writeRenderImages(RenderImages images) {
     ImageMetadata displayMetadata = images.metadata;
     setMetadata(displayMetadata, "luxel.content", "display, tonemapped");
     std::vector<ImageFile> files;
-    if (!images.out.empty()) {
-        files.push_back({images.out, outIsPng ? &outImage : images.linear, &outMetadata});
+    if (!images.out.empty()) files.push_back({images.out, nullptr, &outMetadata, &outRows});
+    if (hasDisplay) files.push_back({images.png, nullptr, &displayMetadata, &displayRows});
+    if (Status s = writeImages(files); !s) return s;
+    if (warn && clipped.fraction() > kClippedWarningFraction) {
+        char text[256];
+        std::snprintf(
+            text, sizeof text,
+            "%.1f%% of the lit display pixels are clipped to white at exposure %.2f; "
+            "try --exposure %.2f (or --exposure auto)",
+            100.0 * clipped.fraction(), images.tone.exposureStops,
+            autoExposureStops(hasDisplay ? hdr : rowsOf(*images.linear), images.tone.curve));
+        printWarning(text);
     }
-    if (!images.png.empty()) files.push_back({images.png, &display, &displayMetadata});
-    return writeImages(files);
+    return Ok{};
 }
 
 }  // namespace luxel::cli

@@ -56,19 +56,26 @@ struct RenderImages {
     const Image* linear = nullptr;      // fluence or radiance: --out
     const char* linearName = "";        // "fluence" or "radiance", for luxel.content
     const Image* displayHdr = nullptr;  // what --png shows, before tone mapping
-    ToneMapSettings tone;               // exposure and curve (the exposure settled below)
+    // Added to displayHdr pixel by pixel when set (the 2D render's light sources): the sum is made
+    // strip by strip, never as a whole image.
+    const Image* displayAdd = nullptr;
+    ToneMapSettings tone;  // exposure and curve (the exposure settled below)
     bool autoExposure = false;
     bool quiet = false;
-    ImageMetadata metadata;                     // renderMetadata and the solver's settings
-    std::function<void(Image&)> drawOnDisplay;  // marks drawn on the tonemapped --png (optional)
+    ImageMetadata metadata;  // renderMetadata and the solver's settings
+    // Marks drawn on the tonemapped --png (optional), strip by strip: canvas rows [y0, y1) as RGB
+    // floats, `width` pixels a row.
+    std::function<void(float* rows, int width, int y0, int y1)> drawOnDisplay;
     // The light sources' own radiance (optional): pixels where it alone shows white are lights
     // seen directly, which the clipping warning does not count.
     const Image* lightSources = nullptr;
 };
 
 // Settles --exposure auto from images.displayHdr (prints the stops chosen unless quiet), adds the
-// tone settings to the metadata, tonemaps, warns about a blown-out picture and writes --out and
-// --png together (luxel/core/image_io.h: writeImages), each with the metadata and luxel.content.
+// tone settings to the metadata, tonemaps, writes --out and --png together (luxel/core/image_io.h:
+// writeImages), each with the metadata and luxel.content, and warns about a blown-out picture.
+// Tone mapping, the display sum and the warning's count run strip by strip as the files are
+// written: nothing the size of the image is allocated here.
 Status writeRenderImages(RenderImages images);
 
 // The fraction of display pixels at white (light sources not counted) above which `luxel render`

@@ -11,6 +11,7 @@
 #include "luxel/core/error.h"
 #include "luxel/core/image.h"
 #include "luxel/core/image_metadata.h"
+#include "luxel/core/image_rows.h"
 #include "luxel/core/image_size.h"
 
 namespace luxel {
@@ -57,11 +58,14 @@ Status writeImage(const std::string& path, const Image& image, const ImageMetada
 
 // Writes several images (each by its extension) that belong together, such as a render and its
 // preview: every one goes to a temporary file first, and the targets are renamed only once all
-// are complete, so a failure leaves every target as it was.
+// are complete, so a failure leaves every target as it was. Every writer converts and encodes
+// strip by strip (kImageStripRows rows; an EXR several line blocks at a time), so an image given
+// as `rows` is never held whole: the file is byte for byte the one its image would give.
 struct ImageFile {
     std::string path;
     const Image* image = nullptr;
     const ImageMetadata* metadata = nullptr;  // none when null
+    const ImageRows* rows = nullptr;          // instead of `image`: rows made on demand
 };
 Status writeImages(const std::vector<ImageFile>& files);
 

@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "luxel/core/image.h"
+#include "luxel/core/image_rows.h"
 
 namespace luxel {
 
@@ -24,6 +25,9 @@ struct ToneMapSettings {
 
 // Applies exposure and the curve to the first three channels; alpha (4th) is copied. NaN -> 0.
 Image toneMap(const Image& hdr, const ToneMapSettings& settings);
+// The same in place on `pixels` pixels of `channels` channels (a strip of rows): toneMap without
+// the copy.
+void toneMapPixels(float* data, std::size_t pixels, int channels, const ToneMapSettings& settings);
 
 // Auto exposure (`--exposure auto`): the stops that map the 99th percentile of the brightest
 // channel, over the pixels with any light (max channel > 0; NaN and infinity are skipped), to 90%
@@ -32,12 +36,22 @@ Image toneMap(const Image& hdr, const ToneMapSettings& settings);
 inline constexpr double kAutoExposurePercentile = 0.99;
 inline constexpr float kAutoExposureWhite = 0.9f;
 float autoExposureStops(const Image& hdr, ToneCurve curve);
+// The same read strip by strip (the brightest channel of each lit pixel is kept, 4 bytes a pixel).
+float autoExposureStops(const ImageRows& hdr, ToneCurve curve);
 
 // The fraction of pixels of a tonemapped image (display-referred linear, as toneMap returns)
 // with a colour channel at display white: 255 once encoded as 8-bit sRGB. Pixels where `ignore`
 // (same size, or null) has a channel above 0, such as the light sources themselves, count
 // neither way.
 double clippedFraction(const Image& display, const Image* ignore = nullptr);
+// The same counted strip by strip: add() each strip of the tonemapped image (and of `ignore`, or
+// null), then fraction().
+struct ClippedPixels {
+    std::size_t clipped = 0, counted = 0;
+    void add(const float* display, int channels, const float* ignore, int ignoreChannels,
+             std::size_t pixels);
+    double fraction() const;
+};
 // The smallest display-referred linear value that 8-bit sRGB encodes as 255.
 float displayWhiteLevel();
 

@@ -12,7 +12,6 @@ void ColumnWindow::reshape(int span, std::vector<float> lengths, int rows) {
     pad_ = span + 1;
     stride_ = rows + 2 * (span + 1) + kSweepRowPad;
     data_.resize(static_cast<std::size_t>(span) * lengths_.size() * 6 * stride_);
-    block_.resize(static_cast<std::size_t>(kColumnBlock) * 6 * (rows + kSweepRowPad));
     // Vacuum everywhere: t = 1, L = 0.
     for (std::size_t p = 0; p < data_.size() / stride_; ++p) {
         std::fill_n(data_.begin() + static_cast<std::ptrdiff_t>(p * stride_), stride_,
@@ -20,16 +19,18 @@ void ColumnWindow::reshape(int span, std::vector<float> lengths, int rows) {
     }
 }
 
-std::uint64_t ColumnWindow::bytesFor(int span, int lengths, int rows) {
+std::uint64_t ColumnWindow::bytesFor(int span, int lengths, int rows, int bandRows) {
     return (static_cast<std::uint64_t>(span) * lengths * 6 *
                 (rows + 2 * (span + 1) + kSweepRowPad) +
-            static_cast<std::uint64_t>(kColumnBlock) * 6 * (rows + kSweepRowPad)) *
+            static_cast<std::uint64_t>(kColumnBlock) * 6 * (bandRows + kSweepRowPad)) *
            sizeof(float);
 }
 
 void ColumnWindow::load(const Medium2D& medium, const FrustumFrame& frame, int x, int v0, int v1) {
     if (v1 <= v0) return;
-    const std::size_t rowStride = static_cast<std::size_t>(rows_) + kSweepRowPad;
+    // The block holds the member's rows only: row v at v - v0.
+    const std::size_t rowStride = static_cast<std::size_t>(v1 - v0) + kSweepRowPad;
+    if (block_.size() < kColumnBlock * 6 * rowStride) block_.resize(kColumnBlock * 6 * rowStride);
     auto raw = [&](int column, int c) {
         return block_.data() + (static_cast<std::size_t>(column) * 6 + c) * rowStride;
     };
@@ -44,8 +45,8 @@ void ColumnWindow::load(const Medium2D& medium, const FrustumFrame& frame, int x
             frame.toCanvas(u, v, cx, cy);
             const std::size_t i = (static_cast<std::size_t>(cy) * width + cx) * 3;
             for (int c = 0; c < 3; ++c) {
-                raw(u - first, c)[v] = sigma[i + c];
-                raw(u - first, 3 + c)[v] = emission[i + c];
+                raw(u - first, c)[v - v0] = sigma[i + c];
+                raw(u - first, 3 + c)[v - v0] = emission[i + c];
             }
         };
         // Canvas rows are contiguous: along them for the ±x frames, down the frame column else.
@@ -61,8 +62,8 @@ void ColumnWindow::load(const Medium2D& medium, const FrustumFrame& frame, int x
         }
     }
     const int column = x % kColumnBlock;
-    const float* const s[3] = {raw(column, 0) + v0, raw(column, 1) + v0, raw(column, 2) + v0};
-    const float* const e[3] = {raw(column, 3) + v0, raw(column, 4) + v0, raw(column, 5) + v0};
+    const float* const s[3] = {raw(column, 0), raw(column, 1), raw(column, 2)};
+    const float* const e[3] = {raw(column, 3), raw(column, 4), raw(column, 5)};
     const int slot = x & (span_ - 1);
     for (int d = 0; d < lengths(); ++d) {
         float* base = data_.data() + v0;
@@ -85,10 +86,7 @@ void ColumnWindow::at(int x, CellTransfer* out) const {
 }
 
 int ringSlots(int n, int chunk) {
-    const int needed = std::max(2, (chunk >> n) + 1);
-    int slots = 1;
-    while (slots < needed) slots *= 2;
-    return slots;
+    return std::max(2, (chunk >> n) + 1);
 }
 
 namespace {

@@ -34,7 +34,8 @@ class ColumnWindow {
     int span() const { return span_; }
     int lengths() const { return static_cast<int>(lengths_.size()); }
 
-    static std::uint64_t bytesFor(int span, int lengths, int rows);
+    // `bandRows`: the most rows one member loads (its band and the rows its stencils reach).
+    static std::uint64_t bytesFor(int span, int lengths, int rows, int bandRows);
 
   private:
     std::size_t offset(int slot, int length, int c) const {
@@ -44,13 +45,14 @@ class ColumnWindow {
     int span_ = 1, rows_ = 0, pad_ = 0, stride_ = 0;
     std::vector<float> lengths_;
     std::vector<float> data_;
-    // The raw sigma and E of the current block of columns: [column][6][row].
+    // The raw sigma and E of the current block of columns for the rows this member loads:
+    // [column][6][row - v0].
     std::vector<float> block_;
 };
 
 // Planes of cascade n the sweep keeps when it handles `chunk` pixel columns per step: one more
-// than the chunk holds (the plane ahead of it), at least 2, rounded up to a power of two
-// (docs/algorithms/holographic-radiance-cascades.md §7.1).
+// than the chunk holds (the plane ahead of it), at least 2
+// (docs/algorithms/holographic-radiance-cascades.md §7.1, §8.1).
 int ringSlots(int n, int chunk);
 
 // The latest planes of intervals per cascade: plane p of cascade n lives in slot p mod slots(n).
@@ -67,7 +69,9 @@ class IntervalRing {
 
   private:
     std::size_t index(int n, int p, int k) const {
-        const auto slot = static_cast<std::size_t>(p & (slots_[n] - 1));
+        // Not a power of two in the lowest cascades (17 planes of cascade 0): a remainder, once
+        // per row set, costs nothing next to the rows.
+        const auto slot = static_cast<std::size_t>(p % slots_[n]);
         return levelStart_[n] + (slot * rays(n) + k) * 6 * rows_;
     }
     int rows_ = 0;
@@ -90,7 +94,7 @@ class ConeRing {
 
   private:
     std::size_t index(int n, int p, int i) const {
-        const auto slot = static_cast<std::size_t>(p & (slots_[n] - 1));
+        const auto slot = static_cast<std::size_t>(p % slots_[n]);
         return levelStart_[n] + (slot * (1u << n) + i) * 3 * rows_;
     }
     int rows_ = 0;

@@ -398,11 +398,26 @@ SweepMemory sweepMemory(int width, int height, int tracedLevels) {
         SweepMemory m;
         m.intervals = IntervalRing::bytesFor(levels, frame.rows, kSweepChunk);
         m.cones = ConeRing::bytesFor(levels, frame.rows, kSweepChunk);
+        // One window per team member; each loads its band of rows (as ThreadTeam::bandBegin
+        // splits them) and the rows its stencils reach beyond it.
+        const int members = std::min(ThreadTeam::defaultSize(), frame.rows);
+        const int span = pow2(traced - 1);
+        int band = 0;
+        for (int i = 0; i < members; ++i) {
+            const auto begin = [&](int j) {
+                return static_cast<int>(static_cast<long long>(frame.rows) * j / members);
+            };
+            band = std::max(
+                band, std::min(frame.rows, begin(i + 1) + span) - std::max(0, begin(i) - span));
+        }
         m.columns =
-            ThreadTeam::defaultSize() *
-            ColumnWindow::bytesFor(pow2(traced - 1),
-                                   static_cast<int>(tracedRays(traced).lengths.size()), frame.rows);
-        if (m.total() > most.total()) most = m;
+            static_cast<std::uint64_t>(members) *
+            ColumnWindow::bytesFor(span, static_cast<int>(tracedRays(traced).lengths.size()),
+                                   frame.rows, band);
+        // The buffers keep their allocations from frame to frame: the larger of each.
+        most.intervals = std::max(most.intervals, m.intervals);
+        most.cones = std::max(most.cones, m.cones);
+        most.columns = std::max(most.columns, m.columns);
     }
     return most;
 }

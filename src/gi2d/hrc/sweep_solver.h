@@ -34,7 +34,8 @@ inline constexpr int kSweepMaxTracedLevels = 5;
 void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int threads, Image& beyondSum,
                    SweepTimes* times);
 
-// Bytes of sweepFrustums' buffers for a canvas of this size, from the frame that needs most.
+// Bytes of sweepFrustums' buffers for a canvas of this size: each the larger of the ±x and ±y
+// frames', since the buffers keep their allocations from frame to frame.
 struct SweepMemory {
     std::uint64_t intervals = 0;  // the ring of ray intervals
     std::uint64_t cones = 0;      // the ring of merged cones

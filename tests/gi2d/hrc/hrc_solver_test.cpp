@@ -7,6 +7,8 @@
 #include <numbers>
 
 #include "gi2d/analytic_disk.h"
+#include "gi2d/hrc/sweep_buffers.h"
+#include "gi2d/hrc/sweep_solver.h"
 #include "gi2d/shipped_scenes.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/metrics.h"
@@ -164,8 +166,15 @@ TEST(HrcSolver, SolveFitsSixCanvasImages) {
         if (size >= 8192) {
             EXPECT_LE(m.cones, image + gib / 64) << size;  // 12 bytes per pixel
             EXPECT_LE(withMedium, 6 * image + gib / 16) << size;
+            // Without the medium windows (which grow with the thread count): the rings keep
+            // only the planes a chunk needs (6.027 images at 8192^2 with power-of-two rings).
+            const std::uint64_t rings = withMedium - m.mediumColumns;
+            EXPECT_LE(static_cast<double>(rings) / image, size == 8192 ? 6.016 : 6.008) << size;
         }
     }
+    // One plane more than a chunk holds, at least 2.
+    const int expected[] = {17, 9, 5, 3, 2, 2};
+    for (int n = 0; n < 6; ++n) EXPECT_EQ(hrc::ringSlots(n, hrc::kSweepChunk), expected[n]) << n;
 }
 
 TEST(HrcSolver, MemoryEstimatesAndRefusal) {
