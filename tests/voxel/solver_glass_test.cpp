@@ -165,30 +165,41 @@ TEST(SolverGlass, CascadesFaceSunPassesThroughGlass) {
     EXPECT_GT(checked, 8);
 }
 
+// A mirror wall (x = 0, polished metal), a clear glass slab over x in [glassFrom, glassTo) that
+// absorbs 0.2 per voxel and reflects nothing diffusely, and a wall glowing 2 (x = 15) under a
+// black sky: what the mirror and the glass show of the wall has a closed form.
+struct MirrorGlassLamp {
+    VoxelWorld world = makeWorld({16, 8, 8});
+    ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
+    MirrorGlassLamp(int glassFrom, int glassTo) {
+        for (int z = 0; z < 8; ++z)
+            for (int y = 0; y < 8; ++y) {
+                world.set(0, y, z, kSlot1);
+                for (int x = glassFrom; x < glassTo; ++x) world.set(x, y, z, kGlass);
+                world.set(15, y, z, Voxel{255, 255, 255, 3});
+            }
+        world.refreshEmptySpace();
+        Material g = glass(Rgb(0.2f));
+        g.albedo = Rgb(0.0f);
+        Material lamp;
+        lamp.name = "lamp";
+        lamp.albedo = Rgb(0.0f);
+        lamp.emission = Rgb(2.0f);
+        EXPECT_TRUE(o.materials.setSlot(0, g).ok());
+        EXPECT_TRUE(o.materials.setSlot(1, metal(0.0f, Rgb(1.0f))).ok());
+        EXPECT_TRUE(o.materials.setSlot(2, lamp).ok());
+    }
+};
+
 // A mirror wall (x = 0) seen head-on; behind the camera a clear glass slab three voxels thick
 // (x = 10..12) and a glowing wall (x = 15), the sky black: the mirror shows the wall through the
 // glass with the Fresnel series and Beer-Lambert, (1 - F)^2 t / (1 - F^2 t^2), less the light
 // the glass and the mirror reflect back and forth (about F (1 - F)^2 t, 3%). The glass shaded as
 // an opaque face of albedo 0 showed black.
 TEST(SolverGlass, MirrorShowsWhatLiesBehindGlass) {
-    VoxelWorld world = makeWorld({16, 8, 8});
-    for (int z = 0; z < 8; ++z)
-        for (int y = 0; y < 8; ++y) {
-            world.set(0, y, z, kSlot1);
-            for (int x = 10; x < 13; ++x) world.set(x, y, z, kGlass);
-            world.set(15, y, z, Voxel{255, 255, 255, 3});
-        }
-    world.refreshEmptySpace();
-    ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
-    Material g = glass(Rgb(0.2f));
-    g.albedo = Rgb(0.0f);
-    ASSERT_TRUE(o.materials.setSlot(0, g).ok());
-    ASSERT_TRUE(o.materials.setSlot(1, metal(0.0f, Rgb(1.0f))).ok());
-    Material lamp;
-    lamp.name = "lamp";
-    lamp.albedo = Rgb(0.0f);
-    lamp.emission = Rgb(2.0f);
-    ASSERT_TRUE(o.materials.setSlot(2, lamp).ok());
+    const MirrorGlassLamp scene(10, 13);
+    const VoxelWorld& world = scene.world;
+    const ShadeOptions& o = scene.o;
     const double f = 0.04, t = std::exp(-0.2 * 3.0);
     const double want = 2.0 * (1 - f) * (1 - f) * t / (1 - f * f * t * t);
 
@@ -208,24 +219,9 @@ TEST(SolverGlass, MirrorShowsWhatLiesBehindGlass) {
 // twice by way of the mirror, 2 S^2 with S = (1 - F)^2 t / (1 - F^2 t^2); the mirror shaded as
 // an opaque face gave 2 R alone.
 TEST(SolverGlass, MirrorSeenThroughGlassShowsWhatItReflects) {
-    VoxelWorld world = makeWorld({16, 8, 8});
-    for (int z = 0; z < 8; ++z)
-        for (int y = 0; y < 8; ++y) {
-            world.set(0, y, z, kSlot1);
-            for (int x = 8; x < 10; ++x) world.set(x, y, z, kGlass);
-            world.set(15, y, z, Voxel{255, 255, 255, 3});
-        }
-    world.refreshEmptySpace();
-    ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
-    Material g = glass(Rgb(0.2f));
-    g.albedo = Rgb(0.0f);
-    ASSERT_TRUE(o.materials.setSlot(0, g).ok());
-    ASSERT_TRUE(o.materials.setSlot(1, metal(0.0f, Rgb(1.0f))).ok());
-    Material lamp;
-    lamp.name = "lamp";
-    lamp.albedo = Rgb(0.0f);
-    lamp.emission = Rgb(2.0f);
-    ASSERT_TRUE(o.materials.setSlot(2, lamp).ok());
+    const MirrorGlassLamp scene(8, 10);
+    const VoxelWorld& world = scene.world;
+    const ShadeOptions& o = scene.o;
     const double f = 0.04, t = std::exp(-0.2 * 2.0);
     const double slab = (1 - f) * (1 - f) * t / (1 - f * f * t * t);
     const double reflected = f + (1 - f) * (1 - f) * f * t * t / (1 - f * f * t * t);
