@@ -71,6 +71,12 @@ void ProgressivePath::clear() {
     lastMilliseconds_ = 0.0;
 }
 
+void ProgressivePath::release() {
+    clear();
+    gpuTracer_.reset();
+    gpuWorld_ = nullptr;
+}
+
 void ProgressivePath::setTarget(int target) {
     target_ = std::clamp(target, 1, voxel::kMaxPathSamples);
 }

@@ -43,6 +43,11 @@ class ProgressivePath {
                    const voxel::TextureSet* textures, int target, GpuWorld gpu = {});
     // Forgets the accumulation (the world or the view changed); a GPU tracer stays for reuse.
     void clear();
+    // clear() and drops the GPU tracer too, with its sums and emitters on the device and the
+    // host (another solver is shown: nothing of path mode stays allocated).
+    void release();
+    // Whether a GPU tracer (current or kept for reuse) is held.
+    bool holdsGpuTracer() const { return gpuTracer_.has_value(); }
     // A new target for the same view: it keeps adding up to it, or stops where it is.
     void setTarget(int target);
 

@@ -69,6 +69,8 @@ void RendererVoxel::setState(VoxelState&& state) {
     } else {
         path_.setTarget(state.solver.path.samplesPerPixel);
     }
+    // Path mode's sums (and its GPU tracer's) stay allocated no longer than it is shown.
+    if (state.solver.kind != VoxelSolver::PathTrace) path_.release();
     state.edits.clear();
     state_ = std::move(state);
     dirty_ = true;

@@ -189,6 +189,32 @@ TEST(ProgressivePath, OnTheGpuANewViewSendsNoWorldAgain) {
     }
 }
 
+// Another solver shown: release() drops the GPU tracer (clear() keeps it for the next view), and
+// the next restart creates a new one, which finds and sends the emitters again.
+TEST(ProgressivePath, ReleaseDropsTheGpuTracer) {
+    gpu::Context* context = luxel::test::sharedGpuContext();
+    if (!context) GTEST_SKIP() << "no Vulkan device";
+    const voxel::VoxelWorld world = blockWorld();
+    auto uploaded = voxel::VoxelGpuRenderer::create(*context, world);
+    ASSERT_TRUE(uploaded) << uploaded.error().message();
+    const GpuWorld gpu{context, &*uploaded};
+    VoxelState s = pathState(1);
+    ProgressivePath progressive;
+    ASSERT_TRUE(progressive.restart(world, cameraOf(s), s.shading, s.solver.path, nullptr, 1, gpu));
+    ASSERT_TRUE(progressive.step(1000.0));
+    progressive.clear();
+    EXPECT_TRUE(progressive.holdsGpuTracer());
+    progressive.release();
+    EXPECT_FALSE(progressive.holdsGpuTracer());
+    EXPECT_FALSE(progressive.active());
+    ASSERT_TRUE(progressive.restart(world, cameraOf(s), s.shading, s.solver.path, nullptr, 1, gpu));
+    EXPECT_TRUE(progressive.holdsGpuTracer());
+    EXPECT_TRUE(progressive.onGpu());
+    auto image = progressive.step(1000.0);
+    ASSERT_TRUE(image) << image.error().message();
+    EXPECT_EQ(image->samplesPerPixel, 1);
+}
+
 TEST(ProgressivePath, BadOptionsAndTargetsAreErrors) {
     const voxel::VoxelWorld world = blockWorld();
     VoxelState s = pathState(4);
