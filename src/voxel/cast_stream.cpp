@@ -11,7 +11,8 @@
 // brick, a lane in an empty half of it (src/voxel/brick_blocks.h) crosses the half as one box and
 // adds the visits the per-voxel loop makes there (one per cell step), so `steps` still counts that
 // loop's iterations. Rays that start inside the world take the one-ray loop instead (measured
-// faster for them, Lanes in cast_stream.h).
+// faster for them, Lanes in cast_stream.h). Which rays take lanes and where each starts:
+// src/voxel/lane_start-inl.h; a lane's state: src/voxel/lane_state-inl.h.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "voxel/cast_stream.cpp"
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
@@ -25,42 +26,13 @@
 #include "voxel/brick_blocks.h"
 #include "voxel/cast_stream.h"
 #include "voxel/fast_walk.h"
+#include "voxel/lane_start-inl.h"
+#include "voxel/lane_state-inl.h"
 
 HWY_BEFORE_NAMESPACE();
 namespace luxel::voxel::stream::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 namespace shared = gpu::shared;
-
-// Lane state, as arrays between refills (one value per lane).
-enum Field {
-    kOx,
-    kOy,
-    kOz,
-    kIx,
-    kIy,
-    kIz,
-    kDx,
-    kDy,
-    kDz,
-    kSx,
-    kSy,
-    kSz,
-    kKx,
-    kKy,
-    kKz,
-    kCx,
-    kCy,
-    kCz,
-    kNx,
-    kNy,
-    kNz,
-    kT,
-    kAxis,
-    kSteps,
-    kRay,
-    kPlane,  // byte offset of the reach plane of the ray's octant
-    kFields
-};
 
 void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::VoxelTrace* out) {
     using D = hn::ScalableTag<double>;
@@ -70,7 +42,6 @@ void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::V
     using V = hn::Vec<D>;
     using M = hn::Mask<D>;
     const std::size_t lanes = hn::Lanes(d);
-    constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
     HWY_ASSERT(lanes <= kMaxLanes);
     // Two packets of lanes, stepped alternately so one's memory reads overlap the other's
     // arithmetic (a step is one long dependency chain).
@@ -96,135 +67,13 @@ void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::V
     const auto lastByte = hn::Set(di, brickTotal * VoxelWorld::kOctants - 8);
     const M none = hn::Lt(zero, zero);
 
-    // Rays from inside the world take the one-ray loop (Lanes::FromOutside).
-    const auto startsInside = [&](const Ray& r) {
-        const Vec3d& o = r.origin;
-        return o.x >= 0.0 && o.y >= 0.0 && o.z >= 0.0 && o.x < size.x && o.y < size.y &&
-               o.z < size.z;
-    };
     // Rays started (voxelStart, one per lane) but not yet given a lane, as lane arrays.
     HWY_ALIGN double pending[kFields][kMaxLanes];
     std::size_t pendingCount = 0, pendingNext = 0;
     std::size_t nextRay = 0;
-    // voxelStart for the next rays, a vector of them at once, into `pending`. Rays that end at
-    // the start (a miss, or rays the fast walk does not take) are recorded here.
     const auto startRays = [&] {
-        HWY_ALIGN double ray[kFields][kMaxLanes] = {};
-        std::size_t m = 0;
-        while (m < lanes && nextRay < count) {
-            const std::size_t i = nextRay++;
-            const Ray& r = rays[i];
-            if (!finiteRay(r) || !(tMax >= 0.0)) {
-                out[i] = shared::voxelMiss(0, false);
-                continue;
-            }
-            if (!fast::eligible(world, r)) {
-                out[i] = fast::traverseAny(world, r, tMax, walk.cap);
-                continue;
-            }
-            if (walk.lanes == Lanes::FromOutside && startsInside(r)) {
-                out[i] = fast::traverse(world, r, tMax, walk.cap);
-                continue;
-            }
-            for (int a = 0; a < 3; ++a) {
-                ray[kOx + a][m] = r.origin[a];
-                ray[kDx + a][m] = r.direction[a];
-            }
-            ray[kRay][m] = static_cast<double>(i);
-            ++m;
-        }
-        for (std::size_t l = m; l < lanes; ++l) {  // unused lanes: a harmless ray, dropped below
-            for (int a = 0; a < 3; ++a) {
-                ray[kOx + a][l] = 0.5;
-                ray[kDx + a][l] = 1.0;
-            }
-            ray[kRay][l] = -1.0;
-        }
-        const V sizes[3] = {sizeX, sizeY, sizeZ};
-        V o[3], dir[3], inv[3];
-        M flat[3];
-        M reject = hn::Lt(hn::Load(d, ray[kRay]), zero);
-        V tEnter = hn::Neg(inf), tExit = inf, enterAxis = minusOne;
-        for (int a = 0; a < 3; ++a) {
-            o[a] = hn::Load(d, ray[kOx + a]);
-            dir[a] = hn::Load(d, ray[kDx + a]);
-            inv[a] = hn::Div(one, dir[a]);
-            flat[a] = hn::Eq(dir[a], zero);
-            const M inside = hn::And(hn::Ge(o[a], zero), hn::Lt(o[a], sizes[a]));
-            reject = hn::Or(reject, hn::AndNot(inside, flat[a]));
-            V t0 = hn::Mul(hn::Sub(zero, o[a]), inv[a]);
-            V t1 = hn::Mul(hn::Sub(sizes[a], o[a]), inv[a]);
-            const M swap = hn::Gt(t0, t1);
-            const V near = hn::IfThenElse(swap, t1, t0);
-            t1 = hn::IfThenElse(swap, t0, t1);
-            t0 = near;
-            const M enter = hn::AndNot(flat[a], hn::Ge(t0, tEnter));
-            tEnter = hn::IfThenElse(enter, t0, tEnter);
-            enterAxis = hn::IfThenElse(enter, hn::Set(d, a), enterAxis);
-            tExit = hn::IfThenElse(hn::AndNot(flat[a], hn::Lt(t1, tExit)), t1, tExit);
-        }
-        const V t0 = hn::IfThenElse(hn::Lt(tEnter, zero), zero, tEnter);  // max(tEnter, 0)
-        reject = hn::Or(reject, hn::Or(hn::Gt(tEnter, tExit), hn::Lt(tExit, t0)));
-        reject = hn::Or(reject, hn::And(hn::Eq(tExit, t0), hn::Lt(tEnter, t0)));
-        reject = hn::Or(reject, hn::Gt(t0, vtMax));
-        const M fromOutside = hn::Ge(tEnter, zero);
-        const M atOrigin = hn::Eq(t0, zero);
-        V cell[3], stp[3];
-        for (int a = 0; a < 3; ++a) {
-            const M up = hn::Gt(dir[a], zero), down = hn::Lt(dir[a], zero);
-            stp[a] = hn::IfThenElse(up, one, hn::IfThenElseZero(down, minusOne));
-            const V p = hn::IfThenElse(atOrigin, o[a], hn::Add(o[a], hn::Mul(t0, dir[a])));
-            const V clamped =
-                hn::IfThenElse(hn::Lt(sizes[a], hn::IfThenElse(hn::Lt(p, minusOne), minusOne, p)),
-                               sizes[a], hn::IfThenElse(hn::Lt(p, minusOne), minusOne, p));
-            V f = hn::Floor(clamped);
-            f = hn::IfThenElse(hn::And(hn::Eq(p, f), down), hn::Sub(f, one), f);
-            f = hn::Min(hn::Max(f, zero), hn::Sub(sizes[a], one));
-            const M entered = hn::And(fromOutside, hn::Eq(enterAxis, hn::Set(d, a)));
-            cell[a] = hn::IfThenElse(entered, hn::IfThenElse(up, zero, hn::Sub(sizes[a], one)), f);
-        }
-        // The face the first cell is entered through (voxelStart's rule).
-        V best = hn::Neg(inf), inner = minusOne;
-        for (int a = 0; a < 3; ++a) {
-            const V k = hn::IfThenElseZero(hn::Lt(stp[a], zero), one);  // exitT(cell, -stp)
-            const V te = hn::Mul(hn::Sub(hn::Add(cell[a], k), o[a]), inv[a]);
-            const M better = hn::AndNot(flat[a], hn::Ge(te, best));
-            best = hn::IfThenElse(better, te, best);
-            inner = hn::IfThenElse(better, hn::Set(d, a), inner);
-        }
-        inner = hn::IfThenElse(hn::Ge(best, zero), inner, minusOne);
-        hn::Store(hn::IfThenElse(fromOutside, enterAxis, inner), d, ray[kAxis]);
-        hn::Store(t0, d, ray[kT]);
-        // The reach plane of the ray's octant (VoxelWorld::octantOf; a zero component counts as
-        // positive, as in the shared kernel).
-        V octant = zero;
-        for (int a = 0; a < 3; ++a) {
-            octant = hn::Add(octant,
-                             hn::IfThenElseZero(hn::Lt(stp[a], zero), hn::Set(d, double(1 << a))));
-        }
-        hn::Store(hn::Mul(octant, hn::Set(d, static_cast<double>(brickTotal))), d, ray[kPlane]);
-        for (int a = 0; a < 3; ++a) {
-            const V k = hn::IfThenElseZero(hn::Gt(stp[a], zero), one);
-            hn::Store(inv[a], d, ray[kIx + a]);
-            hn::Store(stp[a], d, ray[kSx + a]);
-            hn::Store(k, d, ray[kKx + a]);
-            hn::Store(cell[a], d, ray[kCx + a]);
-            hn::Store(
-                hn::IfThenElse(flat[a], inf, hn::Mul(hn::Sub(hn::Add(cell[a], k), o[a]), inv[a])),
-                d, ray[kNx + a]);
-        }
-        HWY_ALIGN std::uint8_t rejected[8] = {};
-        hn::StoreMaskBits(d, reject, rejected);
-        pendingCount = pendingNext = 0;
-        for (std::size_t l = 0; l < m; ++l) {
-            if ((rejected[l / 8] >> (l % 8)) & 1) {
-                out[static_cast<std::size_t>(ray[kRay][l])] = shared::voxelMiss(0, false);
-                continue;
-            }
-            for (int f = 0; f < kFields; ++f) pending[f][pendingCount] = ray[f][l];
-            pending[kSteps][pendingCount] = 0.0;
-            ++pendingCount;
-        }
+        pendingCount = StartRays(d, walk, rays, count, nextRay, out, pending);
+        pendingNext = 0;
     };
     // Gives idle lanes the next started rays until every lane is busy or the rays run out.
     const auto refill = [&](int p) {
@@ -238,72 +87,12 @@ void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::V
     };
     const auto raysLeft = [&] { return nextRay < count || pendingNext < pendingCount; };
 
-    struct Packet {
-        V ox, oy, oz, ix, iy, iz, dx, dy, dz, sx, sy, sz, kx, ky, kz;
-        V cx, cy, cz, nx, ny, nz, t, axis, steps, ray, plane;
-        M active;
-    };
-    const auto load = [&](Packet& P, int p) {
-        P.ox = hn::Load(d, state[p][kOx]);
-        P.oy = hn::Load(d, state[p][kOy]);
-        P.oz = hn::Load(d, state[p][kOz]);
-        P.ix = hn::Load(d, state[p][kIx]);
-        P.iy = hn::Load(d, state[p][kIy]);
-        P.iz = hn::Load(d, state[p][kIz]);
-        P.dx = hn::Load(d, state[p][kDx]);
-        P.dy = hn::Load(d, state[p][kDy]);
-        P.dz = hn::Load(d, state[p][kDz]);
-        P.sx = hn::Load(d, state[p][kSx]);
-        P.sy = hn::Load(d, state[p][kSy]);
-        P.sz = hn::Load(d, state[p][kSz]);
-        P.kx = hn::Load(d, state[p][kKx]);
-        P.ky = hn::Load(d, state[p][kKy]);
-        P.kz = hn::Load(d, state[p][kKz]);
-        P.cx = hn::Load(d, state[p][kCx]);
-        P.cy = hn::Load(d, state[p][kCy]);
-        P.cz = hn::Load(d, state[p][kCz]);
-        P.nx = hn::Load(d, state[p][kNx]);
-        P.ny = hn::Load(d, state[p][kNy]);
-        P.nz = hn::Load(d, state[p][kNz]);
-        P.t = hn::Load(d, state[p][kT]);
-        P.axis = hn::Load(d, state[p][kAxis]);
-        P.steps = hn::Load(d, state[p][kSteps]);
-        P.ray = hn::Load(d, state[p][kRay]);
-        P.plane = hn::Load(d, state[p][kPlane]);
-        P.active = hn::Ge(P.ray, zero);
-    };
-    const auto store = [&](const Packet& P, int p) {
-        hn::Store(P.ox, d, state[p][kOx]);
-        hn::Store(P.oy, d, state[p][kOy]);
-        hn::Store(P.oz, d, state[p][kOz]);
-        hn::Store(P.ix, d, state[p][kIx]);
-        hn::Store(P.iy, d, state[p][kIy]);
-        hn::Store(P.iz, d, state[p][kIz]);
-        hn::Store(P.dx, d, state[p][kDx]);
-        hn::Store(P.dy, d, state[p][kDy]);
-        hn::Store(P.dz, d, state[p][kDz]);
-        hn::Store(P.sx, d, state[p][kSx]);
-        hn::Store(P.sy, d, state[p][kSy]);
-        hn::Store(P.sz, d, state[p][kSz]);
-        hn::Store(P.kx, d, state[p][kKx]);
-        hn::Store(P.ky, d, state[p][kKy]);
-        hn::Store(P.kz, d, state[p][kKz]);
-        hn::Store(P.cx, d, state[p][kCx]);
-        hn::Store(P.cy, d, state[p][kCy]);
-        hn::Store(P.cz, d, state[p][kCz]);
-        hn::Store(P.nx, d, state[p][kNx]);
-        hn::Store(P.ny, d, state[p][kNy]);
-        hn::Store(P.nz, d, state[p][kNz]);
-        hn::Store(P.t, d, state[p][kT]);
-        hn::Store(P.axis, d, state[p][kAxis]);
-        hn::Store(P.steps, d, state[p][kSteps]);
-        hn::Store(P.ray, d, state[p][kRay]);
-        hn::Store(P.plane, d, state[p][kPlane]);
-    };
+    const auto load = [&](Packet<D>& P, int p) { LoadPacket(d, state[p], P); };
+    const auto store = [&](const Packet<D>& P, int p) { StorePacket(d, P, state[p]); };
 
     // One iteration of voxelTraverse's loop for every busy lane of P; true when P has ended
     // rays and either half its lanes are idle with rays left to start, or all are idle.
-    const auto advance = [&](Packet & P) __attribute__((always_inline))->bool {
+    const auto advance = [&](Packet<D> & P) __attribute__((always_inline))->bool {
         V &ox = P.ox, &oy = P.oy, &oz = P.oz, &ix = P.ix, &iy = P.iy, &iz = P.iz;
         V &dx = P.dx, &dy = P.dy, &dz = P.dz, &sx = P.sx, &sy = P.sy, &sz = P.sz;
         V &kx = P.kx, &ky = P.ky, &kz = P.kz, &cx = P.cx, &cy = P.cy, &cz = P.cz;
@@ -547,7 +336,7 @@ void TraceStream(const Walk& walk, const Ray* rays, std::size_t count, shared::V
 
     refill(0);
     refill(1);
-    Packet A, B;
+    Packet<D> A, B;
     load(A, 0);
     load(B, 1);
     if (hn::AllFalse(d, A.active) && hn::AllFalse(d, B.active)) return;  // no ray got a lane
