@@ -1,7 +1,6 @@
 // `luxel render`: scene -> fluence image (EXR linear or PNG tonemapped) and display PNG.
 #include <algorithm>
 #include <cstdio>
-#include <memory>
 #include <vector>
 
 #include "commands/command.h"
@@ -13,18 +12,13 @@
 #include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
-#include "luxel/core/progress.h"
 #include "luxel/core/timer.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/gi2d/bounce.h"
 #include "luxel/gi2d/display.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rc_solver.h"
-#include "luxel/gi2d/reference_solver.h"
-#include "luxel/gi2d/sdf_scene.h"
 #include "luxel/gi2d/solver_choice.h"
-#include "luxel/gpu/backend_policy.h"
-#include "luxel/gpu/context.h"
 #include "luxel/voxel/render_image.h"
 #include "luxel/voxel/voxel_scene.h"
 
