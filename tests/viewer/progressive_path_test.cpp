@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "luxel/post/finish.h"
 #include "luxel/voxel/camera.h"
@@ -145,13 +146,24 @@ TEST(ProgressivePath, StepsAddUpToTheOnePassRenderOfTheTarget) {
     EXPECT_EQ(progressive.samples(), 0);
 }
 
-TEST(ProgressivePath, OnTheGpuANewViewSendsNoWorldAgain) {
-    gpu::Context* context = luxel::test::sharedGpuContext();
-    if (!context) GTEST_SKIP() << "no Vulkan device";
+// The block world uploaded by the ray caster on the shared GPU device, for path mode on it.
+class ProgressivePathGpu : public testing::Test {
+  protected:
+    void SetUp() override {
+        context = luxel::test::sharedGpuContext();
+        if (!context) GTEST_SKIP() << "no Vulkan device";
+        auto created = voxel::VoxelGpuRenderer::create(*context, world);
+        ASSERT_TRUE(created) << created.error().message();
+        uploaded.emplace(std::move(*created));
+        gpu = {context, &*uploaded};
+    }
+    gpu::Context* context = nullptr;
     const voxel::VoxelWorld world = blockWorld();
-    auto uploaded = voxel::VoxelGpuRenderer::create(*context, world);
-    ASSERT_TRUE(uploaded) << uploaded.error().message();
-    const GpuWorld gpu{context, &*uploaded};
+    std::optional<voxel::VoxelGpuRenderer> uploaded;
+    GpuWorld gpu;
+};
+
+TEST_F(ProgressivePathGpu, ANewViewSendsNoWorldAgain) {
     VoxelState s = pathState(4);
     ProgressivePath progressive;
     ASSERT_TRUE(progressive.restart(world, cameraOf(s), s.shading, s.solver.path, nullptr, 4, gpu));
@@ -190,14 +202,8 @@ TEST(ProgressivePath, OnTheGpuANewViewSendsNoWorldAgain) {
 }
 
 // Another solver shown: release() drops the GPU tracer (clear() keeps it for the next view), and
-// the next restart creates a new one, which finds and sends the emitters again.
-TEST(ProgressivePath, ReleaseDropsTheGpuTracer) {
-    gpu::Context* context = luxel::test::sharedGpuContext();
-    if (!context) GTEST_SKIP() << "no Vulkan device";
-    const voxel::VoxelWorld world = blockWorld();
-    auto uploaded = voxel::VoxelGpuRenderer::create(*context, world);
-    ASSERT_TRUE(uploaded) << uploaded.error().message();
-    const GpuWorld gpu{context, &*uploaded};
+// the next restart creates a new one over the same upload.
+TEST_F(ProgressivePathGpu, ReleaseDropsTheTracer) {
     VoxelState s = pathState(1);
     ProgressivePath progressive;
     ASSERT_TRUE(progressive.restart(world, cameraOf(s), s.shading, s.solver.path, nullptr, 1, gpu));
@@ -207,7 +213,9 @@ TEST(ProgressivePath, ReleaseDropsTheGpuTracer) {
     progressive.release();
     EXPECT_FALSE(progressive.holdsGpuTracer());
     EXPECT_FALSE(progressive.active());
+    const std::uint64_t worldBytes = uploaded->uploads().world;
     ASSERT_TRUE(progressive.restart(world, cameraOf(s), s.shading, s.solver.path, nullptr, 1, gpu));
+    EXPECT_EQ(uploaded->uploads().world, worldBytes);
     EXPECT_TRUE(progressive.holdsGpuTracer());
     EXPECT_TRUE(progressive.onGpu());
     auto image = progressive.step(1000.0);
