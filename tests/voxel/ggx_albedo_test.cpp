@@ -9,11 +9,13 @@
 
 #include "voxel/ggx_albedo.h"
 #include "voxel/path_trace_bsdf.h"
+#include "voxel/plain_light_worlds.h"
 
 namespace {
 
 using namespace luxel;
 using namespace luxel::voxel;
+using luxel::voxel::test::ggxOnlyLobe;
 
 constexpr int kGrid = 24;  // the table's entries per axis, at i / (kGrid - 1)
 
@@ -51,13 +53,7 @@ TEST(GgxAlbedo, EveryEntryIsThePathTracersSamplingWithinItsNoise) {
         for (int j = 0; j < kGrid; ++j) {
             const double cosView = std::max(double(i) / (kGrid - 1), 1e-4);
             const double alpha = std::max(double(j) / (kGrid - 1), double(kMirrorAlpha));
-            PathBsdf b;
-            b.normal = {0, 1, 0};
-            b.view = {std::sqrt(1.0 - cosView * cosView), cosView, 0.0};
-            b.cosView = cosView;
-            b.alpha = float(alpha);
-            b.specular = Rgb(1.0f);
-            b.pSpecular = 1.0;
+            const PathBsdf b = ggxOnlyLobe(cosView, alpha);
             PathRng rng(0x5eed, std::uint64_t(i * kGrid + j), 0);
             const int n = 4096;
             double sum = 0.0, squares = 0.0;

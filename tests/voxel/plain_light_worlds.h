@@ -4,9 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "luxel/voxel/material.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/voxel_world.h"
+#include "voxel/path_trace_bsdf.h"
 
 namespace luxel::voxel::test {
 
@@ -64,6 +67,19 @@ inline Material metal(float roughness, Rgb albedo) {
     m.roughness = roughness;
     m.albedo = albedo;
     return m;
+}
+
+// A GGX-only lobe of reflectance 1 on a floor (normal +y) seen at cosView, as the GGX
+// directional-albedo table integrates it.
+inline PathBsdf ggxOnlyLobe(double cosView, double alpha) {
+    PathBsdf b;
+    b.normal = {0, 1, 0};
+    b.view = {std::sqrt(1.0 - cosView * cosView), cosView, 0.0};
+    b.cosView = cosView;
+    b.alpha = float(alpha);
+    b.specular = Rgb(1.0f);
+    b.pSpecular = 1.0;
+    return b;
 }
 
 }  // namespace luxel::voxel::test

@@ -162,13 +162,7 @@ TEST(SolverMaterials, GlassSlabShowsWhatLiesBehindIt) {
 // table comes from the path tracer's sampling.
 double integratedAlbedo(double cosView, double alpha) {
     constexpr double kPi = 3.14159265358979323846;
-    PathBsdf b;
-    b.normal = {0, 1, 0};
-    b.view = {std::sqrt(1.0 - cosView * cosView), cosView, 0.0};
-    b.cosView = cosView;
-    b.alpha = float(alpha);
-    b.specular = Rgb(1.0f);
-    b.pSpecular = 1.0;
+    const PathBsdf b = ggxOnlyLobe(cosView, alpha);
     const int nt = 600, np = 600;
     double sum = 0.0;
     for (int i = 0; i < nt; ++i) {
