@@ -14,6 +14,7 @@
 
 #include "gi2d/rc/rc_cascade_pass.h"
 #include "gi2d/rc/rc_stencil.h"
+#include "gi2d/rc/stencil_vs_exact.h"
 #include "luxel/core/parallel.h"
 #include "luxel/core/rng.h"
 #include "luxel/gi2d/ray_march.h"
@@ -96,57 +97,13 @@ TEST(RcStencilSkip, CrossingUniformSquaresMatchesTheExactPass) {
     media.push_back({"grey blocks 200x70", blockMedium(200, 70, 9, true)});
     RcOptions jittered;
     jittered.jitterX = 0.2548776662466927, jittered.jitterY = 0.8196805819961064;
+    // A step across a square adds sigma times the summed length where the exact pass adds run
+    // by run: both are the same optical depth to float rounding (a few 1e-7 of depths below the
+    // 13.8 cutoff), and so is every value. A square crossed into a different material would be
+    // off by far more (one cell of dense fog changes a ray's transmittance by 15%).
     for (const Case& m : media) {
-        const RayMarcher marcher(m.medium);
-        const StencilMedium stencilMedium(m.medium);
-        const int w = m.medium.width(), h = m.medium.height();
-        for (const RcOptions& options : {RcOptions{}, jittered}) {
-            const std::vector<RcCascade> cascades = rcCascades(w, h, options);
-            for (RcMerge merge : {RcMerge::Vanilla, RcMerge::BilinearFix}) {
-                std::vector<Rgb> upper;
-                for (int i = static_cast<int>(cascades.size()) - 1; i >= 0; --i) {
-                    const std::vector<Rgb> exact =
-                        cascadePass(marcher, cascades, i, upper, m.medium.boundaryRadiance, merge);
-                    const int upStored = i + 1 < static_cast<int>(cascades.size())
-                                             ? storedPerProbe(cascades[i + 1], i + 1)
-                                             : 1;
-                    const std::vector<Rgb> fast =
-                        toProbeMajor(cascadePassStencil(marcher, stencilMedium, cascades, i,
-                                                        toSlotMajor(upper, upStored),
-                                                        m.medium.boundaryRadiance, merge),
-                                     storedPerProbe(cascades[i], i));
-                    ASSERT_EQ(exact.size(), fast.size());
-                    double sumRef = 0, sumAbs = 0, worst = 0;
-                    for (std::size_t v = 0; v < exact.size(); ++v) {
-                        for (int c = 0; c < 3; ++c) {
-                            sumRef += std::abs(exact[v][c]);
-                            sumAbs += std::abs(fast[v][c] - exact[v][c]);
-                        }
-                    }
-                    const double mean = sumRef / (3.0 * exact.size());
-                    for (std::size_t v = 0; v < exact.size(); ++v) {
-                        for (int c = 0; c < 3; ++c) {
-                            worst = std::max(worst, std::abs(fast[v][c] - exact[v][c]) /
-                                                        (mean + std::abs(exact[v][c])));
-                        }
-                    }
-                    const std::string what = m.name +
-                                             (options.jitterX != 0 ? ", jittered, " : ", ") +
-                                             (merge == RcMerge::Vanilla ? "vanilla" : "fix") +
-                                             ", cascade " + std::to_string(i);
-                    std::printf("%s: max diff %.2e, relative L1 %.2e\n", what.c_str(), worst,
-                                sumAbs / sumRef);
-                    // A step across a square adds sigma times the summed length where the exact
-                    // pass adds run by run: both are the same optical depth to float rounding
-                    // (a few 1e-7 of depths below the 13.8 cutoff), and so is every value. A
-                    // square crossed into a different material would be off by far more (one
-                    // cell of dense fog changes a ray's transmittance by 15%).
-                    EXPECT_LT(worst, 2e-5) << what;
-                    EXPECT_LE(sumAbs, 1e-6 * sumRef) << what;
-                    upper = exact;
-                }
-            }
-        }
+        expectStencilMatchesExact(m.medium, RcOptions{}, m.name);
+        expectStencilMatchesExact(m.medium, jittered, m.name + ", jittered");
     }
 }
 

@@ -12,6 +12,7 @@
 
 #include "gi2d/rc/rc_cascade_pass.h"
 #include "gi2d/rc/rc_stencil.h"
+#include "gi2d/rc/stencil_vs_exact.h"
 #include "gi2d/shipped_scenes.h"
 #include "gpu/random_medium.h"
 #include "luxel/gi2d/ray_march.h"
@@ -72,52 +73,8 @@ std::vector<std::pair<std::string, RcOptions>> optionSets() {
 
 TEST(RcStencil, MatchesTheExactPassAtEveryLevel) {
     for (const Case& m : media()) {
-        const RayMarcher marcher(m.medium);
-        const StencilMedium stencilMedium(m.medium);
-        const int w = m.medium.width(), h = m.medium.height();
         for (const auto& [optionsName, options] : optionSets()) {
-            const std::vector<RcCascade> cascades = rcCascades(w, h, options);
-            for (RcMerge merge : {RcMerge::Vanilla, RcMerge::BilinearFix}) {
-                std::vector<Rgb> upper;
-                for (int i = static_cast<int>(cascades.size()) - 1; i >= 0; --i) {
-                    const std::vector<Rgb> exact =
-                        cascadePass(marcher, cascades, i, upper, m.medium.boundaryRadiance, merge);
-                    const int upStored = i + 1 < static_cast<int>(cascades.size())
-                                             ? storedPerProbe(cascades[i + 1], i + 1)
-                                             : 1;
-                    const std::vector<Rgb> fast =
-                        toProbeMajor(cascadePassStencil(marcher, stencilMedium, cascades, i,
-                                                        toSlotMajor(upper, upStored),
-                                                        m.medium.boundaryRadiance, merge),
-                                     storedPerProbe(cascades[i], i));
-                    ASSERT_EQ(exact.size(), fast.size());
-                    double sumRef = 0, sumAbs = 0;
-                    for (std::size_t v = 0; v < exact.size(); ++v) {
-                        for (int c = 0; c < 3; ++c) {
-                            sumRef += std::abs(exact[v][c]);
-                            sumAbs += std::abs(fast[v][c] - exact[v][c]);
-                        }
-                    }
-                    // Each value to 1e-4 of the mean, or of itself where it is far brighter (a
-                    // dark top cascade's few bright values differ by their own rounding).
-                    const double mean = sumRef / (3.0 * exact.size());
-                    double worst = 0;
-                    for (std::size_t v = 0; v < exact.size(); ++v) {
-                        for (int c = 0; c < 3; ++c) {
-                            worst = std::max(worst, std::abs(fast[v][c] - exact[v][c]) /
-                                                        (mean + std::abs(exact[v][c])));
-                        }
-                    }
-                    const std::string what = m.name + ", " + optionsName + ", " +
-                                             (merge == RcMerge::Vanilla ? "vanilla" : "fix") +
-                                             ", cascade " + std::to_string(i);
-                    std::printf("%s: max diff %.2e, relative L1 %.2e\n", what.c_str(), worst,
-                                sumAbs / sumRef);
-                    EXPECT_LT(worst, 2e-5) << what;
-                    EXPECT_LE(sumAbs, 1e-6 * sumRef) << what;
-                    upper = exact;
-                }
-            }
+            expectStencilMatchesExact(m.medium, options, m.name + ", " + optionsName);
         }
     }
 }
