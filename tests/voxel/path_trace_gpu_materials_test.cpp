@@ -107,13 +107,7 @@ TEST(PathTraceGpuMaterials, GlassSlabPassesTheFresnelSeriesAndBeerLambert) {
     const double f = gpu::shared::fresnelDielectricExact(1.0f, 1.0f, 1.5f);  // 0.04
     const float emission = 2.0f;
     for (const float sigma : {0.0f, 0.2f}) {
-        VoxelWorld world = makeWorld({8, 8, 16});
-        for (int y = 0; y < 8; ++y)
-            for (int x = 0; x < 8; ++x) {
-                world.set(x, y, 0, Voxel{255, 255, 255, 2});
-                for (int z = 6; z < 9; ++z) world.set(x, y, z, Voxel{255, 255, 255, 1});
-            }
-        world.refreshEmptySpace();
+        const VoxelWorld world = slabBeforeAWall();
         ShadeOptions o = plainLight(0.0f, Rgb(0.0f), Rgb(0.0f));
         ASSERT_TRUE(o.materials.setSlot(0, glass(Rgb(sigma))).ok());
         Material wall;

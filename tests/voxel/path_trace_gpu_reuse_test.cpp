@@ -36,9 +36,7 @@ struct LampRoom {
                 }
         world.set(3, 1, 8, kLamp);
         world.refreshEmptySpace();
-        Material lamp;
-        lamp.name = "lamp";
-        lamp.emission = Rgb(20.0f, 15.0f, 10.0f);
+        const Material lamp = lampMaterial(Rgb(20.0f, 15.0f, 10.0f));
         EXPECT_TRUE(o.materials.setSlot(0, lamp).ok());
     }
 };

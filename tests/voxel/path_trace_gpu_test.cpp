@@ -240,9 +240,7 @@ TEST(PathTraceGpu, EmitterSamplingWithMisOnALampRoom) {
     world.set(3, 1, 8, Voxel{255, 255, 255, 1});  // texture slot 0: the lamp's material
     world.refreshEmptySpace();
     ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
-    Material lamp;
-    lamp.name = "lamp";
-    lamp.emission = Rgb(20.0f, 15.0f, 10.0f);
+    const Material lamp = lampMaterial(Rgb(20.0f, 15.0f, 10.0f));
     ASSERT_TRUE(o.materials.setSlot(0, lamp).ok());
     const Camera camera = *Camera::lookAt({6.0, 4.0, 7.0}, {6.0, 2.0, 0.5}, 70.0, 12, 9);
     PathTraceOptions p;

@@ -71,16 +71,10 @@ TEST(PathTraceMaterials, MirrorFloorShowsAlbedoTimesSky) {
 // Glowing wall (z = 0), a glass slab (z in [6, 9), filling the world's cross-section) and the
 // camera at z = 14 looking at the wall through it along -z; the sky is black.
 struct SlabScene {
-    VoxelWorld world = makeWorld({8, 8, 16});
+    VoxelWorld world = slabBeforeAWall();
     ShadeOptions o = plainLight(0.0f, Rgb(0.0f), Rgb(0.0f));
     float emission = 2.0f;
     explicit SlabScene(Rgb absorption) {
-        for (int y = 0; y < 8; ++y)
-            for (int x = 0; x < 8; ++x) {
-                world.set(x, y, 0, Voxel{255, 255, 255, 2});
-                for (int z = 6; z < 9; ++z) world.set(x, y, z, Voxel{255, 255, 255, 1});
-            }
-        world.refreshEmptySpace();
         EXPECT_TRUE(o.materials.setSlot(0, glass(absorption)).ok());
         Material wall;
         wall.name = "wall";
@@ -287,9 +281,7 @@ TEST(PathTraceMaterials, SameImageForAnyThreadCountAndPassSplit) {
     o.sunAngularRadius = 0.05;
     ASSERT_TRUE(o.materials.setSlot(0, glass(Rgb(0.1f, 0.2f, 0.3f))).ok());
     ASSERT_TRUE(o.materials.setSlot(1, metal(0.3f, Rgb(0.9f))).ok());
-    Material lamp;
-    lamp.name = "lamp";
-    lamp.emission = Rgb(4.0f);
+    const Material lamp = lampMaterial(Rgb(4.0f));
     ASSERT_TRUE(o.materials.setSlot(2, lamp).ok());
     auto camera = Camera::lookAt({2.0, 5.0, 1.0}, {8.0, 1.0, 8.0}, 60.0, 16, 12);
     ASSERT_TRUE(camera.ok());

@@ -96,9 +96,7 @@ TEST(PathTrace, EmitterSamplingAgreesWithBounceRaysAndHasLessNoise) {
     world.set(3, 1, 8, Voxel{255, 255, 255, 1});  // texture slot 0: the lamp's material
     finish(world);
     ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
-    Material lamp;
-    lamp.name = "lamp";
-    lamp.emission = Rgb(20.0f, 15.0f, 10.0f);
+    const Material lamp = lampMaterial(Rgb(20.0f, 15.0f, 10.0f));
     ASSERT_TRUE(o.materials.setSlot(0, lamp).ok());
     const PathEmitters emitters = PathEmitters::find(world, o.materials);
     ASSERT_EQ(emitters.size(), 1);

@@ -69,6 +69,27 @@ inline Material metal(float roughness, Rgb albedo) {
     return m;
 }
 
+// A glowing voxel's material: emission only, the default albedo.
+inline Material lampMaterial(Rgb emission) {
+    Material m;
+    m.name = "lamp";
+    m.emission = emission;
+    return m;
+}
+
+// An 8x8x16 world with a wall at z = 0 (texture slot 1) seen through a slab three voxels thick
+// across the whole cross-section (z = 6..8, texture slot 0): the Fresnel-series glass tests.
+inline VoxelWorld slabBeforeAWall() {
+    VoxelWorld world = makeWorld({8, 8, 16});
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            world.set(x, y, 0, Voxel{255, 255, 255, 2});
+            for (int z = 6; z < 9; ++z) world.set(x, y, z, Voxel{255, 255, 255, 1});
+        }
+    world.refreshEmptySpace();
+    return world;
+}
+
 // A GGX-only lobe of reflectance 1 on a floor (normal +y) seen at cosView, as the GGX
 // directional-albedo table integrates it.
 inline PathBsdf ggxOnlyLobe(double cosView, double alpha) {

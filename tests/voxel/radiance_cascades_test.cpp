@@ -195,9 +195,7 @@ TEST(RadianceCascades3D, EmissiveVoxelLightsAClosedRoomAsInThePathTracer) {
     world.set(9, 2, 4, Voxel{255, 255, 255, 255});
     world.refreshEmptySpace();
     ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
-    Material lamp;
-    lamp.name = "lamp";
-    lamp.emission = Rgb(20.0f, 15.0f, 10.0f);
+    const Material lamp = lampMaterial(Rgb(20.0f, 15.0f, 10.0f));
     ASSERT_TRUE(o.materials.setSlot(0, lamp).ok());
     const Camera cam = camera({11.5, 10.0, 11.5}, 225.0, -35.0, 80.0, 40, 30);
     const Difference d = compareWithPathTracer(world, o, cam, 128);

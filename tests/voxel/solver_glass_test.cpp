@@ -181,10 +181,8 @@ struct MirrorGlassLamp {
         world.refreshEmptySpace();
         Material g = glass(Rgb(0.2f));
         g.albedo = Rgb(0.0f);
-        Material lamp;
-        lamp.name = "lamp";
+        Material lamp = lampMaterial(Rgb(2.0f));
         lamp.albedo = Rgb(0.0f);
-        lamp.emission = Rgb(2.0f);
         EXPECT_TRUE(o.materials.setSlot(0, g).ok());
         EXPECT_TRUE(o.materials.setSlot(1, metal(0.0f, Rgb(1.0f))).ok());
         EXPECT_TRUE(o.materials.setSlot(2, lamp).ok());

@@ -117,13 +117,7 @@ TEST(SolverMaterials, RoughDielectricPlaneMatchesThePathTracer) {
 // (PathTraceMaterials.GlassSlabPassesTheFresnelSeriesAndBeerLambert); shaded as an opaque
 // Lambertian face the glass would show its own colour times the light it receives.
 TEST(SolverMaterials, GlassSlabShowsWhatLiesBehindIt) {
-    VoxelWorld world = makeWorld({8, 8, 16});
-    for (int y = 0; y < 8; ++y)
-        for (int x = 0; x < 8; ++x) {
-            world.set(x, y, 0, Voxel{255, 255, 255, 2});
-            for (int z = 6; z < 9; ++z) world.set(x, y, z, Voxel{255, 255, 255, 1});
-        }
-    world.refreshEmptySpace();
+    const VoxelWorld world = slabBeforeAWall();
     ShadeOptions o;
     o.textures = false;
     o.sunIrradiance = Rgb(0.0f);
