@@ -93,14 +93,14 @@ Vec3d sampleGgx(const PathBsdf& b, float u1, float u2) {
     return normalize(h * (2.0 * dot(b.view, h)) - b.view);
 }
 
+}  // namespace
+
 float dielectricFresnel(float cosI, float ior, ShadeOptions::FresnelModel model) {
     if (ior == 1.0f) return 0.0f;  // no index contrast: no interface to reflect
     return model == ShadeOptions::FresnelModel::Exact
                ? shared::fresnelDielectricExact(cosI, 1.0f, ior)
                : shared::fresnelDielectricSchlick(cosI, 1.0f, ior);
 }
-
-}  // namespace
 
 double powerHeuristic(double mine, double other) {
     const double a = mine * mine, b = other * other;

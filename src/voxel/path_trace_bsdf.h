@@ -42,6 +42,10 @@ struct PathBsdf {
     bool smooth() const { return pDiffuse > 0.0 || (pSpecular > 0.0 && !mirror()); }
 };
 
+// The Fresnel reflectance of light arriving from the air at cosine cosI on a dielectric of index
+// `ior`, by the scene's model; 0 for ior 1 (no interface).
+float dielectricFresnel(float cosI, float ior, ShadeOptions::FresnelModel model);
+
 // The response of material `m` with surface colour `colour` (voxel colour x texel x procedural
 // factor x albedo) at a face with outward normal `normal`, hit by a ray along unit `direction`.
 // Transmission counts only when shading.refraction is on (else the material is opaque, as in

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 
-#include "gpu/shaders/shared/optics.h"
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/voxel/surface_cast.h"
 #include "voxel/path_trace_bsdf.h"
@@ -34,12 +33,8 @@ float entryTransmission(const Material& m, Int3 normal, Vec3d direction,
 // slab this is the exit's reflectance after refraction, by symmetry).
 float exitTransmission(const Material& m, Vec3d direction, Int3 outward,
                        const ShadeOptions& shading) {
-    if (m.ior == 1.0f) return 1.0f;  // no index contrast: no interface
     const float cosI = float(std::clamp(dot(direction, toDouble(outward)), 0.0, 1.0));
-    const float f = shading.fresnel == ShadeOptions::FresnelModel::Exact
-                        ? gpu::shared::fresnelDielectricExact(cosI, 1.0f, m.ior)
-                        : gpu::shared::fresnelDielectricSchlick(cosI, 1.0f, m.ior);
-    return 1.0f - f;
+    return 1.0f - dielectricFresnel(cosI, m.ior, shading.fresnel);
 }
 
 // Through the run of transmissive voxels entered at `hit` (the face the ray met); returns the
