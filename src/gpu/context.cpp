@@ -456,21 +456,45 @@ std::array<std::uint32_t, 3> Context::workgroupSize(const Program& program) {
     return program.workgroupSize;
 }
 
-Result<std::vector<PassTiming>> Context::run(std::span<const Dispatch> dispatches) {
-    for (const Dispatch& d : dispatches) {
-        LUXEL_CHECK(d.program != nullptr);
+namespace {
+// Vulkan guarantees 65535 workgroups per axis (maxComputeWorkGroupCount minimum).
+constexpr std::uint64_t kMaxGroupsPerAxis = 65535;
+
+// The workgroups a dispatch launches on each axis: ceil(threads / workgroup size), a linear
+// dispatch's groups folded into rows of at most kMaxGroupsPerAxis.
+Result<std::array<std::uint32_t, 3>> groupCounts(const Dispatch& d) {
+    const auto& local = d.program->workgroupSize;
+    std::array<std::uint64_t, 3> groups{};
+    if (d.linearThreads > 0) {
+        LUXEL_CHECK(local[1] == 1 && local[2] == 1);
+        const std::uint64_t total = (d.linearThreads + local[0] - 1) / local[0];
+        groups = {std::min(total, kMaxGroupsPerAxis),
+                  (total + kMaxGroupsPerAxis - 1) / kMaxGroupsPerAxis, 1};
+    } else {
         for (int a = 0; a < 3; ++a) {
             LUXEL_CHECK_GT(d.threads[a], 0u);
-            // Vulkan guarantees 65535 workgroups per axis (maxComputeWorkGroupCount minimum).
-            const std::uint64_t groups =
-                (std::uint64_t{d.threads[a]} + d.program->workgroupSize[a] - 1) /
-                d.program->workgroupSize[a];
-            if (groups > 65535) {
-                return Error("pass '" + d.name + "' needs " + std::to_string(groups) +
-                             " workgroups on axis " + std::to_string(a) +
-                             "; Vulkan guarantees 65535");
-            }
+            groups[a] = (std::uint64_t{d.threads[a]} + local[a] - 1) / local[a];
         }
+    }
+    for (int a = 0; a < 3; ++a) {
+        if (groups[a] > kMaxGroupsPerAxis) {
+            return Error("pass '" + d.name + "' needs " + std::to_string(groups[a]) +
+                         " workgroups on axis " + std::to_string(a) + "; Vulkan guarantees " +
+                         std::to_string(kMaxGroupsPerAxis));
+        }
+    }
+    return std::array<std::uint32_t, 3>{std::uint32_t(groups[0]), std::uint32_t(groups[1]),
+                                        std::uint32_t(groups[2])};
+}
+}  // namespace
+
+Result<std::vector<PassTiming>> Context::run(std::span<const Dispatch> dispatches) {
+    std::vector<std::array<std::uint32_t, 3>> groups;
+    for (const Dispatch& d : dispatches) {
+        LUXEL_CHECK(d.program != nullptr);
+        auto counts = groupCounts(d);
+        if (!counts) return counts.error();
+        groups.push_back(*counts);
         LUXEL_CHECK_EQ(static_cast<int>(d.buffers.size()), d.program->storageBuffers);
         LUXEL_CHECK_EQ(static_cast<int>(d.pushConstants.size()), d.program->pushBytes);
     }
@@ -527,10 +551,7 @@ Result<std::vector<PassTiming>> Context::run(std::span<const Dispatch> dispatche
                     cmd.pushConstants<std::byte>(
                         *d.program->layout, vk::ShaderStageFlagBits::eCompute, 0, d.pushConstants);
                 }
-                const auto& local = d.program->workgroupSize;
-                cmd.dispatch((d.threads[0] + local[0] - 1) / local[0],
-                             (d.threads[1] + local[1] - 1) / local[1],
-                             (d.threads[2] + local[2] - 1) / local[2]);
+                cmd.dispatch(groups[i][0], groups[i][1], groups[i][2]);
                 if (*queries) {
                     cmd.writeTimestamp(vk::PipelineStageFlagBits::eBottomOfPipe, *queries,
                                        2 * i + 1);

@@ -98,7 +98,7 @@ Status OctreeGpu::State::prepareLightCache(const shared::OctreeRenderParams& p,
     d.program = s.lightProgram;
     d.buffers = {s.params.get(), s.arrays.nodes.get(), s.arrays.leafCounts.get(),
                  s.lightCache.get()};
-    d.setThreads(corners);
+    d.setLinearThreads(corners);
     passes.push_back(std::move(d));
     s.lightStride = p.lightStride;
     s.lightSun[0] = p.sunX, s.lightSun[1] = p.sunY, s.lightSun[2] = p.sunZ;
@@ -222,7 +222,7 @@ Result<std::vector<OctreeHit>> OctreeGpu::castRays(std::span<const voxel::Ray> r
         std::max<std::uint32_t>(options.threshold, 1), static_cast<std::uint32_t>(size.x),
         static_cast<std::uint32_t>(size.y), static_cast<std::uint32_t>(size.z),
         s.arrays.leafOrder ? LUXEL_OCTREE_LEAF_ORDER : 0u});
-    d.setThreads(rays.size());
+    d.setLinearThreads(rays.size());
     auto passes = s.context->run(std::span(&d, 1));
     if (!passes) return passes.error();
     if (timings) timings->insert(timings->end(), passes->begin(), passes->end());

@@ -187,7 +187,7 @@ Result<TrigGpuRun> trigGpu(gpu::Context& context, std::span<const float> inputs,
     d.buffers = {*in, *out};
     d.setPush(shared::PostTrigParams{u32(inputs.size()), u32(std::max(iterations, 1)),
                                      u32(function), u32(std::max(terms, 1))});
-    d.setThreads(inputs.size());
+    d.setLinearThreads(inputs.size());
     auto run = context.run(std::span(&d, 1));
     if (!run) return run.error();
     TrigGpuRun result;

@@ -235,7 +235,7 @@ Result<std::vector<Hit>> VoxelGpuRenderer::castRays(std::span<const Ray> rays, d
                  hitBuffer->get(), s.brickMasks.get(), s.brickReach.get()};
     const std::uint32_t cap = p.stepCap;
     d.setPush(shared::VoxelCastPush{static_cast<std::uint32_t>(rays.size()), cap});
-    d.setThreads(rays.size());
+    d.setLinearThreads(rays.size());
     auto passes = s.context->run(std::span(&d, 1));
     if (!passes) return passes.error();
     if (timings) timings->insert(timings->end(), passes->begin(), passes->end());

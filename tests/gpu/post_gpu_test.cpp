@@ -120,5 +120,21 @@ TEST(PostGpu, TrigKernelsAgreeWithTheirCpuTwins) {
                 builtinError);
 }
 
+TEST(PostGpu, LinearDispatchesPastOneRowOfWorkgroupsReachEveryInvocation) {
+    REQUIRE_GPU();
+    // More invocations than 65535 workgroups of 64 hold: Context::run folds them into two rows
+    // (gpu::Dispatch::setLinearThreads), and the shader's LUXEL_LINEAR_INVOCATION unfolds them.
+    const std::size_t count = std::size_t{65535} * 64 + 1000;
+    std::vector<float> x(count);
+    for (std::size_t i = 0; i < count; ++i) x[i] = float(i % 2001) * 0.001f - 1.0f;
+    auto minimax = trigGpu(*context, x, TrigFunction::MinimaxAsin, 0, 1);
+    ASSERT_TRUE(minimax.ok()) << minimax.error().message();
+    std::size_t wrong = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+        wrong += std::abs(minimax->values[i] - gpu::shared::minimaxAsin8(x[i])) > 1e-6f;
+    }
+    EXPECT_EQ(wrong, 0u) << "of " << count;
+}
+
 }  // namespace
 }  // namespace luxel::post

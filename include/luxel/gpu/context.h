@@ -91,11 +91,22 @@ struct Dispatch {
     std::vector<Buffer*> buffers;
     std::vector<std::byte> pushConstants;
     std::uint32_t threads[3] = {0, 0, 0};
+    std::uint64_t linearThreads = 0;  // set by setLinearThreads
 
     void setThreads(std::uint64_t x, std::uint64_t y = 1, std::uint64_t z = 1) {
         threads[0] = static_cast<std::uint32_t>(x);
         threads[1] = static_cast<std::uint32_t>(y);
         threads[2] = static_cast<std::uint32_t>(z);
+        linearThreads = 0;
+    }
+
+    // `count` invocations of a shader with a one-dimensional workgroup, which reads its index as
+    // LUXEL_LINEAR_INVOCATION (glsl_compat.h) and discards the excess. Context::run folds the
+    // groups into rows of at most 65535 (Vulkan guarantees no more per axis), so counts of
+    // millions (large worlds' probes times bins, long ray batches) need no splitting by callers.
+    void setLinearThreads(std::uint64_t count) {
+        threads[0] = threads[1] = threads[2] = 1;
+        linearThreads = count;
     }
 
     template <typename T>

@@ -43,10 +43,7 @@ gpu::Dispatch makeCascadeDispatch(gpu::Program* program, gpu::Buffer* medium, gp
     d.buffers = {medium, top || !upper ? current : upper, current};
     d.setPush(p);
     const std::uint64_t invocations = static_cast<std::uint64_t>(c.probesX) * c.probesY * stored;
-    // Vulkan guarantees only 65535 groups per dimension: fold large cascades into y.
-    const std::uint64_t groups = (invocations + LUXEL_RC_GROUP_SIZE - 1) / LUXEL_RC_GROUP_SIZE;
-    d.setThreads(std::min<std::uint64_t>(groups, 65535) * LUXEL_RC_GROUP_SIZE,
-                 (groups + 65534) / 65535);
+    d.setLinearThreads(invocations);
     return d;
 }
 

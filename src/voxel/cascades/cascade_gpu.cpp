@@ -187,7 +187,7 @@ Result<double> RadianceCascadesGpu::iterate(int passes) {
     for (int pass = 0; pass < passes; ++pass) {
         gpu::Dispatch out{"cascades_outgoing", g.outgoing, {g.light.get()}, {}, {0, 0, 0}};
         out.setPush(CascadeOutgoingParams{faceCount, 0, 0, 0});
-        out.setThreads(faceCount);
+        out.setLinearThreads(faceCount);
         dispatches.push_back(out);
         for (std::size_t k = state.levels.size(); k-- > 0;) {
             const LevelData& level = state.levels[k];
@@ -213,7 +213,7 @@ Result<double> RadianceCascadesGpu::iterate(int passes) {
                             {},
                             {0, 0, 0}};
             m.setPush(merge);
-            m.setThreads(std::uint64_t(probes) * bins);
+            m.setLinearThreads(std::uint64_t(probes) * bins);
             dispatches.push_back(m);
             if (k == 0) continue;
             CascadeChildMeanParams mean{probes,
@@ -230,7 +230,7 @@ Result<double> RadianceCascadesGpu::iterate(int passes) {
                             {},
                             {0, 0, 0}};
             c.setPush(mean);
-            c.setThreads(std::uint64_t(probes) * bins / 4);
+            c.setLinearThreads(std::uint64_t(probes) * bins / 4);
             dispatches.push_back(c);
         }
         gpu::Dispatch gather{"cascades_gather",
@@ -240,7 +240,7 @@ Result<double> RadianceCascadesGpu::iterate(int passes) {
                              {},
                              {0, 0, 0}};
         gather.setPush(g.gatherParams);
-        gather.setThreads(faceCount);
+        gather.setLinearThreads(faceCount);
         dispatches.push_back(gather);
     }
     auto timings = g.context->run(dispatches);

@@ -139,7 +139,7 @@ Result<std::vector<float>> SunVisibilityGpu::evaluate(std::span<const ShadowQuer
     d.buffers = {s.params.get(), s.moments.get(), s.field.get(),
                  s.levels.get(), qb->get(),       ob->get()};
     d.setPush(shared::ShadowBatchPush{static_cast<shared::uint>(queries.size())});
-    d.setThreads(queries.size());
+    d.setLinearThreads(queries.size());
     auto passes = s.context->run(std::span(&d, 1));
     if (!passes) return passes.error();
     if (timings) timings->insert(timings->end(), passes->begin(), passes->end());

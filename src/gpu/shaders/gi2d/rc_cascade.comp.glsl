@@ -103,9 +103,7 @@ vec3 mergedRay(vec2 p, int k) {
 }
 
 void main() {
-    // Large cascades are folded into a 2D grid of workgroups (65535 per dimension).
-    const uint index =
-        gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x;
+    const uint index = LUXEL_LINEAR_INVOCATION;
     const uint total = params.probesX * params.probesY * params.stored;
     if (index >= total) return;
     const uint probe = index / params.stored, s = index % params.stored;

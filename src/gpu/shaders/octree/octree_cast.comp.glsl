@@ -16,7 +16,7 @@ layout(push_constant) uniform Push { OctreeCastPush batch; };
 #include "octree/octree_access.glsl"
 
 void main() {
-    const uint i = gl_GlobalInvocationID.x;
+    const uint i = LUXEL_LINEAR_INVOCATION;
     if (i >= batch.rays) return;
     const VoxelCastRay r = rays[i];
     const vec3 o = vec3(r.originX, r.originY, r.originZ);

@@ -26,7 +26,7 @@ float octreeLightCacheValue(uint tree, uint corner) {
 #include "shared/octree_render.h"
 
 void main() {
-    const uint corner = gl_GlobalInvocationID.x;
+    const uint corner = LUXEL_LINEAR_INVOCATION;
     if (corner >= octreeLightCacheCorners(params)) return;
     lightCache[corner] = octreeLightCacheCorner(0u, params, corner);
 }

@@ -22,7 +22,7 @@ float evaluate(float x) {
 }
 
 void main() {
-    const uint i = gl_GlobalInvocationID.x;
+    const uint i = LUXEL_LINEAR_INVOCATION;
     if (i >= params.count) return;
     const float x = inputs[i];
     float sum = 0.0;

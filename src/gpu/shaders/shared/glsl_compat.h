@@ -234,6 +234,10 @@ constexpr tvec3<T> cross(tvec3<T> a, tvec3<T> b) {
 #define LUXEL_IN(T) in T
 #define LUXEL_UNROLL_AXES
 #define LUXEL_INFINITY (uintBitsToFloat(0x7f800000u))
+// The index of an invocation of a one-dimensional dispatch (gpu::Dispatch::setLinearThreads),
+// whose workgroups the runtime folds into rows of at most 65535.
+#define LUXEL_LINEAR_INVOCATION \
+    (gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * (gl_NumWorkGroups.x * gl_WorkGroupSize.x))
 
 #endif
 

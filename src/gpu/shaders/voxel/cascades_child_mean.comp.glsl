@@ -14,7 +14,7 @@ layout(push_constant) uniform Push { CascadeChildMeanParams params; };
 
 void main() {
     const uint side = params.binSide, halfSide = side / 2u, parents = halfSide * halfSide;
-    const uint index = gl_GlobalInvocationID.x;
+    const uint index = LUXEL_LINEAR_INVOCATION;
     if (index >= params.probes * parents) return;
     const uint p = index / parents, b = index % parents;
     const uint bx = 2u * (b % halfSide), by = 2u * (b / halfSide);

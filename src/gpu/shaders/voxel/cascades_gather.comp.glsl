@@ -17,7 +17,7 @@ layout(std430, set = 0, binding = 6) readonly buffer CosineBins { uint cosineBin
 layout(push_constant) uniform Push { CascadeGatherParams params; };
 
 void main() {
-    const uint f = gl_GlobalInvocationID.x;
+    const uint f = LUXEL_LINEAR_INVOCATION;
     if (f >= params.faces) return;
     const uint normal = faceInfo[2u * f], first = faceInfo[2u * f + 1u];
     const uint corner = (params.cornerOffset + f) * 16u;

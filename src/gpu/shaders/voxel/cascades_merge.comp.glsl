@@ -23,7 +23,7 @@ vec3 codeRadiance(uint code, uint bin, vec3 next) {
 }
 
 void main() {
-    const uint index = gl_GlobalInvocationID.x;
+    const uint index = LUXEL_LINEAR_INVOCATION;
     if (index >= params.probes * params.bins) return;
     const uint p = index / params.bins, b = index % params.bins;
     vec3 result;

@@ -13,7 +13,7 @@ layout(push_constant) uniform Push { CascadeOutgoingParams params; };
 vec3 section(uint s, uint f) { return texelRgb(light[s * params.faces + f]); }
 
 void main() {
-    const uint f = gl_GlobalInvocationID.x;
+    const uint f = LUXEL_LINEAR_INVOCATION;
     if (f >= params.faces) return;
     const vec3 received = section(LUXEL_FACE_DIRECT, f) + section(LUXEL_FACE_IRRADIANCE, f) +
                           section(LUXEL_FACE_EMITTER, f);

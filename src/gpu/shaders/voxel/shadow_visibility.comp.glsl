@@ -16,7 +16,7 @@ layout(std430, set = 0, binding = 5) writeonly buffer Visibility { float visibil
 layout(push_constant) uniform Push { ShadowBatchPush batch; };
 
 void main() {
-    uint i = gl_GlobalInvocationID.x;
+    uint i = LUXEL_LINEAR_INVOCATION;
     if (i >= batch.count) return;
     ShadowQueryGpu q = queries[i];
     visibility[i] = sunVisibility(vec3(q.x, q.y, q.z), ivec3(q.normalX, q.normalY, q.normalZ),

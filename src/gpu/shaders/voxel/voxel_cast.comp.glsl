@@ -18,7 +18,7 @@ layout(push_constant) uniform Push { VoxelCastPush batch; };
 #include "voxel/voxel_world_access.glsl"
 
 void main() {
-    const uint i = gl_GlobalInvocationID.x;
+    const uint i = LUXEL_LINEAR_INVOCATION;
     if (i >= batch.rays) return;
     const VoxelCastRay r = rays[i];
     const Hit h = castRayLimited(vec3(r.originX, r.originY, r.originZ),
