@@ -365,18 +365,26 @@ Status checkStagingMemory(std::size_t bytes) {
 }  // namespace
 
 Status Context::upload(Buffer& buffer, std::span<const std::byte> data, std::uint64_t offset) {
-    LUXEL_CHECK_LE(offset + data.size(), buffer.bytes);
+    return uploadWith(
+        buffer, data.size(),
+        [&](std::span<std::byte> mapped) { std::memcpy(mapped.data(), data.data(), data.size()); },
+        offset);
+}
+
+Status Context::uploadWith(Buffer& buffer, std::uint64_t bytes,
+                           const std::function<void(std::span<std::byte>)>& write,
+                           std::uint64_t offset) {
+    LUXEL_CHECK_LE(offset + bytes, buffer.bytes);
     LUXEL_CHECK_EQ(offset % 4, 0u);
-    if (data.empty()) return Ok{};
-    if (Status s = checkStagingMemory(data.size()); !s) return s;
+    if (bytes == 0) return Ok{};
+    if (Status s = checkStagingMemory(bytes); !s) return s;
     return guarded([&]() -> Status {
         std::unique_ptr<Buffer> transient;
         Buffer* staging = nullptr;
-        std::byte* mapped = impl_->staging(data.size(), transient, staging);
-        std::memcpy(mapped, data.data(), data.size());
+        std::byte* mapped = impl_->staging(bytes, transient, staging);
+        write(std::span(mapped, bytes));
         impl_->submitAndWait([&](vk::raii::CommandBuffer& cmd) {
-            cmd.copyBuffer(*staging->buffer, *buffer.buffer,
-                           vk::BufferCopy(0, offset, data.size()));
+            cmd.copyBuffer(*staging->buffer, *buffer.buffer, vk::BufferCopy(0, offset, bytes));
         });
         return Ok{};
     });

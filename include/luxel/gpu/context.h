@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -61,6 +62,12 @@ class Context {
     Result<std::shared_ptr<Buffer>> createBuffer(std::uint64_t bytes);
     // Copies `data` into the buffer at byte `offset` (a multiple of 4).
     Status upload(Buffer& buffer, std::span<const std::byte> data, std::uint64_t offset = 0);
+    // Copies `bytes` into the buffer at `offset` that `write` puts straight into the mapped
+    // staging memory: data packed for the GPU is written once, not packed into a vector first
+    // and copied from it.
+    Status uploadWith(Buffer& buffer, std::uint64_t bytes,
+                      const std::function<void(std::span<std::byte>)>& write,
+                      std::uint64_t offset = 0);
     Status download(const Buffer& buffer, std::span<std::byte> data);
     // Sets every 32-bit word of the buffer to `word` on the device (0: zeroes it).
     Status fill(Buffer& buffer, std::uint32_t word = 0);

@@ -123,6 +123,17 @@ gpu::Dispatch makeFinishDispatch(gpu::Program* program, gpu::Buffer* canvasMediu
     return d;
 }
 
+gpu::Dispatch makeTransposeDispatch(gpu::Program* program, gpu::Buffer* rows, gpu::Buffer* columns,
+                                    int width, int height) {
+    gpu::Dispatch d;
+    d.name = "medium transpose";
+    d.program = program;
+    d.buffers = {rows, columns};
+    d.setPush(shared::MediumTransposeParams{u32(width), u32(height), 0, 0});
+    d.setThreads(u32(width), u32(height));
+    return d;
+}
+
 Result<double> traceLevelOnGpu(gpu::Context& context, const Medium2D& medium,
                                const FrustumFrame& frame, RayTables& tables, int n) {
     LUXEL_CHECK(n >= 0 && n < tables.levels());

@@ -36,6 +36,9 @@ gpu::Dispatch makeMergeDispatch(gpu::Program* program, gpu::Buffer* table, gpu::
                                 int upperPlanes, Rgb sky);
 gpu::Dispatch makeReadoutDispatch(gpu::Program* program, gpu::Buffer* cones, gpu::Buffer* beyond,
                                   const FrustumFrame& frame, Rgb sky);
+// The medium's column-major copy from its row-major one (medium_transpose.comp.glsl).
+gpu::Dispatch makeTransposeDispatch(gpu::Program* program, gpu::Buffer* rows, gpu::Buffer* columns,
+                                    int width, int height);
 gpu::Dispatch makeFinishDispatch(gpu::Program* program, gpu::Buffer* canvasMedium,
                                  gpu::Buffer* beyond, gpu::Buffer* fluence, int width, int height,
                                  int frustums, bool blur);

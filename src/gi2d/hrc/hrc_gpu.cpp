@@ -88,7 +88,8 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
     auto merge = context.program("hrc_merge", 4, sizeof(HrcMergeParams));
     auto readout = context.program("hrc_readout", 2, sizeof(HrcReadoutParams));
     auto finish = context.program("hrc_finish", 3, sizeof(HrcFinishParams));
-    for (auto* p : {&trace, &extend, &merge, &readout, &finish}) {
+    auto transpose = context.program("medium_transpose", 2, sizeof(shared::MediumTransposeParams));
+    for (auto* p : {&trace, &extend, &merge, &readout, &finish, &transpose}) {
         if (!*p) return p->error();
     }
 
@@ -120,16 +121,26 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
         if (!*b) return b->error();
     }
     {
+        // The rows are packed straight into the staging memory (in parallel) and the columns
+        // copied from them on the GPU: the medium crosses to the device once.
         Stopwatch upload;
-        for (bool transposed : {false, true}) {
-            const auto packed = packMediumForGpu(medium, transposed);
-            auto& buffer = transposed ? *transposedMedium : *canvasMedium;
-            if (Status s = context.upload(*buffer, std::as_bytes(std::span(packed))); !s) {
-                return s.error();
-            }
+        if (Status s = context.uploadWith(
+                **canvasMedium, pixels * sizeof(shared::MediumTexel),
+                [&](std::span<std::byte> mapped) {
+                    packMediumForGpu(
+                        medium,
+                        std::span(reinterpret_cast<shared::MediumTexel*>(mapped.data()), pixels));
+                });
+            !s) {
+            return s.error();
         }
         if (Status s = context.fill(**beyond); !s) return s.error();
         record("upload canvas media (CPU)", upload.milliseconds());
+        const gpu::Dispatch columns =
+            makeTransposeDispatch(*transpose, canvasMedium->get(), transposedMedium->get(), w, h);
+        auto ran = context.run(std::span<const gpu::Dispatch>(&columns, 1));
+        if (!ran) return ran.error();
+        if (timings) timings->insert(timings->end(), ran->begin(), ran->end());
     }
 
     auto traceMedium = [&](const FrustumFrame& frame) {

@@ -57,6 +57,10 @@ Result<std::shared_ptr<Buffer>> Context::createBuffer(std::uint64_t) {
 Status Context::upload(Buffer&, std::span<const std::byte>, std::uint64_t) {
     return withoutBackend();
 }
+Status Context::uploadWith(Buffer&, std::uint64_t, const std::function<void(std::span<std::byte>)>&,
+                           std::uint64_t) {
+    return withoutBackend();
+}
 Status Context::download(const Buffer&, std::span<std::byte>) {
     return withoutBackend();
 }

@@ -20,6 +20,12 @@ struct RgbTexel {
     float r, g, b;
 };
 
+// The medium's column-major copy made on the GPU from its rows (medium_transpose.comp.glsl).
+struct MediumTransposeParams {
+    uint width, height;
+    uint pad0, pad1;
+};
+
 LUXEL_FUNC vec3 mediumSigma(MediumTexel m) {
     return vec3(m.sigmaR, m.sigmaG, m.sigmaB);
 }
@@ -39,6 +45,7 @@ LUXEL_SHARED_END
 static_assert(sizeof(luxel::gpu::shared::MediumTexel) == 24);
 static_assert(offsetof(luxel::gpu::shared::MediumTexel, emissionR) == 12);
 static_assert(sizeof(luxel::gpu::shared::RgbTexel) == 12);
+static_assert(sizeof(luxel::gpu::shared::MediumTransposeParams) == 16);
 #endif
 
 #endif
