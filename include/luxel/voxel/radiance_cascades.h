@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "luxel/core/error.h"
@@ -118,6 +119,9 @@ struct CascadeImage {
     Image radiance;
     CascadeStats stats;
     double lightSeconds = 0.0, renderSeconds = 0.0;
+    // renderRadianceCascadesGpu: where the picture was meant for the GPU but drawn on the CPU,
+    // why (empty otherwise).
+    std::string note;
 };
 
 // create(), solve() and render() in one call.
