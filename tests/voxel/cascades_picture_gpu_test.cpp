@@ -5,11 +5,15 @@
 // no hardware GPU, and skips where there is no Vulkan device.
 //
 // Both pictures cast the same rays and draw the same random numbers (shared/path_rng.h); the GPU
-// works in float where the CPU works partly in double. So nearly every pixel agrees to float
-// rounding, and the few that differ are those where a ray passes within rounding of a voxel edge
-// (a shadow ray, a GGX direction or the primary ray then meets another face). The bounds below
-// are the measured worst cases with about twice their margin (docs/gpu.md): a wrong term
-// anywhere (the sun, a lobe, the irradiance lookup, the follow depth) moves most pixels.
+// works in float where the CPU works partly in double. So every pixel agrees to float rounding
+// unless a ray passes within rounding of a voxel edge (a shadow ray, a GGX direction or the
+// primary ray then meets another face). On lavapipe (CI) no pixel does: measured rel-L1 5e-9 on
+// the cottage and at most 7e-8 in the glass room, low-frequency error at most 2e-7, every channel
+// within 1e-3; the bounds (`Bounds`) are those with a margin of 10 or more. A hardware driver's
+// sin, exp and sqrt round otherwise and may turn a few rays at edges (one of 4 sun rays in one
+// pixel of 96x54 is about 5e-5 of rel-L1), so there the bounds allow a few such pixels. Either
+// way a wrong term (1 sun ray instead of 4 moved 5% of the cottage's channels, rel-L1 8e-5, a
+// block 3e-3; the glass room 64% of them) fails.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -75,11 +79,19 @@ struct Pictures {
     double gpuMilliseconds = 0;
 };
 
-// The lighting passes on the GPU, then both pictures from the same (downloaded) irradiance.
+// The shared context (the picture's shader is compiled once for all tests), or a skip.
+#define REQUIRE_CONTEXT(context)                               \
+    gpu::Context* context = ::luxel::test::sharedGpuContext(); \
+    if (!context) GTEST_SKIP() << "no Vulkan device: " << gpu::Context::create().error().message()
+
+// The lighting passes on the GPU, then both pictures from the same irradiance.
 Pictures drawBoth(gpu::Context& context, const VoxelWorld& world, const TextureSet* textures,
                   const ShadeOptions& shading, const std::vector<Camera>& cameras,
                   std::vector<Pictures>* more = nullptr) {
-    auto cascades = RadianceCascades::create(world, textures, shading, CascadeOptions{});
+    // Four bounces: the pictures compare the same irradiance, whatever it converged to.
+    CascadeOptions options;
+    options.bounces = 4;
+    auto cascades = RadianceCascades::create(world, textures, shading, options);
     EXPECT_TRUE(cascades.ok()) << cascades.error().message();
     if (!cascades.ok()) return {};
     auto gpu = RadianceCascadesGpu::create(context, *cascades);
@@ -87,41 +99,55 @@ Pictures drawBoth(gpu::Context& context, const VoxelWorld& world, const TextureS
     if (!gpu.ok()) return {};
     auto solved = gpu->solve();
     EXPECT_TRUE(solved.ok()) << solved.error().message();
-    std::vector<Pictures> drawn;
-    for (const Camera& camera : cameras) {
-        Pictures p;
-        auto onGpu = gpu->render(camera, &p.gpuMilliseconds);
+    // One more pass, not downloaded: the GPU picture must read the irradiance on the device
+    // (the CPU object still holds the last pass's until download()).
+    EXPECT_TRUE(gpu->iterate(1).ok());
+    std::vector<Pictures> drawn(cameras.size());
+    for (std::size_t i = 0; i < cameras.size(); ++i) {
+        auto onGpu = gpu->render(cameras[i], &drawn[i].gpuMilliseconds);
         EXPECT_TRUE(onGpu.ok()) << onGpu.error().message();
-        auto onCpu = cascades->render(camera);
+        if (!onGpu.ok()) return {};
+        drawn[i].gpu = std::move(*onGpu);
+    }
+    EXPECT_TRUE(gpu->download().ok());
+    for (std::size_t i = 0; i < cameras.size(); ++i) {
+        auto onCpu = cascades->render(cameras[i]);
         EXPECT_TRUE(onCpu.ok()) << onCpu.error().message();
-        if (!onGpu.ok() || !onCpu.ok()) return {};
-        p.gpu = std::move(*onGpu);
-        p.cpu = std::move(*onCpu);
-        drawn.push_back(std::move(p));
+        if (!onCpu.ok()) return {};
+        drawn[i].cpu = std::move(*onCpu);
     }
     EXPECT_EQ(context.validationMessages(), 0) << context.lastValidationMessage();
     if (more) *more = drawn;
     return drawn.empty() ? Pictures{} : std::move(drawn.front());
 }
 
-void report(const char* name, const Parity& p) {
+struct Bounds {
+    double relativeL1, lowFrequency, same;
+};
+
+// Tight on a CPU device (lavapipe: measured), looser on hardware (a few rays turned at edges).
+Bounds boundsFor(const gpu::Context& context) {
+    if (context.device().type == "cpu") return {1e-6, 2e-6, 0.999};
+    return {2e-4, 1e-3, 0.995};
+}
+
+void expectWithin(const Parity& p, const Bounds& b, const char* name) {
     std::printf("%s: rel-L1 %.2e, low-frequency %.2e, same %.5f\n", name, p.relativeL1,
                 p.lowFrequency, p.same);
+    EXPECT_LE(p.relativeL1, b.relativeL1) << name;
+    EXPECT_LE(p.lowFrequency, b.lowFrequency) << name;
+    EXPECT_GE(p.same, b.same) << name;
 }
 
 TEST(CascadesPictureGpu, CottageMatchesTheCpuPicture) {
-    LUXEL_REQUIRE_GPU(context);
+    REQUIRE_CONTEXT(context);
     auto scene =
         loadVoxelScene(std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/cottage.json", 96, 54);
     ASSERT_TRUE(scene.ok()) << scene.error().message();
     const Pictures p =
         drawBoth(*context, scene->world, &scene->textures, scene->shading, {scene->camera});
     ASSERT_FALSE(p.gpu.empty());
-    const Parity parity = compare(p.cpu, p.gpu);
-    report("cottage", parity);
-    EXPECT_LE(parity.relativeL1, 2e-3);
-    EXPECT_LE(parity.lowFrequency, 5e-3);
-    EXPECT_GE(parity.same, 0.98);
+    expectWithin(compare(p.cpu, p.gpu), boundsFor(*context), "cottage");
     EXPECT_GT(p.gpuMilliseconds, 0.0);
 }
 
@@ -168,7 +194,7 @@ struct GlassRoom {
 };
 
 TEST(CascadesPictureGpu, GlassMirrorAndMetalMatchTheCpuPicture) {
-    LUXEL_REQUIRE_GPU(context);
+    REQUIRE_CONTEXT(context);
     const GlassRoom room;
     const Camera camera = *Camera::lookAt({20.0, 7.0, 20.0}, {8.0, 2.0, 6.0}, 60.0, 96, 54);
     // Looking into the mirror, which shows the glass block and the room behind the camera.
@@ -177,16 +203,13 @@ TEST(CascadesPictureGpu, GlassMirrorAndMetalMatchTheCpuPicture) {
     drawBoth(*context, room.world, nullptr, room.o, {camera, mirror}, &drawn);
     ASSERT_EQ(drawn.size(), 2u);
     for (std::size_t i = 0; i < drawn.size(); ++i) {
-        const Parity parity = compare(drawn[i].cpu, drawn[i].gpu);
-        report(i == 0 ? "glass room" : "glass room in the mirror", parity);
-        EXPECT_LE(parity.relativeL1, 2e-3) << i;
-        EXPECT_LE(parity.lowFrequency, 5e-3) << i;
-        EXPECT_GE(parity.same, 0.98) << i;
+        expectWithin(compare(drawn[i].cpu, drawn[i].gpu), boundsFor(*context),
+                     i == 0 ? "glass room" : "glass room in the mirror");
     }
 }
 
 TEST(CascadesPictureGpu, SkyOnlyIsTheSky) {
-    LUXEL_REQUIRE_GPU(context);
+    REQUIRE_CONTEXT(context);
     // One voxel in a corner so the cascades have a face; the camera looks up past it.
     VoxelWorld world = makeWorld({16, 16, 16});
     world.set(0, 0, 0, kWhite);
@@ -208,7 +231,7 @@ TEST(CascadesPictureGpu, SkyOnlyIsTheSky) {
 }
 
 TEST(CascadesPictureGpu, CameraInsideASolidVoxelSeesBlackAndTooLargeImagesAreRefused) {
-    LUXEL_REQUIRE_GPU(context);
+    REQUIRE_CONTEXT(context);
     VoxelWorld world = makeWorld({16, 8, 16});
     for (int z = 0; z < 16; ++z)
         for (int x = 0; x < 16; ++x) world.set(x, 0, z, kWhite);
