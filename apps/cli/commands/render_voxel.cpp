@@ -256,16 +256,16 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         if (!shaded) return reportError(shaded.error());
         internal = std::move(shaded->radiance);
     } else if (request.cascadeSolver) {
+        std::string note;  // why the GPU's picture was drawn on the CPU
         auto shaded = *context ? voxel::renderRadianceCascadesGpu(**context, scene->world, camera,
                                                                   scene->shading, request.cascades,
-                                                                  &scene->textures)
+                                                                  &scene->textures, &note)
                                : voxel::renderRadianceCascades(scene->world, camera, scene->shading,
                                                                request.cascades, &scene->textures);
         if (!shaded) return reportError(shaded.error());
         cascaded = std::move(*shaded);
         internal = std::move(cascaded.radiance);
-        if (!cascaded.note.empty())
-            std::fprintf(stderr, "luxel: note: %s\n", cascaded.note.c_str());
+        if (!note.empty()) std::fprintf(stderr, "luxel: note: %s\n", note.c_str());
     } else if (*context) {
         auto image = renderOnGpu(**context, *scene, camera);
         if (!image) return reportError(image.error());

@@ -18,7 +18,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <string>
 #include <vector>
 
 #include "luxel/core/error.h"
@@ -119,9 +118,6 @@ struct CascadeImage {
     Image radiance;
     CascadeStats stats;
     double lightSeconds = 0.0, renderSeconds = 0.0;
-    // renderRadianceCascadesGpu: where the picture was meant for the GPU but drawn on the CPU,
-    // why (empty otherwise).
-    std::string note;
 };
 
 // create(), solve() and render() in one call.

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "luxel/core/error.h"
@@ -48,10 +49,11 @@ class RadianceCascadesGpu {
 
 // renderRadianceCascades (radiance_cascades.h) with the lighting passes and the picture on
 // `context`; the build stays on the CPU. When the GPU cannot draw the picture (no room on the
-// device), the CPU draws it and CascadeImage::note says why.
+// device), the CPU draws it and `note` (when given) receives why; it is left empty otherwise.
 Result<CascadeImage> renderRadianceCascadesGpu(gpu::Context& context, const VoxelWorld& world,
                                                const Camera& camera, const ShadeOptions& shading,
                                                const CascadeOptions& options = {},
-                                               const TextureSet* textures = nullptr);
+                                               const TextureSet* textures = nullptr,
+                                               std::string* note = nullptr);
 
 }  // namespace luxel::voxel

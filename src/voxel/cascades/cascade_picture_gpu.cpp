@@ -189,13 +189,14 @@ Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilli
 Result<CascadeImage> renderRadianceCascadesGpu(gpu::Context& context, const VoxelWorld& world,
                                                const Camera& camera, const ShadeOptions& shading,
                                                const CascadeOptions& options,
-                                               const TextureSet* textures) {
+                                               const TextureSet* textures, std::string* note) {
     using Clock = std::chrono::steady_clock;
     const auto since = [](Clock::time_point start) {
         return std::chrono::duration<double>(Clock::now() - start).count();
     };
     auto cascades = RadianceCascades::create(world, textures, shading, options);
     if (!cascades) return cascades.error();
+    if (note) note->clear();
     CascadeImage out;
     auto start = Clock::now();
     auto gpu = RadianceCascadesGpu::create(context, *cascades);
@@ -206,8 +207,10 @@ Result<CascadeImage> renderRadianceCascadesGpu(gpu::Context& context, const Voxe
     Result<Image> image = gpu->render(camera);
     if (!image) {
         // solve() downloaded the faces' irradiance: the CPU draws the same picture.
-        out.note =
-            "the radiance cascades' picture was drawn on the CPU: " + image.error().message();
+        if (note) {
+            *note =
+                "the radiance cascades' picture was drawn on the CPU: " + image.error().message();
+        }
         image = cascades->render(camera);
         if (!image) return image.error();
     }
