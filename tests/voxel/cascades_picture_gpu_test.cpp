@@ -230,7 +230,7 @@ TEST(CascadesPictureGpu, SkyOnlyIsTheSky) {
         }
 }
 
-TEST(CascadesPictureGpu, CameraInsideASolidVoxelSeesBlackAndTooLargeImagesAreRefused) {
+TEST(CascadesPictureGpu, CameraInsideASolidVoxelSeesBlackAndWhatDoesNotFitIsRefused) {
     REQUIRE_CONTEXT(context);
     VoxelWorld world = makeWorld({16, 8, 16});
     for (int z = 0; z < 16; ++z)
@@ -258,6 +258,14 @@ TEST(CascadesPictureGpu, CameraInsideASolidVoxelSeesBlackAndTooLargeImagesAreRef
     double sum = 0;
     for (float v : std::span(lit->data(), lit->size())) sum += v;
     EXPECT_GT(sum, 0.0);
+    // A budget too small for the picture: refused with its bytes, and the next frame without
+    // one is drawn.
+    auto tight = gpu->render(outside, nullptr, 4096);
+    ASSERT_FALSE(tight.ok());
+    for (const char* part : {"40x30 on the GPU needs", "faces' table", "the budget is 4.0 KiB"}) {
+        EXPECT_NE(tight.error().message().find(part), std::string::npos) << tight.error().message();
+    }
+    EXPECT_TRUE(gpu->render(outside).ok());
     auto huge = Camera::create({7.5, 2.5, 7.5}, 0.0, 0.0, 60.0, 16384, 8192);
     ASSERT_TRUE(huge.ok());
     auto refused = gpu->render(*huge);

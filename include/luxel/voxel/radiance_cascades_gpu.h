@@ -5,6 +5,7 @@
 // faces' irradiance back to the RadianceCascades it was made from.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,9 +33,12 @@ class RadianceCascadesGpu {
     Status download();
     // RadianceCascades::render on the GPU: the same rays and random numbers, in float, from the
     // faces' irradiance on the device (no download). The first call uploads the world, its
-    // textures and the faces' table; fails (naming why) when the device has no room or the
-    // image more than kMaxPathPixels pixels. `gpuMilliseconds` receives the dispatch's GPU time.
-    Result<Image> render(const Camera& camera, double* gpuMilliseconds = nullptr);
+    // textures and the faces' table. Fails (naming why) when the image has more than
+    // kMaxPathPixels pixels or the world's upload, the faces' table and the image need more
+    // than `memoryBudget` bytes (0: the device's memory). `gpuMilliseconds` receives the
+    // dispatch's GPU time.
+    Result<Image> render(const Camera& camera, double* gpuMilliseconds = nullptr,
+                         std::uint64_t memoryBudget = 0);
     // RadianceCascades::solve on the GPU: passes until the options' bounces are done or a pass
     // changes the faces' total irradiance by less than the tolerance (measured after each pass,
     // as the CPU does), then download(). Returns the passes run.

@@ -96,24 +96,33 @@ shared::CascadePicturePush picturePush(const ShadeOptions& shading, std::uint32_
     return p;
 }
 
+// Refuses, with the bytes, a picture whose world, faces' table and image exceed `budget` (0: the
+// device's memory).
+Status checkRoom(const gpu::Context& context, const Camera& camera, std::uint64_t world,
+                 std::uint64_t table, std::uint64_t budget) {
+    const std::uint64_t image = std::uint64_t(camera.width()) * camera.height() * 3 * sizeof(float);
+    const std::uint64_t need = world + table + image;
+    const std::uint64_t room = budget > 0 ? budget : context.device().deviceLocalBytes;
+    if (room > 0 && need > room) {
+        return Error("the radiance cascades' picture " + sizeText(camera) + " on the GPU needs " +
+                     formatBytes(need) + " of device memory (world " + formatBytes(world) +
+                     ", faces' table " + formatBytes(table) + ", image " + formatBytes(image) +
+                     "), " + (budget > 0 ? "the budget is " : "the device has ") +
+                     formatBytes(room));
+    }
+    return Ok{};
+}
+
 // The world, the faces' table and the albedo table on the device, after the memory check.
 Result<std::unique_ptr<PictureGpu>> makePicture(gpu::Context& context,
                                                 const RadianceCascades::State& state,
-                                                const Camera& camera) {
+                                                const Camera& camera, std::uint64_t budget) {
     const std::vector<shared::CascadeFaceSlot> slots = faceSlots(state.faces.table);
     const std::vector<float> albedo = albedoTable();
     const std::uint64_t world = estimateVoxelGpuMemory(
                             state.world->size(), state.world->chunkSize(), state.textures, 0, 0),
-                        table = slots.size() * sizeof(shared::CascadeFaceSlot),
-                        image = std::uint64_t(camera.width()) * camera.height() * 3 * sizeof(float);
-    const std::uint64_t need = world + table + image;
-    const std::uint64_t device = context.device().deviceLocalBytes;
-    if (device > 0 && need > device) {
-        return Error("the radiance cascades' picture " + sizeText(camera) + " on the GPU needs " +
-                     formatBytes(need) + " of device memory (world " + formatBytes(world) +
-                     ", faces' table " + formatBytes(table) + ", image " + formatBytes(image) +
-                     "), the device has " + formatBytes(device));
-    }
+                        table = slots.size() * sizeof(shared::CascadeFaceSlot);
+    if (Status s = checkRoom(context, camera, world, table, budget); !s) return s.error();
     auto picture = std::make_unique<PictureGpu>();
     auto program = context.program("cascades_picture", LUXEL_PICTURE_BUFFERS,
                                    sizeof(shared::CascadePicturePush));
@@ -123,6 +132,8 @@ Result<std::unique_ptr<PictureGpu>> makePicture(gpu::Context& context,
     if (!uploaded) return uploaded.error();
     picture->world = std::make_unique<VoxelGpuRenderer>(std::move(*uploaded));
     picture->slotMask = std::uint32_t(slots.size() - 1);
+    picture->worldBytes = world;
+    picture->tableBytes = table;
     for (auto [target, data] : {std::pair{&picture->slots, std::as_bytes(std::span(slots))},
                                 std::pair{&picture->albedo, std::as_bytes(std::span(albedo))}}) {
         auto buffer = context.createBuffer(data.size());
@@ -135,7 +146,8 @@ Result<std::unique_ptr<PictureGpu>> makePicture(gpu::Context& context,
 
 }  // namespace
 
-Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilliseconds) {
+Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilliseconds,
+                                          std::uint64_t memoryBudget) {
     Impl& g = *impl_;
     const RadianceCascades::State& state = *g.state;
     const int width = camera.width(), height = camera.height();
@@ -144,11 +156,14 @@ Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilli
                      std::to_string(kMaxPathPixels) + " pixels");
     }
     if (!g.picture) {
-        auto made = makePicture(*g.context, state, camera);
+        auto made = makePicture(*g.context, state, camera, memoryBudget);
         if (!made) return made.error();
         g.picture = std::move(*made);
     }
     PictureGpu& p = *g.picture;
+    if (Status s = checkRoom(*g.context, camera, p.worldBytes, p.tableBytes, memoryBudget); !s) {
+        return s.error();
+    }
     const std::uint64_t imageBytes = std::uint64_t(width) * height * 3 * sizeof(float);
     if (!p.image || p.imageBytes < imageBytes) {
         p.image.reset();

@@ -21,6 +21,7 @@ struct PictureGpu {
     std::unique_ptr<VoxelGpuRenderer> world;  // the world, textures and materials on the device
     std::shared_ptr<gpu::Buffer> slots, albedo, image;
     std::uint64_t imageBytes = 0;
+    std::uint64_t worldBytes = 0, tableBytes = 0;  // the estimates the memory check counts
     std::uint32_t slotMask = 0;
     gpu::Program* program = nullptr;
 };
