@@ -1,12 +1,17 @@
 // Voxel radiance cascades (docs/algorithms/voxel-radiance-cascades.md): the parts of a real-time
 // frame on a shipped scene, in CPU time: one lighting pass (a bounce), the picture at 640x360,
 // and the one-off build. `--benchmark_filter=voxel_cascades`; the CPU column is the whole
-// process (all threads): on an idle 2-core machine a frame takes about half of it.
+// process (all threads): on an idle 2-core machine a frame takes about half of it. The `_gpu`
+// benchmarks time the lighting pass and the picture on the GPU by its timestamps (transfers
+// excluded); they are skipped without a Vulkan device and on a CPU device (lavapipe).
 #include <benchmark/benchmark.h>
 
+#include <memory>
 #include <string>
 
+#include "luxel/gpu/context.h"
 #include "luxel/voxel/radiance_cascades.h"
+#include "luxel/voxel/radiance_cascades_gpu.h"
 #include "luxel/voxel/voxel_scene.h"
 
 namespace {
@@ -50,8 +55,72 @@ void BM_VoxelCascadesPicture(benchmark::State& state) {
         double(scene.camera.width()) * scene.camera.height() * 1e-6, benchmark::Counter::kIsRate);
 }
 
+// A hardware Vulkan device, or null (with the reason in `why`).
+gpu::Context* hardwareGpu(std::string& why) {
+    static std::string reason;
+    static std::unique_ptr<gpu::Context> context = [] {
+        auto c = gpu::Context::create();
+        if (!c) {
+            reason = "no Vulkan device: " + c.error().message();
+            return std::unique_ptr<gpu::Context>();
+        }
+        if ((*c)->device().type == "cpu") {
+            reason = "the Vulkan device is a CPU (" + (*c)->device().name + ")";
+            return std::unique_ptr<gpu::Context>();
+        }
+        return std::move(*c);
+    }();
+    why = reason;
+    return context.get();
+}
+
+// picture: false times one lighting pass, true the picture at the scene's 640x360 after a solve.
+void BM_VoxelCascadesGpu(benchmark::State& state, bool picture) {
+    std::string why;
+    gpu::Context* context = hardwareGpu(why);
+    if (!context) {
+        state.SkipWithError(why.c_str());
+        return;
+    }
+    VoxelScene& scene = cottage();
+    auto cascades = RadianceCascades::create(scene.world, &scene.textures, scene.shading);
+    auto gpu = cascades ? RadianceCascadesGpu::create(*context, *cascades)
+                        : Result<RadianceCascadesGpu>(cascades.error());
+    if (!gpu || (picture && !gpu->solve())) {
+        state.SkipWithError(gpu ? "the lighting passes failed" : gpu.error().message().c_str());
+        return;
+    }
+    for (auto _ : state) {
+        double ms = 0;
+        if (picture) {
+            auto image = gpu->render(scene.camera, &ms);
+            if (!image) {
+                state.SkipWithError(image.error().message().c_str());
+                return;
+            }
+        } else {
+            auto pass = gpu->iterate(1);
+            if (!pass) {
+                state.SkipWithError(pass.error().message().c_str());
+                return;
+            }
+            ms = *pass;
+        }
+        state.SetIterationTime(ms * 1e-3);
+    }
+    state.SetLabel(context->device().name);
+}
+
 }  // namespace
 
+BENCHMARK_CAPTURE(BM_VoxelCascadesGpu, pass, false)
+    ->Name("voxel_cascades/pass_gpu/cottage")
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_VoxelCascadesGpu, picture, true)
+    ->Name("voxel_cascades/picture_gpu_640x360/cottage")
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VoxelCascadesBuild)
     ->Name("voxel_cascades/build/cottage")
     ->MeasureProcessCPUTime()

@@ -62,7 +62,9 @@ TEST_F(CliRcVoxel, InfoEstimatesTheCascades) {
         << render.output;
 }
 
-// --backend gpu runs the lighting passes on the GPU (lavapipe in CI): the same picture.
+// --backend gpu runs the lighting passes and the picture on the GPU (lavapipe in CI): the same
+// picture (the GPU's differs from the CPU's by float rounding only,
+// CascadesPictureGpu.CottageMatchesTheCpuPicture).
 TEST_F(CliRcVoxel, GpuPassesGiveTheCpuPicture) {
     if (runLuxel("devices").exitCode != 0) GTEST_SKIP() << "no Vulkan device";
     const std::string common = "render " + kCottage + " --solver rc --size 48x27 --out ";

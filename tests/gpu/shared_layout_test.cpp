@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gpu/layout_check.h"
+#include "gpu/shaders/shared/cascade_picture_layout.h"
 #include "gpu/shaders/shared/hrc_layout.h"
 #include "gpu/shaders/shared/medium_layout.h"
 #include "gpu/shaders/shared/octree_layout.h"
@@ -171,6 +172,47 @@ TEST(GpuSharedLayout, RcPushConstants) {
                      LUXEL_MEMBER(P, skyB),         LUXEL_MEMBER(P, offsetX),
                      LUXEL_MEMBER(P, offsetY),      LUXEL_MEMBER(P, upperOffsetX),
                      LUXEL_MEMBER(P, upperOffsetY), LUXEL_MEMBER(P, pad0)}});
+}
+
+// The radiance cascades' picture: its push constants, the faces' table and the picture (the
+// light buffer's RgbTexel and bindings 0..14 are checked with their own shaders).
+TEST(GpuSharedLayout, CascadesPicturePushConstantsAndFaceSlots) {
+    LUXEL_REQUIRE_EMBEDDED_SHADERS();
+    using P = CascadePicturePush;
+    expectPushConstants("cascades_picture", {sizeof(P),
+                                             {LUXEL_MEMBER(P, seedLow),
+                                              LUXEL_MEMBER(P, seedHigh),
+                                              LUXEL_MEMBER(P, sunRays),
+                                              LUXEL_MEMBER(P, specularRays),
+                                              LUXEL_MEMBER(P, materialFlags),
+                                              LUXEL_MEMBER(P, faces),
+                                              LUXEL_MEMBER(P, slotMask),
+                                              LUXEL_MEMBER(P, sunX),
+                                              LUXEL_MEMBER(P, sunY),
+                                              LUXEL_MEMBER(P, sunZ),
+                                              LUXEL_MEMBER(P, sunIrradianceR),
+                                              LUXEL_MEMBER(P, sunIrradianceG),
+                                              LUXEL_MEMBER(P, sunIrradianceB),
+                                              LUXEL_MEMBER(P, sunOneMinusCos),
+                                              LUXEL_MEMBER(P, sunRadianceScale),
+                                              LUXEL_MEMBER(P, sunOverPdfScale),
+                                              LUXEL_MEMBER(P, sunTangentX),
+                                              LUXEL_MEMBER(P, sunTangentY),
+                                              LUXEL_MEMBER(P, sunTangentZ),
+                                              LUXEL_MEMBER(P, sunBitangentX),
+                                              LUXEL_MEMBER(P, sunBitangentY),
+                                              LUXEL_MEMBER(P, sunBitangentZ),
+                                              LUXEL_MEMBER(P, pad0),
+                                              LUXEL_MEMBER(P, pad1)}});
+    using S = CascadeFaceSlot;
+    expectBuffer("cascades_picture", 16,
+                 {sizeof(S),
+                  {LUXEL_MEMBER(S, keyLow), LUXEL_MEMBER(S, keyHigh), LUXEL_MEMBER(S, id),
+                   LUXEL_MEMBER(S, pad0)}});
+    expectBuffer(
+        "cascades_picture", 15,
+        {sizeof(RgbTexel),
+         {LUXEL_MEMBER(RgbTexel, r), LUXEL_MEMBER(RgbTexel, g), LUXEL_MEMBER(RgbTexel, b)}});
 }
 
 TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {

@@ -1,7 +1,7 @@
 // `luxel render` for voxel scenes: DDA ray casting with shading, shadows and reflections, on the
 // CPU or (--backend) the GPU; or, with --solver path, the path tracer (CPU or GPU); or, with
-// --solver ao, CPU sky visibility; or, with --solver rc, radiance cascades (lighting passes on the
-// CPU or the GPU).
+// --solver ao, CPU sky visibility; or, with --solver rc, radiance cascades (lighting passes and
+// picture on the CPU or the GPU).
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -198,8 +198,8 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
                   "--specular, --fresnel, --no-refraction, --shadows) apply to the "
                   "ray caster; --solver rc takes --rc-spacing and --bounces"));
     }
-    // The cascades' lighting passes run on the GPU too (the build and the picture on the CPU), and
-    // so does the path tracer; sky visibility is CPU only.
+    // The cascades' lighting passes and picture run on the GPU too (the build on the CPU), and so
+    // does the path tracer; sky visibility is CPU only.
     const bool cpuSolver = request.aoSolver;
     if (!request.pathStdError.empty() && !endsWithExr(request.pathStdError)) {
         return reportError(Error("--std-error '" + request.pathStdError +
@@ -256,14 +256,16 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         if (!shaded) return reportError(shaded.error());
         internal = std::move(shaded->radiance);
     } else if (request.cascadeSolver) {
+        std::string note;  // why the GPU's picture was drawn on the CPU
         auto shaded = *context ? voxel::renderRadianceCascadesGpu(**context, scene->world, camera,
                                                                   scene->shading, request.cascades,
-                                                                  &scene->textures)
+                                                                  &scene->textures, &note)
                                : voxel::renderRadianceCascades(scene->world, camera, scene->shading,
                                                                request.cascades, &scene->textures);
         if (!shaded) return reportError(shaded.error());
         cascaded = std::move(*shaded);
         internal = std::move(cascaded.radiance);
+        if (!note.empty()) std::fprintf(stderr, "luxel: note: %s\n", note.c_str());
     } else if (*context) {
         auto image = renderOnGpu(**context, *scene, camera);
         if (!image) return reportError(image.error());

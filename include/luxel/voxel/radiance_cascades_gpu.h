@@ -1,10 +1,13 @@
-// The voxel radiance cascades' lighting passes on the GPU (Vulkan compute): the same passes as
-// RadianceCascades::iterate (its CPU reference), reading the segment codes the CPU found once
-// (docs/algorithms/voxel-radiance-cascades.md §4.3). The picture stays on the CPU: download()
-// hands the faces' irradiance back to the RadianceCascades it was made from.
+// The voxel radiance cascades on the GPU (Vulkan compute): the same lighting passes as
+// RadianceCascades::iterate (its CPU reference), reading the segment codes the CPU found once,
+// and the same picture as RadianceCascades::render, drawn from the faces' irradiance the passes
+// left on the device (docs/algorithms/voxel-radiance-cascades.md §4.3). download() hands the
+// faces' irradiance back to the RadianceCascades it was made from.
 #pragma once
 
+#include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "luxel/core/error.h"
@@ -26,8 +29,16 @@ class RadianceCascadesGpu {
     Status uploadLight();
     // `passes` lighting passes in one submission; returns the GPU time of the last, in ms.
     Result<double> iterate(int passes = 1);
-    // The faces' irradiance into the CPU object (for render() and indirectIrradiance()).
+    // The faces' irradiance into the CPU object (for its render() and indirectIrradiance()).
     Status download();
+    // RadianceCascades::render on the GPU: the same rays and random numbers, in float, from the
+    // faces' irradiance on the device (no download). The first call uploads the world, its
+    // textures and the faces' table. Fails (naming why) when the image has more than
+    // kMaxPathPixels pixels or the world's upload, the faces' table and the image need more
+    // than `memoryBudget` bytes (0: the device's memory). `gpuMilliseconds` receives the
+    // dispatch's GPU time.
+    Result<Image> render(const Camera& camera, double* gpuMilliseconds = nullptr,
+                         std::uint64_t memoryBudget = 0);
     // RadianceCascades::solve on the GPU: passes until the options' bounces are done or a pass
     // changes the faces' total irradiance by less than the tolerance (measured after each pass,
     // as the CPU does), then download(). Returns the passes run.
@@ -40,11 +51,13 @@ class RadianceCascadesGpu {
     std::unique_ptr<Impl> impl_;
 };
 
-// renderRadianceCascades (radiance_cascades.h) with the lighting passes on `context`; the build
-// and the picture stay on the CPU.
+// renderRadianceCascades (radiance_cascades.h) with the lighting passes and the picture on
+// `context`; the build stays on the CPU. When the GPU cannot draw the picture (no room on the
+// device), the CPU draws it and `note` (when given) receives why; it is left empty otherwise.
 Result<CascadeImage> renderRadianceCascadesGpu(gpu::Context& context, const VoxelWorld& world,
                                                const Camera& camera, const ShadeOptions& shading,
                                                const CascadeOptions& options = {},
-                                               const TextureSet* textures = nullptr);
+                                               const TextureSet* textures = nullptr,
+                                               std::string* note = nullptr);
 
 }  // namespace luxel::voxel

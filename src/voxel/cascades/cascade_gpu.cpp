@@ -1,13 +1,14 @@
 // The voxel radiance cascades' lighting passes on the GPU (radiance_cascades_gpu.h): the state's
 // codes, corners and bins flattened into the buffers of src/gpu/shaders/shared/
-// voxel_cascades_layout.h, and the four dispatches of a pass.
+// voxel_cascades_layout.h, and the four dispatches of a pass (the picture:
+// cascade_picture_gpu.cpp).
 #include <bit>
 #include <cmath>
 #include <cstring>
 
 #include "../../gpu/shaders/shared/medium_layout.h"
 #include "../../gpu/shaders/shared/voxel_cascades_layout.h"
-#include "cascade_state.h"
+#include "cascade_gpu_state.h"
 #include "luxel/gpu/context.h"
 #include "luxel/voxel/radiance_cascades_gpu.h"
 
@@ -15,18 +16,6 @@ namespace luxel::voxel {
 
 using namespace cascades;
 using gpu::shared::RgbTexel;
-
-struct RadianceCascadesGpu::Impl {
-    gpu::Context* context = nullptr;
-    RadianceCascades::State* state = nullptr;
-    std::shared_ptr<gpu::Buffer> codes, corners, light, sky, means, radiance, solidAngle, faceInfo,
-        cosineBins;
-    gpu::Program *outgoing = nullptr, *merge = nullptr, *childMean = nullptr, *gather = nullptr;
-    std::vector<std::uint32_t> codeOffset, cornerOffset, radianceOffset, meanOffset, skyOffset,
-        solidAngleOffset;
-    std::uint32_t faceSkyOffset = 0, faceCornerOffset = 0;
-    gpu::shared::CascadeGatherParams gatherParams{};
-};
 
 namespace {
 
@@ -288,20 +277,6 @@ Result<int> RadianceCascadesGpu::solve() {
         before = after;
     }
     return passes;
-}
-
-Result<CascadeImage> renderRadianceCascadesGpu(gpu::Context& context, const VoxelWorld& world,
-                                               const Camera& camera, const ShadeOptions& shading,
-                                               const CascadeOptions& options,
-                                               const TextureSet* textures) {
-    return renderCascadesWith(world, camera, shading, options, textures,
-                              [&](RadianceCascades& cascades) -> Status {
-                                  auto gpu = RadianceCascadesGpu::create(context, cascades);
-                                  if (!gpu) return gpu.error();
-                                  auto solved = gpu->solve();
-                                  if (!solved) return solved.error();
-                                  return Ok{};
-                              });
 }
 
 }  // namespace luxel::voxel

@@ -1,8 +1,10 @@
 // The voxel radiance cascades' picture (radiance_cascades.h;
 // docs/algorithms/voxel-radiance-cascades.md §4.2): one primary ray per pixel centre (cutouts
 // honoured), the sun by sky visibility's shadow rays over its disk, the faces' irradiance
-// interpolated. (Casting rows several rays at a time, castRayBatch and occludedBatch, measured no
-// faster here: 45-47 ms against 40-46 ms of CPU at 640x360.)
+// interpolated; cascade_picture_gpu.cpp draws the same on the GPU. (Casting rows several rays at a
+// time, castRayBatch and occludedBatch, measured no faster here: 45-47 ms against 40-46 ms of CPU
+// at 640x360.)
+#include "cascade_picture.h"
 #include "../path_trace_surface.h"
 #include "../solver_sun.h"
 #include "../solver_surface.h"
@@ -15,12 +17,11 @@ namespace luxel::voxel {
 
 namespace {
 constexpr float kInvPi = float(1.0 / 3.14159265358979323846);
-constexpr std::uint64_t kReflectionSeed = 0x7265666c;  // the picture's GGX directions
-// Shadow rays per pixel over the sun's disk: a quarter of sky visibility's, for the frame rate
-// (docs/algorithms/voxel-radiance-cascades.md §4.2); the penumbra is drawn in 5 steps.
-constexpr int kPictureSunRays = 4;
-constexpr int kPictureSpecularRays = 2;  // and half its reflection rays
 }  // namespace
+
+using cascades::kPictureSpecularRays;
+using cascades::kPictureSunRays;
+using cascades::kReflectionSeed;
 
 Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRng& rng) const {
     const VoxelWorld& world = *state_->world;

@@ -1,0 +1,104 @@
+// The voxel radiance cascades' picture on the GPU (docs/algorithms/voxel-radiance-cascades.md
+// §4.2, §4.3; CPU reference: RadianceCascades::render in src/voxel/cascades/cascade_picture.cpp):
+// one invocation per pixel casts the ray through the pixel's centre and shades what it meets with
+// the solver's material model (solver_shade.glsl) under the faces' irradiance the lighting passes
+// left in the light buffer, the sun by shadow rays over its disk, and reflections and refraction
+// followed through glass and polished metal (solver_reflected.glsl), drawing the same random
+// numbers as the CPU (shared/path_rng.h). Buffers and push constants:
+// shared/cascade_picture_layout.h.
+#version 450
+#extension GL_GOOGLE_include_directive : require
+#include "shared/voxel_layout.h"
+#include "shared/path_trace_layout.h"
+#include "shared/medium_layout.h"
+#include "shared/voxel_cascades_layout.h"
+#include "shared/cascade_picture_layout.h"
+
+layout(local_size_x = LUXEL_PICTURE_GROUP_X, local_size_y = LUXEL_PICTURE_GROUP_Y) in;
+// Bindings 0-14 as voxel_render's (6, its image, and 10 are not read here).
+layout(std430, set = 0, binding = 0) readonly buffer Params { VoxelRenderParams params; };
+layout(std430, set = 0, binding = 1) readonly buffer Voxels { uint voxels[]; };
+layout(std430, set = 0, binding = 2) readonly buffer ChunkSolid { uint chunkSolid[]; };
+layout(std430, set = 0, binding = 3) readonly buffer TextureInfos { VoxelTextureInfo textureInfo[]; };
+layout(std430, set = 0, binding = 4) readonly buffer Texels { vec4 texels[]; };
+layout(std430, set = 0, binding = 5) readonly buffer SrgbTable { float srgbTable[]; };
+layout(std430, set = 0, binding = 7) readonly buffer BrickMasks { uvec2 brickMasks[]; };
+layout(std430, set = 0, binding = 8) readonly buffer BrickReach { uint brickReach[]; };
+layout(std430, set = 0, binding = 9) readonly buffer Materials { VoxelMaterial materials[]; };
+layout(std430, set = 0, binding = 15) readonly buffer FaceLight { RgbTexel light[]; };
+layout(std430, set = 0, binding = 16) readonly buffer FaceSlots { CascadeFaceSlot faceSlots[]; };
+layout(std430, set = 0, binding = 17) readonly buffer GgxAlbedo { float ggxAlbedo[]; };
+layout(std430, set = 0, binding = 18) writeonly buffer Picture { float picture[]; };
+// Named `path` so the path tracer's surface code (path_surface.glsl) reads its materialFlags.
+layout(push_constant) uniform Push { CascadePicturePush path; };
+// Bindings 11-14: the sun visibility arrays, declared by the include (the ray caster's shading
+// code reads them; the picture's sun is shadow rays).
+#include "voxel/sun_visibility.glsl"
+
+#include "voxel/voxel_world_access.glsl"
+#include "voxel/texture_sample.glsl"
+#include "voxel/voxel_shading.glsl"
+#include "shared/path_rng.h"
+#include "shared/path_bsdf.h"
+#include "voxel/path_surface.glsl"
+#include "voxel/solver_light.glsl"
+
+// RadianceCascades::reflectedLight's recursion, unrolled: level 2 takes every face as
+// Lambertian; levels 1 and 0 follow glass and polished metal into the level below.
+#define LUXEL_SOLVER_REFLECTED reflectedLight2
+#include "voxel/solver_reflected.glsl"
+#undef LUXEL_SOLVER_REFLECTED
+#define LUXEL_SOLVER_SHADE shadeSurface2
+#define LUXEL_SOLVER_RADIANCE reflectedLight2
+#include "voxel/solver_shade.glsl"
+#undef LUXEL_SOLVER_SHADE
+#undef LUXEL_SOLVER_RADIANCE
+
+#define LUXEL_SOLVER_REFLECTED reflectedLight1
+#define LUXEL_SOLVER_FOLLOW shadeSurface2
+#include "voxel/solver_reflected.glsl"
+#undef LUXEL_SOLVER_REFLECTED
+#undef LUXEL_SOLVER_FOLLOW
+#define LUXEL_SOLVER_SHADE shadeSurface1
+#define LUXEL_SOLVER_RADIANCE reflectedLight1
+#include "voxel/solver_shade.glsl"
+#undef LUXEL_SOLVER_SHADE
+#undef LUXEL_SOLVER_RADIANCE
+
+#define LUXEL_SOLVER_REFLECTED reflectedLight0
+#define LUXEL_SOLVER_FOLLOW shadeSurface1
+#include "voxel/solver_reflected.glsl"
+#undef LUXEL_SOLVER_REFLECTED
+#undef LUXEL_SOLVER_FOLLOW
+#define LUXEL_SOLVER_SHADE shadeSurface0
+#define LUXEL_SOLVER_RADIANCE reflectedLight0
+#include "voxel/solver_shade.glsl"
+#undef LUXEL_SOLVER_SHADE
+#undef LUXEL_SOLVER_RADIANCE
+
+void main() {
+    const uint x = gl_GlobalInvocationID.x, y = gl_GlobalInvocationID.y;
+    if (x >= params.width || y >= params.height) return;
+    const uint pixel = y * params.width + x;
+    // Camera::rayAt at the pixel's centre.
+    const float sx = (2.0 * (float(x) + 0.5) / float(params.width) - 1.0) * params.tanHalf *
+                     params.aspect;
+    const float sy = (1.0 - 2.0 * (float(y) + 0.5) / float(params.height)) * params.tanHalf;
+    const vec3 forward = vec3(params.forwardX, params.forwardY, params.forwardZ);
+    const vec3 right = vec3(params.rightX, params.rightY, params.rightZ);
+    const vec3 up = vec3(params.upX, params.upY, params.upZ);
+    const vec3 origin = vec3(params.positionX, params.positionY, params.positionZ);
+    const vec3 direction = normalize(forward + right * sx + up * sy);
+    const SurfaceHit s = castToSurface(origin, direction);
+    vec3 radiance = vec3(0.0);
+    if (!s.hit.hit) {
+        radiance = skyColor(direction);
+    } else if (s.hit.normal != ivec3(0)) {  // else the camera is inside a solid voxel
+        uvec2 rng = pathRngKey(uvec2(path.seedLow, path.seedHigh), pixel, 0u);
+        radiance = shadeSurface0(s, direction, indirectIrradiance(s.hit) * LUXEL_SOLVER_INV_PI,
+                                 int(path.sunRays), int(path.specularRays), rng);
+    }
+    picture[3u * pixel] = radiance.x;
+    picture[3u * pixel + 1u] = radiance.y;
+    picture[3u * pixel + 2u] = radiance.z;
+}

@@ -1,0 +1,205 @@
+// The real-time solvers' light on the GPU, the twin of src/voxel/solver_sun.cpp and the
+// radiance cascades' face lookups (RadianceCascades::indirectIrradiance, faceDirectSun) in float:
+// sun rays through glass, the sun's light on a face's lobes over the disk's fixed spiral, the
+// disk behind a delta lobe, the faces' table, their interpolated irradiance and the GGX albedo
+// table. Needs the buffers of shared/cascade_picture_layout.h (`light`, `faceSlots`,
+// `ggxAlbedo`), `path` (CascadePicturePush), castToSurface, walkMedium, materials[] and the
+// path tracer's surface code (path_surface.glsl).
+
+#define LUXEL_SOLVER_INV_PI 0.31830988618379067
+// Below this the light that is left counts as none (kDarkTransmittance, solver_sun.cpp).
+#define LUXEL_SOLVER_DARK 1e-4
+// kMaxSunRayMedia (solver_sun.h).
+#define LUXEL_SOLVER_SUN_MEDIA 8
+
+float maxComponent(vec3 c) {
+    return max(c.x, max(c.y, c.z));
+}
+
+vec3 sunAxis() {
+    return vec3(path.sunX, path.sunY, path.sunZ);
+}
+
+vec3 sunIrradiance() {
+    return vec3(path.sunIrradianceR, path.sunIrradianceG, path.sunIrradianceB);
+}
+
+// dielectricFresnel (path_trace_bsdf.cpp): from the air into `ior`; 0 for ior 1.
+float solverFresnel(float cosI, float ior) {
+    return ior == 1.0 ? 0.0 : pathFresnel(cosI, 1.0, ior);
+}
+
+// The transmission lobe weight of material m entered through a face with outward `normal`
+// along unit `direction` (entryTransmission, solver_sun.cpp).
+float entryTransmission(VoxelMaterial m, ivec3 normal, vec3 direction) {
+    const float cosV = clamp(dot(vec3(normal), -direction), 0.0, 1.0);
+    const float transmission =
+        (path.materialFlags & LUXEL_PICTURE_REFRACTION) != 0u ? m.transmission : 0.0;
+    return (1.0 - m.metallic) * (1.0 - solverFresnel(cosV, m.ior)) * transmission;
+}
+
+// 1 - F where the straight line leaves the medium through `outward` (exitTransmission).
+float exitTransmission(VoxelMaterial m, vec3 direction, ivec3 outward) {
+    const float cosI = clamp(dot(direction, vec3(outward)), 0.0, 1.0);
+    return 1.0 - solverFresnel(cosI, m.ior);
+}
+
+// Through the run of transmissive voxels entered at `hit` (throughMedia, solver_sun.cpp).
+vec3 throughMedia(Hit hit, vec3 direction, inout vec3 origin, inout int media) {
+    vec3 t = vec3(1.0);
+    ivec3 cell = hit.voxel, normal = hit.normal;
+    vec3 point = hit.point;
+    for (;;) {
+        const VoxelMaterial m = materials[materialIndex(voxelValue(cell))];
+        t = t * entryTransmission(m, normal, direction);
+        ++media;
+        if (!(maxComponent(t) > LUXEL_SOLVER_DARK) || media > LUXEL_SOLVER_SUN_MEDIA) {
+            return vec3(0.0);
+        }
+        const MediumExit exit = walkMedium(cell, point, direction);
+        t = t * voxelTransmittance(vec3(m.absorptionR, m.absorptionG, m.absorptionB),
+                                   exit.distance);
+        if (!exit.intoSolid) {
+            origin = exit.point;
+            return t * exitTransmission(m, direction, exit.outward);
+        }
+        // Another solid touches the medium: entered directly, with no interface to the air.
+        cell = exit.cell + exit.outward;
+        normal = -exit.outward;
+        point = exit.point;
+    }
+    return vec3(0.0);
+}
+
+// sunRayTransmittance (solver_sun.h): 1 open, 0 blocked, a colour through glass.
+vec3 sunRayTransmittance(vec3 origin, vec3 direction) {
+    const uint media = LUXEL_PICTURE_REFRACTION | LUXEL_PICTURE_TRANSMISSION;
+    if ((path.materialFlags & media) != media) {
+        return castToSurface(origin, direction).hit.hit ? vec3(0.0) : vec3(1.0);
+    }
+    vec3 t = vec3(1.0), o = origin;
+    int passed = 0;
+    // Each round enters at least one medium, and past LUXEL_SOLVER_SUN_MEDIA the ray is dark.
+    for (int round = 0; round <= LUXEL_SOLVER_SUN_MEDIA; ++round) {
+        const SurfaceHit s = castToSurface(o, direction);
+        if (!s.hit.hit) return t;
+        if (s.hit.normal == ivec3(0)) return vec3(0.0);
+        t = t * throughMedia(s.hit, direction, o, passed);
+        if (!(maxComponent(t) > LUXEL_SOLVER_DARK)) return vec3(0.0);
+    }
+    return vec3(0.0);
+}
+
+// solverSunLobes (solver_sun.h): the diffuse lobe and, when `glossy`, the smooth lobes of
+// `specular` lit by the sun's disk over `sunRays` rays of its spiral (one for a delta sun).
+vec3 solverSunLobes(Hit hit, vec3 diffuse, bool glossy, PathBsdf specular, int sunRays) {
+    const vec3 irradiance = sunIrradiance();
+    if (!(maxComponent(irradiance) > 0.0)) return vec3(0.0);
+    if (!(maxComponent(diffuse) > 0.0) && !glossy) return vec3(0.0);
+    const bool delta = !(path.sunOneMinusCos > 0.0);
+    const int rays = delta ? 1 : max(sunRays, 1);
+    const vec3 perRay = irradiance * path.sunOverPdfScale * (1.0 / float(rays));
+    const vec3 n = vec3(hit.normal);
+    const vec3 tangent = vec3(path.sunTangentX, path.sunTangentY, path.sunTangentZ);
+    const vec3 bitangent = vec3(path.sunBitangentX, path.sunBitangentY, path.sunBitangentZ);
+    const float golden = LUXEL_PATH_PI * (3.0 - sqrt(5.0));
+    vec3 cosines = vec3(0.0), light = vec3(0.0);
+    for (int i = 0; i < rays; ++i) {
+        // SunDisk::spiral: area-uniform rings turned by the golden angle.
+        const vec3 l = delta ? sunAxis()
+                             : pathConeDirection(sunAxis(), tangent, bitangent,
+                                                 (float(i) + 0.5) / float(rays) *
+                                                     path.sunOneMinusCos,
+                                                 golden * float(i));
+        const float cosSun = dot(n, l);
+        if (!(cosSun > 0.0)) continue;
+        const vec3 t = sunRayTransmittance(hit.point, l);
+        if (!(maxComponent(t) > 0.0)) continue;
+        cosines += t * cosSun;
+        if (glossy) light += pathBsdfLight(specular, l, perRay, 0.0) * t;
+    }
+    return diffuse * perRay * cosines * LUXEL_SOLVER_INV_PI + light;
+}
+
+// sunDiskAlong (solver_sun.h): the disk's radiance along a direction leaving a delta lobe.
+vec3 sunDiskAlong(vec3 direction) {
+    return pathConeContains(sunAxis(), path.sunOneMinusCos, direction)
+               ? sunIrradiance() * path.sunRadianceScale
+               : vec3(0.0);
+}
+
+// solverFollows (solver_surface.h): glass and water (refraction on) and polished metal.
+bool solverFollows(SurfaceHit s) {
+    const VoxelMaterial m = materials[materialIndex(voxelValue(s.hit.voxel))];
+    const bool passes = (path.materialFlags & LUXEL_PICTURE_REFRACTION) != 0u &&
+                        m.transmission > 0.0 && m.metallic < 1.0;
+    return passes || (m.metallic > 0.0 && m.roughness <= LUXEL_PICTURE_FOLLOW_ROUGHNESS);
+}
+
+int normalIndex(ivec3 n) {
+    if (n.x != 0) return n.x > 0 ? 0 : 1;
+    if (n.y != 0) return n.y > 0 ? 2 : 3;
+    return n.z > 0 ? 4 : 5;
+}
+
+// FaceTable::find: the face's id, or -1.
+int findFace(ivec3 voxel, int normal) {
+    if (voxel.x < 0 || voxel.y < 0 || voxel.z < 0 || voxel.x >= int(params.sizeX) ||
+        voxel.y >= int(params.sizeY) || voxel.z >= int(params.sizeZ)) {
+        return -1;
+    }
+    const uint keyLow = cascadeFaceKeyLow(voxel.x, voxel.y, normal), keyHigh = uint(voxel.z);
+    uint slot = cascadeFaceHash(keyLow, keyHigh) & path.slotMask;
+    for (uint probe = 0u; probe <= path.slotMask; ++probe) {
+        const CascadeFaceSlot s = faceSlots[slot];
+        if (s.id == LUXEL_PICTURE_EMPTY_SLOT) return -1;
+        if (s.keyLow == keyLow && s.keyHigh == keyHigh) return int(s.id);
+        slot = (slot + 1u) & path.slotMask;
+    }
+    return -1;
+}
+
+vec3 faceLight(uint section, int face) {
+    return texelRgb(light[section * path.faces + uint(face)]);
+}
+
+// RadianceCascades::indirectIrradiance: bilinear between the centres of this face and its open
+// neighbours in the plane (a diagonal one only through an open side neighbour).
+vec3 indirectIrradiance(Hit hit) {
+    const int n = normalIndex(hit.normal), axis = n / 2, a = (axis + 1) % 3, b = (axis + 2) % 3;
+    const float fa = hit.point[a] - float(hit.voxel[a]) - 0.5;
+    const float fb = hit.point[b] - float(hit.voxel[b]) - 0.5;
+    const int da = fa < 0.0 ? -1 : 1, db = fb < 0.0 ? -1 : 1;
+    const float wa = abs(fa), wb = abs(fb);
+    ivec3 va = hit.voxel, vb = hit.voxel;
+    va[a] += da;
+    vb[b] += db;
+    ivec3 vab = va;
+    vab[b] += db;
+    const int self = findFace(hit.voxel, n), sideA = findFace(va, n), sideB = findFace(vb, n);
+    const int diagonal = (sideA >= 0 || sideB >= 0) ? findFace(vab, n) : -1;
+    const int ids[4] = int[4](self, sideA, sideB, diagonal);
+    const float weights[4] =
+        float[4]((1.0 - wa) * (1.0 - wb), wa * (1.0 - wb), (1.0 - wa) * wb, wa * wb);
+    vec3 sum = vec3(0.0);
+    float total = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        if (ids[i] < 0) continue;
+        sum += (faceLight(LUXEL_FACE_IRRADIANCE, ids[i]) + faceLight(LUXEL_FACE_EMITTER, ids[i])) *
+               weights[i];
+        total += weights[i];
+    }
+    return total > 0.0 ? sum * (1.0 / total) : vec3(0.0);
+}
+
+// directionalAlbedoGgx (ggx_albedo.h): the table bilinear over cosView and alpha in [0, 1].
+float directionalAlbedoGgx(float cosView, float alpha) {
+    const int side = LUXEL_PICTURE_ALBEDO_SIDE;
+    const float x = clamp(cosView, 0.0, 1.0) * float(side - 1);
+    const float y = clamp(alpha, 0.0, 1.0) * float(side - 1);
+    const int i = min(int(x), side - 2), j = min(int(y), side - 2);
+    const float fx = x - float(i), fy = y - float(j);
+    const float a = ggxAlbedo[i * side + j], b = ggxAlbedo[i * side + j + 1];
+    const float c = ggxAlbedo[(i + 1) * side + j], d = ggxAlbedo[(i + 1) * side + j + 1];
+    return (a * (1.0 - fy) + b * fy) * (1.0 - fx) + (c * (1.0 - fy) + d * fy) * fx;
+}

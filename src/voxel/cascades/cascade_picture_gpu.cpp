@@ -1,0 +1,238 @@
+// The voxel radiance cascades' picture on the GPU (radiance_cascades_gpu.h;
+// docs/algorithms/voxel-radiance-cascades.md §4.3): the world through VoxelGpuRenderer's buffers,
+// the faces' table and the GGX albedo table uploaded once, and one dispatch of
+// cascades_picture.comp.glsl over the image reading the light buffer the lighting passes write.
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <span>
+#include <string>
+
+#include "../../gpu/shaders/shared/path_trace_layout.h"
+#include "../ggx_albedo.h"
+#include "../solver_surface.h"
+#include "../sun_disk.h"
+#include "cascade_gpu_state.h"
+#include "cascade_picture.h"
+#include "luxel/core/memory.h"
+#include "luxel/gpu/context.h"
+#include "luxel/voxel/path_trace.h"
+
+namespace luxel::voxel {
+
+namespace shared = gpu::shared;
+using namespace cascades;
+
+static_assert(LUXEL_PICTURE_FOLLOW_DEPTH == kSolverFollowDepth,
+              "cascades_picture.comp.glsl unrolls the solver's follow depth");
+static_assert(float(LUXEL_PICTURE_FOLLOW_ROUGHNESS) == kSolverFollowRoughness);
+// path_surface.glsl reads the picture's flags as the path tracer's.
+static_assert(LUXEL_PICTURE_REFRACTION == LUXEL_PATH_REFRACTION &&
+              LUXEL_PICTURE_FRESNEL_EXACT == LUXEL_PATH_FRESNEL_EXACT);
+
+std::vector<shared::CascadeFaceSlot> cascades::faceSlots(const FaceTable& table) {
+    const std::uint64_t slots = std::bit_ceil(std::max<std::uint64_t>(2 * table.size(), 16));
+    const std::uint32_t mask = std::uint32_t(slots - 1);
+    std::vector<shared::CascadeFaceSlot> out(
+        slots, shared::CascadeFaceSlot{0, 0, LUXEL_PICTURE_EMPTY_SLOT, 0});
+    for (int id = 0; id < table.size(); ++id) {
+        const Face& f = table[id];
+        const std::uint32_t low = shared::cascadeFaceKeyLow(f.voxel.x, f.voxel.y, f.normal);
+        const std::uint32_t high = std::uint32_t(f.voxel.z);
+        std::uint32_t slot = shared::cascadeFaceHash(low, high) & mask;
+        while (out[slot].id != LUXEL_PICTURE_EMPTY_SLOT) slot = (slot + 1) & mask;
+        out[slot] = {low, high, std::uint32_t(id), 0};
+    }
+    return out;
+}
+
+namespace {
+
+std::string sizeText(const Camera& camera) {
+    return std::to_string(camera.width()) + "x" + std::to_string(camera.height());
+}
+
+// The GGX albedo table's nodes, as directionalAlbedoGgx interpolates them.
+std::vector<float> albedoTable() {
+    constexpr int side = LUXEL_PICTURE_ALBEDO_SIDE;
+    std::vector<float> out(side * side);
+    for (int i = 0; i < side; ++i)
+        for (int j = 0; j < side; ++j) {
+            out[i * side + j] =
+                float(directionalAlbedoGgx(double(i) / (side - 1), double(j) / (side - 1)));
+        }
+    return out;
+}
+
+// The sun, the materials' flags and the picture's ray counts as the shader reads them.
+shared::CascadePicturePush picturePush(const ShadeOptions& shading, std::uint32_t faces,
+                                       std::uint32_t slotMask) {
+    shared::CascadePicturePush p{};
+    p.seedLow = std::uint32_t(kReflectionSeed);
+    p.seedHigh = std::uint32_t(kReflectionSeed >> 32);
+    p.sunRays = kPictureSunRays;
+    p.specularRays = kPictureSpecularRays;
+    p.materialFlags =
+        (shading.refraction ? LUXEL_PICTURE_REFRACTION : 0u) |
+        (shading.fresnel == ShadeOptions::FresnelModel::Exact ? LUXEL_PICTURE_FRESNEL_EXACT : 0u) |
+        (shading.materials.anyTransmission() ? LUXEL_PICTURE_TRANSMISSION : 0u);
+    p.faces = faces;
+    p.slotMask = slotMask;
+    // The disk as SunDisk has it, in double, rounded once.
+    const SunDisk disk = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
+    p.sunX = float(disk.axis.x), p.sunY = float(disk.axis.y), p.sunZ = float(disk.axis.z);
+    p.sunIrradianceR = shading.sunIrradiance.r;
+    p.sunIrradianceG = shading.sunIrradiance.g;
+    p.sunIrradianceB = shading.sunIrradiance.b;
+    p.sunOverPdfScale = disk.radianceOverPdf(Rgb(1.0f)).r;
+    if (!disk.delta()) {
+        Vec3d t, b;
+        disk.frame(t, b);
+        p.sunOneMinusCos = float(disk.oneMinusCos);
+        p.sunRadianceScale = disk.radiance(Rgb(1.0f)).r;  // 1 / (pi sin^2 r)
+        p.sunTangentX = float(t.x), p.sunTangentY = float(t.y), p.sunTangentZ = float(t.z);
+        p.sunBitangentX = float(b.x), p.sunBitangentY = float(b.y), p.sunBitangentZ = float(b.z);
+    }
+    return p;
+}
+
+// Refuses, with the bytes, a picture whose world, faces' table and image exceed `budget` (0: the
+// device's memory).
+Status checkRoom(const gpu::Context& context, const Camera& camera, std::uint64_t world,
+                 std::uint64_t table, std::uint64_t budget) {
+    const std::uint64_t image = std::uint64_t(camera.width()) * camera.height() * 3 * sizeof(float);
+    const std::uint64_t need = world + table + image;
+    const std::uint64_t room = budget > 0 ? budget : context.device().deviceLocalBytes;
+    if (room > 0 && need > room) {
+        return Error("the radiance cascades' picture " + sizeText(camera) + " on the GPU needs " +
+                     formatBytes(need) + " of device memory (world " + formatBytes(world) +
+                     ", faces' table " + formatBytes(table) + ", image " + formatBytes(image) +
+                     "), " + (budget > 0 ? "the budget is " : "the device has ") +
+                     formatBytes(room));
+    }
+    return Ok{};
+}
+
+// The world, the faces' table and the albedo table on the device, after the memory check.
+Result<std::unique_ptr<PictureGpu>> makePicture(gpu::Context& context,
+                                                const RadianceCascades::State& state,
+                                                const Camera& camera, std::uint64_t budget) {
+    const std::vector<shared::CascadeFaceSlot> slots = faceSlots(state.faces.table);
+    const std::vector<float> albedo = albedoTable();
+    const std::uint64_t world = estimateVoxelGpuMemory(
+                            state.world->size(), state.world->chunkSize(), state.textures, 0, 0),
+                        table = slots.size() * sizeof(shared::CascadeFaceSlot);
+    if (Status s = checkRoom(context, camera, world, table, budget); !s) return s.error();
+    auto picture = std::make_unique<PictureGpu>();
+    auto program = context.program("cascades_picture", LUXEL_PICTURE_BUFFERS,
+                                   sizeof(shared::CascadePicturePush));
+    if (!program) return program.error();
+    picture->program = *program;
+    auto uploaded = VoxelGpuRenderer::create(context, *state.world, state.textures);
+    if (!uploaded) return uploaded.error();
+    picture->world = std::make_unique<VoxelGpuRenderer>(std::move(*uploaded));
+    picture->slotMask = std::uint32_t(slots.size() - 1);
+    picture->worldBytes = world;
+    picture->tableBytes = table;
+    for (auto [target, data] : {std::pair{&picture->slots, std::as_bytes(std::span(slots))},
+                                std::pair{&picture->albedo, std::as_bytes(std::span(albedo))}}) {
+        auto buffer = context.createBuffer(data.size());
+        if (!buffer) return buffer.error();
+        if (Status s = context.upload(**buffer, data); !s) return s.error();
+        *target = std::move(*buffer);
+    }
+    return picture;
+}
+
+}  // namespace
+
+Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilliseconds,
+                                          std::uint64_t memoryBudget) {
+    Impl& g = *impl_;
+    const RadianceCascades::State& state = *g.state;
+    const int width = camera.width(), height = camera.height();
+    if (std::int64_t(width) * height > kMaxPathPixels) {
+        return Error("radiance cascades: image " + sizeText(camera) + " has more than " +
+                     std::to_string(kMaxPathPixels) + " pixels");
+    }
+    if (!g.picture) {
+        auto made = makePicture(*g.context, state, camera, memoryBudget);
+        if (!made) return made.error();
+        g.picture = std::move(*made);
+    }
+    PictureGpu& p = *g.picture;
+    if (Status s = checkRoom(*g.context, camera, p.worldBytes, p.tableBytes, memoryBudget); !s) {
+        return s.error();
+    }
+    const std::uint64_t imageBytes = std::uint64_t(width) * height * 3 * sizeof(float);
+    if (!p.image || p.imageBytes < imageBytes) {
+        p.image.reset();
+        p.imageBytes = 0;
+        auto buffer = g.context->createBuffer(imageBytes);
+        if (!buffer) return buffer.error();
+        p.image = std::move(*buffer);
+        p.imageBytes = imageBytes;
+    }
+    // The ray caster's parameters for this camera, without its sun visibility arrays (the
+    // picture's sun is shadow rays).
+    ShadeOptions o = state.shading;
+    o.shadows = false;
+    o.materialReflectivity = nullptr;
+    auto bound = p.world->bindings(camera, o);
+    if (!bound) return bound.error();
+    gpu::Dispatch d;
+    d.name = "cascades picture " + sizeText(camera);
+    d.program = p.program;
+    d.buffers = *bound;
+    for (gpu::Buffer* b : {g.light.get(), p.slots.get(), p.albedo.get(), p.image.get()}) {
+        d.buffers.push_back(b);
+    }
+    d.setPush(picturePush(state.shading, std::uint32_t(state.faces.table.size()), p.slotMask));
+    d.setThreads(std::uint64_t(width), std::uint64_t(height));
+    auto timings = g.context->run(std::span(&d, 1));
+    if (!timings) return timings.error();
+    if (gpuMilliseconds) *gpuMilliseconds = timings->empty() ? 0.0 : timings->front().milliseconds;
+    Image out(width, height, 3);
+    if (Status s = g.context->download(*p.image,
+                                       std::as_writable_bytes(std::span(out.data(), out.size())));
+        !s) {
+        return s.error();
+    }
+    return out;
+}
+
+Result<CascadeImage> renderRadianceCascadesGpu(gpu::Context& context, const VoxelWorld& world,
+                                               const Camera& camera, const ShadeOptions& shading,
+                                               const CascadeOptions& options,
+                                               const TextureSet* textures, std::string* note) {
+    using Clock = std::chrono::steady_clock;
+    const auto since = [](Clock::time_point start) {
+        return std::chrono::duration<double>(Clock::now() - start).count();
+    };
+    auto cascades = RadianceCascades::create(world, textures, shading, options);
+    if (!cascades) return cascades.error();
+    if (note) note->clear();
+    CascadeImage out;
+    auto start = Clock::now();
+    auto gpu = RadianceCascadesGpu::create(context, *cascades);
+    if (!gpu) return gpu.error();
+    if (auto solved = gpu->solve(); !solved) return solved.error();
+    out.lightSeconds = since(start);
+    start = Clock::now();
+    Result<Image> image = gpu->render(camera);
+    if (!image) {
+        // solve() downloaded the faces' irradiance: the CPU draws the same picture.
+        if (note) {
+            *note =
+                "the radiance cascades' picture was drawn on the CPU: " + image.error().message();
+        }
+        image = cascades->render(camera);
+        if (!image) return image.error();
+    }
+    out.renderSeconds = since(start);
+    out.radiance = std::move(*image);
+    out.stats = cascades->stats();
+    return out;
+}
+
+}  // namespace luxel::voxel

@@ -1,0 +1,33 @@
+// The voxel radiance cascades' picture on the GPU (radiance_cascades_gpu.h;
+// docs/algorithms/voxel-radiance-cascades.md §4.3): what RadianceCascadesGpu keeps for it, made
+// on the first render (cascade_picture_gpu.cpp).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "../../gpu/shaders/shared/cascade_picture_layout.h"
+#include "luxel/voxel/voxel_gpu.h"
+#include "surface_faces.h"
+
+namespace luxel::gpu {
+class Program;
+}
+
+namespace luxel::voxel::cascades {
+
+struct PictureGpu {
+    std::unique_ptr<VoxelGpuRenderer> world;  // the world, textures and materials on the device
+    std::shared_ptr<gpu::Buffer> slots, albedo, image;
+    std::uint64_t imageBytes = 0;
+    std::uint64_t worldBytes = 0, tableBytes = 0;  // the estimates the memory check counts
+    std::uint32_t slotMask = 0;
+    gpu::Program* program = nullptr;
+};
+
+// The faces' open-addressing table (linear probing from cascadeFaceHash): a power of two of at
+// least twice the faces' slots, so a probe for a missing face ends at an empty slot soon.
+std::vector<gpu::shared::CascadeFaceSlot> faceSlots(const FaceTable& table);
+
+}  // namespace luxel::voxel::cascades
