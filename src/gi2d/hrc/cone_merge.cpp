@@ -37,13 +37,10 @@ void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb s
         if (upper != nullptr && upper->inRange(p, y)) return toVec3(upper->at(p, j, y));
         return toVec3(sky * weight[j]);
     };
-    // Row y blended with row y + second (§5.1); row y alone from cascade 2 up.
-    const float secondWeight = gpu::shared::hrcSecondRowWeight(n);
-    auto upperRows = [&](int p, int y, int second, int j) -> gpu::shared::vec3 {
-        if (secondWeight == 0.0f) return upperFluence(p, y, j);
-        return upperFluence(p, y, j) * (1.0f - secondWeight) +
-               upperFluence(p, y + second, j) * secondWeight;
-    };
+    // The rows each read blends (§5.1): towards the cone's bisector, and the near probe's row
+    // along the side's ray.
+    const float second = gpu::shared::hrcSecondRowWeight(n);
+    const float nearSecond = gpu::shared::hrcNearRowWeight(n);
     parallelForRange(out.planes() * cones, 1, [&](int begin, int end) {
         // Per-thread scratch: the two rays' table rows here and on the next plane.
         thread_local DecodedRow here[2], next[2];
@@ -62,14 +59,25 @@ void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb s
                     const float w = weight[j];
                     if (odd) {
                         // The ray ends exactly on upper plane (p + 1) / 2 (Eq 14).
-                        sum += gpu::shared::hrcMergeOdd(here[s].at(y), w,
-                                                        upperRows((p + 1) / 2, y + dy, axis, j));
+                        const int q = (p + 1) / 2, e = y + dy;
+                        sum += gpu::shared::hrcMergeOdd(
+                            here[s].at(y), w,
+                            gpu::shared::hrcBlendTwoRows(upperFluence(q, e, j),
+                                                         upperFluence(q, e + axis, j), second));
                     } else {
                         // Upper plane p / 2 is here: merge near, and far with a double-length
                         // ray to upper plane p / 2 + 1, then average (Eq 15-17).
-                        sum += gpu::shared::hrcMergeEven(upperRows(p / 2, y, dy, j),
-                                                         over(here[s].at(y), next[s].at(y + dy)), w,
-                                                         upperRows(p / 2 + 1, y + 2 * dy, axis, j));
+                        const int q = p / 2, e = y + 2 * dy;
+                        const gpu::shared::vec3 near =
+                            nearSecond == 0.0f ? upperFluence(q, y, j)
+                                               : gpu::shared::hrcBlendTwoRows(
+                                                     upperFluence(q, y, j),
+                                                     upperFluence(q, y + dy, j), nearSecond);
+                        const gpu::shared::vec3 far = gpu::shared::hrcBlendThreeRows(
+                            upperFluence(q + 1, e, j), upperFluence(q + 1, e + axis, j),
+                            upperFluence(q + 1, e + 2 * axis, j), second);
+                        sum += gpu::shared::hrcMergeEven(
+                            near, over(here[s].at(y), next[s].at(y + dy)), w, far);
                     }
                 }
                 out.set(p, i, y, toRgb(sum));

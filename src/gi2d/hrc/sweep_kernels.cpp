@@ -158,16 +158,25 @@ HWY_INLINE VF LoadCone(const ConeRows& rows, int c, int y) {
     return LoadHalf(rows.plane[c], y + rows.offset);
 }
 
-// (1 - s) a + s b, or a alone when s = 0 (§5.1).
-HWY_INLINE VF UpperRows(const ConeRows& a, const ConeRows& b, int c, int y, float second) {
+// (1 - s) a + s b, or a alone when s = 0 (hrcBlendTwoRows, §5.1).
+HWY_INLINE VF TwoRows(const ConeRows& a, const ConeRows& b, int c, int y, float second) {
     const DF df;
     if (second == 0.0f) return LoadCone(a, c, y);
     return hn::Add(hn::Mul(LoadCone(a, c, y), hn::Set(df, 1.0f - second)),
                    hn::Mul(LoadCone(b, c, y), hn::Set(df, second)));
 }
 
-void MergeRowsImpl(bool odd, const MergeSide& side0Ref, const MergeSide& side1Ref,
-                   float secondWeight, std::uint16_t* const outRef[3], int y0, int y1) {
+// (1 - 3s/2) a + s b + (s/2) d (hrcBlendThreeRows, §5.1).
+HWY_INLINE VF ThreeRows(const ConeRows& a, const ConeRows& b, const ConeRows& d, int c, int y,
+                        float second) {
+    const DF df;
+    const VF ab = hn::Add(hn::Mul(LoadCone(a, c, y), hn::Set(df, 1.0f - 1.5f * second)),
+                          hn::Mul(LoadCone(b, c, y), hn::Set(df, second)));
+    return hn::Add(ab, hn::Mul(LoadCone(d, c, y), hn::Set(df, 0.5f * second)));
+}
+
+void MergeRowsImpl(bool odd, const MergeSide& side0Ref, const MergeSide& side1Ref, float second,
+                   float nearSecond, std::uint16_t* const outRef[3], int y0, int y1) {
     // Local copies: stores through `out` cannot alias them, so their pointers stay in registers.
     const MergeSide side0 = side0Ref, side1 = side1Ref;
     std::uint16_t* const out[3] = {outRef[0], outRef[1], outRef[2]};
@@ -182,7 +191,7 @@ void MergeRowsImpl(bool odd, const MergeSide& side0Ref, const MergeSide& side1Re
             const Lanes6 here = LoadInterval(side->here, y);
             if (odd) {  // Eq 14 (hrcMergeOdd)
                 for (int c = 0; c < 3; ++c) {
-                    const VF upper = UpperRows(side->upperA, side->upperA2, c, y, secondWeight);
+                    const VF upper = TwoRows(side->upperA, side->upperA2, c, y, second);
                     sum[c] =
                         hn::Add(sum[c], hn::Add(hn::Mul(here.l[c], w), hn::Mul(here.t[c], upper)));
                 }
@@ -191,9 +200,10 @@ void MergeRowsImpl(bool odd, const MergeSide& side0Ref, const MergeSide& side1Re
             // Eq 15-17 (hrcMergeEven): the double-length ray to the far probe.
             const Lanes6 ray = Over(here, LoadInterval(side->next, y));
             for (int c = 0; c < 3; ++c) {
-                const VF upperFar = UpperRows(side->upperB, side->upperB2, c, y, secondWeight);
+                const VF upperFar =
+                    ThreeRows(side->upperB, side->upperB2, side->upperB3, c, y, second);
                 const VF far = hn::Add(hn::Mul(ray.l[c], w), hn::Mul(ray.t[c], upperFar));
-                const VF upperNear = UpperRows(side->upperA, side->upperA2, c, y, secondWeight);
+                const VF upperNear = TwoRows(side->upperA, side->upperA2, c, y, nearSecond);
                 sum[c] = hn::Add(sum[c], hn::Mul(hn::Add(upperNear, far), half));
             }
         }
@@ -229,9 +239,9 @@ void extendRows(const IntervalRows& nearA, const IntervalRows& farA, const Inter
     HWY_DYNAMIC_DISPATCH(ExtendRowsImpl)(nearA, farA, nearB, farB, twoPaths, out, y0, y1);
 }
 
-void mergeRows(bool odd, const MergeSide& side0, const MergeSide& side1, float secondWeight,
-               std::uint16_t* const out[3], int y0, int y1) {
-    HWY_DYNAMIC_DISPATCH(MergeRowsImpl)(odd, side0, side1, secondWeight, out, y0, y1);
+void mergeRows(bool odd, const MergeSide& side0, const MergeSide& side1, float second,
+               float nearSecond, std::uint16_t* const out[3], int y0, int y1) {
+    HWY_DYNAMIC_DISPATCH(MergeRowsImpl)(odd, side0, side1, second, nearSecond, out, y0, y1);
 }
 
 }  // namespace luxel::gi2d::hrc

@@ -62,19 +62,25 @@ void cellTransferRows(const float* const sigma[3], const float* const emission[3
 void extendRows(const IntervalRows& nearA, const IntervalRows& farA, const IntervalRows& nearB,
                 const IntervalRows& farB, bool twoPaths, IntervalRowsOut out, int y0, int y1);
 
-// One side (ray) of a cone merge (§5, §5.1). Upper cones are blends (1 - s) a + s b of two rows,
-// s = the second-row weight.
+// One side (ray) of a cone merge (§5, §5.1). Upper cones are blends of neighbouring rows
+// (hrcBlendTwoRows, hrcBlendThreeRows in shared/hrc_kernels.h).
 struct MergeSide {
-    IntervalRows here;         // T_n(p, k) at row y
-    IntervalRows next;         // even planes: T_n(p + 1, k) at row y + dy
-    ConeRows upperA, upperA2;  // odd: the ray's end probe; even: the near probe
-    ConeRows upperB, upperB2;  // even: the far probe, reached by the double-length ray
-    float weight = 0.0f;       // the upper cone's angular width
+    IntervalRows here;  // T_n(p, k) at row y
+    IntervalRows next;  // even planes: T_n(p + 1, k) at row y + dy
+    // Odd planes: the ray's end probe and the row towards the bisector; even: the near probe and
+    // the row along the ray (§5.1).
+    ConeRows upperA, upperA2;
+    // Even planes: the far probe, reached by the double-length ray, and the rows one and two
+    // towards the bisector.
+    ConeRows upperB, upperB2, upperB3;
+    float weight = 0.0f;  // the upper cone's angular width
 };
 
 // Rows [y0, y1) of R_n(p, i): the sum over the cone's two rays of Eq 14 (odd planes) or Eq 15-17
 // (even planes), summed in float and written to out[c][y] as binary16.
-void mergeRows(bool odd, const MergeSide& side0, const MergeSide& side1, float secondWeight,
-               std::uint16_t* const out[3], int y0, int y1);
+// `second` weighs the rows towards the bisector, `nearSecond` the near probe's second row
+// (hrcSecondRowWeight, hrcNearRowWeight).
+void mergeRows(bool odd, const MergeSide& side0, const MergeSide& side1, float second,
+               float nearSecond, std::uint16_t* const out[3], int y0, int y1);
 
 }  // namespace luxel::gi2d::hrc

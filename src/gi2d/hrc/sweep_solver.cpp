@@ -214,6 +214,7 @@ std::uint64_t FrustumSweep::extend(int n, int p, int y0, int y1) {
 std::uint64_t FrustumSweep::merge(int n, int p, int y0, int y1) {
     const bool odd = (p & 1) != 0;
     const float second = shared::hrcSecondRowWeight(n);
+    const float nearSecond = shared::hrcNearRowWeight(n);
     const bool nextExists = p + 1 < planes_[n];
     for (int i = 0; i < pow2(n); ++i) {
         MergeSide sides[2];
@@ -234,9 +235,11 @@ std::uint64_t FrustumSweep::merge(int n, int p, int y0, int y1) {
                 side.upperA2 = upper(n, p / 2, j, dy);
                 side.upperB = upper(n, p / 2 + 1, j, 2 * dy);
                 side.upperB2 = upper(n, p / 2 + 1, j, 2 * dy + axis);
+                side.upperB3 = upper(n, p / 2 + 1, j, 2 * dy + 2 * axis);
                 if (nextExists) offsets[count++] = dy;
-                offsets[count++] = 2 * dy;
-                offsets[count++] = 2 * dy + axis;
+                offsets[count++] = side.upperB.offset;
+                offsets[count++] = side.upperB2.offset;
+                offsets[count++] = side.upperB3.offset;
             }
             offsets[count++] = side.upperA.offset;
             offsets[count++] = side.upperA2.offset;
@@ -251,14 +254,17 @@ std::uint64_t FrustumSweep::merge(int n, int p, int y0, int y1) {
                 side.upperA2 = clip(side.upperA2, a);
                 side.upperB = clip(side.upperB, a);
                 side.upperB2 = clip(side.upperB2, a);
+                side.upperB3 = clip(side.upperB3, a);
             }
-            mergeRows(odd, clipped[0], clipped[1], second, out, a, b);
+            mergeRows(odd, clipped[0], clipped[1], second, nearSecond, out, a, b);
         });
     }
-    // Per cone: its two rays here (and on the next plane), 2 or 4 upper rows each, the output
-    // (intervals 12 bytes, cones 6).
+    // Per cone: its two rays here (and on the next plane), 2 or 5 upper rows each (one fewer
+    // from cascade 2 up, where the near probe is one row), the output (intervals 12 bytes,
+    // cones 6).
+    const int evenUpperRows = nearSecond == 0.0f ? 4 : 5;
     return static_cast<std::uint64_t>(pow2(n)) * rows_ *
-           (odd ? 2 * 12 + 4 * 6 + 6 : 4 * 12 + 8 * 6 + 6);
+           (odd ? 2 * 12 + 4 * 6 + 6 : 4 * 12 + 2 * evenUpperRows * 6 + 6);
 }
 
 std::uint64_t FrustumSweep::readOut(int u, int plane, int y0, int y1) {

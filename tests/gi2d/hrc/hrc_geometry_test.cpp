@@ -9,6 +9,7 @@
 #include "gi2d/hrc/frustum_frame.h"
 #include "gi2d/hrc/hrc_geometry.h"
 #include "gi2d/hrc/ray_tables.h"
+#include "gpu/shaders/shared/hrc_kernels.h"
 #include "luxel/core/rng.h"
 
 namespace luxel::gi2d::hrc {
@@ -168,6 +169,29 @@ TEST(HrcRayTables, MemoryEstimateMatchesAllocation) {
     // (docs/algorithms/holographic-radiance-cascades.md §8.1).
     const std::uint64_t bytes = RayTables::bytesFor(1024, 1024, 10);
     EXPECT_NEAR(static_cast<double>(bytes) / (1024.0 * 1024 * 12), 12.0, 0.05);
+}
+
+// §5.1: the rows an upper read blends keep a uniform field unchanged, the weight towards the
+// bisector halves per cascade from 1/2 (the linear interpolation at cascade 0), and the far probe
+// of an even plane reads 1/4, 1/2, 1/4 there.
+TEST(HrcGeometry, UpperReadsBlendRowsWithWeightsSummingToOne) {
+    namespace sh = gpu::shared;
+    const sh::vec3 one(1.0f), zero(0.0f);
+    for (int n = 0; n < 28; ++n) {
+        const float a = sh::hrcSecondRowWeight(n);
+        EXPECT_FLOAT_EQ(a, std::ldexp(1.0f, -(n + 1)));
+        EXPECT_FLOAT_EQ(sh::hrcBlendTwoRows(one, one, a).x, 1.0f);
+        EXPECT_FLOAT_EQ(sh::hrcBlendThreeRows(one, one, one, a).x, 1.0f);
+        EXPECT_FLOAT_EQ(sh::hrcBlendTwoRows(one, one, sh::hrcNearRowWeight(n)).x, 1.0f);
+    }
+    EXPECT_FLOAT_EQ(sh::hrcBlendThreeRows(one, zero, zero, 0.5f).x, 0.25f);
+    EXPECT_FLOAT_EQ(sh::hrcBlendThreeRows(zero, one, zero, 0.5f).x, 0.5f);
+    EXPECT_FLOAT_EQ(sh::hrcBlendThreeRows(zero, zero, one, 0.5f).x, 0.25f);
+    EXPECT_EQ(sh::hrcTowardsAxis(0), 1);  // the lower side's bisector lies above its ray
+    EXPECT_EQ(sh::hrcTowardsAxis(1), -1);
+    EXPECT_FLOAT_EQ(sh::hrcNearRowWeight(0), 0.5f);
+    EXPECT_FLOAT_EQ(sh::hrcNearRowWeight(1), 0.25f);
+    EXPECT_FLOAT_EQ(sh::hrcNearRowWeight(2), 0.0f);
 }
 
 }  // namespace

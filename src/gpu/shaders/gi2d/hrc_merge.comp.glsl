@@ -34,15 +34,11 @@ vec3 upperAt(int p, int y, int j) {
                 halfOfWord(upper[(r + 2u * stride) >> 1].evenOddRows, r));
 }
 
-// Row y blended with row y + second (§5.1); row y alone from cascade 2 up.
-vec3 upperRows(int p, int y, int second, int j) {
-    const float a = hrcSecondRowWeight(int(params.level));
-    if (a == 0.0) return upperAt(p, y, j);
-    return upperAt(p, y, j) * (1.0 - a) + upperAt(p, y + second, j) * a;
-}
-
 // R_level(p, y, i): the sum over the cone's two rays.
 vec3 mergeAt(int ip, int iy, uint i) {
+    // The rows each upper read blends (§5.1).
+    const float second = hrcSecondRowWeight(int(params.level));
+    const float nearSecond = hrcNearRowWeight(int(params.level));
     vec3 sum = vec3(0.0);
     for (int s = 0; s < 2; ++s) {
         const int k = int(i) + s, j = 2 * int(i) + s;
@@ -50,11 +46,20 @@ vec3 mergeAt(int ip, int iy, uint i) {
         const int axis = hrcTowardsAxis(s);
         const float w = weight[j];
         if ((ip & 1) == 1) {  // the ray ends on upper plane (p + 1) / 2 (Eq 14)
-            sum += hrcMergeOdd(tableAt(ip, iy, k), w, upperRows((ip + 1) / 2, iy + dy, axis, j));
+            const int q = (ip + 1) / 2, e = iy + dy;
+            sum += hrcMergeOdd(tableAt(ip, iy, k), w,
+                               hrcBlendTwoRows(upperAt(q, e, j), upperAt(q, e + axis, j), second));
         } else {  // near and far merged, then averaged (Eq 15-17)
-            sum += hrcMergeEven(upperRows(ip / 2, iy, dy, j),
-                                hrcOver(tableAt(ip, iy, k), tableAt(ip + 1, iy + dy, k)), w,
-                                upperRows(ip / 2 + 1, iy + 2 * dy, axis, j));
+            const int q = ip / 2, e = iy + 2 * dy;
+            const vec3 nearRead =
+                nearSecond == 0.0
+                    ? upperAt(q, iy, j)
+                    : hrcBlendTwoRows(upperAt(q, iy, j), upperAt(q, iy + dy, j), nearSecond);
+            const vec3 farRead = hrcBlendThreeRows(
+                upperAt(q + 1, e, j), upperAt(q + 1, e + axis, j), upperAt(q + 1, e + 2 * axis, j),
+                second);
+            sum += hrcMergeEven(nearRead, hrcOver(tableAt(ip, iy, k), tableAt(ip + 1, iy + dy, k)),
+                                w, farRead);
         }
     }
     return sum;

@@ -66,16 +66,38 @@ LUXEL_FUNC vec3 hrcMergeEven(vec3 upperNear, HrcInterval doubleRay, float weight
     return (upperNear + far) * 0.5f;
 }
 
-// Cascades 0 and 1 read every upper cone as a blend of two neighbouring rows (§5.1): the row
-// Eq 14-17 name and, for side s, the row one step towards the frustum axis (odd planes, and the
-// far probe of even planes) or along the side's ray (the near probe of even planes).
+// Every upper cone is read as a blend of neighbouring rows (§5.1): the row Eq 14-17 name and, for
+// side s, the rows towards the cone's bisector ("towards the axis": the sub-cone seen from the
+// probe crosses the upper plane between its ray's end and the bisector, one row in on odd planes,
+// two at the far probe of even planes); the near probe of even planes at cascades 0 and 1 also
+// takes the row along the side's ray.
 LUXEL_FUNC int hrcTowardsAxis(int side) {
     return side == 0 ? 1 : -1;
 }
 
-// The second row's weight: 1/2 at cascade 0, 1/4 at cascade 1, none above (chosen by measurement).
+// The weight a of the row towards the bisector: 2^-(level+1), halving per cascade (1/2 would
+// interpolate the sub-cone's crossing exactly; the halving was chosen by measurement). Levels stay
+// far below 30 (at most 2^28 pixels).
 LUXEL_FUNC float hrcSecondRowWeight(int level) {
+    return 1.0f / float(1u << uint(level + 1));
+}
+
+// The near probe's weight for the row along the side's ray: 1/2 at cascade 0, 1/4 at cascade 1,
+// none above (chosen by measurement).
+LUXEL_FUNC float hrcNearRowWeight(int level) {
     return level == 0 ? 0.5f : (level == 1 ? 0.25f : 0.0f);
+}
+
+// Odd planes and the near probe: (1 - a) row + a second.
+LUXEL_FUNC vec3 hrcBlendTwoRows(vec3 row, vec3 second, float a) {
+    return row * (1.0f - a) + second * a;
+}
+
+// The far probe of an even plane: the rows 0, 1 and 2 steps towards the bisector with weights
+// 1 - 3a/2, a and a/2 (a = 1/2: the linear interpolation 1/4, 1/2, 1/4 over the two rows the
+// sub-cone crosses there).
+LUXEL_FUNC vec3 hrcBlendThreeRows(vec3 row, vec3 second, vec3 third, float a) {
+    return row * (1.0f - 1.5f * a) + second * a + third * (0.5f * a);
 }
 
 // Values per channel plane of a merged cone (hrc_layout.h): the rows padded to an even count.
