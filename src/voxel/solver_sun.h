@@ -22,6 +22,18 @@ namespace luxel::voxel {
 // Media (runs of touching transmissive voxels) a sun ray passes before it counts as blocked.
 inline constexpr int kMaxSunRayMedia = 8;
 
+// A straight line through transmissive voxels (sunRayTransmittance, and the radiance cascades'
+// segments, docs/algorithms/voxel-radiance-cascades.md §4.2): the share that enters the medium
+// of `m` through a face with outward normal `normal` along unit `direction` (its transmission
+// lobe weight, pathBsdf; 0 for opaque materials), the share that leaves it into the air through
+// a face with outward normal `outward` (1 - F at the line's angle), and Beer-Lambert over
+// `distance` voxels inside it.
+float mediumEntryTransmission(const Material& m, Int3 normal, Vec3d direction,
+                              const ShadeOptions& shading);
+float mediumExitTransmission(const Material& m, Vec3d direction, Int3 outward,
+                             const ShadeOptions& shading);
+Rgb mediumAbsorption(const Material& m, double distance);
+
 // What of the light arriving along `ray` from infinity reaches its origin (ray: leaving a
 // surface, unit direction): 1 when it meets nothing (cutout texels let it through), 0 at an
 // opaque voxel, and through each transmissive voxel it meets (when shading.refraction is on) the
