@@ -41,17 +41,19 @@ constexpr double kPi = 3.14159265358979323846;
 // Below this the light that is left counts as none (and the walk stops).
 constexpr float kDarkTransmittance = 1e-4f;
 
-// Through the run of transmissive voxels entered at `hit` (the face the ray met); returns the
-// transmittance and moves `origin` to where the line leaves into the air (0: blocked inside).
+// Through the run of transmissive voxels entered at `hit` (the face the ray met; with `inside`,
+// the ray starts in hit.voxel at hit.point and crosses no entry face); returns the transmittance
+// and moves `origin` to where the line leaves into the air (0: blocked inside).
 Rgb throughMedia(const VoxelWorld& world, const Hit& hit, Vec3d direction,
-                 const ShadeOptions& shading, Vec3d& origin, int& media) {
+                 const ShadeOptions& shading, Vec3d& origin, int& media, bool inside = false) {
     Rgb t(1.0f);
     Int3 cell = hit.voxel, normal = hit.normal;
     Vec3d point = hit.point;
     for (;;) {
         const Voxel v = world.get(cell.x, cell.y, cell.z);
         const Material& m = shading.materials.forSlot(textureSlotOf(v));
-        t = t * mediumEntryTransmission(m, normal, direction, shading);
+        if (!inside) t = t * mediumEntryTransmission(m, normal, direction, shading);
+        inside = false;
         if (!(t.maxComponent() > kDarkTransmittance) || ++media > kMaxSunRayMedia) return {};
         const MediumExit exit = walkMedium(world, cell, point, direction);
         t = t * mediumAbsorption(m, exit.distance);
@@ -83,7 +85,13 @@ Rgb sunRayTransmittance(const VoxelWorld& world, const TextureSet* textures, con
             castToSurface(world, textures, {origin, ray.direction}, shading.stepCap);
         if (!s.hit.hit) return t;               // the sky (or past the step cap)
         if (s.hit.normal == Int3{}) return {};  // started inside a solid voxel
-        t = t * throughMedia(world, s.hit, ray.direction, shading, origin, media);
+        // Starting on the face of an opaque voxel under glass or water, the ray is inside the
+        // medium at once: no interface with the air to enter through.
+        const Int3 behind{s.hit.voxel.x + s.hit.normal.x, s.hit.voxel.y + s.hit.normal.y,
+                          s.hit.voxel.z + s.hit.normal.z};
+        const bool inside =
+            media == 0 && !(s.hit.t > 1e-9) && world.solid(behind.x, behind.y, behind.z);
+        t = t * throughMedia(world, s.hit, ray.direction, shading, origin, media, inside);
         if (!(t.maxComponent() > kDarkTransmittance)) return {};
     }
 }

@@ -40,7 +40,9 @@ Rgb mediumAbsorption(const Material& m, double distance);
 // product of the entry's transmission lobe weight (pathBsdf: (1 - metallic)(1 - F) transmission),
 // Beer-Lambert over the straight path inside (the path tracer's absorption) and 1 - F where it
 // leaves into the air. A transmissive voxel of another material touching the first is entered
-// with its own lobe weight and no exit between them, as the path tracer's rays do.
+// with its own lobe weight and no exit between them, as the path tracer's rays do. A ray that
+// starts on the face of an opaque voxel under glass or water goes out through the medium with
+// no entry factor (there is no air between).
 Rgb sunRayTransmittance(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
                         const ShadeOptions& shading);
 

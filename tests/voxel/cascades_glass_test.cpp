@@ -1,8 +1,9 @@
 // The voxel radiance cascades' chains through glass (docs/algorithms/voxel-radiance-cascades.md
 // §4.2): a floor under a glass ceiling and a sky, and a lamp behind a glass wall, each against
 // the same world with the glass taken away; the ratio is the straight line's transmittance,
-// (1 - F)^2 exp(-sigma d / cos), averaged over the directions that carry the light. And glass
-// sends back only what it does not let through.
+// (1 - F)^2 exp(-sigma d / cos), averaged over the directions that carry the light; a floor
+// under a glass slab lying on it (one interface), its sun and its picture seen through the slab.
+// And glass sends back only what it does not let through.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,12 +11,15 @@
 #include "luxel/voxel/radiance_cascades.h"
 #include "voxel/path_trace_bsdf.h"
 #include "voxel/plain_light_worlds.h"
+#include "voxel/solver_sun.h"
 
 namespace {
 
 using namespace luxel;
 using namespace luxel::voxel;
 using namespace luxel::voxel::test;
+
+constexpr double kPi = 3.14159265358979323846;
 
 constexpr Voxel kGlass{255, 255, 255, 1};  // texture slot 0
 constexpr Voxel kLamp{255, 255, 255, 2};   // texture slot 1
@@ -68,6 +72,52 @@ TEST(CascadesGlass, SkyThroughAGlassCeilingIsFresnelAndBeerLambert) {
     // Before glass let the chains through, the ceiling stopped them: the floor saw only the
     // ceiling's diffuse light.
     EXPECT_GT(covered.g / open.g, 0.5 * expected);
+}
+
+// The floor's face under a slab of glass lying on it is a probe: its light comes in through one
+// interface, (1 - F) exp(-sigma d / cos); its sun rays start inside the glass and leave through
+// it; and the camera looking down through the slab sees the floor, lit.
+TEST(CascadesGlass, FloorUnderAGlassSlabIsLitThroughIt) {
+    const float sigma = 0.1f, albedo = 0.6f;
+    ShadeOptions o = plainLight(albedo, Rgb(0.0f), Rgb(1.0f));
+    ASSERT_TRUE(o.materials.setSlot(0, glass(Rgb(sigma))).ok());
+    VoxelWorld world = makeWorld({32, 6, 32});
+    for (int z = 0; z < 32; ++z)
+        for (int x = 0; x < 32; ++x) {
+            world.set(x, 0, z, kWhite);
+            world.set(x, 1, z, kGlass), world.set(x, 2, z, kGlass);
+        }
+    world.refreshEmptySpace();
+    auto cascades = RadianceCascades::create(world, nullptr, o);
+    ASSERT_TRUE(cascades.ok()) << cascades.error().message();
+    cascades->solve();
+    const Rgb under = cascades->indirectIrradiance({16, 0, 16}, {0, 1, 0}, {16.5, 1.0, 16.5});
+    // The sky through one interface, plus what the slab's underside sends back down (its share
+    // 1 - mean(1 - F) of the floor's light: a few percent more).
+    constexpr int kSteps = 4096;
+    double sky = 0.0;
+    for (int i = 0; i < kSteps; ++i) {
+        const double mu = (i + 0.5) / kSteps;
+        const double f = dielectricFresnel(float(mu), 1.5f, o.fresnel);
+        sky += 2.0 * mu * (1.0 - f) * std::exp(-sigma * 2.0 / mu) * kPi / kSteps;
+    }
+    EXPECT_GT(under.g, 0.97 * sky);
+    EXPECT_LT(under.g, 1.08 * sky);
+    // A sun ray from the floor leaves through the slab's top.
+    const Vec3d l = normalize(Vec3d{0.0, 1.0, 1.0});
+    const double cosL = l.y;
+    const double sun =
+        (1.0 - dielectricFresnel(float(cosL), 1.5f, o.fresnel)) * std::exp(-sigma * 2.0 / cosL);
+    EXPECT_NEAR(sunRayTransmittance(world, nullptr, {{16.5, 1.0, 16.5}, l}, o).g, sun, 1e-5);
+    // Straight down through the slab: its mirror reflection of the sky, and the floor through
+    // it, (1 - F) exp(-2 sigma) albedo E / pi.
+    auto cam = Camera::create({16.5, 5.0, 16.5}, 0.0, -90.0, 10.0, 4, 4);
+    ASSERT_TRUE(cam.ok());
+    auto image = cascades->render(*cam);
+    ASSERT_TRUE(image.ok());
+    const double f0 = dielectricFresnel(1.0f, 1.5f, o.fresnel);
+    const double seen = f0 + (1.0 - f0) * std::exp(-2.0 * sigma) * albedo * under.g / kPi;
+    EXPECT_NEAR(image->at(2, 2, 1), seen, 0.03 * seen);
 }
 
 // A lamp (albedo 0) facing a receiver 9 voxels away, with a glass wall two voxels thick between

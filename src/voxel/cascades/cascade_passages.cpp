@@ -38,9 +38,10 @@ enum class Inside { Left, EndsInside, Blocked };
 
 // Walks the line from `point` in medium voxel `cell` for at most `room` voxels of length,
 // multiplying `t` by what passes; on Left, `point` is where it leaves into the air and `walked`
-// the length inside.
+// the length inside; on Blocked, `blocker` is the face of the opaque voxel it met (kBlack: none).
 Inside walkThrough(const RadianceCascades::State& state, Int3 cell, Vec3d& point, Vec3d dir,
-                   double room, Rgb& t, double& walked) {
+                   double room, Rgb& t, double& walked, std::uint32_t& blocker) {
+    blocker = kBlack;
     walked = 0.0;
     for (int media = 0; media < kMaxSunRayMedia; ++media) {
         const Material& m = *mediumAt(state, cell);
@@ -59,8 +60,13 @@ Inside walkThrough(const RadianceCascades::State& state, Int3 cell, Vec3d& point
         const Int3 next{exit.cell.x + exit.outward.x, exit.cell.y + exit.outward.y,
                         exit.cell.z + exit.outward.z};
         const Material* other = mediumAt(state, next);
-        if (!other) return Inside::Blocked;
         const Int3 inward{-exit.outward.x, -exit.outward.y, -exit.outward.z};
+        if (!other) {
+            // An opaque voxel under the medium: its face is a probe (surface_faces.h).
+            const int face = state.faces.table.find(next, normalIndex(inward));
+            if (face >= 0 && std::uint32_t(face) < kPassage) blocker = std::uint32_t(face);
+            return Inside::Blocked;
+        }
         t *= Rgb(mediumEntryTransmission(*other, inward, dir, state.shading));
         cell = next;
     }
@@ -86,15 +92,19 @@ SegmentTrace traceSegment(const RadianceCascades::State& state, Vec3d start, Vec
             return false;
         }
         double walked = 0.0;
+        std::uint32_t blocker = kBlack;
         const double room = (limit - t0) * length;
-        const Inside inside = walkThrough(state, cell, point, dir, room, t, walked);
+        const Inside inside = walkThrough(state, cell, point, dir, room, t, walked, blocker);
         out.run[out.runs++] = {face, {t.r, t.g, t.b}};
         if (inside == Inside::EndsInside) {
             out.end = kContinue;
             return false;
         }
-        if (inside == Inside::Blocked ||
-            !(traceTransmittance(out).maxComponent() > kDarkTransmittance)) {
+        if (inside == Inside::Blocked) {
+            out.end = blocker;
+            return false;
+        }
+        if (!(traceTransmittance(out).maxComponent() > kDarkTransmittance)) {
             out.end = kBlack;
             return false;
         }

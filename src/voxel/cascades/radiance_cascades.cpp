@@ -102,7 +102,7 @@ Result<RadianceCascades> RadianceCascades::create(const VoxelWorld& world,
     state->shading = shading;
     state->options = options;
     Result<FaceTable> table =
-        FaceTable::build(world, textures, std::max<std::int64_t>(exposed * 2, 1 << 20));
+        FaceTable::build(world, textures, std::max<std::int64_t>(exposed * 2, 1 << 20), &shading);
     if (!table) return table.error();
     state->faces.table = std::move(*table);
     state->faces.bins = std::move(faceBins);
