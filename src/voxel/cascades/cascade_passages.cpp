@@ -79,9 +79,10 @@ SegmentTrace traceSegment(const RadianceCascades::State& state, Vec3d start, Vec
                           double limit) {
     const VoxelWorld& world = *state.world;
     const ShadeOptions& shading = state.shading;
-    const bool media = shading.refraction && shading.materials.anyTransmission();
     const double length = std::sqrt(dot(d, d));
-    const Vec3d dir = d * (1.0 / length);
+    // A segment of no length (a connector to where it already is) has no direction to walk.
+    const bool media = shading.refraction && shading.materials.anyTransmission() && length > 0.0;
+    const Vec3d dir = media ? d * (1.0 / length) : d;
     SegmentTrace out;
     Vec3d origin = start;
     double t0 = 0.0;  // where origin lies along d
