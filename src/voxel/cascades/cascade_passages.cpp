@@ -75,8 +75,8 @@ Inside walkThrough(const RadianceCascades::State& state, Int3 cell, Vec3d& point
 
 }  // namespace
 
-SegmentTrace traceSegment(const RadianceCascades::State& state, Vec3d start, Vec3d d,
-                          double limit) {
+SegmentTrace traceSegment(const RadianceCascades::State& state, Vec3d start, Vec3d d, double limit,
+                          bool cutouts) {
     const VoxelWorld& world = *state.world;
     const ShadeOptions& shading = state.shading;
     const double length = std::sqrt(dot(d, d));
@@ -121,8 +121,8 @@ SegmentTrace traceSegment(const RadianceCascades::State& state, Vec3d start, Vec
         if (mediumAt(state, cell) && !pass(kBlack, cell, start, Rgb(1.0f))) return out;
     }
     for (;;) {
-        const SurfaceHit s =
-            castToSurface(world, state.textures, {origin, d}, shading.stepCap, limit - t0);
+        const SurfaceHit s = castToSurface(world, cutouts ? state.textures : nullptr, {origin, d},
+                                           shading.stepCap, limit - t0);
         if (!s.hit.hit) {
             const bool open = limit == kInfinity || !insideWorld(world, start + d * limit);
             out.end = (s.hit.capped || s.cutoutCapped) ? kBlack : open ? kSky : kContinue;
@@ -177,6 +177,23 @@ std::vector<float> mediaSignature(const ShadeOptions& shading) {
                                m.absorption.b});
     }
     return key;
+}
+
+std::uint32_t passageEnd(std::uint32_t code, const std::vector<Passage>& passages) {
+    for (int i = 0; i < kMaxPassages && isPassage(code); ++i) code = passages[code - kPassage].next;
+    return code;
+}
+
+Rgb passageRadiance(std::uint32_t code, const std::vector<Passage>& passages,
+                    const std::vector<Rgb>& outgoing, Rgb sky, Rgb next) {
+    Rgb sum, through(1.0f);
+    for (int i = 0; i < kMaxPassages && isPassage(code); ++i) {
+        const Passage& p = passages[code - kPassage];
+        if (p.face < kPassage) sum += through * outgoing[p.face];
+        through *= p.transmittance;
+        code = p.next;
+    }
+    return sum + through * codeRadiance(code, outgoing, sky, next);
 }
 
 std::uint32_t PassageWriter::codeOf(const SegmentTrace& trace) {

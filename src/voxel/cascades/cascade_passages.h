@@ -34,8 +34,10 @@ struct SegmentTrace {
 
 // Traces the segment from `start` along `d` for at most `limit` times d (kInfinity: until it
 // leaves the world). Without transmissive materials (or with shading.refraction off) it stops at
-// the first face, as a plain code.
-SegmentTrace traceSegment(const RadianceCascades::State& state, Vec3d start, Vec3d d, double limit);
+// the first face, as a plain code. Cutout texels let it through unless `cutouts` is false (then
+// a textured voxel stops it whole, as `occluded` does).
+SegmentTrace traceSegment(const RadianceCascades::State& state, Vec3d start, Vec3d d, double limit,
+                          bool cutouts = true);
 
 // `first` (which ends in kContinue) followed by `then`, in place.
 void appendTrace(SegmentTrace& first, const SegmentTrace& then);

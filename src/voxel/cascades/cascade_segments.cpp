@@ -29,9 +29,10 @@ void keepVisibleCorners(const RadianceCascades::State& state, const Level& upper
     for (int c = 0; c < 8; ++c) {
         if (visible.weight[c] == 0.0f) continue;
         const Vec3d q = upper.position(corners.probe[c]);
-        // Glass and water let the probe see through them (cascade_passages.h).
+        // Glass and water let the probe see through them (cascade_passages.h); cutout voxels
+        // hide, as `occluded` has them.
         const bool hidden =
-            media ? traceSegment(state, from, q - from, 1.0).end != kContinue
+            media ? traceSegment(state, from, q - from, 1.0, false).end != kContinue
                   : occluded(*state.world, {from, q - from}, 1.0, state.shading.stepCap);
         if (hidden) visible.weight[c] = 0.0f;
         total += visible.weight[c];

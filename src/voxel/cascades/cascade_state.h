@@ -115,21 +115,23 @@ inline Rgb codeRadiance(std::uint32_t code, const std::vector<Rgb>& outgoing, Rg
     return Rgb{};
 }
 
+// The plain code the chain of passages from `code` ends in, and what it brings with `next` as
+// kContinue's radiance: the glass faces' own light plus the transmittance times the end's
+// (out of line, so the plain codes' path stays small; cascade_passages.cpp).
+std::uint32_t passageEnd(std::uint32_t code, const std::vector<Passage>& passages);
+Rgb passageRadiance(std::uint32_t code, const std::vector<Passage>& passages,
+                    const std::vector<Rgb>& outgoing, Rgb sky, Rgb next);
+
 // Radiance a segment code brings, following its passages (the GPU's twin:
 // src/gpu/shaders/voxel/cascades_chain.glsl); next() is what kContinue brings.
 template <typename Next>
-Rgb chainRadiance(std::uint32_t code, const std::vector<Passage>& passages,
-                  const std::vector<Rgb>& outgoing, Rgb sky, Next&& next) {
-    if (!isPassage(code))
+inline Rgb chainRadiance(std::uint32_t code, const std::vector<Passage>& passages,
+                         const std::vector<Rgb>& outgoing, Rgb sky, Next&& next) {
+    if (!isPassage(code)) [[likely]] {
         return codeRadiance(code, outgoing, sky, code == kContinue ? next() : Rgb{});
-    Rgb sum, through(1.0f);
-    for (int i = 0; i < kMaxPassages && isPassage(code); ++i) {
-        const Passage& p = passages[code - kPassage];
-        if (p.face < kPassage) sum += through * outgoing[p.face];
-        through *= p.transmittance;
-        code = p.next;
     }
-    return sum + through * codeRadiance(code, outgoing, sky, code == kContinue ? next() : Rgb{});
+    const Rgb behind = passageEnd(code, passages) == kContinue ? next() : Rgb{};
+    return passageRadiance(code, passages, outgoing, sky, behind);
 }
 
 // Casts every segment of the faces and the levels once (cascade_segments.cpp).
