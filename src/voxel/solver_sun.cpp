@@ -11,51 +11,55 @@
 #include "voxel/sun_disk.h"
 
 namespace luxel::voxel {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-// Below this the light that is left counts as none (and the walk stops).
-constexpr float kDarkTransmittance = 1e-4f;
-
-Vec3d toDouble(Int3 v) {
-    return {double(v.x), double(v.y), double(v.z)};
-}
 
 // The share of the light that enters the medium of `m` through a face with outward normal
 // `normal` along `direction`: its transmission lobe weight (0 for opaque materials).
-float entryTransmission(const Material& m, Int3 normal, Vec3d direction,
-                        const ShadeOptions& shading) {
+float mediumEntryTransmission(const Material& m, Int3 normal, Vec3d direction,
+                              const ShadeOptions& shading) {
     return pathBsdf(m, Rgb(1.0f), normal, direction, shading).transmission;
 }
 
 // 1 - F where a straight line leaves the medium through a face with outward normal `outward`:
 // the Fresnel reflectance at the line's angle to the face, as if it came in from the air (for a
 // slab this is the exit's reflectance after refraction, by symmetry).
-float exitTransmission(const Material& m, Vec3d direction, Int3 outward,
-                       const ShadeOptions& shading) {
-    const float cosI = float(std::clamp(dot(direction, toDouble(outward)), 0.0, 1.0));
+float mediumExitTransmission(const Material& m, Vec3d direction, Int3 outward,
+                             const ShadeOptions& shading) {
+    const Vec3d n{double(outward.x), double(outward.y), double(outward.z)};
+    const float cosI = float(std::clamp(dot(direction, n), 0.0, 1.0));
     return 1.0f - dielectricFresnel(cosI, m.ior, shading.fresnel);
 }
 
-// Through the run of transmissive voxels entered at `hit` (the face the ray met); returns the
-// transmittance and moves `origin` to where the line leaves into the air (0: blocked inside).
+Rgb mediumAbsorption(const Material& m, double distance) {
+    const gpu::shared::vec3 a = gpu::shared::voxelTransmittance(
+        {m.absorption.r, m.absorption.g, m.absorption.b}, float(distance));
+    return Rgb(a.x, a.y, a.z);
+}
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// Below this the light that is left counts as none (and the walk stops).
+constexpr float kDarkTransmittance = 1e-4f;
+
+// Through the run of transmissive voxels entered at `hit` (the face the ray met; with `inside`,
+// the ray starts in hit.voxel at hit.point and crosses no entry face); returns the transmittance
+// and moves `origin` to where the line leaves into the air (0: blocked inside).
 Rgb throughMedia(const VoxelWorld& world, const Hit& hit, Vec3d direction,
-                 const ShadeOptions& shading, Vec3d& origin, int& media) {
+                 const ShadeOptions& shading, Vec3d& origin, int& media, bool inside = false) {
     Rgb t(1.0f);
     Int3 cell = hit.voxel, normal = hit.normal;
     Vec3d point = hit.point;
     for (;;) {
         const Voxel v = world.get(cell.x, cell.y, cell.z);
         const Material& m = shading.materials.forSlot(textureSlotOf(v));
-        t = t * entryTransmission(m, normal, direction, shading);
+        if (!inside) t = t * mediumEntryTransmission(m, normal, direction, shading);
+        inside = false;
         if (!(t.maxComponent() > kDarkTransmittance) || ++media > kMaxSunRayMedia) return {};
         const MediumExit exit = walkMedium(world, cell, point, direction);
-        const gpu::shared::vec3 a = gpu::shared::voxelTransmittance(
-            {m.absorption.r, m.absorption.g, m.absorption.b}, float(exit.distance));
-        t = t * Rgb(a.x, a.y, a.z);
+        t = t * mediumAbsorption(m, exit.distance);
         if (!exit.intoSolid) {
             origin = exit.point;
-            return t * exitTransmission(m, direction, exit.outward, shading);
+            return t * mediumExitTransmission(m, direction, exit.outward, shading);
         }
         // Another solid touches the medium: entered directly, with no interface to the air.
         cell = {exit.cell.x + exit.outward.x, exit.cell.y + exit.outward.y,
@@ -81,7 +85,13 @@ Rgb sunRayTransmittance(const VoxelWorld& world, const TextureSet* textures, con
             castToSurface(world, textures, {origin, ray.direction}, shading.stepCap);
         if (!s.hit.hit) return t;               // the sky (or past the step cap)
         if (s.hit.normal == Int3{}) return {};  // started inside a solid voxel
-        t = t * throughMedia(world, s.hit, ray.direction, shading, origin, media);
+        // Starting on the face of an opaque voxel under glass or water, the ray is inside the
+        // medium at once: no interface with the air to enter through.
+        const Int3 behind{s.hit.voxel.x + s.hit.normal.x, s.hit.voxel.y + s.hit.normal.y,
+                          s.hit.voxel.z + s.hit.normal.z};
+        const bool inside =
+            media == 0 && !(s.hit.t > 1e-9) && world.solid(behind.x, behind.y, behind.z);
+        t = t * throughMedia(world, s.hit, ray.direction, shading, origin, media, inside);
         if (!(t.maxComponent() > kDarkTransmittance)) return {};
     }
 }
@@ -91,7 +101,7 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
     if (!(shading.sunIrradiance.maxComponent() > 0.0f)) return {};
     if (!(diffuse.maxComponent() > 0.0f) && !specular) return {};
     const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
-    const Vec3d n = toDouble(hit.normal);
+    const Vec3d n{double(hit.normal.x), double(hit.normal.y), double(hit.normal.z)};
     // A delta sun: one shadow ray; a disk: the spiral's rays, each bringing radiance / pdf.
     const int rays = sun.delta() ? 1 : std::max(sunRays, 1);
     const Rgb perRay = sun.radianceOverPdf(shading.sunIrradiance) * float(1.0 / rays);

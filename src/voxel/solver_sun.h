@@ -22,13 +22,27 @@ namespace luxel::voxel {
 // Media (runs of touching transmissive voxels) a sun ray passes before it counts as blocked.
 inline constexpr int kMaxSunRayMedia = 8;
 
+// A straight line through transmissive voxels (sunRayTransmittance, and the radiance cascades'
+// segments, docs/algorithms/voxel-radiance-cascades.md §4.2): the share that enters the medium
+// of `m` through a face with outward normal `normal` along unit `direction` (its transmission
+// lobe weight, pathBsdf; 0 for opaque materials), the share that leaves it into the air through
+// a face with outward normal `outward` (1 - F at the line's angle), and Beer-Lambert over
+// `distance` voxels inside it.
+float mediumEntryTransmission(const Material& m, Int3 normal, Vec3d direction,
+                              const ShadeOptions& shading);
+float mediumExitTransmission(const Material& m, Vec3d direction, Int3 outward,
+                             const ShadeOptions& shading);
+Rgb mediumAbsorption(const Material& m, double distance);
+
 // What of the light arriving along `ray` from infinity reaches its origin (ray: leaving a
 // surface, unit direction): 1 when it meets nothing (cutout texels let it through), 0 at an
 // opaque voxel, and through each transmissive voxel it meets (when shading.refraction is on) the
 // product of the entry's transmission lobe weight (pathBsdf: (1 - metallic)(1 - F) transmission),
 // Beer-Lambert over the straight path inside (the path tracer's absorption) and 1 - F where it
 // leaves into the air. A transmissive voxel of another material touching the first is entered
-// with its own lobe weight and no exit between them, as the path tracer's rays do.
+// with its own lobe weight and no exit between them, as the path tracer's rays do. A ray that
+// starts on the face of an opaque voxel under glass or water goes out through the medium with
+// no entry factor (there is no air between).
 Rgb sunRayTransmittance(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
                         const ShadeOptions& shading);
 

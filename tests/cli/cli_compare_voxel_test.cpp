@@ -1,5 +1,6 @@
 // `luxel compare-solvers` on a voxel scene: the path tracer as the reference, sky visibility and
-// the ray caster measured against it, a labelled grid, and the 2D-only options refused.
+// the ray caster measured against it, a labelled grid, a reused path-traced reference, and the
+// 2D-only options refused.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -94,10 +95,40 @@ TEST_F(CliCompareVoxel, MeasuresLightLeakedIntoTheSealedRoomOfThinWalls) {
 }
 
 TEST_F(CliCompareVoxel, RefusesTheTwoDimensionalOptions) {
-    for (const char* option :
-         {"--rays 16", "--move 4,0", "--error-image e.png", "--reference r.exr"}) {
+    for (const char* option : {"--rays 16", "--move 4,0", "--error-image e.png"}) {
         expectError("compare-solvers " + kCottage + " " + option, "applies to 2D scenes");
     }
+}
+
+// --reference: a path-traced EXR of the scene at the size compared stands in for the reference;
+// any other is refused with what is wrong with it.
+TEST_F(CliCompareVoxel, ReusesAPathTracedReference) {
+    const std::string ref = path("ref.exr"), rc = path("rc.exr");
+    ASSERT_EQ(runLuxel("render " + kCottage + " --solver path --spp 8 --size 48x27 --out " + ref)
+                  .exitCode,
+              0);
+    const RunResult r =
+        runLuxel("compare-solvers " + kCottage + " --size 48x27 --reference " + ref);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("reference: path tracer, 8 samples/pixel, from " + ref),
+              std::string::npos)
+        << r.output;
+    const auto pathRow = r.output.find("\npath ");
+    ASSERT_NE(pathRow, std::string::npos) << r.output;
+    double ms = 0, relL1 = -1;
+    ASSERT_EQ(std::sscanf(r.output.c_str() + pathRow + 6, "%lf %lf", &ms, &relL1), 2) << r.output;
+    EXPECT_EQ(relL1, 0.0);
+    EXPECT_NE(r.output.find("\nrc "), std::string::npos) << r.output;
+
+    const std::string compare = "compare-solvers " + kCottage + " ";
+    expectError(compare + "--size 32x18 --reference " + ref, "is 48x27 but");
+    ASSERT_EQ(runLuxel("render " + kCottage + " --solver rc --size 48x27 --out " + rc).exitCode, 0);
+    expectError(compare + "--size 48x27 --reference " + rc, "rendered by the rc solver");
+    expectError(compare + "--reference r.png", "must be a radiance EXR");
+    expectError(compare + "--reference " + path("missing.exr"), "missing.exr");
+    expectError(compare + "--size 48x27 --reference " + ref + " --grid g.png",
+                "does not apply to --grid");
+    expectError(compare + "--reference " + ref + " --sun-sweep 2", "does not apply to --sun-sweep");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // The voxel radiance cascades' lighting passes on the GPU against their CPU reference
 // (RadianceCascades::iterate): a sunlit room with a window, a sky and a lamp, pass by pass, and
-// light changed in between. Runs on lavapipe where there is no hardware GPU.
+// light changed in between; the same room with glass in its window and a glass block inside
+// (chains through glass). Runs on lavapipe where there is no hardware GPU.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,7 +15,8 @@ namespace {
 using namespace luxel;
 using namespace luxel::voxel;
 
-VoxelWorld roomWithWindow() {
+// Glass in the window and a glass block on the floor: texture slot 1.
+VoxelWorld roomWithWindow(bool glass = false) {
     auto created = VoxelWorld::create({20, 12, 20}, 8);
     EXPECT_TRUE(created.ok());
     VoxelWorld world = std::move(*created);
@@ -26,8 +28,13 @@ VoxelWorld roomWithWindow() {
                 const bool wall = x == 3 || x == 15 || z == 3 || z == 15 || y == 7;
                 const bool window = z == 3 && y >= 3 && y <= 5 && x >= 6 && x <= 11;
                 if (wall && !window) world.set(x, y, z, Voxel{220, 220, 220, 255});
+                if (window && glass) world.set(x, y, z, Voxel{230, 240, 255, 2});
             }
     world.set(8, 1, 10, Voxel{255, 255, 255, 1});  // texture slot 0: a lamp
+    if (glass) {
+        for (int y = 1; y <= 3; ++y)
+            for (int x = 10; x <= 12; ++x) world.set(x, y, 6, Voxel{255, 255, 255, 2});
+    }
     world.refreshEmptySpace();
     return world;
 }
@@ -47,6 +54,13 @@ ShadeOptions light() {
     lamp.name = "lamp";
     lamp.emission = Rgb(8.0f, 6.0f, 3.0f);
     EXPECT_TRUE(o.materials.setSlot(0, lamp).ok());
+    Material glass;
+    glass.name = "glass";
+    glass.ior = 1.5f;
+    glass.roughness = 0.0f;
+    glass.transmission = 1.0f;
+    glass.absorption = Rgb(0.05f, 0.02f, 0.01f);
+    EXPECT_TRUE(o.materials.setSlot(1, glass).ok());
     return o;
 }
 
@@ -97,6 +111,29 @@ TEST(RadianceCascadesGpu, PassesMatchTheCpuReference) {
     const double difference = largestDifference(*onGpu, *cpu, scale);
     EXPECT_GT(scale, 0.1);
     EXPECT_LE(difference, 1e-5 * scale);
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
+TEST(RadianceCascadesGpu, PassesThroughGlassMatchTheCpuReference) {
+    LUXEL_REQUIRE_GPU(context);
+    const VoxelWorld world = roomWithWindow(true);
+    const ShadeOptions o = light();
+    auto cpu = RadianceCascades::create(world, nullptr, o);
+    auto onGpu = RadianceCascades::create(world, nullptr, o);
+    ASSERT_TRUE(cpu.ok() && onGpu.ok());
+    auto gpu = RadianceCascadesGpu::create(*context, *onGpu);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    for (int passes : {1, 3}) {
+        for (int i = 0; i < passes; ++i) cpu->iterate();
+        auto ran = gpu->iterate(passes);
+        ASSERT_TRUE(ran.ok()) << ran.error().message();
+        ASSERT_TRUE(gpu->download().ok());
+        double scale = 0.0;
+        const double difference = largestDifference(*onGpu, *cpu, scale);
+        EXPECT_GT(scale, 0.1);
+        EXPECT_LE(difference, 1e-5 * scale) << passes;
+    }
+    EXPECT_GT(cpu->stats().passages, 0u);
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
 }
 

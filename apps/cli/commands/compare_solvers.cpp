@@ -205,8 +205,7 @@ int runCompareSolvers(const CompareSolversArgs& args) {
     auto file = loadScene(args.scene, "");
     if (!file) return reportError(file.error());
     if (file->kind() == scene::SceneKind::Voxel) {
-        for (const auto& [flag, given] : {std::pair{"--reference", !args.reference.empty()},
-                                          {"--move", !args.move.empty()},
+        for (const auto& [flag, given] : {std::pair{"--move", !args.move.empty()},
                                           {"--error-image", !args.errorImage.empty()},
                                           {"--rays", args.raysGiven}}) {
             if (given) {
@@ -219,6 +218,11 @@ int runCompareSolvers(const CompareSolversArgs& args) {
         if (args.sunStepGiven && args.sunSweep == 0) {
             return reportError(Error("--sun-step applies to --sun-sweep"));
         }
+        if (!args.reference.empty() && (args.sunSweep > 0 || !args.grid.empty())) {
+            return reportError(Error(std::string("--reference does not apply to ") +
+                                     (args.sunSweep > 0 ? "--sun-sweep" : "--grid") +
+                                     " on a voxel scene (it renders the reference itself)"));
+        }
         std::string size = args.size;
         if (args.sunSweep > 0 && size.empty()) {
             const voxel::Camera& camera = file->voxel().camera;
@@ -228,7 +232,7 @@ int runCompareSolvers(const CompareSolversArgs& args) {
             size = std::to_string(w) + "x" + std::to_string(h);
         }
         return compareVoxelSolvers(
-            {args.scene, size, args.grid, args.spp, args.sunSweep, args.sunStep});
+            {args.scene, size, args.grid, args.spp, args.sunSweep, args.sunStep, args.reference});
     }
     if (args.sunSweep > 0 || args.sunStepGiven) {
         return reportError(Error(std::string(args.sunSweep > 0 ? "--sun-sweep" : "--sun-step") +
@@ -374,8 +378,9 @@ Runner addCompareSolversCommand(CLI::App& app) {
         ->check(CLI::Range(0.001, 1000.0))
         ->capture_default_str();
     app.add_option("--reference", args->reference,
-                   "reuse this reference fluence (.exr from luxel render --solver reference) "
-                   "instead of solving it again; checked against the scene's size and hash");
+                   "reuse this reference fluence (.exr from luxel render --solver reference; "
+                   "voxel scenes: --solver path) instead of solving it again; checked against "
+                   "the scene's size and hash");
     app.add_option("--move", args->move,
                    "move the brightest light by DX,DY px and compare each solver's change");
     app.add_option("--sun-sweep", args->sunSweep,

@@ -54,6 +54,9 @@ struct VoxelCompareRequest {
     int spp = 256;       // the path-traced reference's samples per pixel
     int sunSweep = 0;    // frames of the sun sweep (0: none, else >= 2)
     double sunStep = 1;  // degrees the sun turns about the vertical between frames
+    // A path-traced radiance EXR of this scene at this size to use as the reference instead of
+    // rendering one (`luxel render VOXEL.json --solver path --out FILE.exr`); "" renders it.
+    std::string reference;
 };
 int compareVoxelSolvers(const VoxelCompareRequest& request);
 

@@ -3,14 +3,20 @@
 // against it: time, relative L1, RMSE, low-frequency RMSE (8 x 8 pixel block means, the error a
 // smooth GI method is judged by: docs/algorithms/voxel-sky-visibility.md), the light each adds
 // where the reference is dark (leaks through thin walls: docs/voxel-gi-measures.md) and peak
-// memory. --sun-sweep measures flicker instead (compare_sun_sweep.cpp).
+// memory. --sun-sweep measures flicker instead (compare_sun_sweep.cpp). --reference reuses a
+// path-traced render (a converged one takes minutes) instead of rendering it again.
 #include <cstdio>
+#include <cstdlib>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "commands/command.h"
 #include "commands/compare_solvers_run.h"
 #include "commands/render_outputs.h"
+#include "luxel/core/file_io.h"
+#include "luxel/core/image_io.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/metrics.h"
 #include "luxel/post/gi_measures.h"
@@ -28,17 +34,79 @@ std::vector<SolverRun> voxelSolvers(int spp) {
     };
 }
 
+namespace {
+
+// --reference: a radiance EXR that `luxel render VOXEL.json --solver path` wrote for this scene
+// at this size, checked by its size and, where its metadata has them, its solver and scene hash;
+// `spp` becomes its samples per pixel.
+Result<RunOutcome> reuseVoxelReference(const VoxelCompareRequest& request, int& spp) {
+    const std::string& path = request.reference;
+    if (!hasExtension(path, ".exr")) {
+        return Error("--reference '" + path +
+                     "' must be a radiance EXR (luxel render VOXEL.json --solver path --out "
+                     "FILE.exr)");
+    }
+    ImageMetadata metadata;
+    auto radiance = readExr(path, &metadata);
+    if (!radiance) return radiance.error();
+    auto file = loadScene(request.scene, request.size);
+    if (!file) return file.error();
+    const voxel::Camera& camera = file->voxel().camera;
+    if (radiance->width() != camera.width() || radiance->height() != camera.height()) {
+        return Error("--reference '" + path + "' is " + std::to_string(radiance->width()) + "x" +
+                     std::to_string(radiance->height()) + " but " + request.scene + " renders at " +
+                     std::to_string(camera.width()) + "x" + std::to_string(camera.height()) +
+                     (request.size.empty() ? "" : " (--size)"));
+    }
+    if (const std::string* solver = findMetadata(metadata, "luxel.solver");
+        solver != nullptr && *solver != "path") {
+        return Error("--reference '" + path + "' was rendered by the " + *solver +
+                     " solver, not the path tracer");
+    }
+    if (const std::string* hash = findMetadata(metadata, "luxel.scene.fnv1a64")) {
+        auto bytes = readFileBytes(request.scene, "scene");
+        if (!bytes) return bytes.error();
+        if (*hash != fnv1a64Hex(*bytes)) {
+            return Error("--reference '" + path + "' was rendered from another version of " +
+                         request.scene + " (scene FNV-1a " + *hash + ", the file's now " +
+                         fnv1a64Hex(*bytes) + ")");
+        }
+    }
+    if (const std::string* samples = findMetadata(metadata, "luxel.samples")) {
+        spp = std::atoi(samples->c_str());
+    }
+    RunOutcome out;
+    if (const std::string* seconds = findMetadata(metadata, "luxel.render.seconds")) {
+        out.solveMs = std::atof(seconds->c_str()) * 1e3;
+    }
+    out.fluence = std::move(*radiance);
+    return out;
+}
+
+}  // namespace
+
 int compareVoxelSolvers(const VoxelCompareRequest& request) {
     if (request.sunSweep > 0) return compareVoxelSunSweep(request);
-    const std::vector<SolverRun> solvers = voxelSolvers(request.spp);
-    auto solved = runSolverProcesses(request.scene, request.size, solvers);
+    int spp = request.spp;
+    std::optional<RunOutcome> reused;
+    if (!request.reference.empty()) {
+        auto outcome = reuseVoxelReference(request, spp);
+        if (!outcome) return reportError(outcome.error());
+        reused = std::move(*outcome);
+    }
+    const std::vector<SolverRun> solvers = voxelSolvers(spp);
+    // A reused reference stands in for the first run.
+    auto solved =
+        runSolverProcesses(request.scene, request.size, std::span(solvers).subspan(reused ? 1 : 0));
     if (!solved) return reportError(solved.error());
-    const std::vector<RunOutcome>& runs = *solved;
+    std::vector<RunOutcome> runs = std::move(*solved);
+    if (reused) runs.insert(runs.begin(), std::move(*reused));
 
     const Image& reference = runs[0].fluence;
     const Image referenceBlocks = post::blockMeans(reference);
-    std::printf("%s at %dx%d (reference: path tracer, %d samples/pixel)\n", request.scene.c_str(),
-                reference.width(), reference.height(), request.spp);
+    std::printf("%s at %dx%d (reference: path tracer, %d samples/pixel%s%s)\n",
+                request.scene.c_str(), reference.width(), reference.height(), spp,
+                reused ? ", from " : "", request.reference.c_str());
     std::vector<post::DarkLeak> leaks;
     for (const RunOutcome& run : runs) {
         auto leak = post::darkRegionLeak(run.fluence, reference);
@@ -65,7 +133,7 @@ int compareVoxelSolvers(const VoxelCompareRequest& request) {
         std::snprintf(error, sizeof error, ", rel. L1 %.4f, leak %.2f%%", e->relativeL1,
                       100.0 * leaks[i].leak);
         labels.push_back(std::string(solvers[i].label) + "\n" + formatDuration(runs[i].solveMs) +
-                         (i == 0 ? ", " + std::to_string(request.spp) + " spp" : error));
+                         (i == 0 ? ", " + std::to_string(spp) + " spp" : error));
     }
     if (!request.grid.empty()) {
         std::vector<Image> displays;

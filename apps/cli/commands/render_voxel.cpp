@@ -53,12 +53,16 @@ void printAoSummary(const voxel::SkyVisibilityOptions& ao) {
 
 // The radiance cascades' line of the summary: their layout, memory and times.
 void printCascadeSummary(const voxel::CascadeImage& c) {
+    const std::string passages =
+        c.stats.passages > 0 ? " (" + std::to_string(c.stats.passages) + " runs through glass)"
+                             : std::string();
     std::printf(
         "  radiance cascades: %d faces, %d levels from spacing %d (%lld probes), "
-        "%lld segments, %s; build %.3f s, %d bounces %.3f s, picture %.3f s\n",
+        "%lld segments%s, %s; build %.3f s, %d bounces %.3f s, picture %.3f s\n",
         c.stats.faces, c.stats.levels, c.stats.spacing, static_cast<long long>(c.stats.probes),
-        static_cast<long long>(c.stats.segments), formatBytes(c.stats.bytes).c_str(),
-        c.stats.buildSeconds, c.stats.bounces, c.lightSeconds, c.renderSeconds);
+        static_cast<long long>(c.stats.segments), passages.c_str(),
+        formatBytes(c.stats.bytes).c_str(), c.stats.buildSeconds, c.stats.bounces, c.lightSeconds,
+        c.renderSeconds);
 }
 
 bool endsWithExr(const std::string& path) {

@@ -62,6 +62,7 @@ CascadeEstimate estimateCascades(const VoxelWorld& world, const CascadeOptions& 
 struct CascadeStats {
     int faces = 0, levels = 0, spacing = 0;
     std::int64_t probes = 0, segments = 0;
+    std::int64_t passages = 0;  // runs of segments through glass and water
     std::uint64_t bytes = 0;
     double buildSeconds = 0.0;
     int bounces = 0;  // lighting passes run so far

@@ -25,7 +25,9 @@ class RadianceCascadesGpu {
     RadianceCascadesGpu& operator=(RadianceCascadesGpu&&) noexcept;
     ~RadianceCascadesGpu();
 
-    // The faces' light again after RadianceCascades::setLight (sun, sky, materials).
+    // The faces' light again after RadianceCascades::setLight (sun, sky, materials). Fails when
+    // setLight changed the glass's materials (the segments through glass were cast again: create
+    // the GPU passes anew).
     Status uploadLight();
     // `passes` lighting passes in one submission; returns the GPU time of the last, in ms.
     Result<double> iterate(int passes = 1);

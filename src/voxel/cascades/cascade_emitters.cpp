@@ -6,10 +6,12 @@
 // wholly in front of x is Lambert's contour integral E = L/2 |sum_i theta_i n . u_i|, with
 // theta_i the angle between the directions to consecutive vertices and u_i the unit normal of
 // the plane they span. Visibility is the fraction of four points on the emitting face that the
-// face centre x sees (cutouts let light through, as for the sun).
+// face centre x sees (cutouts let light through, as for the sun; glass and water dim it by their
+// transmittance).
 #include <array>
 #include <cmath>
 
+#include "cascade_passages.h"
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/surface_cast.h"
@@ -46,17 +48,17 @@ double projectedSolidAngle(Vec3d x, Vec3d n, const std::array<Vec3d, 4>& polygon
     return std::abs(sum) * 0.5;
 }
 
-float visibleFraction(const RadianceCascades::State& state, Vec3d x, const Face& emitter) {
-    const Int3 en = normalFromIndex(emitter.normal);
-    int seen = 0;
+// The mean over four points on the emitter of what reaches x from it: 1 in sight, 0 hidden,
+// the transmittance through glass and water between (cascade_passages.h).
+Rgb visibleFraction(const RadianceCascades::State& state, Vec3d x, int e) {
+    const Face& emitter = state.faces.table[e];
+    Rgb seen;
     for (int i = 0; i < 4; ++i) {
         const Vec3d target = faceQuarterCentre(emitter, i);
-        const Hit hit = castToSurface(*state.world, state.textures, {x, target - x},
-                                      state.shading.stepCap, 1.0 + 1e-9)
-                            .hit;
-        seen += hit.hit && hit.voxel == emitter.voxel && hit.normal == en;
+        const SegmentTrace trace = traceSegment(state, x, target - x, 1.0 + 1e-9);
+        if (trace.end == std::uint32_t(e)) seen += traceTransmittance(trace);
     }
-    return seen / 4.0f;
+    return seen * 0.25f;
 }
 
 }  // namespace
@@ -89,8 +91,10 @@ bool computeEmitterIrradiance(RadianceCascades::State& state) {
                 }
                 const double omega = projectedSolidAngle(x, n, faceCorners(emitter));
                 if (!(omega > 0.0)) continue;
-                const float visible = visibleFraction(state, x, emitter);
-                if (visible > 0.0f) sum += faces.emission[e] * float(omega * visible);
+                const Rgb visible = visibleFraction(state, x, e);
+                if (visible.maxComponent() > 0.0f) {
+                    sum += faces.emission[e] * visible * float(omega);
+                }
             }
             faces.emitterIrradiance[f] = sum;
         }

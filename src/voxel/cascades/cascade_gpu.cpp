@@ -59,6 +59,21 @@ void packLight(const RadianceCascades::State& state, std::vector<RgbTexel>& ligh
     for (Rgb c : faces.sky) sky.push_back(texel(c));
 }
 
+// Each passage as 5 words: face, next code, transmittance (float bits).
+std::vector<std::uint32_t> packPassages(const std::vector<Passage>& passages) {
+    std::vector<std::uint32_t> words;
+    words.reserve(passages.size() * LUXEL_CASCADE_PASSAGE_WORDS);
+    for (const Passage& p : passages) {
+        const Rgb& t = p.transmittance;
+        words.insert(words.end(),
+                     {p.face, p.next, std::bit_cast<std::uint32_t>(t.r),
+                      std::bit_cast<std::uint32_t>(t.g), std::bit_cast<std::uint32_t>(t.b)});
+    }
+    return words;
+}
+static_assert(kPassage == LUXEL_CASCADE_PASSAGE && kMaxPassages == LUXEL_CASCADE_MAX_PASSAGES);
+static_assert(sizeof(Passage) == LUXEL_CASCADE_PASSAGE_WORDS * 4);
+
 }  // namespace
 
 RadianceCascadesGpu::RadianceCascadesGpu(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
@@ -71,11 +86,14 @@ Result<RadianceCascadesGpu> RadianceCascadesGpu::create(gpu::Context& context,
     auto impl = std::make_unique<Impl>();
     impl->context = &context;
     impl->state = cascades.state_.get();
+    impl->casts = impl->state->casts;
     const RadianceCascades::State& state = *impl->state;
     const FaceData& faces = state.faces;
     const std::size_t faceCount = faces.table.size();
 
-    std::vector<std::uint32_t> codes;
+    // The passages through glass and water come first: a passage code's index addresses them
+    // (src/gpu/shaders/voxel/cascades_chain.glsl).
+    std::vector<std::uint32_t> codes = packPassages(state.passages);
     std::vector<Corners> corners;
     std::vector<float> solidAngle;
     std::uint32_t radiance = 0, means = 0, sky = 0;
@@ -161,6 +179,11 @@ Result<RadianceCascadesGpu> RadianceCascadesGpu::create(gpu::Context& context,
 }
 
 Status RadianceCascadesGpu::uploadLight() {
+    if (impl_->state->casts != impl_->casts) {
+        return Error(
+            "radiance cascades on the GPU: the glass's materials changed, so the "
+            "segments were cast again; create the GPU passes again");
+    }
     std::vector<RgbTexel> light, sky;
     packLight(*impl_->state, light, sky);
     if (Status s = impl_->context->upload(*impl_->light, bytesOf(light)); !s) return s;

@@ -22,6 +22,7 @@ struct RadianceCascadesGpu::Impl {
     std::vector<std::uint32_t> codeOffset, cornerOffset, radianceOffset, meanOffset, skyOffset,
         solidAngleOffset;
     std::uint32_t faceSkyOffset = 0, faceCornerOffset = 0;
+    int casts = 0;  // the state's casts its codes were uploaded from
     gpu::shared::CascadeGatherParams gatherParams{};
     std::unique_ptr<cascades::PictureGpu> picture;  // null until the first render
 };

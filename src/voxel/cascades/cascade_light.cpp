@@ -4,6 +4,7 @@
 // irradiance from level 0 through its own segments.
 #include <cmath>
 
+#include "../path_trace_bsdf.h"
 #include "../path_trace_surface.h"
 #include "../solver_sun.h"
 #include "../sun_disk.h"
@@ -32,6 +33,23 @@ Texel meanOpaqueTexel(const Texture& texture) {
     return Texel{float(sum[0] / count), float(sum[1] / count), float(sum[2] / count), 1};
 }
 
+// The share of the light on a face that its material sends back into the room (as diffuse
+// light: the passes know no other lobe): all of it for opaque materials, all but what the
+// transmission lobe lets through for glass and water, whose segments pass it on
+// (cascade_passages.h). The transmission lobe (1 - metallic)(1 - F) transmission (pathBsdf)
+// is averaged over the cosine-weighted hemisphere of incoming directions.
+float reflectedShare(const Material& m, const ShadeOptions& shading) {
+    if (!shading.refraction || !(m.transmission > 0.0f) || !(m.metallic < 1.0f)) return 1.0f;
+    constexpr int kSteps = 64;
+    double passed = 0.0;
+    for (int i = 0; i < kSteps; ++i) {
+        const double mu = (i + 0.5) / kSteps;  // cos; the cosine-weighted density is 2 mu
+        passed += 2.0 * mu * (1.0 - dielectricFresnel(float(mu), m.ior, shading.fresnel));
+    }
+    passed *= double(1.0f - m.metallic) * m.transmission / kSteps;
+    return float(1.0 - passed);
+}
+
 // Mean transmittance of the face's shadow rays (sunRayTransmittance: cutouts let them through,
 // glass dims them): from each of its four quarter centres one ray to a delta sun, or
 // kSunRaysPerQuarter rays to a disk (the quarters take turns along the disk's spiral, sun_disk.h,
@@ -52,24 +70,17 @@ Rgb sunPassing(const RadianceCascades::State& state, const Face& face, const Sun
     return passing * (1.0f / float(4 * perQuarter));
 }
 
-// Radiance a segment code brings: a face's, the sky's, or (kContinue) `next`.
-inline Rgb codeRadiance(std::uint32_t code, const std::vector<Rgb>& outgoing, Rgb sky, Rgb next) {
-    if (code < kVoid) return outgoing[code];
-    if (code == kContinue) return next;
-    if (code == kSky) return sky;
-    return Rgb{};
-}
-
 // The trilinear mean over the corners whose segments do not start inside a solid.
 template <typename Next>
 Rgb mergeCorners(const std::uint32_t* codes, const Corners& corners,
-                 const std::vector<Rgb>& outgoing, Rgb sky, Next&& next) {
+                 const std::vector<Passage>& passages, const std::vector<Rgb>& outgoing, Rgb sky,
+                 Next&& next) {
     Rgb sum;
     float weight = 0.0f;
     for (int c = 0; c < 8; ++c) {
         const float w = corners.weight[c];
         if (codes[c] == kVoid || w == 0.0f) continue;
-        sum += codeRadiance(codes[c], outgoing, sky, codes[c] == kContinue ? next(c) : Rgb{}) * w;
+        sum += chainRadiance(codes[c], passages, outgoing, sky, [&] { return next(c); }) * w;
         weight += w;
     }
     return weight > 0.0f ? sum * (1.0f / weight) : Rgb{};
@@ -78,6 +89,7 @@ Rgb mergeCorners(const std::uint32_t* codes, const Corners& corners,
 void mergeLevel(RadianceCascades::State& state, std::size_t k) {
     LevelData& data = state.levels[k];
     const std::vector<Rgb>& outgoing = state.faces.outgoing;
+    const std::vector<Passage>& passages = state.passages;
     const int bins = data.bins.count();
     const std::int64_t probes = data.level.probeCount();
     data.radiance.resize(std::size_t(probes) * bins);
@@ -87,16 +99,16 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
             Rgb* radiance = &data.radiance[std::size_t(p) * bins];
             if (!upper) {
                 for (int b = 0; b < bins; ++b) {
-                    radiance[b] = codeRadiance(data.codes[std::size_t(p) * bins + b], outgoing,
-                                               data.sky[b], Rgb{});
+                    radiance[b] = chainRadiance(data.codes[std::size_t(p) * bins + b], passages,
+                                                outgoing, data.sky[b], [] { return Rgb{}; });
                 }
                 continue;
             }
             const Corners& corners = data.corners[p];
             for (int b = 0; b < bins; ++b) {
                 radiance[b] = mergeCorners(
-                    &data.codes[(std::size_t(p) * bins + b) * 8], corners, outgoing, data.sky[b],
-                    [&](int c) {
+                    &data.codes[(std::size_t(p) * bins + b) * 8], corners, passages, outgoing,
+                    data.sky[b], [&](int c) {
                         return upper->childMean[std::size_t(corners.probe[c]) * bins + b];
                     });
             }
@@ -187,7 +199,7 @@ void updateFaceLight(RadianceCascades::State& state) {
                 s.texel = meanTexel[slot];
             }
             const PathSurface surface = pathSurfaceAt(*state.world, s, shading);
-            faces.albedo[f] = surface.albedo;
+            faces.albedo[f] = surface.albedo * reflectedShare(*surface.material, shading);
             faces.emission[f] = surface.emission;
             if (sunMoved) faces.sunPassing[f] = sunPassing(state, face, sun);
         }
@@ -226,8 +238,9 @@ double lightingPass(RadianceCascades::State& state) {
             Rgb irradiance;
             for (std::size_t i = 0; i < seen.bin.size(); ++i) {
                 const int b = seen.bin[i];
-                const Rgb incoming =
-                    mergeCorners(codes + i * 8, corners, faces.outgoing, faces.sky[b], [&](int c) {
+                const Rgb incoming = mergeCorners(
+                    codes + i * 8, corners, state.passages, faces.outgoing, faces.sky[b],
+                    [&](int c) {
                         return level0.radiance[std::size_t(corners.probe[c]) * bins + b];
                     });
                 irradiance += incoming * seen.weight[i];

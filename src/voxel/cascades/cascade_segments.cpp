@@ -9,6 +9,7 @@
 // direction; only the short connector bends towards the corner.
 #include <cmath>
 
+#include "cascade_passages.h"
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/surface_cast.h"
@@ -17,40 +18,23 @@ namespace luxel::voxel::cascades {
 
 namespace {
 
-bool insideWorld(const VoxelWorld& world, Vec3d p) {
-    const Int3 s = world.size();
-    return p.x >= 0.0 && p.y >= 0.0 && p.z >= 0.0 && p.x <= s.x && p.y <= s.y && p.z <= s.z;
-}
-
-// The code of the segment from `start` to `end` (or, with `toEnd` false, from `start` along
-// end - start until it leaves the world).
-std::uint32_t castSegment(const RadianceCascades::State& state, Vec3d start, Vec3d end,
-                          bool toEnd) {
-    const Ray ray{start, end - start};
-    const SurfaceHit s = castToSurface(*state.world, state.textures, ray, state.shading.stepCap,
-                                       toEnd ? 1.0 : kInfinity);
-    if (!s.hit.hit) {
-        if (s.hit.capped || s.cutoutCapped) return kBlack;
-        return (!toEnd || !insideWorld(*state.world, end)) ? kSky : kContinue;
-    }
-    if (s.hit.normal == Int3{} || !(s.hit.t > 1e-9)) return kVoid;
-    const int face = state.faces.table.find(s.hit.voxel, normalIndex(s.hit.normal));
-    return face < 0 ? kBlack : std::uint32_t(face);
-}
-
 // Leaves out (weight 0) the corners whose probe `from` cannot see, so the chains from a point
 // near a wall lean on the probes in the open, not on those inside or behind the wall (their
 // segments bend towards the wall). When it sees none, all keep their weights.
 void keepVisibleCorners(const RadianceCascades::State& state, const Level& upper, Vec3d from,
                         Corners& corners) {
+    const bool media = state.shading.refraction && state.shading.materials.anyTransmission();
     Corners visible = corners;
     float total = 0.0f;
     for (int c = 0; c < 8; ++c) {
         if (visible.weight[c] == 0.0f) continue;
         const Vec3d q = upper.position(corners.probe[c]);
-        if (occluded(*state.world, {from, q - from}, 1.0, state.shading.stepCap)) {
-            visible.weight[c] = 0.0f;
-        }
+        // Glass and water let the probe see through them (cascade_passages.h); cutout voxels
+        // hide, as `occluded` has them.
+        const bool hidden =
+            media ? traceSegment(state, from, q - from, 1.0, false).end != kContinue
+                  : occluded(*state.world, {from, q - from}, 1.0, state.shading.stepCap);
+        if (hidden) visible.weight[c] = 0.0f;
         total += visible.weight[c];
     }
     if (total > 0.0f) corners = visible;
@@ -58,21 +42,33 @@ void keepVisibleCorners(const RadianceCascades::State& state, const Level& upper
 
 // The codes of the eight chains from `start` straight to `bend` and on to each corner's
 // probe + `reach`: one cast for the straight part, then a connector per corner it leaves open.
-void castBentSegments(const RadianceCascades::State& state, Vec3d start, Vec3d bend, Vec3d reach,
-                      const Level& upper, const Corners& corners, std::uint32_t* codes) {
-    const std::uint32_t straight = castSegment(state, start, bend, true);
+void castBentSegments(const RadianceCascades::State& state, PassageWriter& passages, Vec3d start,
+                      Vec3d bend, Vec3d reach, const Level& upper, const Corners& corners,
+                      std::uint32_t* codes) {
+    const SegmentTrace straight = traceSegment(state, start, bend - start, 1.0);
+    if (straight.end != kContinue) {
+        const std::uint32_t code = passages.codeOf(straight);
+        for (int c = 0; c < 8; ++c) codes[c] = code;
+        return;
+    }
     for (int c = 0; c < 8; ++c) {
-        if (straight != kContinue) {
-            codes[c] = straight;
-        } else if (corners.weight[c] == 0.0f) {
+        if (corners.weight[c] == 0.0f) {
             codes[c] = kVoid;
         } else {
-            codes[c] = castSegment(state, bend, upper.position(corners.probe[c]) + reach, true);
+            const Vec3d end = upper.position(corners.probe[c]) + reach;
+            const SegmentTrace connector = traceSegment(state, bend, end - bend, 1.0);
+            if (straight.runs == 0) {
+                codes[c] = passages.codeOf(connector);
+                continue;
+            }
+            SegmentTrace chain = straight;
+            appendTrace(chain, connector);
+            codes[c] = passages.codeOf(chain);
         }
     }
 }
 
-void castLevel(RadianceCascades::State& state, std::size_t k) {
+void castLevel(RadianceCascades::State& state, PassageWriter& passages, std::size_t k) {
     LevelData& data = state.levels[k];
     const Level& level = data.level;
     const bool top = level.top;
@@ -95,18 +91,20 @@ void castLevel(RadianceCascades::State& state, std::size_t k) {
                 const Vec3d start = origin + from * level.tStart;
                 std::uint32_t* codes = &data.codes[(std::size_t(p) * bins + b) * corners];
                 if (top) {
-                    codes[0] = castSegment(state, start, start + data.bins.centre[b], false);
+                    codes[0] =
+                        passages.codeOf(traceSegment(state, start, data.bins.centre[b], kInfinity));
                     continue;
                 }
                 const Vec3d bend = origin + data.bins.centre[b] * upper->level.tStart;
-                castBentSegments(state, start, bend, data.bins.centre[b] * upper->level.tStart,
-                                 upper->level, data.corners[p], codes);
+                castBentSegments(state, passages, start, bend,
+                                 data.bins.centre[b] * upper->level.tStart, upper->level,
+                                 data.corners[p], codes);
             }
         }
     });
 }
 
-void castFaces(RadianceCascades::State& state) {
+void castFaces(RadianceCascades::State& state, PassageWriter& passages) {
     FaceData& faces = state.faces;
     const int count = faces.table.size();
     faces.codeOffset.resize(std::size_t(count) + 1);
@@ -132,7 +130,7 @@ void castFaces(RadianceCascades::State& state) {
             for (std::size_t i = 0; i < seen.bin.size(); ++i) {
                 // Straight along the part of the bin in front of the face, then to the corners.
                 const Vec3d bend = centre + seen.direction[i] * level0.tStart;
-                castBentSegments(state, centre, bend,
+                castBentSegments(state, passages, centre, bend,
                                  faces.bins.centre[seen.bin[i]] * level0.tStart, level0,
                                  faces.corners[f], codes + i * 8);
             }
@@ -143,8 +141,12 @@ void castFaces(RadianceCascades::State& state) {
 }  // namespace
 
 void castSegments(RadianceCascades::State& state) {
-    for (std::size_t k = 0; k < state.levels.size(); ++k) castLevel(state, k);
-    castFaces(state);
+    state.passages.clear();
+    state.castMedia = mediaSignature(state.shading);
+    ++state.casts;
+    PassageWriter passages(state.passages);
+    for (std::size_t k = 0; k < state.levels.size(); ++k) castLevel(state, passages, k);
+    castFaces(state, passages);
 }
 
 }  // namespace luxel::voxel::cascades

@@ -18,6 +18,23 @@ inline constexpr std::uint32_t kContinue = 0xFFFFFFFFu;  // meets nothing: the n
 inline constexpr std::uint32_t kSky = 0xFFFFFFFEu;       // leaves the world: the sky
 inline constexpr std::uint32_t kBlack = 0xFFFFFFFDu;     // meets a face that is not a probe
 inline constexpr std::uint32_t kVoid = 0xFFFFFFFCu;      // starts inside a solid: left out
+// Codes from kPassage up to kVoid pass glass or water: kPassage + an index into State::passages
+// (cascade_passages.h). Face ids stay below kPassage.
+inline constexpr std::uint32_t kPassage = 0x80000000u;
+// Most media one chain of passages crosses; past it the segment counts as blocked.
+inline constexpr int kMaxPassages = 16;
+
+inline bool isPassage(std::uint32_t code) {
+    return code >= kPassage && code < kVoid;
+}
+
+// A segment's run through one medium: what the face it entered sends (face kBlack: none, it
+// started inside), times the transmittance so far, then `transmittance` times what `next` brings.
+struct Passage {
+    std::uint32_t face = kBlack;
+    std::uint32_t next = kBlack;
+    Rgb transmittance;
+};
 
 struct LevelData {
     Level level;
@@ -62,7 +79,10 @@ struct RadianceCascades::State {
     CascadeOptions options;
     cascades::FaceData faces;
     std::vector<cascades::LevelData> levels;
-    Vec3d sunForVisibility{};           // the sun direction sunPassing was found for
+    std::vector<cascades::Passage> passages;  // of the segments through glass and water
+    std::vector<float> castMedia;             // the mediaSignature the segments were cast for
+    int casts = 0;             // how often they were cast (a GPU copy made before is stale)
+    Vec3d sunForVisibility{};  // the sun direction sunPassing was found for
     double sunRadiusForVisibility = 0;  // and the sun's angular radius
     CascadeStats stats;
 };
@@ -87,12 +107,37 @@ Result<CascadeImage> renderCascadesWith(const VoxelWorld& world, const Camera& c
                                         const TextureSet* textures,
                                         const std::function<Status(RadianceCascades&)>& solve);
 
+// Radiance a plain segment code brings: a face's, the sky's, or (kContinue) `next`.
+inline Rgb codeRadiance(std::uint32_t code, const std::vector<Rgb>& outgoing, Rgb sky, Rgb next) {
+    if (code < kPassage) return outgoing[code];
+    if (code == kContinue) return next;
+    if (code == kSky) return sky;
+    return Rgb{};
+}
+
+// The plain code the chain of passages from `code` ends in, and what it brings with `next` as
+// kContinue's radiance: the glass faces' own light plus the transmittance times the end's
+// (out of line, so the plain codes' path stays small; cascade_passages.cpp).
+std::uint32_t passageEnd(std::uint32_t code, const std::vector<Passage>& passages);
+Rgb passageRadiance(std::uint32_t code, const std::vector<Passage>& passages,
+                    const std::vector<Rgb>& outgoing, Rgb sky, Rgb next);
+
+// Radiance a segment code brings, following its passages (the GPU's twin:
+// src/gpu/shaders/voxel/cascades_chain.glsl); next() is what kContinue brings.
+template <typename Next>
+inline Rgb chainRadiance(std::uint32_t code, const std::vector<Passage>& passages,
+                         const std::vector<Rgb>& outgoing, Rgb sky, Next&& next) {
+    if (!isPassage(code)) [[likely]] {
+        return codeRadiance(code, outgoing, sky, code == kContinue ? next() : Rgb{});
+    }
+    const Rgb behind = passageEnd(code, passages) == kContinue ? next() : Rgb{};
+    return passageRadiance(code, passages, outgoing, sky, behind);
+}
+
 // Casts every segment of the faces and the levels once (cascade_segments.cpp).
 void castSegments(RadianceCascades::State& state);
 // Face colours and sun visibility for the state's shading (cascade_light.cpp).
 void updateFaceLight(RadianceCascades::State& state);
-// The faces' emitterIrradiance; false (and zeros) when there are too many pairs.
-bool computeEmitterIrradiance(RadianceCascades::State& state);
 // The faces' emitterIrradiance; false (and zeros) when there are too many pairs.
 bool computeEmitterIrradiance(RadianceCascades::State& state);
 // One lighting pass (cascade_light.cpp); returns the relative change of total irradiance.

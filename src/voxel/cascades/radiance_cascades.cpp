@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "cascade_passages.h"
 #include "cascade_state.h"
 #include "luxel/core/memory.h"
 #include "luxel/voxel/path_trace.h"
@@ -101,7 +102,7 @@ Result<RadianceCascades> RadianceCascades::create(const VoxelWorld& world,
     state->shading = shading;
     state->options = options;
     Result<FaceTable> table =
-        FaceTable::build(world, textures, std::max<std::int64_t>(exposed * 2, 1 << 20));
+        FaceTable::build(world, textures, std::max<std::int64_t>(exposed * 2, 1 << 20), &shading);
     if (!table) return table.error();
     state->faces.table = std::move(*table);
     state->faces.bins = std::move(faceBins);
@@ -119,7 +120,9 @@ Result<RadianceCascades> RadianceCascades::create(const VoxelWorld& world,
     stats.levels = int(levels.size());
     stats.spacing = spacing;
     stats.segments = std::int64_t(state->faces.codes.size());
-    stats.bytes = state->faces.table.bytes() + state->faces.codes.size() * 4;
+    stats.passages = std::int64_t(state->passages.size());
+    stats.bytes = state->faces.table.bytes() + state->faces.codes.size() * 4 +
+                  state->passages.size() * sizeof(cascades::Passage);
     for (const LevelData& level : state->levels) {
         stats.probes += level.level.probeCount();
         stats.segments += std::int64_t(level.codes.size());
@@ -133,6 +136,11 @@ Result<RadianceCascades> RadianceCascades::create(const VoxelWorld& world,
 Status RadianceCascades::setLight(const ShadeOptions& shading) {
     if (Status s = validatePathTrace(shading, PathTraceOptions{}); !s) return s.error();
     state_->shading = shading;
+    // Which voxels the segments pass, and what passes, depends on the glass's materials.
+    if (cascades::mediaSignature(shading) != state_->castMedia) {
+        cascades::castSegments(*state_);
+        state_->faces.emitterIrradiance.clear();  // their light through glass is found again
+    }
     updateFaceLight(*state_);
     return Ok{};
 }

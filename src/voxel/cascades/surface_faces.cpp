@@ -53,24 +53,32 @@ std::int64_t FaceTable::countExposed(const VoxelWorld& world) {
 }
 
 Result<FaceTable> FaceTable::build(const VoxelWorld& world, const TextureSet* textures,
-                                   std::int64_t maxFaces) {
+                                   std::int64_t maxFaces, const ShadeOptions* shading) {
     FaceTable table;
     table.size_ = world.size();
     const std::vector<bool> cutout = cutoutSlots(textures);
-    const auto open = [&](int x, int y, int z) {
+    const auto transmissive = [&](Voxel v) {
+        if (!shading || !shading->refraction || !v.solid()) return false;
+        const Material& m = shading->materials.forSlot(textureSlotOf(v));
+        return m.transmission > 0.0f && m.metallic < 1.0f;
+    };
+    // Whether light reaches the face of `from` towards (x, y, z).
+    const auto open = [&](Voxel from, int x, int y, int z) {
         const Voxel v = world.get(x, y, z);
         if (!v.solid()) return true;
         const int slot = textureSlotOf(v);
-        return textures && slot >= 0 && slot < textures->size() && cutout[slot];
+        if (textures && slot >= 0 && slot < textures->size() && cutout[slot]) return true;
+        return transmissive(v) && !transmissive(from);
     };
     const Int3 s = world.size();
     for (int z = 0; z < s.z; ++z) {
         for (int y = 0; y < s.y; ++y) {
             for (int x = 0; x < s.x; ++x) {
-                if (!world.solid(x, y, z)) continue;
+                const Voxel from = world.get(x, y, z);
+                if (!from.solid()) continue;
                 for (int n = 0; n < 6; ++n) {
                     const Int3 d = normalFromIndex(n);
-                    if (!open(x + d.x, y + d.y, z + d.z)) continue;
+                    if (!open(from, x + d.x, y + d.y, z + d.z)) continue;
                     if (std::int64_t(table.faces_.size()) >= maxFaces) {
                         return Error("radiance cascades: the world has more than " +
                                      std::to_string(maxFaces) +

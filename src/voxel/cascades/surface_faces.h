@@ -1,5 +1,6 @@
 // The voxel faces light can leave from: every face of a solid voxel whose neighbour across it is
-// empty or textured with cutout texels (so a ray can reach the face). They are the surface
+// empty or textured with cutout texels (so a ray can reach the face), and every face of an opaque
+// voxel under glass or water (light reaches it through the medium). They are the surface
 // probes of the voxel radiance cascades and the radiance cache that probe rays read
 // (docs/algorithms/voxel-radiance-cascades.md §3).
 #pragma once
@@ -22,9 +23,10 @@ struct Face {
 
 class FaceTable {
   public:
-    // Scans the world; fails (naming the count and bytes) past `maxFaces`.
+    // Scans the world; fails (naming the count and bytes) past `maxFaces`. With `shading`, the
+    // faces of opaque voxels towards transmissive ones (shading.refraction on) are open too.
     static Result<FaceTable> build(const VoxelWorld& world, const TextureSet* textures,
-                                   std::int64_t maxFaces);
+                                   std::int64_t maxFaces, const ShadeOptions* shading = nullptr);
     // Faces an upper bound of which build() would find, without building (a fast estimate for
     // memory checks): the solid voxels' faces towards non-solid neighbours.
     static std::int64_t countExposed(const VoxelWorld& world);

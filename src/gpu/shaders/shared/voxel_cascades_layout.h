@@ -2,10 +2,11 @@
 // §4; CPU reference: lightingPass in src/voxel/cascades/cascade_light.cpp). Push constants of
 // its four dispatches and the codes of the segments, shared by C++ and GLSL (offsets checked
 // below). Buffers are flat arrays with one section per level, addressed by the offsets here:
-// codes (uint), corners (8 probe indices then 8 weights per probe or face), radiance and child
-// means (RgbTexel), sky means (RgbTexel), solid angles (float), the faces' light (RgbTexel, six
-// sections of `faces` entries: albedo, emitted, direct sun, emitter irradiance, irradiance,
-// outgoing), the faces' (normal, first code) pairs, and each normal's (bin, weight bits) pairs.
+// codes (uint; the passages through glass first), corners (8 probe indices then 8 weights per
+// probe or face), radiance and child means (RgbTexel), sky means (RgbTexel), solid angles
+// (float), the faces' light (RgbTexel, six sections of `faces` entries: albedo, emitted, direct
+// sun, emitter irradiance, irradiance, outgoing), the faces' (normal, first code) pairs, and
+// each normal's (bin, weight bits) pairs.
 #ifndef LUXEL_GPU_SHARED_VOXEL_CASCADES_LAYOUT_H
 #define LUXEL_GPU_SHARED_VOXEL_CASCADES_LAYOUT_H
 
@@ -17,6 +18,12 @@ LUXEL_SHARED_BEGIN
 #define LUXEL_CASCADE_CONTINUE 0xFFFFFFFFu
 #define LUXEL_CASCADE_SKY 0xFFFFFFFEu
 #define LUXEL_CASCADE_VOID 0xFFFFFFFCu
+// Codes from here up to VOID pass glass or water: PASSAGE + the index of a passage of
+// PASSAGE_WORDS words (face entered, next code, transmittance r, g, b as float bits) at the start
+// of the codes buffer; at most MAX_PASSAGES in a chain (src/voxel/cascades/cascade_passages.h).
+#define LUXEL_CASCADE_PASSAGE 0x80000000u
+#define LUXEL_CASCADE_PASSAGE_WORDS 5u
+#define LUXEL_CASCADE_MAX_PASSAGES 16u
 
 // The faces' light sections, in order.
 #define LUXEL_FACE_ALBEDO 0u

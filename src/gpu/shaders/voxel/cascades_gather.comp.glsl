@@ -16,6 +16,8 @@ layout(std430, set = 0, binding = 5) readonly buffer FaceInfo { uint faceInfo[];
 layout(std430, set = 0, binding = 6) readonly buffer CosineBins { uint cosineBins[]; };
 layout(push_constant) uniform Push { CascadeGatherParams params; };
 
+#include "voxel/cascades_chain.glsl"
+
 void main() {
     const uint f = LUXEL_LINEAR_INVOCATION;
     if (f >= params.faces) return;
@@ -31,15 +33,17 @@ void main() {
             const uint code = codes[first + i * 8u + c];
             const float w = uintBitsToFloat(corners[corner + 8u + c]);
             if (code == LUXEL_CASCADE_VOID || w == 0.0) continue;
+            vec3 passed = vec3(0.0), through = vec3(1.0);
+            const uint end = cascadeFollowPassages(code, params.faces, passed, through);
             vec3 value = vec3(0.0);
-            if (code < LUXEL_CASCADE_VOID) {
-                value = texelRgb(light[LUXEL_FACE_OUTGOING * params.faces + code]);
-            } else if (code == LUXEL_CASCADE_CONTINUE) {
+            if (end < LUXEL_CASCADE_PASSAGE) {
+                value = texelRgb(light[LUXEL_FACE_OUTGOING * params.faces + end]);
+            } else if (end == LUXEL_CASCADE_CONTINUE) {
                 value = texelRgb(radiance[corners[corner + c] * params.levelBins + b]);
-            } else if (code == LUXEL_CASCADE_SKY) {
+            } else if (end == LUXEL_CASCADE_SKY) {
                 value = texelRgb(sky[params.skyOffset + b]);
             }
-            sum += value * w;
+            sum += (passed + through * value) * w;
             weight += w;
         }
         const vec3 incoming = weight > 0.0 ? sum * (1.0 / weight) : vec3(0.0);

@@ -15,11 +15,22 @@ layout(std430, set = 0, binding = 4) readonly buffer Means { RgbTexel means[]; }
 layout(std430, set = 0, binding = 5) buffer Radiance { RgbTexel radiance[]; };
 layout(push_constant) uniform Push { CascadeMergeParams params; };
 
-vec3 codeRadiance(uint code, uint bin, vec3 next) {
-    if (code < LUXEL_CASCADE_VOID) return texelRgb(light[LUXEL_FACE_OUTGOING * params.faces + code]);
-    if (code == LUXEL_CASCADE_CONTINUE) return next;
-    if (code == LUXEL_CASCADE_SKY) return texelRgb(sky[params.skyOffset + bin]);
-    return vec3(0.0);
+#include "voxel/cascades_chain.glsl"
+
+// What the chain of `code` brings, through its passages; upperMean: the level above's child
+// mean to read where it ends in CONTINUE.
+vec3 chainRadiance(uint code, uint bin, uint upperMean) {
+    vec3 sum = vec3(0.0), through = vec3(1.0);
+    code = cascadeFollowPassages(code, params.faces, sum, through);
+    vec3 value = vec3(0.0);
+    if (code < LUXEL_CASCADE_PASSAGE) {
+        value = texelRgb(light[LUXEL_FACE_OUTGOING * params.faces + code]);
+    } else if (code == LUXEL_CASCADE_CONTINUE && params.top == 0u) {
+        value = texelRgb(means[upperMean]);
+    } else if (code == LUXEL_CASCADE_SKY) {
+        value = texelRgb(sky[params.skyOffset + bin]);
+    }
+    return sum + through * value;
 }
 
 void main() {
@@ -28,7 +39,7 @@ void main() {
     const uint p = index / params.bins, b = index % params.bins;
     vec3 result;
     if (params.top != 0u) {
-        result = codeRadiance(codes[params.codeOffset + index], b, vec3(0.0));
+        result = chainRadiance(codes[params.codeOffset + index], b, 0u);
     } else {
         const uint corner = (params.cornerOffset + p) * 16u;
         vec3 sum = vec3(0.0);
@@ -37,11 +48,8 @@ void main() {
             const uint code = codes[params.codeOffset + index * 8u + c];
             const float w = uintBitsToFloat(corners[corner + 8u + c]);
             if (code == LUXEL_CASCADE_VOID || w == 0.0) continue;
-            vec3 next = vec3(0.0);
-            if (code == LUXEL_CASCADE_CONTINUE) {
-                next = texelRgb(means[params.upperMeanOffset + corners[corner + c] * params.bins + b]);
-            }
-            sum += codeRadiance(code, b, next) * w;
+            const uint upperMean = params.upperMeanOffset + corners[corner + c] * params.bins + b;
+            sum += chainRadiance(code, b, upperMean) * w;
             weight += w;
         }
         result = weight > 0.0 ? sum * (1.0 / weight) : vec3(0.0);
