@@ -80,6 +80,22 @@ double largestDifference(const RadianceCascades& a, const RadianceCascades& b, d
     return largest;
 }
 
+// One pass and then three more on both: the GPU's irradiance (downloaded into `onGpu`) within
+// 1e-5 of the largest of the CPU's after each.
+void expectOneThenThreePassesMatch(RadianceCascades& cpu, RadianceCascades& onGpu,
+                                   RadianceCascadesGpu& gpu) {
+    for (int passes : {1, 3}) {
+        for (int i = 0; i < passes; ++i) cpu.iterate();
+        auto ran = gpu.iterate(passes);
+        ASSERT_TRUE(ran.ok()) << ran.error().message();
+        ASSERT_TRUE(gpu.download().ok());
+        double scale = 0.0;
+        const double difference = largestDifference(onGpu, cpu, scale);
+        EXPECT_GT(scale, 0.1);
+        EXPECT_LE(difference, 1e-5 * scale) << passes;
+    }
+}
+
 TEST(RadianceCascadesGpu, PassesMatchTheCpuReference) {
     LUXEL_REQUIRE_GPU(context);
     const VoxelWorld world = roomWithWindow();
@@ -89,16 +105,7 @@ TEST(RadianceCascadesGpu, PassesMatchTheCpuReference) {
     ASSERT_TRUE(cpu.ok() && onGpu.ok());
     auto gpu = RadianceCascadesGpu::create(*context, *onGpu);
     ASSERT_TRUE(gpu.ok()) << gpu.error().message();
-    for (int passes : {1, 3}) {
-        for (int i = 0; i < passes; ++i) cpu->iterate();
-        auto ran = gpu->iterate(passes);
-        ASSERT_TRUE(ran.ok()) << ran.error().message();
-        ASSERT_TRUE(gpu->download().ok());
-        double scale = 0.0;
-        const double difference = largestDifference(*onGpu, *cpu, scale);
-        EXPECT_GT(scale, 0.1);
-        EXPECT_LE(difference, 1e-5 * scale) << passes;
-    }
+    expectOneThenThreePassesMatch(*cpu, *onGpu, *gpu);
     // New light: the sun moves; both carry their irradiance into the next passes.
     o.sunDirection = {-0.4f, 0.7f, -1.0f};
     ASSERT_TRUE(cpu->setLight(o).ok());
@@ -123,16 +130,7 @@ TEST(RadianceCascadesGpu, PassesThroughGlassMatchTheCpuReference) {
     ASSERT_TRUE(cpu.ok() && onGpu.ok());
     auto gpu = RadianceCascadesGpu::create(*context, *onGpu);
     ASSERT_TRUE(gpu.ok()) << gpu.error().message();
-    for (int passes : {1, 3}) {
-        for (int i = 0; i < passes; ++i) cpu->iterate();
-        auto ran = gpu->iterate(passes);
-        ASSERT_TRUE(ran.ok()) << ran.error().message();
-        ASSERT_TRUE(gpu->download().ok());
-        double scale = 0.0;
-        const double difference = largestDifference(*onGpu, *cpu, scale);
-        EXPECT_GT(scale, 0.1);
-        EXPECT_LE(difference, 1e-5 * scale) << passes;
-    }
+    expectOneThenThreePassesMatch(*cpu, *onGpu, *gpu);
     EXPECT_GT(cpu->stats().passages, 0u);
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
 }

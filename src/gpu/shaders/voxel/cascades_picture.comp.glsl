@@ -16,15 +16,7 @@
 
 layout(local_size_x = LUXEL_PICTURE_GROUP_X, local_size_y = LUXEL_PICTURE_GROUP_Y) in;
 // Bindings 0-14 as voxel_render's (6, its image, and 10 are not read here).
-layout(std430, set = 0, binding = 0) readonly buffer Params { VoxelRenderParams params; };
-layout(std430, set = 0, binding = 1) readonly buffer Voxels { uint voxels[]; };
-layout(std430, set = 0, binding = 2) readonly buffer ChunkSolid { uint chunkSolid[]; };
-layout(std430, set = 0, binding = 3) readonly buffer TextureInfos { VoxelTextureInfo textureInfo[]; };
-layout(std430, set = 0, binding = 4) readonly buffer Texels { vec4 texels[]; };
-layout(std430, set = 0, binding = 5) readonly buffer SrgbTable { float srgbTable[]; };
-layout(std430, set = 0, binding = 7) readonly buffer BrickMasks { uvec2 brickMasks[]; };
-layout(std430, set = 0, binding = 8) readonly buffer BrickReach { uint brickReach[]; };
-layout(std430, set = 0, binding = 9) readonly buffer Materials { VoxelMaterial materials[]; };
+#include "voxel/world_bindings.glsl"
 layout(std430, set = 0, binding = 15) readonly buffer FaceLight { RgbTexel light[]; };
 layout(std430, set = 0, binding = 16) readonly buffer FaceSlots { CascadeFaceSlot faceSlots[]; };
 layout(std430, set = 0, binding = 17) readonly buffer GgxAlbedo { float ggxAlbedo[]; };

@@ -5,16 +5,8 @@
 #include "shared/voxel_layout.h"
 
 layout(local_size_x = LUXEL_VOXEL_GROUP_X, local_size_y = LUXEL_VOXEL_GROUP_Y) in;
-layout(std430, set = 0, binding = 0) readonly buffer Params { VoxelRenderParams params; };
-layout(std430, set = 0, binding = 1) readonly buffer Voxels { uint voxels[]; };
-layout(std430, set = 0, binding = 2) readonly buffer ChunkSolid { uint chunkSolid[]; };
-layout(std430, set = 0, binding = 3) readonly buffer TextureInfos { VoxelTextureInfo textureInfo[]; };
-layout(std430, set = 0, binding = 4) readonly buffer Texels { vec4 texels[]; };
-layout(std430, set = 0, binding = 5) readonly buffer SrgbTable { float srgbTable[]; };
+#include "voxel/world_bindings.glsl"
 layout(std430, set = 0, binding = 6) writeonly buffer Output { VoxelPixel pixels[]; };
-layout(std430, set = 0, binding = 7) readonly buffer BrickMasks { uvec2 brickMasks[]; };
-layout(std430, set = 0, binding = 8) readonly buffer BrickReach { uint brickReach[]; };
-layout(std430, set = 0, binding = 9) readonly buffer Materials { VoxelMaterial materials[]; };
 layout(push_constant) uniform Push { VoxelBandPush band; };
 // Bindings 11-14: the sun visibility arrays (shared/shadow_layout.h), declared by the include.
 #include "voxel/sun_visibility.glsl"
