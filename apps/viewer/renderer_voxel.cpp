@@ -54,7 +54,11 @@ void RendererVoxel::setState(VoxelState&& state) {
     }
     // The path tracer's samples and the sky visibility image belong to one world and view.
     // The cascades belong to one world; new light keeps their irradiance as the next start.
-    if (edited) cascades_.reset();
+    if (edited) {
+        cascadesGpu_.reset();  // before the cascades it reads
+        cascades_.reset();
+        cascadesGpuRefusal_.clear();
+    }
     const voxel::ShadeOptions &now = state.shading, &before = state_.shading;
     if (!(now.sunDirection.x == before.sunDirection.x &&
           now.sunDirection.y == before.sunDirection.y &&
@@ -101,8 +105,8 @@ std::string number(double value) {
 
 Result<Image> RendererVoxel::renderLight(const voxel::Camera& internal, Frame& frame) {
     const VoxelSolverOptions& solver = state_.solver;
-    // Sky visibility and the cascades run on the CPU, whatever renders the ray caster's frames;
-    // the path tracer runs on the GPU source's device.
+    // Sky visibility runs on the CPU, whatever renders the ray caster's frames; the path tracer
+    // and the cascades run on the GPU source's device.
     frame.backend = "cpu";
     frame.device = "CPU, " + std::to_string(hardwareThreads()) + " threads";
     setMetadata(frame.metadata, "luxel.solver", voxelSolverName(solver.kind));
@@ -154,6 +158,7 @@ Result<Image> RendererVoxel::renderLight(const voxel::Camera& internal, Frame& f
 
 Result<Image> RendererVoxel::renderCascades(const voxel::Camera& internal, Frame& frame) {
     if (!cascades_) {
+        cascadesGpu_.reset();  // it reads the cascades it was made from
         Stopwatch clock;
         auto built = voxel::RadianceCascades::create(world_, &source_->textures(), state_.shading);
         if (!built) return built.error();
@@ -163,16 +168,52 @@ Result<Image> RendererVoxel::renderCascades(const voxel::Camera& internal, Frame
     } else if (cascadesLight_) {
         Stopwatch clock;
         if (Status s = cascades_->setLight(state_.shading); !s) return s.error();
+        // New glass materials recast the segments: the device's copy is then made anew.
+        if (cascadesGpu_ && !cascadesGpu_->uploadLight()) cascadesGpu_.reset();
         cascadesLight_ = false;
         frame.passes.push_back({"cascades light", clock.milliseconds()});
     }
-    Stopwatch pass;
-    cascadesChange_ = cascades_->iterate();
-    frame.passes.push_back({"cascades bounce", pass.milliseconds()});
-    Stopwatch picture;
-    auto image = cascades_->render(internal);
-    if (!image) return image.error();
-    frame.passes.push_back({"cascades picture", picture.milliseconds()});
+    // On a GPU source the pass and the picture run on its device (radiance_cascades_gpu.h);
+    // where the device cannot take them the CPU does, and the frame says why.
+    const GpuWorld gpu = source_->gpuWorld();
+    if (gpu.context && !cascadesGpu_ && cascadesGpuRefusal_.empty()) {
+        auto made = voxel::RadianceCascadesGpu::create(*gpu.context, *cascades_);
+        if (made) {
+            cascadesGpu_.emplace(std::move(*made));
+        } else {
+            cascadesGpuRefusal_ = made.error().message();
+        }
+    }
+    Result<Image> image = Error("");
+    if (cascadesGpu_) {
+        Stopwatch pass;
+        auto change = cascadesGpu_->iterateOnce();
+        if (!change) return change.error();
+        cascadesChange_ = *change;
+        frame.passes.push_back({"cascades bounce (gpu)", pass.milliseconds()});
+        Stopwatch picture;
+        image = cascadesGpu_->render(internal);
+        if (image) {
+            frame.passes.push_back({"cascades picture (gpu)", picture.milliseconds()});
+            frame.backend = source_->backend();
+            frame.device = source_->device();
+        } else {
+            cascadesGpuRefusal_ = image.error().message();
+            cascadesGpu_.reset();
+        }
+    } else {
+        Stopwatch pass;
+        cascadesChange_ = cascades_->iterate();
+        frame.passes.push_back({"cascades bounce", pass.milliseconds()});
+    }
+    if (!cascadesGpu_) {
+        // The CPU's picture, from the irradiance the device last handed back where it ran there.
+        Stopwatch picture;
+        image = cascades_->render(internal);
+        if (!image) return image.error();
+        frame.passes.push_back({"cascades picture", picture.milliseconds()});
+        if (gpu.context) frame.note = "radiance cascades on the CPU: " + cascadesGpuRefusal_;
+    }
     const voxel::CascadeStats stats = cascades_->stats();
     frame.converged = cascadesChange_ < voxel::CascadeOptions{}.tolerance;
     setMetadata(frame.metadata, "luxel.rc.bounces", std::to_string(stats.bounces));

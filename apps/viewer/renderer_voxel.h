@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "frame.h"
@@ -13,6 +14,7 @@
 #include "luxel/voxel/dda.h"
 #include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/radiance_cascades.h"
+#include "luxel/voxel/radiance_cascades_gpu.h"
 #include "luxel/voxel/shading.h"
 #include "luxel/voxel/sky_visibility.h"
 #include "luxel/voxel/voxel_world.h"
@@ -92,6 +94,10 @@ class RendererVoxel {
     std::optional<voxel::RadianceCascades> cascades_;  // of world_, until an edit
     bool cascadesLight_ = false;                       // the state's light is not yet set in them
     double cascadesChange_ = 1.0;                      // the last pass's relative change
+    // The cascades' pass and picture on a GPU source's device (declared after cascades_, which
+    // it reads, so it goes first), and why the device could not take them.
+    std::optional<voxel::RadianceCascadesGpu> cascadesGpu_;
+    std::string cascadesGpuRefusal_;
 };
 
 }  // namespace luxel::viewer

@@ -121,6 +121,30 @@ TEST(RadianceCascadesGpu, PassesMatchTheCpuReference) {
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
 }
 
+// iterateOnce, the viewer's frame: one pass, downloaded, and the pass's relative change as the
+// CPU's iterate returns it.
+TEST(RadianceCascadesGpu, OnePassAtATimeReportsTheCpusChange) {
+    LUXEL_REQUIRE_GPU(context);
+    const VoxelWorld world = roomWithWindow();
+    const ShadeOptions o = light();
+    auto cpu = RadianceCascades::create(world, nullptr, o);
+    auto onGpu = RadianceCascades::create(world, nullptr, o);
+    ASSERT_TRUE(cpu.ok() && onGpu.ok());
+    auto gpu = RadianceCascadesGpu::create(*context, *onGpu);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    for (int pass = 1; pass <= 4; ++pass) {
+        const double expected = cpu->iterate();
+        auto change = gpu->iterateOnce();
+        ASSERT_TRUE(change.ok()) << change.error().message();
+        EXPECT_GT(expected, 0.0) << pass;
+        EXPECT_NEAR(*change, expected, 1e-4 * expected + 1e-9) << pass;
+        double scale = 0.0;
+        const double difference = largestDifference(*onGpu, *cpu, scale);
+        EXPECT_LE(difference, 1e-5 * scale) << pass;
+    }
+    EXPECT_EQ(onGpu->stats().bounces, 4);
+}
+
 TEST(RadianceCascadesGpu, PassesThroughGlassMatchTheCpuReference) {
     LUXEL_REQUIRE_GPU(context);
     const VoxelWorld world = roomWithWindow(true);

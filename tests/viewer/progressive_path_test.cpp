@@ -424,5 +424,44 @@ TEST(RendererVoxelCascades, AddsAReflectionPerFrameAndKeepsTheLightWhenTheCamera
     EXPECT_FALSE(renderer.hasMoreWork());
 }
 
+// On a GPU source the cascades' pass and picture run on its device: the same reflections per
+// frame and the library's CPU picture after as many passes, to float rounding (the GPU picture's
+// parity, CascadesPictureGpu.*); settled light needs no more frames there either.
+TEST(RendererVoxelCascades, RunOnTheGpuSourcesDevice) {
+    const voxel::VoxelWorld world = blockWorld();
+    auto source = makeGpuVoxelFrameSource("", /* hardwareOnly= */ false, world, {});
+    if (!source) GTEST_SKIP() << "no Vulkan device: " << source.error().message();
+    RendererVoxel renderer(blockWorld(), std::move(*source));
+    VoxelState s = pathState(1);
+    s.solver.kind = VoxelSolver::Cascades;
+    VoxelState copy = s;
+    renderer.setState(std::move(copy));
+    auto library = voxel::RadianceCascades::create(world, nullptr, s.shading);
+    ASSERT_TRUE(library.ok()) << library.error().message();
+    for (int frameIndex = 1; frameIndex <= 3; ++frameIndex) {
+        const Frame frame = renderer.step();
+        ASSERT_TRUE(frame.note.empty()) << frame.note;
+        EXPECT_EQ(frame.backend, "gpu");
+        bool onGpu = false;
+        for (const PassTime& p : frame.passes) onGpu |= p.name == "cascades picture (gpu)";
+        EXPECT_TRUE(onGpu) << frameIndex;
+        EXPECT_EQ(*metadataOf(frame, "luxel.rc.bounces"), std::to_string(frameIndex));
+        library->iterate();
+        auto expected = library->render(cameraOf(s));
+        ASSERT_TRUE(expected.ok());
+        const Image want = displayed(*expected, s);
+        ASSERT_EQ(frame.picture.size(), want.size());
+        double difference = 0.0, sum = 0.0;
+        for (std::size_t i = 0; i < want.size(); ++i) {
+            difference += std::abs(frame.picture.data()[i] - want.data()[i]);
+            sum += want.data()[i];
+        }
+        EXPECT_GT(sum, 0.0);
+        EXPECT_LT(difference, 1e-3 * sum) << frameIndex;
+    }
+    for (int i = 0; i < 200 && renderer.hasMoreWork(); ++i) renderer.step();
+    EXPECT_FALSE(renderer.hasMoreWork());
+}
+
 }  // namespace
 }  // namespace luxel::viewer

@@ -33,6 +33,9 @@ class RadianceCascadesGpu {
     Result<double> iterate(int passes = 1);
     // The faces' irradiance into the CPU object (for its render() and indirectIrradiance()).
     Status download();
+    // One lighting pass, then download(); returns the pass's relative change of the faces'
+    // irradiance, as RadianceCascades::iterate does (the viewer's one reflection per frame).
+    Result<double> iterateOnce();
     // RadianceCascades::render on the GPU: the same rays and random numbers, in float, from the
     // faces' irradiance on the device (no download). The first call uploads the world, its
     // textures and the faces' table. Fails (naming why) when the image has more than

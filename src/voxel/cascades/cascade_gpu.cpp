@@ -283,6 +283,14 @@ Status RadianceCascadesGpu::download() {
     return Ok{};
 }
 
+Result<double> RadianceCascadesGpu::iterateOnce() {
+    const std::vector<Rgb> before = impl_->state->faces.irradiance;
+    auto ran = iterate(1);
+    if (!ran) return ran.error();
+    if (Status s = download(); !s) return s.error();
+    return relativeChange(before, impl_->state->faces.irradiance);
+}
+
 Result<int> RadianceCascadesGpu::solve() {
     const CascadeOptions& options = impl_->state->options;
     const int limit = options.bounces > 0 ? options.bounces : kMaxCascadeBounces;
