@@ -180,6 +180,8 @@ Result<Image> RendererVoxel::renderCascades(const voxel::Camera& internal, Frame
         auto made = voxel::RadianceCascadesGpu::create(*gpu.context, *cascades_);
         if (made) {
             cascadesGpu_.emplace(std::move(*made));
+            // The picture reads the world the source's ray caster keeps on the device.
+            if (gpu.renderer) cascadesGpu_->useUploadedWorld(*gpu.renderer);
         } else {
             cascadesGpuRefusal_ = made.error().message();
         }

@@ -22,6 +22,7 @@
 
 #include "luxel/voxel/radiance_cascades.h"
 #include "luxel/voxel/radiance_cascades_gpu.h"
+#include "luxel/voxel/voxel_gpu.h"
 #include "luxel/voxel/voxel_scene.h"
 #include "support/gpu_test_context.h"
 #include "voxel/cascades/cascade_picture_gpu.h"
@@ -206,6 +207,42 @@ TEST(CascadesPictureGpu, GlassMirrorAndMetalMatchTheCpuPicture) {
         expectWithin(compare(drawn[i].cpu, drawn[i].gpu), boundsFor(*context),
                      i == 0 ? "glass room" : "glass room in the mirror");
     }
+}
+
+// Over the ray caster's upload (the viewer's GPU source): the same picture as over the picture's
+// own upload, the world not sent again, and the ray caster's own frame unchanged by the picture
+// drawn over its buffers.
+TEST(CascadesPictureGpu, DrawsOverAnUploadedWorldWithoutSendingItAgain) {
+    REQUIRE_CONTEXT(context);
+    const GlassRoom room;
+    const Camera camera = *Camera::lookAt({20.0, 7.0, 20.0}, {8.0, 2.0, 6.0}, 60.0, 64, 36);
+    auto cascades = RadianceCascades::create(room.world, nullptr, room.o);
+    ASSERT_TRUE(cascades.ok()) << cascades.error().message();
+    auto gpu = RadianceCascadesGpu::create(*context, *cascades);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    ASSERT_TRUE(gpu->iterate(3).ok());
+    auto own = gpu->render(camera);
+    ASSERT_TRUE(own.ok()) << own.error().message();
+
+    auto caster = VoxelGpuRenderer::create(*context, room.world, nullptr);
+    ASSERT_TRUE(caster.ok()) << caster.error().message();
+    auto before = caster->render(camera, room.o);
+    ASSERT_TRUE(before.ok()) << before.error().message();
+    const std::uint64_t worldSent = caster->uploads().world;
+    gpu->useUploadedWorld(*caster);
+    auto shared = gpu->render(camera);
+    ASSERT_TRUE(shared.ok()) << shared.error().message();
+    ASSERT_EQ(shared->size(), own->size());
+    for (std::size_t i = 0; i < own->size(); ++i) {
+        ASSERT_EQ(shared->data()[i], own->data()[i]) << i;
+    }
+    EXPECT_EQ(caster->uploads().world, worldSent);
+    auto after = caster->render(camera, room.o);
+    ASSERT_TRUE(after.ok()) << after.error().message();
+    for (std::size_t i = 0; i < before->size(); ++i) {
+        ASSERT_EQ(after->data()[i], before->data()[i]) << i;
+    }
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
 }
 
 TEST(CascadesPictureGpu, SkyOnlyIsTheSky) {

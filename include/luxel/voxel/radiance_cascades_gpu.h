@@ -16,6 +16,8 @@
 
 namespace luxel::voxel {
 
+class VoxelGpuRenderer;
+
 class RadianceCascadesGpu {
   public:
     // Uploads the codes, corners, bins and the faces' light of `cascades`, which must outlive
@@ -44,6 +46,11 @@ class RadianceCascadesGpu {
     // dispatch's GPU time.
     Result<Image> render(const Camera& camera, double* gpuMilliseconds = nullptr,
                          std::uint64_t memoryBudget = 0);
+    // Draws the picture over `world`, an upload of the cascades' own world and textures on this
+    // object's context that outlives it (the viewer's ray caster's), instead of uploading a
+    // copy of its own on the first render; the memory check then counts only the faces' table
+    // and the image. Takes effect at the next render.
+    void useUploadedWorld(VoxelGpuRenderer& world);
     // RadianceCascades::solve on the GPU: passes until the options' bounces are done or a pass
     // changes the faces' total irradiance by less than the tolerance (measured after each pass,
     // as the CPU does), then download(). Returns the passes run.

@@ -25,6 +25,7 @@ struct RadianceCascadesGpu::Impl {
     int casts = 0;  // the state's casts its codes were uploaded from
     gpu::shared::CascadeGatherParams gatherParams{};
     std::unique_ptr<cascades::PictureGpu> picture;  // null until the first render
+    VoxelGpuRenderer* uploadedWorld = nullptr;      // useUploadedWorld's, else the picture's own
 };
 
 }  // namespace luxel::voxel

@@ -116,11 +116,15 @@ Status checkRoom(const gpu::Context& context, const Camera& camera, std::uint64_
 // The world, the faces' table and the albedo table on the device, after the memory check.
 Result<std::unique_ptr<PictureGpu>> makePicture(gpu::Context& context,
                                                 const RadianceCascades::State& state,
-                                                const Camera& camera, std::uint64_t budget) {
+                                                const Camera& camera, std::uint64_t budget,
+                                                VoxelGpuRenderer* uploaded) {
     const std::vector<shared::CascadeFaceSlot> slots = faceSlots(state.faces.table);
     const std::vector<float> albedo = albedoTable();
-    const std::uint64_t world = estimateVoxelGpuMemory(
-                            state.world->size(), state.world->chunkSize(), state.textures, 0, 0),
+    // A world uploaded by another pass is already on the device (its owner counted it).
+    const std::uint64_t world = uploaded ? 0
+                                         : estimateVoxelGpuMemory(state.world->size(),
+                                                                  state.world->chunkSize(),
+                                                                  state.textures, 0, 0),
                         table = slots.size() * sizeof(shared::CascadeFaceSlot);
     if (Status s = checkRoom(context, camera, world, table, budget); !s) return s.error();
     auto picture = std::make_unique<PictureGpu>();
@@ -128,9 +132,14 @@ Result<std::unique_ptr<PictureGpu>> makePicture(gpu::Context& context,
                                    sizeof(shared::CascadePicturePush));
     if (!program) return program.error();
     picture->program = *program;
-    auto uploaded = VoxelGpuRenderer::create(context, *state.world, state.textures);
-    if (!uploaded) return uploaded.error();
-    picture->world = std::make_unique<VoxelGpuRenderer>(std::move(*uploaded));
+    if (uploaded) {
+        picture->world = uploaded;
+    } else {
+        auto own = VoxelGpuRenderer::create(context, *state.world, state.textures);
+        if (!own) return own.error();
+        picture->ownWorld = std::make_unique<VoxelGpuRenderer>(std::move(*own));
+        picture->world = picture->ownWorld.get();
+    }
     picture->slotMask = std::uint32_t(slots.size() - 1);
     picture->worldBytes = world;
     picture->tableBytes = table;
@@ -146,6 +155,11 @@ Result<std::unique_ptr<PictureGpu>> makePicture(gpu::Context& context,
 
 }  // namespace
 
+void RadianceCascadesGpu::useUploadedWorld(VoxelGpuRenderer& world) {
+    impl_->uploadedWorld = &world;
+    impl_->picture.reset();  // made again over `world` at the next render
+}
+
 Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilliseconds,
                                           std::uint64_t memoryBudget) {
     Impl& g = *impl_;
@@ -156,7 +170,7 @@ Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilli
                      std::to_string(kMaxPathPixels) + " pixels");
     }
     if (!g.picture) {
-        auto made = makePicture(*g.context, state, camera, memoryBudget);
+        auto made = makePicture(*g.context, state, camera, memoryBudget, g.uploadedWorld);
         if (!made) return made.error();
         g.picture = std::move(*made);
     }

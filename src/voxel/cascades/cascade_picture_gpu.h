@@ -18,7 +18,8 @@ class Program;
 namespace luxel::voxel::cascades {
 
 struct PictureGpu {
-    std::unique_ptr<VoxelGpuRenderer> world;  // the world, textures and materials on the device
+    std::unique_ptr<VoxelGpuRenderer> ownWorld;  // its own upload, unless one was given
+    VoxelGpuRenderer* world = nullptr;           // the world, textures and materials on the device
     std::shared_ptr<gpu::Buffer> slots, albedo, image;
     std::uint64_t imageBytes = 0;
     std::uint64_t worldBytes = 0, tableBytes = 0;  // the estimates the memory check counts
