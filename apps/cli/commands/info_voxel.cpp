@@ -52,9 +52,12 @@ int infoVoxelScene(const voxel::VoxelScene& loaded) {
                     .c_str());
     // What `luxel render --solver rc` would build (radiance_cascades.h).
     const voxel::CascadeEstimate rc = voxel::estimateCascades(world);
-    std::printf("  cascades (rc)      %s: spacing %d, %d levels, %lld probes, %lld faces%s\n",
+    // Runs through glass are not estimated ahead; the build counts them against the limit.
+    const bool glass = shading.refraction && shading.materials.anyTransmission();
+    std::printf("  cascades (rc)      %s: spacing %d, %d levels, %lld probes, %lld faces%s%s\n",
                 formatBytes(rc.bytes).c_str(), rc.spacing, rc.levels,
                 static_cast<long long>(rc.probes), static_cast<long long>(rc.faces),
+                glass ? ", + runs through glass (checked while building)" : "",
                 rc.fits ? "" : " (over the limit: luxel render --solver rc refuses it)");
     // What `luxel render --solver path` would allocate (path_trace.h, path_trace_gpu.h), at the
     // internal size it traces at; the CPU line says whether render would refuse it.

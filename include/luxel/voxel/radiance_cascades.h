@@ -70,9 +70,9 @@ struct CascadeStats {
 
 class RadianceCascades {
   public:
-    // Finds the faces, plans the levels and casts every segment once. Keeps references to the
-    // world and the textures, which must outlive it and stay unchanged. Fails when the scene
-    // light is invalid (validatePathTrace) or the cascades would not fit the memory limit.
+    // Finds the faces, plans the levels and casts every segment once (world, textures: kept, must
+    // outlive it unchanged). Fails on an invalid light (validatePathTrace), an estimate over the
+    // memory limit, or segments' runs through glass that pass it as they are cast (not estimated).
     static Result<RadianceCascades> create(const VoxelWorld& world, const TextureSet* textures,
                                            const ShadeOptions& shading,
                                            const CascadeOptions& options = {});
@@ -80,8 +80,8 @@ class RadianceCascades {
     RadianceCascades& operator=(RadianceCascades&&) noexcept;
     ~RadianceCascades();
 
-    // New light (sun, sky, materials); the faces' irradiance so far is kept as the next pass's
-    // starting point (one bounce per frame in the viewer). Fails on an invalid scene light.
+    // New light (sun, sky, materials), irradiance so far kept (a bounce a frame in the viewer).
+    // Fails on an invalid light, or as create() on runs through glass (next call casts again).
     Status setLight(const ShadeOptions& shading);
     // One lighting pass: faces' outgoing radiance from the current irradiance, the levels merged
     // top down, each face's irradiance gathered. Returns the relative change of the summed face

@@ -5,6 +5,7 @@
 // lobe weight and no exit between them; an opaque voxel inside stops the segment.
 #include "cascade_passages.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "../shading_physical.h"
@@ -196,10 +197,27 @@ Rgb passageRadiance(std::uint32_t code, const std::vector<Passage>& passages,
     return sum + through * codeRadiance(code, outgoing, sky, next);
 }
 
+bool PassageWriter::reserveFor(std::size_t more) {
+    const std::size_t size = passages_.size(), capacity = passages_.capacity();
+    if (size + more <= capacity) return true;
+    const std::uint64_t each = sizeof(Passage);
+    // While the vector moves, the old storage and the new are both held.
+    const std::uint64_t room = budget_ / each > capacity ? budget_ / each - capacity : 0;
+    const std::size_t grown = std::min<std::uint64_t>(std::max(2 * capacity, size + more), room);
+    if (grown < size + more) {
+        reached_ = (std::uint64_t(capacity) + std::max(2 * capacity, size + more)) * each;
+        refused_.store(true, std::memory_order_relaxed);
+        return false;
+    }
+    passages_.reserve(grown);
+    return true;
+}
+
 std::uint32_t PassageWriter::codeOf(const SegmentTrace& trace) {
     if (trace.runs == 0) return trace.end;
     const std::lock_guard<std::mutex> hold(lock_);
     if (passages_.size() + std::size_t(trace.runs) >= std::size_t(kVoid - kPassage)) return kBlack;
+    if (refused() || !reserveFor(std::size_t(trace.runs))) return kBlack;
     std::uint32_t next = trace.end;
     for (int i = trace.runs; i-- > 0;) {
         const SegmentTrace::Run& run = trace.run[i];

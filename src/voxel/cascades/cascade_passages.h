@@ -11,6 +11,7 @@
 // buffer (cascade_gpu.cpp, src/gpu/shaders/voxel/cascades_chain.glsl).
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <mutex>
 #include <vector>
@@ -50,15 +51,27 @@ Rgb traceTransmittance(const SegmentTrace& trace);
 // nothing transmits). Segments are cast again when it changes (RadianceCascades::setLight).
 std::vector<float> mediaSignature(const ShadeOptions& shading);
 
-// Appends passages from several threads and hands out their codes.
+// Appends passages from several threads and hands out their codes, within `budget` bytes of
+// passages: the vector's capacity grows by doubling as push_back would, clamped so the old and
+// the new storage together (the peak while it moves) stay within the budget. A trace that would
+// pass it is refused: its code is kBlack, refused() turns true (the cast stops early) and
+// reached() is the bytes that would have been needed.
 class PassageWriter {
   public:
-    explicit PassageWriter(std::vector<Passage>& passages) : passages_(passages) {}
+    PassageWriter(std::vector<Passage>& passages, std::uint64_t budget)
+        : passages_(passages), budget_(budget) {}
     // The code of a trace: its end when it passed no medium, else its first passage.
     std::uint32_t codeOf(const SegmentTrace& trace);
+    bool refused() const { return refused_.load(std::memory_order_relaxed); }
+    std::uint64_t reached() const { return reached_; }
 
   private:
+    // Room for `more` passages within the budget; false (and refused) when there is none.
+    bool reserveFor(std::size_t more);
+
     std::vector<Passage>& passages_;
+    std::uint64_t budget_ = 0, reached_ = 0;
+    std::atomic<bool> refused_{false};
     std::mutex lock_;
 };
 

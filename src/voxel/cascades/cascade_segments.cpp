@@ -11,6 +11,7 @@
 
 #include "cascade_passages.h"
 #include "cascade_state.h"
+#include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/surface_cast.h"
 
@@ -80,6 +81,7 @@ void castLevel(RadianceCascades::State& state, PassageWriter& passages, std::siz
     const LevelData* upper = top ? nullptr : &state.levels[k + 1];
     parallelForRange(int(probes), 1, [&](int begin, int end) {
         for (int p = begin; p < end; ++p) {
+            if (passages.refused()) return;  // past the memory limit: the build is refused
             const Vec3d origin = level.position(p);
             if (!top) {
                 data.corners[p] = cornersAround(upper->level, origin);
@@ -119,6 +121,7 @@ void castFaces(RadianceCascades::State& state, PassageWriter& passages) {
     const Level& level0 = state.levels.front().level;
     parallelForRange(count, 64, [&](int begin, int end) {
         for (int f = begin; f < end; ++f) {
+            if (passages.refused()) return;
             const Face& face = faces.table[f];
             const Int3 n = normalFromIndex(face.normal);
             const Vec3d normal{double(n.x), double(n.y), double(n.z)};
@@ -140,13 +143,27 @@ void castFaces(RadianceCascades::State& state, PassageWriter& passages) {
 
 }  // namespace
 
-void castSegments(RadianceCascades::State& state) {
-    state.passages.clear();
+Status castSegments(RadianceCascades::State& state) {
+    state.passages = {};  // frees the last cast's before this one counts its own
     state.castMedia = mediaSignature(state.shading);
+    state.castComplete = false;
     ++state.casts;
-    PassageWriter passages(state.passages);
-    for (std::size_t k = 0; k < state.levels.size(); ++k) castLevel(state, passages, k);
-    castFaces(state, passages);
+    const std::uint64_t planned = state.plannedBytes, limit = state.memoryLimit;
+    PassageWriter passages(state.passages, limit > planned ? limit - planned : 0);
+    for (std::size_t k = 0; k < state.levels.size() && !passages.refused(); ++k) {
+        castLevel(state, passages, k);
+    }
+    if (!passages.refused()) castFaces(state, passages);
+    if (passages.refused()) {
+        return Error(
+            "radiance cascades: the segments' runs through glass and water need more "
+            "than " +
+            formatBytes(passages.reached()) + " beyond the " + formatBytes(planned) +
+            " estimated, past the limit of " + formatBytes(limit) +
+            " (try --no-refraction or a smaller world)");
+    }
+    state.castComplete = true;
+    return Ok{};
 }
 
 }  // namespace luxel::voxel::cascades

@@ -81,8 +81,12 @@ struct RadianceCascades::State {
     std::vector<cascades::LevelData> levels;
     std::vector<cascades::Passage> passages;  // of the segments through glass and water
     std::vector<float> castMedia;             // the mediaSignature the segments were cast for
-    int casts = 0;             // how often they were cast (a GPU copy made before is stale)
-    Vec3d sunForVisibility{};  // the sun direction sunPassing was found for
+    int casts = 0;              // how often they were cast (a GPU copy made before is stale)
+    bool castComplete = false;  // false when the last cast was refused (castSegments)
+    // Bytes estimated before building (estimateCascades) and the limit the passages must fit
+    // in beside them.
+    std::uint64_t plannedBytes = 0, memoryLimit = 0;
+    Vec3d sunForVisibility{};           // the sun direction sunPassing was found for
     double sunRadiusForVisibility = 0;  // and the sun's angular radius
     CascadeStats stats;
 };
@@ -134,8 +138,10 @@ inline Rgb chainRadiance(std::uint32_t code, const std::vector<Passage>& passage
     return passageRadiance(code, passages, outgoing, sky, behind);
 }
 
-// Casts every segment of the faces and the levels once (cascade_segments.cpp).
-void castSegments(RadianceCascades::State& state);
+// Casts every segment of the faces and the levels once (cascade_segments.cpp). Refuses, with
+// the bytes, when the passages would take the cascades past State::memoryLimit (checked as they
+// are made; the cast stops early, leaving the codes not cast kVoid and castComplete false).
+Status castSegments(RadianceCascades::State& state);
 // Face colours and sun visibility for the state's shading (cascade_light.cpp).
 void updateFaceLight(RadianceCascades::State& state);
 // The faces' emitterIrradiance; false (and zeros) when there are too many pairs.

@@ -101,6 +101,8 @@ Result<RadianceCascades> RadianceCascades::create(const VoxelWorld& world,
     state->textures = textures;
     state->shading = shading;
     state->options = options;
+    state->plannedBytes = needed;
+    state->memoryLimit = estimate.limit;
     Result<FaceTable> table =
         FaceTable::build(world, textures, std::max<std::int64_t>(exposed * 2, 1 << 20), &shading);
     if (!table) return table.error();
@@ -112,7 +114,7 @@ Result<RadianceCascades> RadianceCascades::create(const VoxelWorld& world,
         data.bins = DirectionBins::build(level.binSide);
         state->levels.push_back(std::move(data));
     }
-    castSegments(*state);
+    if (Status s = castSegments(*state); !s) return s.error();
     updateFaceLight(*state);
 
     CascadeStats& stats = state->stats;
@@ -137,12 +139,15 @@ Status RadianceCascades::setLight(const ShadeOptions& shading) {
     if (Status s = validatePathTrace(shading, PathTraceOptions{}); !s) return s.error();
     state_->shading = shading;
     // Which voxels the segments pass, and what passes, depends on the glass's materials.
-    if (cascades::mediaSignature(shading) != state_->castMedia) {
-        cascades::castSegments(*state_);
+    // A cast refused before is tried again (the new light may let less through).
+    Status cast = Ok{};
+    if (!state_->castComplete || cascades::mediaSignature(shading) != state_->castMedia) {
         state_->faces.emitterIrradiance.clear();  // their light through glass is found again
+        cast = cascades::castSegments(*state_);
     }
+    // Even when the cast is refused the faces' light stays consistent with the codes it left.
     updateFaceLight(*state_);
-    return Ok{};
+    return cast;
 }
 
 double RadianceCascades::iterate() {
