@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 #include "luxel/voxel/radiance_cascades.h"
 #include "luxel/voxel/radiance_cascades_gpu.h"
@@ -80,6 +81,26 @@ double largestDifference(const RadianceCascades& a, const RadianceCascades& b, d
     return largest;
 }
 
+// The same cascades twice, the second with its passes on the GPU.
+struct Twins {
+    std::optional<RadianceCascades> cpu, onGpu;
+    std::optional<RadianceCascadesGpu> gpu;  // empty when either could not be made
+};
+
+Twins makeTwins(gpu::Context& context, const VoxelWorld& world, const ShadeOptions& o) {
+    Twins t;
+    auto cpu = RadianceCascades::create(world, nullptr, o);
+    auto onGpu = RadianceCascades::create(world, nullptr, o);
+    EXPECT_TRUE(cpu.ok() && onGpu.ok());
+    if (!cpu.ok() || !onGpu.ok()) return t;
+    t.cpu.emplace(std::move(*cpu));
+    t.onGpu.emplace(std::move(*onGpu));
+    auto gpu = RadianceCascadesGpu::create(context, *t.onGpu);
+    EXPECT_TRUE(gpu.ok()) << gpu.error().message();
+    if (gpu.ok()) t.gpu.emplace(std::move(*gpu));
+    return t;
+}
+
 // One pass and then three more on both: the GPU's irradiance (downloaded into `onGpu`) within
 // 1e-5 of the largest of the CPU's after each.
 void expectOneThenThreePassesMatch(RadianceCascades& cpu, RadianceCascades& onGpu,
@@ -100,22 +121,21 @@ TEST(RadianceCascadesGpu, PassesMatchTheCpuReference) {
     LUXEL_REQUIRE_GPU(context);
     const VoxelWorld world = roomWithWindow();
     ShadeOptions o = light();
-    auto cpu = RadianceCascades::create(world, nullptr, o);
-    auto onGpu = RadianceCascades::create(world, nullptr, o);
-    ASSERT_TRUE(cpu.ok() && onGpu.ok());
-    auto gpu = RadianceCascadesGpu::create(*context, *onGpu);
-    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
-    expectOneThenThreePassesMatch(*cpu, *onGpu, *gpu);
+    Twins t = makeTwins(*context, world, o);
+    ASSERT_TRUE(t.gpu);
+    RadianceCascades &cpu = *t.cpu, &onGpu = *t.onGpu;
+    RadianceCascadesGpu& gpu = *t.gpu;
+    expectOneThenThreePassesMatch(cpu, onGpu, gpu);
     // New light: the sun moves; both carry their irradiance into the next passes.
     o.sunDirection = {-0.4f, 0.7f, -1.0f};
-    ASSERT_TRUE(cpu->setLight(o).ok());
-    ASSERT_TRUE(onGpu->setLight(o).ok());
-    ASSERT_TRUE(gpu->uploadLight().ok());
-    for (int i = 0; i < 2; ++i) cpu->iterate();
-    ASSERT_TRUE(gpu->iterate(2).ok());
-    ASSERT_TRUE(gpu->download().ok());
+    ASSERT_TRUE(cpu.setLight(o).ok());
+    ASSERT_TRUE(onGpu.setLight(o).ok());
+    ASSERT_TRUE(gpu.uploadLight().ok());
+    for (int i = 0; i < 2; ++i) cpu.iterate();
+    ASSERT_TRUE(gpu.iterate(2).ok());
+    ASSERT_TRUE(gpu.download().ok());
     double scale = 0.0;
-    const double difference = largestDifference(*onGpu, *cpu, scale);
+    const double difference = largestDifference(onGpu, cpu, scale);
     EXPECT_GT(scale, 0.1);
     EXPECT_LE(difference, 1e-5 * scale);
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
@@ -127,35 +147,33 @@ TEST(RadianceCascadesGpu, OnePassAtATimeReportsTheCpusChange) {
     LUXEL_REQUIRE_GPU(context);
     const VoxelWorld world = roomWithWindow();
     const ShadeOptions o = light();
-    auto cpu = RadianceCascades::create(world, nullptr, o);
-    auto onGpu = RadianceCascades::create(world, nullptr, o);
-    ASSERT_TRUE(cpu.ok() && onGpu.ok());
-    auto gpu = RadianceCascadesGpu::create(*context, *onGpu);
-    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    Twins t = makeTwins(*context, world, o);
+    ASSERT_TRUE(t.gpu);
+    RadianceCascades &cpu = *t.cpu, &onGpu = *t.onGpu;
+    RadianceCascadesGpu& gpu = *t.gpu;
     for (int pass = 1; pass <= 4; ++pass) {
-        const double expected = cpu->iterate();
-        auto change = gpu->iterateOnce();
+        const double expected = cpu.iterate();
+        auto change = gpu.iterateOnce();
         ASSERT_TRUE(change.ok()) << change.error().message();
         EXPECT_GT(expected, 0.0) << pass;
         EXPECT_NEAR(*change, expected, 1e-4 * expected + 1e-9) << pass;
         double scale = 0.0;
-        const double difference = largestDifference(*onGpu, *cpu, scale);
+        const double difference = largestDifference(onGpu, cpu, scale);
         EXPECT_LE(difference, 1e-5 * scale) << pass;
     }
-    EXPECT_EQ(onGpu->stats().bounces, 4);
+    EXPECT_EQ(onGpu.stats().bounces, 4);
 }
 
 TEST(RadianceCascadesGpu, PassesThroughGlassMatchTheCpuReference) {
     LUXEL_REQUIRE_GPU(context);
     const VoxelWorld world = roomWithWindow(true);
     const ShadeOptions o = light();
-    auto cpu = RadianceCascades::create(world, nullptr, o);
-    auto onGpu = RadianceCascades::create(world, nullptr, o);
-    ASSERT_TRUE(cpu.ok() && onGpu.ok());
-    auto gpu = RadianceCascadesGpu::create(*context, *onGpu);
-    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
-    expectOneThenThreePassesMatch(*cpu, *onGpu, *gpu);
-    EXPECT_GT(cpu->stats().passages, 0u);
+    Twins t = makeTwins(*context, world, o);
+    ASSERT_TRUE(t.gpu);
+    RadianceCascades &cpu = *t.cpu, &onGpu = *t.onGpu;
+    RadianceCascadesGpu& gpu = *t.gpu;
+    expectOneThenThreePassesMatch(cpu, onGpu, gpu);
+    EXPECT_GT(cpu.stats().passages, 0u);
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
 }
 
