@@ -223,15 +223,12 @@ Result<std::vector<OctreeHit>> OctreeGpu::castRays(std::span<const voxel::Ray> r
         static_cast<std::uint32_t>(size.y), static_cast<std::uint32_t>(size.z),
         s.arrays.leafOrder ? LUXEL_OCTREE_LEAF_ORDER : 0u});
     d.setLinearThreads(rays.size());
-    auto passes = s.context->run(std::span(&d, 1));
-    if (!passes) return passes.error();
-    if (timings) timings->insert(timings->end(), passes->begin(), passes->end());
-    std::vector<shared::VoxelCastHit> out(rays.size());
-    if (Status st = s.context->download(**hitBuffer, std::as_writable_bytes(std::span(out))); !st) {
-        return st.error();
+    auto out = voxel::runCastPass(*s.context, d, **hitBuffer, rays.size(), timings);
+    if (!out) return out.error();
+    for (std::size_t i = 0; i < out->size(); ++i) {
+        const shared::VoxelCastHit& o = (*out)[i];
+        hits[i] = {voxel::hitFromGpu(o), o.entry, o.pad0};  // pad0: colour index
     }
-    for (std::size_t i = 0; i < out.size(); ++i)
-        hits[i] = {voxel::hitFromGpu(out[i]), out[i].entry, out[i].pad0};  // pad0: colour index
     return hits;
 }
 

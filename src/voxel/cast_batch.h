@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "gpu/shaders/shared/voxel_layout.h"
+#include "luxel/core/error.h"
+#include "luxel/gpu/context.h"
 #include "luxel/voxel/dda.h"
 
 namespace luxel::voxel {
@@ -37,6 +39,21 @@ inline Hit hitFromGpu(const gpu::shared::VoxelCastHit& o) {
     h.u = o.u;
     h.v = o.v;
     return h;
+}
+
+// Runs a cast pass (its dispatch writes one VoxelCastHit per ray into `hits`), appends its GPU
+// time to `timings` when given, and downloads the `count` hits.
+inline Result<std::vector<gpu::shared::VoxelCastHit>> runCastPass(
+    gpu::Context& context, const gpu::Dispatch& dispatch, const gpu::Buffer& hits,
+    std::size_t count, std::vector<gpu::PassTiming>* timings) {
+    auto passes = context.run(std::span(&dispatch, 1));
+    if (!passes) return passes.error();
+    if (timings) timings->insert(timings->end(), passes->begin(), passes->end());
+    std::vector<gpu::shared::VoxelCastHit> out(count);
+    if (Status st = context.download(hits, std::as_writable_bytes(std::span(out))); !st) {
+        return st.error();
+    }
+    return out;
 }
 
 }  // namespace luxel::voxel

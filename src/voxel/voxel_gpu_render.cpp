@@ -236,15 +236,9 @@ Result<std::vector<Hit>> VoxelGpuRenderer::castRays(std::span<const Ray> rays, d
     const std::uint32_t cap = p.stepCap;
     d.setPush(shared::VoxelCastPush{static_cast<std::uint32_t>(rays.size()), cap});
     d.setLinearThreads(rays.size());
-    auto passes = s.context->run(std::span(&d, 1));
-    if (!passes) return passes.error();
-    if (timings) timings->insert(timings->end(), passes->begin(), passes->end());
-
-    std::vector<shared::VoxelCastHit> out(rays.size());
-    if (Status st = s.context->download(**hitBuffer, std::as_writable_bytes(std::span(out))); !st) {
-        return st.error();
-    }
-    for (std::size_t i = 0; i < out.size(); ++i) hits[i] = hitFromGpu(out[i]);
+    auto out = runCastPass(*s.context, d, **hitBuffer, rays.size(), timings);
+    if (!out) return out.error();
+    for (std::size_t i = 0; i < out->size(); ++i) hits[i] = hitFromGpu((*out)[i]);
     return hits;
 }
 
