@@ -66,6 +66,18 @@ void expectSameImage(const Image& a, const Image& b) {
     EXPECT_EQ(different, 0) << "of " << a.size() << " values";
 }
 
+// `got` within `relative` of `want` in summed absolute difference over the summed values.
+void expectCloseImage(const Image& got, const Image& want, double relative) {
+    ASSERT_EQ(got.size(), want.size());
+    double difference = 0.0, sum = 0.0;
+    for (std::size_t i = 0; i < want.size(); ++i) {
+        difference += std::abs(got.data()[i] - want.data()[i]);
+        sum += want.data()[i];
+    }
+    EXPECT_GT(sum, 0.0);
+    EXPECT_LT(difference, relative * sum);
+}
+
 const std::string* metadataOf(const Frame& frame, const char* key) {
     return findMetadata(frame.metadata, key);
 }
@@ -327,15 +339,7 @@ TEST(RendererVoxelPath, TracesOnTheGpuSourcesDevice) {
     once.samplesPerPixel = 6;
     auto reference = voxel::pathTrace(world, cameraOf(s), s.shading, once);
     ASSERT_TRUE(reference);
-    const Image expected = displayed(reference->radiance, s);
-    ASSERT_EQ(done.picture.size(), expected.size());
-    double difference = 0.0, sum = 0.0;
-    for (std::size_t i = 0; i < expected.size(); ++i) {
-        difference += std::abs(done.picture.data()[i] - expected.data()[i]);
-        sum += expected.data()[i];
-    }
-    EXPECT_GT(sum, 0.0);
-    EXPECT_LT(difference, 0.02 * sum);
+    expectCloseImage(done.picture, displayed(reference->radiance, s), 0.02);
 }
 
 TEST(RendererVoxelSkyVisibility, IsTheLibraryRenderAndRendersOncePerView) {
@@ -449,15 +453,8 @@ TEST(RendererVoxelCascades, RunOnTheGpuSourcesDevice) {
         library->iterate();
         auto expected = library->render(cameraOf(s));
         ASSERT_TRUE(expected.ok());
-        const Image want = displayed(*expected, s);
-        ASSERT_EQ(frame.picture.size(), want.size());
-        double difference = 0.0, sum = 0.0;
-        for (std::size_t i = 0; i < want.size(); ++i) {
-            difference += std::abs(frame.picture.data()[i] - want.data()[i]);
-            sum += want.data()[i];
-        }
-        EXPECT_GT(sum, 0.0);
-        EXPECT_LT(difference, 1e-3 * sum) << frameIndex;
+        SCOPED_TRACE(frameIndex);
+        expectCloseImage(frame.picture, displayed(*expected, s), 1e-3);
     }
     for (int i = 0; i < 200 && renderer.hasMoreWork(); ++i) renderer.step();
     EXPECT_FALSE(renderer.hasMoreWork());
