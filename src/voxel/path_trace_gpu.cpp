@@ -59,15 +59,8 @@ shared::PathTracePush pathPush(const ShadeOptions& shading, const PathTraceOptio
         (shading.fresnel == ShadeOptions::FresnelModel::Exact ? LUXEL_PATH_FRESNEL_EXACT : 0u);
     // The disk as SunDisk has it, in double, rounded once.
     const SunDisk disk = SunDisk::make(d, shading.sunAngularRadius);
-    if (!disk.delta()) {
-        Vec3d t, b;
-        disk.frame(t, b);
-        p.sunOneMinusCos = float(disk.oneMinusCos);
-        p.sunPdf = float(disk.pdf());
-        p.sunRadianceScale = disk.radiance(Rgb(1.0f)).r;  // 1 / (pi sin^2 r)
-        p.sunTangentX = float(t.x), p.sunTangentY = float(t.y), p.sunTangentZ = float(t.z);
-        p.sunBitangentX = float(b.x), p.sunBitangentY = float(b.y), p.sunBitangentZ = float(b.z);
-    }
+    packSunDisk(disk, p);
+    if (!disk.delta()) p.sunPdf = float(disk.pdf());
     return p;
 }
 

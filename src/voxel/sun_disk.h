@@ -36,4 +36,18 @@ struct SunDisk {
     void frame(Vec3d& t, Vec3d& b) const;
 };
 
+// The disk as the GPU passes' push constants carry it (the path tracer's, the cascades'
+// picture's: the same named fields), computed in double and rounded once: 1 - cos r, the
+// radiance per unit irradiance and the frame's tangents; left zero for a delta sun.
+template <typename Push>
+void packSunDisk(const SunDisk& disk, Push& p) {
+    if (disk.delta()) return;
+    Vec3d t, b;
+    disk.frame(t, b);
+    p.sunOneMinusCos = float(disk.oneMinusCos);
+    p.sunRadianceScale = disk.radiance(Rgb(1.0f)).r;  // 1 / (pi sin^2 r)
+    p.sunTangentX = float(t.x), p.sunTangentY = float(t.y), p.sunTangentZ = float(t.z);
+    p.sunBitangentX = float(b.x), p.sunBitangentY = float(b.y), p.sunBitangentZ = float(b.z);
+}
+
 }  // namespace luxel::voxel

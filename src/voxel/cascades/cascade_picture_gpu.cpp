@@ -85,14 +85,7 @@ shared::CascadePicturePush picturePush(const ShadeOptions& shading, std::uint32_
     p.sunIrradianceG = shading.sunIrradiance.g;
     p.sunIrradianceB = shading.sunIrradiance.b;
     p.sunOverPdfScale = disk.radianceOverPdf(Rgb(1.0f)).r;
-    if (!disk.delta()) {
-        Vec3d t, b;
-        disk.frame(t, b);
-        p.sunOneMinusCos = float(disk.oneMinusCos);
-        p.sunRadianceScale = disk.radiance(Rgb(1.0f)).r;  // 1 / (pi sin^2 r)
-        p.sunTangentX = float(t.x), p.sunTangentY = float(t.y), p.sunTangentZ = float(t.z);
-        p.sunBitangentX = float(b.x), p.sunBitangentY = float(b.y), p.sunBitangentZ = float(b.z);
-    }
+    packSunDisk(disk, p);
     return p;
 }
 
