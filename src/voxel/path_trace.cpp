@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "gpu/shaders/shared/path_bsdf.h"
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/voxel/path_trace.h"
@@ -66,11 +67,78 @@ Rgb emitterLight(const VoxelWorld& world, const TextureSet* textures, const Path
     return bsdfLight(bsdf, s.direction, emission, s.pdf);
 }
 
+// Whether a ray leaving the world along unit d meets the sun: inside its disk, or for a delta
+// sun along its axis to rounding (a ray that glass with parallel faces gave back its direction).
+bool meetsSun(const SunDisk& sun, Vec3d d) {
+    if (!sun.delta()) return sun.contains(d);
+    const Vec3d chord = d - sun.axis;
+    return 0.5 * dot(chord, chord) <= LUXEL_PATH_DELTA_SUN_CHORD;
+}
+
+// What of the sun's light reaches a surface along unit l. Plain (maxEvents < 0): 1 unless the
+// shadow ray meets a solid. Through delta surfaces (maxEvents >= 0): the shadow ray meets glass
+// and mirrors (surfaces without a smooth lobe) as a bounce ray would, with the same lobe choices
+// and Beer-Lambert inside, at most maxEvents times, and brings its throughput if it leaves the
+// world towards the sun; a surface with a smooth lobe stops it. Through a pane with parallel
+// faces the ray leaves as it came, so sunlight through a window converges like direct light.
+Rgb sunReaching(const VoxelWorld& world, const TextureSet* textures, Vec3d origin, Vec3d l,
+                const SunDisk& sun, const ShadeOptions& o, int maxEvents, PathRng& rng) {
+    if (maxEvents < 0) {
+        return surfaceRayBlocked(world, textures, {origin, l}, kInfinity, o.stepCap) ? Rgb()
+                                                                                     : Rgb(1.0f);
+    }
+    Ray ray{origin, l};
+    Rgb throughput(1.0f);
+    bool inside = false;  // the ray travels through the medium of `cell`
+    Int3 cell;
+    // The counts and checks of tracePath's loop, so both strategies reach the same paths.
+    for (int events = 0;;) {
+        if (inside) {
+            const Voxel v = world.get(cell.x, cell.y, cell.z);
+            const Material& m = o.materials.forSlot(textureSlotOf(v));
+            const MediumExit exit = walkMedium(world, cell, ray.origin, ray.direction);
+            throughput = throughput * mediumTransmittance(m.absorption, exit.distance);
+            ray.origin = exit.point;
+            if (exit.intoSolid) {
+                inside = false;
+                continue;
+            }
+            if (events == maxEvents) return {};
+            const ExitSplit split = splitAtExit(ray.direction, exit.outward, m.ior, o.fresnel);
+            const bool reflect = split.total || rng.next() < split.reflectance;
+            ray.direction = reflect ? split.reflected : split.refracted;
+            cell = exit.cell;
+            inside = reflect;
+            ++events;
+            continue;
+        }
+        const SurfaceHit s = castToSurface(world, textures, ray, o.stepCap);
+        if (!s.hit.hit) return meetsSun(sun, normalize(ray.direction)) ? throughput : Rgb();
+        const Hit& hit = s.hit;
+        if (hit.normal == Int3{} || events == maxEvents) return {};
+        const PathSurface surface = pathSurfaceAt(world, s, o);
+        const PathBsdf bsdf =
+            pathBsdf(*surface.material, surface.albedo, hit.normal, normalize(ray.direction), o);
+        if (bsdf.smooth()) return {};
+        const BsdfSample next = sampleBsdf(bsdf, rng);
+        if (next.lobe == BsdfSample::Lobe::None) return {};
+        throughput = throughput * next.weight;
+        if (!(throughput.maxComponent() > 0.0f)) return {};
+        ray = {hit.point, next.direction};
+        if (next.lobe == BsdfSample::Lobe::Transmission) {
+            inside = true;
+            cell = hit.voxel;
+        }
+        ++events;
+    }
+}
+
 // Next event estimation towards the sun: its centre (a delta light) or a uniform direction in
-// its disk, weighted against the bounce rays that can meet the disk. Draws two numbers when the
-// disk has a size.
+// its disk, weighted against the bounce rays that can meet the disk; through at most maxEvents
+// delta surfaces (sunReaching). Draws two numbers when the disk has a size.
 Rgb sunLight(const VoxelWorld& world, const TextureSet* textures, const Hit& hit,
-             const PathBsdf& bsdf, const SunDisk& sun, const ShadeOptions& o, PathRng& rng) {
+             const PathBsdf& bsdf, const SunDisk& sun, const ShadeOptions& o, int maxEvents,
+             PathRng& rng) {
     Vec3d l = sun.axis;
     if (!sun.delta()) {
         const float u0 = rng.next(), u1 = rng.next();
@@ -78,12 +146,11 @@ Rgb sunLight(const VoxelWorld& world, const TextureSet* textures, const Hit& hit
     }
     if (!(o.sunIrradiance.maxComponent() > 0.0f) || !bsdf.smooth()) return {};
     // Rays start on the face; castRay's start-cell rule puts them in the cell in front.
-    if (!(dot(toDouble(hit.normal), l) > 0.0) ||
-        surfaceRayBlocked(world, textures, {hit.point, l}, kInfinity, o.stepCap)) {
-        return {};
-    }
-    if (sun.delta()) return bsdfLight(bsdf, l, o.sunIrradiance, 0.0);
-    return bsdfLight(bsdf, l, sun.radiance(o.sunIrradiance), sun.pdf());
+    if (!(dot(toDouble(hit.normal), l) > 0.0)) return {};
+    const Rgb reaching = sunReaching(world, textures, hit.point, l, sun, o, maxEvents, rng);
+    if (!(reaching.maxComponent() > 0.0f)) return {};
+    if (sun.delta()) return reaching * bsdfLight(bsdf, l, o.sunIrradiance, 0.0);
+    return reaching * bsdfLight(bsdf, l, sun.radiance(o.sunIrradiance), sun.pdf());
 }
 
 // Whether Russian roulette ends the path at vertex k; else the throughput is divided by the
@@ -173,7 +240,15 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
     Ray ray = cameraRay;
     Vec3d bounceOrigin;      // where the last bounce ray started
     double bouncePdf = 0.0;  // its density in solid angle (0: the camera ray or a delta lobe)
-    bool inside = false;     // the ray travels through the medium of `cell`
+    // Sun light sampling follows shadow rays through delta surfaces (sunReaching). Then a
+    // bounce ray that meets the disk after only such surfaces is weighted against it by the
+    // direction it left its last smooth vertex in: chainPdf its density (0: no such vertex, or
+    // a surface with a smooth lobe since), chainDirection, chainNormal that vertex's face.
+    const bool sunChains = p.sunThroughGlass && o.refraction && o.materials.anyTransmission();
+    double chainPdf = 0.0;
+    Vec3d chainDirection;
+    Int3 chainNormal;
+    bool inside = false;  // the ray travels through the medium of `cell`
     Int3 cell;
     // Vertex k of the path is reached after k reflections or refractions.
     for (int k = 0;;) {
@@ -208,7 +283,14 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
             // The sun's disk, where a reflected or refracted ray meets it (the camera sees the
             // sky without it, as in the ray caster).
             if (k > 0 && sun.contains(ray.direction)) {
-                const double weight = bouncePdf > 0.0 ? powerHeuristic(bouncePdf, sun.pdf()) : 1.0;
+                double weight = 1.0;
+                if (bouncePdf > 0.0) {
+                    weight = powerHeuristic(bouncePdf, sun.pdf());
+                } else if (chainPdf > 0.0) {
+                    const bool sampled = dot(toDouble(chainNormal), chainDirection) > 0.0 &&
+                                         sun.contains(chainDirection);
+                    weight = powerHeuristic(chainPdf, sampled ? sun.pdf() : 0.0);
+                }
                 radiance += throughput * sun.radiance(o.sunIrradiance) * float(weight);
             }
             break;
@@ -230,7 +312,8 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
         const PathBsdf bsdf =
             pathBsdf(*surface.material, surface.albedo, hit.normal, normalize(ray.direction), o);
         // Next event estimation (the smooth lobes only; a delta lobe counts what its ray meets).
-        radiance += throughput * sunLight(world, textures, hit, bsdf, sun, o, rng);
+        radiance += throughput * sunLight(world, textures, hit, bsdf, sun, o,
+                                          sunChains ? p.maxBounces - k - 1 : -1, rng);
         if (emitters) {
             radiance += throughput * emitterLight(world, textures, *emitters, hit, bsdf, o, rng);
         }
@@ -243,6 +326,13 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
         ray = {hit.point, next.direction};
         bounceOrigin = hit.point;
         bouncePdf = next.pdf;
+        if (next.pdf > 0.0) {
+            chainPdf = sunChains ? next.pdf : 0.0;
+            chainDirection = next.direction;
+            chainNormal = hit.normal;
+        } else if (bsdf.smooth()) {
+            chainPdf = 0.0;  // sun light sampling stops at this surface
+        }
         if (next.lobe == BsdfSample::Lobe::Transmission) {
             inside = true;
             cell = hit.voxel;

@@ -99,6 +99,30 @@ TEST(PathTraceGpuMaterials, MirrorFloorShowsAlbedoTimesSky) {
             }
 }
 
+// A floor under a glass pane lit by the real sun through it (PathTraceOptions::sunThroughGlass:
+// sun light sampling follows the shadow rays through the pane) and a gradient sky, seen from
+// between floor and pane.
+TEST(PathTraceGpuMaterials, SunThroughAPaneAgreesWithTheCpu) {
+    REQUIRE_CONTEXT(context);
+    const VoxelWorld world = paneOverAFloor();
+    ShadeOptions o = plainLight(0.8f, Rgb(0.0f), Rgb(0.0f));
+    o.skyTop = Rgb(0.3f, 0.5f, 1.0f);
+    o.skyHorizon = Rgb(1.0f, 0.9f, 0.8f);
+    o.sunIrradiance = Rgb(3.0f);
+    o.sunDirection = {0.3f, 1.0f, 0.2f};
+    o.sunAngularRadius = 0.0047;
+    ASSERT_TRUE(o.materials.setSlot(0, glass(Rgb(0.05f, 0.1f, 0.2f))).ok());
+    const Camera camera = *Camera::lookAt({4.0, 3.5, 4.0}, {12.0, 0.0, 12.0}, 60.0, 16, 12);
+    PathTraceOptions p;
+    p.samplesPerPixel = 16;
+    expectParity(*context, world, camera, o, p, nullptr, "sun through a pane");
+    // The floor is lit through the pane: far brighter than the sky alone makes it.
+    const PathTraceImage lit = traceGpu(*context, world, camera, o, p);
+    o.sunIrradiance = Rgb(0.0f);
+    const PathTraceImage sky = traceGpu(*context, world, camera, o, p);
+    EXPECT_GT(lit.radiance.at(8, 8, 0), 2.0f * sky.radiance.at(8, 8, 0));
+}
+
 // A glowing wall (z = 0) seen through a clear glass slab three voxels thick (z in [6, 9)) that
 // fills the world's cross-section; the sky is black. What crosses is E (1 - F)^2 t / (1 - F^2 t^2),
 // t = exp(-3 sigma_a): the series of internal reflections.

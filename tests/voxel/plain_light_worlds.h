@@ -90,6 +90,19 @@ inline VoxelWorld slabBeforeAWall() {
     return world;
 }
 
+// A white floor (y = 0) under a pane one voxel thick (y = 5, texture slot 0) that covers the
+// whole 24x8x24 world: the sun-through-glass tests.
+inline VoxelWorld paneOverAFloor() {
+    VoxelWorld world = makeWorld({24, 8, 24});
+    for (int z = 0; z < 24; ++z)
+        for (int x = 0; x < 24; ++x) {
+            world.set(x, 0, z, kWhite);
+            world.set(x, 5, z, Voxel{255, 255, 255, 1});
+        }
+    world.refreshEmptySpace();
+    return world;
+}
+
 // A GGX-only lobe of reflectance 1 on a floor (normal +y) seen at cosView, as the GGX
 // directional-albedo table integrates it.
 inline PathBsdf ggxOnlyLobe(double cosView, double alpha) {

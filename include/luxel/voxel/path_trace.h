@@ -47,6 +47,11 @@ struct PathTraceOptions {
     // Next event estimation towards the emissive voxels, combined with the bounce rays by
     // multiple importance sampling; off: bounce rays alone find them (same mean, more noise).
     bool sampleEmitters = true;
+    // Next event estimation towards the sun follows its shadow ray through glass and mirrors
+    // (surfaces without a smooth lobe), so sunlight through a window converges like direct
+    // light; off: only bounce rays find the sun behind them (same mean, fireflies). It applies
+    // when shading.refraction is on and a material lets light through.
+    bool sunThroughGlass = true;
 };
 
 // Memory the path tracer needs for an image, estimated before it allocates: PathTracer and

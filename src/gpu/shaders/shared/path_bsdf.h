@@ -16,6 +16,9 @@
 #define LUXEL_PATH_PI 3.14159265358979f
 // Below this GGX alpha (roughness 0.01) the specular lobe is a delta mirror (kMirrorAlpha).
 #define LUXEL_PATH_MIRROR_ALPHA 1e-4f
+// A ray that glass gave back its direction meets a delta sun when half its squared chord to the
+// axis is below this (an angle of 1.4e-5 rad: rounding, not a different direction).
+#define LUXEL_PATH_DELTA_SUN_CHORD 1e-10
 
 LUXEL_SHARED_BEGIN
 

@@ -23,6 +23,7 @@ using uint = std::uint32_t;
 // PathTracePush::materialFlags (the path tracer reads them whatever the ray caster's lighting).
 #define LUXEL_PATH_REFRACTION 1u
 #define LUXEL_PATH_FRESNEL_EXACT 2u
+#define LUXEL_PATH_SUN_CHAINS 4u  // sun light sampling passes delta surfaces (sunThroughGlass)
 
 // Push constants: the rows and the samples one dispatch traces, and the path options.
 struct PathTracePush {
@@ -41,7 +42,7 @@ struct PathTracePush {
     float sunOneMinusCos, sunPdf, sunRadianceScale;
     float sunTangentX, sunTangentY, sunTangentZ;
     float sunBitangentX, sunBitangentY, sunBitangentZ;
-    uint materialFlags;  // LUXEL_PATH_* below: ShadeOptions::refraction and ::fresnel
+    uint materialFlags;  // LUXEL_PATH_* above: ShadeOptions::refraction, ::fresnel, sun chains
     uint pad0, pad1;
 };
 

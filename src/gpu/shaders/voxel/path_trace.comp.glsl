@@ -35,10 +35,74 @@ vec3 sunAxis() {
     return vec3(path.sunX, path.sunY, path.sunZ);
 }
 
+// meetsSun (path_trace.cpp): inside the disk, or along a delta sun's axis to rounding.
+bool meetsSun(vec3 d) {
+    if (path.sunOneMinusCos > 0.0) return pathConeContains(sunAxis(), path.sunOneMinusCos, d);
+    const vec3 chord = d - sunAxis();
+    return 0.5 * dot(chord, chord) <= LUXEL_PATH_DELTA_SUN_CHORD;
+}
+
+// sunReaching (path_trace.cpp): what of the sun's light arrives along l, through at most
+// maxEvents delta surfaces (glass and mirrors met as a bounce ray meets them); maxEvents < 0:
+// the plain shadow ray.
+vec3 sunReaching(vec3 origin, vec3 l, int maxEvents, inout uvec2 rng) {
+    if (maxEvents < 0) return castToSurface(origin, l).hit.hit ? vec3(0.0) : vec3(1.0);
+    vec3 o = origin, d = l, throughput = vec3(1.0);
+    bool inside = false;
+    ivec3 cell = ivec3(0);
+    for (int events = 0;;) {
+        if (inside) {
+            const VoxelMaterial m = materials[materialIndex(voxelValue(cell))];
+            const MediumExit e = walkMedium(cell, o, d);
+            throughput = throughput * voxelTransmittance(
+                                          vec3(m.absorptionR, m.absorptionG, m.absorptionB),
+                                          e.distance);
+            o = e.point;
+            if (e.intoSolid) {
+                inside = false;
+                continue;
+            }
+            if (events == maxEvents) return vec3(0.0);
+            const vec3 nIn = -vec3(e.outward);
+            const float cosI = -dot(nIn, d);
+            const float kk = opticsRefractK(cosI, m.ior);
+            const bool total = kk < 0.0;
+            bool reflect = total;
+            if (!total) reflect = pathRngNext(rng) < pathFresnel(cosI, m.ior, 1.0);
+            d = reflect ? normalize(opticsReflect(d, nIn))
+                        : normalize(opticsRefract(d, nIn, m.ior, cosI, kk));
+            cell = e.cell;
+            inside = reflect;
+            ++events;
+            continue;
+        }
+        const SurfaceHit s = castToSurface(o, d);
+        if (!s.hit.hit) return meetsSun(normalize(d)) ? throughput : vec3(0.0);
+        const Hit hit = s.hit;
+        if (hit.normal == ivec3(0) || events == maxEvents) return vec3(0.0);
+        const PathSurface surface = pathSurfaceAt(s);
+        const PathBsdf b = pathBsdfAt(surface, hit.normal, normalize(d));
+        if (pathSmooth(b)) return vec3(0.0);
+        const PathBounce next = pathSampleBsdf(b, rng);
+        if (next.lobe == LUXEL_PATH_LOBE_NONE) return vec3(0.0);
+        throughput = throughput * next.weight;
+        if (!(maxComponent(throughput) > 0.0)) return vec3(0.0);
+        o = hit.point;
+        d = next.direction;
+        if (next.lobe == LUXEL_PATH_LOBE_TRANSMISSION) {
+            inside = true;
+            cell = hit.voxel;
+        }
+        ++events;
+    }
+    return vec3(0.0);
+}
+
 // Next event estimation towards the sun (sunLight in path_trace.cpp): its centre (a delta light)
-// or a uniform direction in its disk, weighted against the bounce rays that can meet the disk.
-// Draws two numbers when the disk has a size, whatever the surface.
-vec3 sunLight(Hit hit, PathBsdf b, inout uvec2 rng) {
+// or a uniform direction in its disk, weighted against the bounce rays that can meet the disk;
+// through at most maxEvents delta surfaces. Draws two numbers when the disk has a size, whatever
+// the surface.
+vec3 sunLight(Hit hit, PathBsdf b, int maxEvents, inout uvec2 rng) {
     vec3 l = sunAxis();
     const bool delta = !(path.sunOneMinusCos > 0.0);
     if (!delta) {
@@ -49,11 +113,11 @@ vec3 sunLight(Hit hit, PathBsdf b, inout uvec2 rng) {
     }
     const vec3 irradiance = vec3(path.sunIrradianceR, path.sunIrradianceG, path.sunIrradianceB);
     if (!(maxComponent(irradiance) > 0.0) || !pathSmooth(b)) return vec3(0.0);
-    if (!(dot(vec3(hit.normal), l) > 0.0) || castToSurface(hit.point, l).hit.hit) {
-        return vec3(0.0);
-    }
-    if (delta) return pathBsdfLight(b, l, irradiance, 0.0);
-    return pathBsdfLight(b, l, irradiance * path.sunRadianceScale, path.sunPdf);
+    if (!(dot(vec3(hit.normal), l) > 0.0)) return vec3(0.0);
+    const vec3 reaching = sunReaching(hit.point, l, maxEvents, rng);
+    if (!(maxComponent(reaching) > 0.0)) return vec3(0.0);
+    if (delta) return reaching * pathBsdfLight(b, l, irradiance, 0.0);
+    return reaching * pathBsdfLight(b, l, irradiance * path.sunRadianceScale, path.sunPdf);
 }
 
 // Next event estimation towards the emissive voxels, weighted against the bounce ray that could
@@ -88,6 +152,12 @@ vec3 tracePath(vec3 origin, vec3 direction, inout uvec2 rng) {
     vec3 o = origin, d = direction;
     vec3 bounceOrigin = vec3(0.0);
     float bouncePdf = 0.0;  // the last bounce ray's density (0: the camera ray or a delta lobe)
+    // Sun light sampling through delta surfaces (tracePath's chainPdf, chainDirection and
+    // chainNormal): the density and direction of the last smooth vertex's bounce, and its face.
+    const bool sunChains = (path.materialFlags & LUXEL_PATH_SUN_CHAINS) != 0u;
+    float chainPdf = 0.0;
+    vec3 chainDirection = vec3(0.0);
+    ivec3 chainNormal = ivec3(0);
     bool inside = false;    // the ray travels through the medium of `cell`
     ivec3 cell = ivec3(0);
     const bool sampleEmitters = path.emitters > 0u;
@@ -133,8 +203,15 @@ vec3 tracePath(vec3 origin, vec3 direction, inout uvec2 rng) {
             // The sun's disk, where a reflected or refracted ray meets it (the camera sees the
             // sky without it, as in the ray caster).
             if (k > 0 && pathConeContains(sunAxis(), path.sunOneMinusCos, d)) {
-                const float weight =
-                    bouncePdf > 0.0 ? pathPowerHeuristic(bouncePdf, path.sunPdf) : 1.0;
+                float weight = 1.0;
+                if (bouncePdf > 0.0) {
+                    weight = pathPowerHeuristic(bouncePdf, path.sunPdf);
+                } else if (chainPdf > 0.0) {
+                    const bool sampled =
+                        dot(vec3(chainNormal), chainDirection) > 0.0 &&
+                        pathConeContains(sunAxis(), path.sunOneMinusCos, chainDirection);
+                    weight = pathPowerHeuristic(chainPdf, sampled ? path.sunPdf : 0.0);
+                }
                 radiance += throughput *
                             vec3(path.sunIrradianceR, path.sunIrradianceG, path.sunIrradianceB) *
                             path.sunRadianceScale * weight;
@@ -156,7 +233,7 @@ vec3 tracePath(vec3 origin, vec3 direction, inout uvec2 rng) {
         if (k == maxBounces) break;
         const PathBsdf b = pathBsdfAt(surface, hit.normal, normalize(d));
         // Next event estimation (the smooth lobes only; a delta lobe counts what its ray meets).
-        radiance += throughput * sunLight(hit, b, rng);
+        radiance += throughput * sunLight(hit, b, sunChains ? maxBounces - k - 1 : -1, rng);
         if (sampleEmitters) radiance += throughput * emitterLight(hit, b, rng);
         const float uRoulette = k + 1 >= int(path.rouletteAfter) ? pathRngNext(rng) : 0.0;
         const PathBounce next = pathSampleBsdf(b, rng);
@@ -168,6 +245,13 @@ vec3 tracePath(vec3 origin, vec3 direction, inout uvec2 rng) {
         d = next.direction;
         bounceOrigin = hit.point;
         bouncePdf = next.pdf;
+        if (next.pdf > 0.0) {
+            chainPdf = sunChains ? next.pdf : 0.0;
+            chainDirection = next.direction;
+            chainNormal = hit.normal;
+        } else if (pathSmooth(b)) {
+            chainPdf = 0.0;  // sun light sampling stops at this surface
+        }
         if (next.lobe == LUXEL_PATH_LOBE_TRANSMISSION) {
             inside = true;
             cell = hit.voxel;
