@@ -32,8 +32,9 @@ Rgb reflectedLight(const VoxelWorld& world, const TextureSet* textures, const Ra
                 // Sky visibility has no light for the faces it meets: none for the followed one's.
                 const SolverLight behind{{},
                                          [&](const Ray& q, bool d) {
-                                             return reflectedLight(world, textures, q, d, depth + 1,
-                                                                   follow, shading, radius, rng);
+                                             return reflectedLight(world, textures, q, d && delta,
+                                                                   depth + 1, follow, shading,
+                                                                   radius, rng);
                                          },
                                          1,
                                          1};

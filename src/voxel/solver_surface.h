@@ -54,7 +54,9 @@ struct SolverLight {
     // The radiance arriving at the face along a ray leaving it (unit direction). `delta`: the ray
     // left a delta lobe (a mirror, a refraction), so where it escapes to the sky within the sun's
     // disk the disk counts (sunDiskAlong, solver_sun.h); a GGX direction leaves the disk to the
-    // sun's highlight.
+    // sun's highlight. A followed surface passes on `delta` only if its own ray came by delta
+    // lobes too: a GGX ray that then passes glass into the disk would count the highlight that
+    // the shaded face's sun rays (straight through glass) already counted.
     std::function<Rgb(const Ray&, bool delta)> radianceAlong;
     // Shadow rays over the sun's disk (its fixed spiral; one for a delta sun).
     int sunRays = kSunDiskRays;

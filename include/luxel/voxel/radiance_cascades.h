@@ -107,10 +107,11 @@ class RadianceCascades {
   private:
     friend class RadianceCascadesGpu;
     explicit RadianceCascades(std::unique_ptr<State> state);
-    // The radiance arriving along a ray leaving a face: the sky (and the sun's disk behind a
-    // delta lobe), glass or polished metal shaded with its material and followed while `depth`
-    // < kSolverFollowDepth (src/voxel/solver_surface.h), or the face met shaded Lambertian with
-    // its sun and indirectIrradiance. `rng` draws the followed faces' GGX directions.
+    // The radiance arriving along a ray leaving a face: the sky (and the sun's disk when every
+    // lobe since the camera's surface was a delta lobe), glass or polished metal shaded with its
+    // material and followed while `depth` < kSolverFollowDepth (src/voxel/solver_surface.h), or the
+    // face met shaded Lambertian with its sun and indirectIrradiance. `rng` draws the followed
+    // faces' GGX directions.
     Rgb reflectedLight(const Ray& r, bool delta, int depth, PathRng& rng) const;
     std::unique_ptr<State> state_;
 };

@@ -38,7 +38,8 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
         // reflects followed as for the camera's ray.
         const SolverLight behind{
             irradiance * kInvPi,
-            [&](const Ray& q, bool d) { return reflectedLight(q, d, depth + 1, rng); }, 1, 1};
+            [&](const Ray& q, bool d) { return reflectedLight(q, d && delta, depth + 1, rng); }, 1,
+            1};
         return shadeSolverSurface(world, state_->textures, s, r, shading, behind, rng);
     }
     // The face met, Lambertian: its emission, the sun its face's rays found when the cascades

@@ -88,7 +88,7 @@ void main() {
     } else if (s.hit.normal != ivec3(0)) {  // else the camera is inside a solid voxel
         uvec2 rng = pathRngKey(uvec2(path.seedLow, path.seedHigh), pixel, 0u);
         radiance = shadeSurface0(s, direction, indirectIrradiance(s.hit) * LUXEL_SOLVER_INV_PI,
-                                 int(path.sunRays), int(path.specularRays), rng);
+                                 int(path.sunRays), int(path.specularRays), true, rng);
     }
     picture[3u * pixel] = radiance.x;
     picture[3u * pixel + 1u] = radiance.y;

@@ -17,7 +17,8 @@ vec3 LUXEL_SOLVER_REFLECTED(vec3 origin, vec3 direction, bool delta, inout uvec2
     // Glass or polished metal: shaded with its material, what lies behind it or what it
     // reflects followed one level deeper.
     if (solverFollows(s)) {
-        return LUXEL_SOLVER_FOLLOW(s, direction, irradiance * LUXEL_SOLVER_INV_PI, 1, 1, rng);
+        return LUXEL_SOLVER_FOLLOW(s, direction, irradiance * LUXEL_SOLVER_INV_PI, 1, 1, delta,
+                                   rng);
     }
 #endif
     // The face met, Lambertian: its emission, the sun its face's rays found when the cascades

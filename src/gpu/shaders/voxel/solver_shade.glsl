@@ -4,7 +4,10 @@
 // the medium, and the mirror or GGX reflection of the surroundings (split sum). Included once
 // per level by cascades_picture.comp.glsl with
 //   LUXEL_SOLVER_SHADE     the function to define:
-//                          vec3 (hit, ray direction, E / pi, sun rays, specular rays, rng)
+//                          vec3 (hit, ray direction, E / pi, sun rays, specular rays,
+//                                arrivedDelta, rng); arrivedDelta: the ray met this surface
+//                                through delta lobes only (the camera's, a mirror's, glass's),
+//                                so its delta rays may show the sun's disk
 //   LUXEL_SOLVER_RADIANCE  the radiance along a ray leaving the surface (solver_reflected.glsl)
 // The rays leave in the CPU's order (the medium's exits, then the mirror or GGX directions) from
 // one call site, so the level below is inlined once, and the random numbers are drawn in the
@@ -16,7 +19,7 @@
 #endif
 
 vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, int sunRays,
-                        int specularRays, inout uvec2 rng) {
+                        int specularRays, bool arrivedDelta, inout uvec2 rng) {
     const PathSurface surface = pathSurfaceAt(s);
     const vec3 direction = normalize(rayDirection);
     const PathBsdf b = pathBsdfAt(surface, s.hit.normal, direction);
@@ -107,7 +110,7 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
                 delta = false;
             }
         }
-        const vec3 arriving = LUXEL_SOLVER_RADIANCE(rayOrigin, ray, delta, rng);
+        const vec3 arriving = LUXEL_SOLVER_RADIANCE(rayOrigin, ray, delta && arrivedDelta, rng);
         if (delta) {
             result += scale * arriving;
         } else {
