@@ -89,7 +89,7 @@ TEST_F(CliValues, FifosAndFoldersAreNotRead) {
     expectNotRegular("info " + path("scene.json"));
     expectNotRegular("compare " + fifo("a.png") + " " + fifo("b.png"));
     expectNotRegular("compare " + fifo("a.exr") + " " + path("a.png"));
-    expectNotRegular("info " + dir_.string(), "Is a directory");
+    expectNotRegular("info " + dir().string(), "Is a directory");
     std::filesystem::create_directory(path("folder.png"));
     expectNotRegular("compare " + path("folder.png") + " " + path("a.png"), "Is a directory");
 }

@@ -20,6 +20,7 @@
 #include "luxel/core/image_io.h"
 #include "luxel/voxel/vox_import.h"
 #include "support/run_command.h"
+#include "support/temp_dir.h"
 
 namespace luxel {
 namespace {
@@ -49,27 +50,19 @@ Image noise(int width, int height, int channels, unsigned seed) {
     return image;
 }
 
-class AtomicWrite : public ::testing::Test {
+class AtomicWrite : public test::TempDirTest {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("luxel_atomic_" + std::to_string(::getpid()) + "_" +
-                ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
+    // Unmounted here, before the test's folder is removed.
     void TearDown() override {
         if (mounted_) ::umount(small_.c_str());
-        fs::remove_all(dir_);
     }
     // A 64 KiB tmpfs, so a write fails with ENOSPC part way; skips where mounting is not allowed.
     bool mountSmallDisk() {
-        small_ = dir_ / "small";
+        small_ = dir() / "small";
         fs::create_directories(small_);
         mounted_ = ::mount("tmpfs", small_.c_str(), "tmpfs", 0, "size=64k") == 0;
         return mounted_;
     }
-    fs::path dir_;
     fs::path small_;
     bool mounted_ = false;
 };
@@ -106,7 +99,7 @@ TEST_F(AtomicWrite, FullDiskKeepsTheOldFileByteForByte) {
 }
 
 TEST_F(AtomicWrite, OverwritingLeavesOnlyTheNewContent) {
-    const fs::path png = dir_ / "a.png", exr = dir_ / "a.exr", vox = dir_ / "a.vox";
+    const fs::path png = dir() / "a.png", exr = dir() / "a.exr", vox = dir() / "a.vox";
     for (unsigned seed : {1u, 2u}) {
         const Image image = noise(16, 12, 4, seed);
         ASSERT_TRUE(writePng(png.string(), image, PngEncoding::Linear).ok());
@@ -122,12 +115,12 @@ TEST_F(AtomicWrite, OverwritingLeavesOnlyTheNewContent) {
     voxel::VoxelWorld world = voxel::VoxelWorld::create({4, 4, 4}, 4).value();
     ASSERT_TRUE(voxel::saveVox(world, vox.string()).ok());
     ASSERT_TRUE(voxel::saveVox(world, vox.string()).ok());
-    EXPECT_EQ(listing(dir_), (std::vector<std::string>{"a.exr", "a.png", "a.vox"}));
+    EXPECT_EQ(listing(dir()), (std::vector<std::string>{"a.exr", "a.png", "a.vox"}));
 }
 
 TEST_F(AtomicWrite, ImagesThatBelongTogetherChangeTogether) {
     if (!mountSmallDisk()) GTEST_SKIP() << "cannot mount a tmpfs here";
-    const fs::path out = dir_ / "render.exr", preview = small_ / "preview.png";
+    const fs::path out = dir() / "render.exr", preview = small_ / "preview.png";
     ASSERT_TRUE(writeExr(out.string(), noise(8, 8, 3, 5)).ok());
     const std::string oldOut = slurp(out);
     // The preview does not fit on the small disk, so the render must not change either.
@@ -137,13 +130,13 @@ TEST_F(AtomicWrite, ImagesThatBelongTogetherChangeTogether) {
     EXPECT_NE(s.error().message().find(preview.string()), std::string::npos);
     EXPECT_EQ(slurp(out), oldOut);
     EXPECT_FALSE(fs::exists(preview));
-    EXPECT_EQ(listing(dir_), (std::vector<std::string>{"render.exr", "small"}));
+    EXPECT_EQ(listing(dir()), (std::vector<std::string>{"render.exr", "small"}));
     EXPECT_TRUE(listing(small_).empty());
 }
 
 TEST_F(AtomicWrite, RenderCommandExitsOneAndKeepsBothFilesWhenThePreviewFails) {
     if (!mountSmallDisk()) GTEST_SKIP() << "cannot mount a tmpfs here";
-    const fs::path out = dir_ / "f.exr", preview = small_ / "f.png";
+    const fs::path out = dir() / "f.exr", preview = small_ / "f.png";
     ASSERT_TRUE(writeFileAtomically(out.string(), "old render", "test file").ok());
     // Fill the small disk so even a small preview cannot be written.
     {
@@ -160,13 +153,13 @@ TEST_F(AtomicWrite, RenderCommandExitsOneAndKeepsBothFilesWhenThePreviewFails) {
     EXPECT_EQ(run.output.find("wrote"), std::string::npos) << run.output;
     EXPECT_EQ(slurp(out), "old render");
     EXPECT_FALSE(fs::exists(preview));
-    EXPECT_EQ(listing(dir_), (std::vector<std::string>{"f.exr", "small"}));
+    EXPECT_EQ(listing(dir()), (std::vector<std::string>{"f.exr", "small"}));
 }
 
 // A process killed part way through a large write leaves the old or the complete new file.
 TEST_F(AtomicWrite, KilledWriterLeavesOldOrNewFileNeverPart) {
-    const fs::path target = dir_ / "big.exr", oldCopy = dir_ / "old.exr",
-                   newCopy = dir_ / "new.exr";
+    const fs::path target = dir() / "big.exr", oldCopy = dir() / "old.exr",
+                   newCopy = dir() / "new.exr";
     const Image newImage = noise(512, 512, 4, 8);
     ASSERT_TRUE(writeExr(oldCopy.string(), noise(64, 64, 4, 7)).ok());
     ASSERT_TRUE(writeExr(newCopy.string(), newImage).ok());
@@ -190,8 +183,8 @@ TEST_F(AtomicWrite, KilledWriterLeavesOldOrNewFileNeverPart) {
             << "after " << delayMs << " ms the target has " << bytes.size() << " bytes";
         (bytes == oldBytes ? sawOld : sawNew) += 1;
         // Only the killed writer's temporary may remain.
-        for (const std::string& name : listing(dir_)) {
-            if (name.find(".tmp-") != std::string::npos) fs::remove(dir_ / name);
+        for (const std::string& name : listing(dir())) {
+            if (name.find(".tmp-") != std::string::npos) fs::remove(dir() / name);
         }
     }
     EXPECT_EQ(sawOld + sawNew, 4);

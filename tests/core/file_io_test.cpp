@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
+#include <string>
+
+#include "support/temp_dir.h"
 
 namespace luxel {
 namespace {
@@ -14,18 +16,17 @@ TEST(FileIo, MissingAndOversizedFilesAreRefused) {
     ASSERT_FALSE(missing.ok());
     EXPECT_NE(missing.error().message().find("cannot open scene '/nonexistent/scene.json'"),
               std::string::npos);
-    const auto path = std::filesystem::temp_directory_path() / "luxel_file_io_big.json";
-    std::ofstream(path) << std::string(2 << 20, ' ');
-    auto big = readFileBytes(path.string(), "scene", 1 << 20);
-    std::filesystem::remove(path);
+    const test::TempDir tmp;
+    const std::string path = tmp.write("big.json", std::string(2 << 20, ' '));
+    auto big = readFileBytes(path, "scene", 1 << 20);
     ASSERT_FALSE(big.ok());
     EXPECT_NE(big.error().message().find("is too large (at most 1 MiB)"), std::string::npos);
 }
 
 TEST(FileIo, AtomicWritesReplaceWholeFilesAndLeaveNoTemporary) {
-    const auto dir = std::filesystem::temp_directory_path() / "luxel_file_io_atomic";
-    std::filesystem::create_directories(dir);
-    const std::string path = (dir / "out.bin").string();
+    const test::TempDir tmp;
+    const std::filesystem::path& dir = tmp.dir();
+    const std::string path = tmp.path("out.bin");
     ASSERT_TRUE(writeFileAtomically(path, "first", "test file").ok());
     ASSERT_TRUE(writeFileAtomically(path, std::string(100000, 'x'), "test file").ok());
     auto back = readFileBytes(path, "test file");
@@ -37,7 +38,6 @@ TEST(FileIo, AtomicWritesReplaceWholeFilesAndLeaveNoTemporary) {
     const Status s = writeFileAtomically((dir / "no" / "such" / "x").string(), "a", "test file");
     ASSERT_FALSE(s.ok());
     EXPECT_NE(s.error().message().find("cannot write test file"), std::string::npos);
-    std::filesystem::remove_all(dir);
 }
 
 }  // namespace

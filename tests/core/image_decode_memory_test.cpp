@@ -5,7 +5,6 @@
 
 #include <array>
 #include <cstdint>
-#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -13,11 +12,10 @@
 #include "luxel/core/image_io.h"
 #include "luxel/gi2d/scene2d_json.h"
 #include "support/memory_limit.h"
+#include "support/temp_dir.h"
 
 namespace luxel {
 namespace {
-
-namespace fs = std::filesystem;
 
 constexpr std::uint64_t kMiB = 1024 * 1024;
 
@@ -56,20 +54,7 @@ std::vector<unsigned char> truncatedPng(std::uint32_t width, std::uint32_t heigh
     return png;
 }
 
-class ImageDecodeMemory : public testing::Test {
-  protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("luxel_decode_memory_" +
-                std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-    fs::path dir_;
-};
+class ImageDecodeMemory : public test::TempDirTest {};
 
 TEST_F(ImageDecodeMemory, PngDeclaringMoreThanDeflateCanHoldIsRefusedUpFront) {
     const std::vector<unsigned char> bytes = truncatedPng(16384, 16384);

@@ -1,33 +1,20 @@
 // decodePng / decodeExr: the in-memory readers (used by the fuzz targets) give exactly what the
 // file readers give for the same bytes, and every bad buffer is an Error naming the source.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdint>
-#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <string>
 #include <vector>
 
 #include "luxel/core/image_io.h"
+#include "support/temp_dir.h"
 
 namespace luxel {
 namespace {
 
-namespace fs = std::filesystem;
-
-class ImageDecodeTest : public ::testing::Test {
-  protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("luxel_image_decode_" + std::to_string(::getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-    fs::path dir_;
-};
+class ImageDecodeTest : public test::TempDirTest {};
 
 std::vector<std::uint8_t> bytesOf(const std::string& file) {
     std::ifstream in(file, std::ios::binary);

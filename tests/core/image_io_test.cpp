@@ -2,7 +2,6 @@
 #include "luxel/core/image_io.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <cstdint>
@@ -16,6 +15,7 @@
 #include <vector>
 
 #include "luxel/core/tonemap.h"
+#include "support/temp_dir.h"
 
 namespace luxel {
 namespace {
@@ -81,30 +81,14 @@ const unsigned char kTooManyPixelsPng[] = {
 
 constexpr float kHalfStep = 0.5f / 255.0f;
 
-class ImageIoTest : public ::testing::Test {
+class ImageIoTest : public test::TempDirTest {
   protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("luxel_image_io_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
-    }
-
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
     std::string writeBytes(const std::string& name, const void* data, std::size_t size) const {
         const std::string file = path(name);
         std::ofstream out(file, std::ios::binary);
         out.write(static_cast<const char*>(data), static_cast<std::streamsize>(size));
         return file;
     }
-
-    fs::path dir_;
 };
 
 Image randomImage(int width, int height, int channels, float lo, float hi, unsigned seed) {

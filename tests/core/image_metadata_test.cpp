@@ -12,26 +12,14 @@
 #include <vector>
 
 #include "luxel/core/image_io.h"
+#include "support/temp_dir.h"
 
 namespace luxel {
 namespace {
 
 namespace fs = std::filesystem;
 
-class ImageMetadataTest : public testing::Test {
-  protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() /
-               ("luxel_metadata_" +
-                std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-    fs::path dir_;
-};
+class ImageMetadataTest : public test::TempDirTest {};
 
 Image gradient() {
     Image image(5, 3, 3);

@@ -9,7 +9,6 @@
 #include <ImfThreading.h>
 #include <gtest/gtest.h>
 #include <png.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -25,29 +24,14 @@
 #include "luxel/core/image_io.h"
 #include "luxel/core/image_rows.h"
 #include "luxel/core/tonemap.h"
+#include "support/temp_dir.h"
 
 namespace luxel {
 namespace {
 
 namespace fs = std::filesystem;
 
-class ImageStrips : public ::testing::Test {
-  protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() / ("luxel_image_strips_" + std::string(info->name()) +
-                                            "_" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override {
-        std::error_code ignored;
-        fs::remove_all(dir_, ignored);
-    }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
-
-    fs::path dir_;
-};
+class ImageStrips : public test::TempDirTest {};
 
 Image randomImage(int width, int height, int channels, unsigned seed) {
     std::mt19937 rng(seed);

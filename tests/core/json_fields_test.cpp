@@ -3,11 +3,11 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
+#include <string>
 
 #include "luxel/gi2d/scene2d_json.h"
 #include "luxel/voxel/voxel_scene.h"
+#include "support/temp_dir.h"
 
 namespace luxel::json {
 namespace {
@@ -57,11 +57,11 @@ TEST(JsonFields, BothSceneReadersUseTheSameWording) {
     ASSERT_FALSE(twoD.ok());
     EXPECT_NE(twoD.error().message().find("must be a whole number, got 10.5"), std::string::npos)
         << twoD.error().message();
-    const auto path = std::filesystem::temp_directory_path() / "luxel_json_fields_voxel.json";
-    std::ofstream(path) << R"({"type": "voxel", "world": {"source": "empty", "size": [8, 8, 8]},
-        "camera": {"position": [1, 2, 3]}, "render": {"reflections": 1.5}})";
-    auto voxel = voxel::loadVoxelScene(path.string());
-    std::filesystem::remove(path);
+    const test::TempDir tmp;
+    const std::string path = tmp.write(
+        "voxel.json", R"({"type": "voxel", "world": {"source": "empty", "size": [8, 8, 8]},
+        "camera": {"position": [1, 2, 3]}, "render": {"reflections": 1.5}})");
+    auto voxel = voxel::loadVoxelScene(path);
     ASSERT_FALSE(voxel.ok());
     EXPECT_NE(voxel.error().message().find("render.reflections: must be a whole number, got 1.5"),
               std::string::npos)

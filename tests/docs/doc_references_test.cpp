@@ -4,13 +4,12 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <string>
+
+#include "support/temp_dir.h"
 
 namespace luxel::docs {
 namespace {
-namespace fs = std::filesystem;
 
 std::string describe(const std::vector<ReferenceProblem>& problems) {
     std::string s;
@@ -20,28 +19,6 @@ std::string describe(const std::vector<ReferenceProblem>& problems) {
     return s;
 }
 
-// A throw-away source tree for checking the checker.
-class ScratchTree {
-  public:
-    ScratchTree() {
-        root_ =
-            fs::temp_directory_path() /
-            ("luxel_doc_refs_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-             "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(root_);
-        fs::create_directories(root_);
-    }
-    ~ScratchTree() { fs::remove_all(root_); }
-    void write(const std::string& rel, const std::string& text) const {
-        fs::create_directories((root_ / rel).parent_path());
-        std::ofstream(root_ / rel) << text;
-    }
-    const fs::path& root() const { return root_; }
-
-  private:
-    fs::path root_;
-};
-
 TEST(DocReferences, NumberedHeadingsAreSections) {
     const auto sections =
         numberedSections("# Title\n## 1. Model\ntext\n### 6.2 Read-out\n## Notes\n#### 10 Deep\n");
@@ -49,7 +26,7 @@ TEST(DocReferences, NumberedHeadingsAreSections) {
 }
 
 TEST(DocReferences, CheckerFindsMissingFilesAndSections) {
-    ScratchTree tree;
+    const test::TempDir tree;  // a throw-away source tree for checking the checker
     tree.write("docs/algorithms/cones.md", "# Cones\n## 1. Model\n## 5. Merge\n### 6.2 Read-out\n");
     tree.write("docs/guide.md", "See [the model](algorithms/cones.md) and [gone](missing.md).\n");
     tree.write("src/a.cpp",
@@ -58,7 +35,7 @@ TEST(DocReferences, CheckerFindsMissingFilesAndSections) {
                "// cones.md §1 names no folder\n"
                "// see src/b.cpp and tests/gone_test.cpp\n");
     tree.write("src/b.cpp", "// docs/algorithms/cones.md §1-5, §6.2\n");
-    const auto problems = findDanglingReferences(tree.root());
+    const auto problems = findDanglingReferences(tree.dir());
     ASSERT_EQ(problems.size(), 4u) << describe(problems);
     EXPECT_EQ(problems[0].file, "docs/guide.md");
     EXPECT_NE(problems[0].message.find("missing.md"), std::string::npos);
@@ -71,14 +48,14 @@ TEST(DocReferences, CheckerFindsMissingFilesAndSections) {
 }
 
 TEST(DocReferences, CheckerTellsPrototypeWordingFromRandomSeeds) {
-    ScratchTree tree;
+    const test::TempDir tree;  // a throw-away source tree for checking the checker
     tree.write("src/a.cpp",
                "// the seed's controls\n"
                "// as in the vanilla RC seed\n"
                "// PCG32 seeded from (seed, x, y); --seed S; a new seed per pass\n"
                "// ReflectionMode::SeedRunningAverage\n"
                "// options.seed = 3; the RMSE between two seeds\n");
-    const auto problems = findUndefinedSeedWording(tree.root());
+    const auto problems = findUndefinedSeedWording(tree.dir());
     ASSERT_EQ(problems.size(), 3u) << describe(problems);
     EXPECT_EQ(problems[0].line, 1);
     EXPECT_EQ(problems[1].line, 2);

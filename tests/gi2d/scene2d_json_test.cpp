@@ -3,7 +3,6 @@
 #include "luxel/gi2d/scene2d_json.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -12,6 +11,7 @@
 
 #include "core/json_source_map.h"
 #include "luxel/core/image_io.h"
+#include "support/temp_dir.h"
 
 namespace luxel::gi2d {
 namespace {
@@ -446,28 +446,9 @@ TEST(Scene2DJsonErrors, ImageLayerFields) {
 
 // ---- Files and images -----------------------------------------------------------------------
 
-// A fresh folder under the system temporary directory, removed afterwards.
-class Scene2DFiles : public ::testing::Test {
+// A fresh folder per test (TempDirTest) for scene files and their pictures.
+class Scene2DFiles : public test::TempDirTest {
   protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        dir_ = fs::temp_directory_path() /
-               ("luxel_scene2d_" + std::to_string(::getpid()) + "_" + info->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(dir_, ec);
-    }
-
-    std::string write(const std::string& name, std::string_view content) {
-        const fs::path path = dir_ / name;
-        fs::create_directories(path.parent_path());
-        std::ofstream(path, std::ios::binary) << content;
-        return path.string();
-    }
-
     // A 2x1 RGBA picture: opaque red, then half-transparent grey.
     std::string writeTestPng(const std::string& name) {
         Image image(2, 1, 4);
@@ -475,18 +456,16 @@ class Scene2DFiles : public ::testing::Test {
         image.at(0, 0, 3) = 1.0f;
         image.setRgb(1, 0, Rgb(0.5f));
         image.at(1, 0, 3) = 0.5f;
-        const fs::path path = dir_ / name;
+        const fs::path path = dir() / name;
         fs::create_directories(path.parent_path());
         const Status status = writePng(path.string(), image, PngEncoding::Srgb);
         EXPECT_TRUE(status.ok()) << status.error().message();
         return path.string();
     }
-
-    fs::path dir_;
 };
 
 TEST_F(Scene2DFiles, MissingFile) {
-    const std::string path = (dir_ / "nope.json").string();
+    const std::string path = (dir() / "nope.json").string();
     const Result<Scene2D> scene = loadScene2D(path);
     ASSERT_FALSE(scene.ok());
     EXPECT_EQ(scene.error().message(),
@@ -494,7 +473,7 @@ TEST_F(Scene2DFiles, MissingFile) {
 }
 
 TEST_F(Scene2DFiles, DirectoryIsNotAScene) {
-    const Result<Scene2D> scene = loadScene2D(dir_.string());
+    const Result<Scene2D> scene = loadScene2D(dir().string());
     ASSERT_FALSE(scene.ok());
     EXPECT_NE(scene.error().message().find("Is a directory"), std::string::npos)
         << scene.error().message();
@@ -565,16 +544,16 @@ TEST_F(Scene2DFiles, MissingOrCorruptImageNamesFieldAndPath) {
     write("broken.png", "this is not a png");
     const std::string head = "{\"canvas\": [10, 10], \"shapes\": [\n  {\"type\": \"image\",\n";
     Result<Scene2D> missing =
-        parseScene2D(head + "   \"emission\": \"missing.png\"}]}", "s.json", dir_.string());
+        parseScene2D(head + "   \"emission\": \"missing.png\"}]}", "s.json", dir().string());
     ASSERT_FALSE(missing.ok());
     const std::string& m1 = missing.error().message();
     EXPECT_EQ(m1.rfind("s.json:3:16: shapes[0].emission: cannot load image 'missing.png'", 0), 0u)
         << m1;
-    EXPECT_NE(m1.find((dir_ / "missing.png").string()), std::string::npos) << m1;
+    EXPECT_NE(m1.find((dir() / "missing.png").string()), std::string::npos) << m1;
     EXPECT_NE(m1.find("No such file or directory"), std::string::npos) << m1;
 
     Result<Scene2D> corrupt =
-        parseScene2D(head + "   \"absorption\": \"broken.png\"}]}", "s.json", dir_.string());
+        parseScene2D(head + "   \"absorption\": \"broken.png\"}]}", "s.json", dir().string());
     ASSERT_FALSE(corrupt.ok());
     const std::string& m2 = corrupt.error().message();
     EXPECT_EQ(m2.rfind("s.json:3:18: shapes[0].absorption: cannot load image 'broken.png'", 0), 0u)
@@ -683,10 +662,10 @@ TEST_F(Scene2DFiles, ImageLayerRoundTrip) {
          "position": [-2, 1.5], "size": [4, 2], "absorption_scale": 8, "intensity": 0.25},
         {"type": "image", "emission": "glow.png"}
     ]})";
-    const Result<Scene2D> scene = parseScene2D(text, "img.json", dir_.string());
+    const Result<Scene2D> scene = parseScene2D(text, "img.json", dir().string());
     ASSERT_TRUE(scene.ok()) << scene.error().message();
     const std::string written = sceneToJson(*scene);
-    const Result<Scene2D> back = parseScene2D(written, "img.json", dir_.string());
+    const Result<Scene2D> back = parseScene2D(written, "img.json", dir().string());
     ASSERT_TRUE(back.ok()) << back.error().message() << "\n" << written;
     expectSameScene(*scene, *back);
     EXPECT_NE(written.find("\"emission\": \"glow.png\""), std::string::npos) << written;

@@ -7,6 +7,7 @@
 #include "luxel/core/file_io.h"
 #include "luxel/octree/octree_build.h"
 #include "luxel/octree/octree_file.h"
+#include "support/temp_dir.h"
 
 namespace luxel::octree {
 namespace {
@@ -24,10 +25,10 @@ Octree sampleTree(bool colours) {
 }
 
 TEST(OctreeFile, RoundTripsWithAndWithoutColours) {
-    const std::string dir = ::testing::TempDir();
+    const test::TempDir tmp;
     for (bool colours : {false, true}) {
         const Octree tree = sampleTree(colours);
-        const std::string path = dir + "/round" + (colours ? "c" : "") + ".lxo";
+        const std::string path = tmp.path(std::string("round") + (colours ? "c" : "") + ".lxo");
         ASSERT_TRUE(writeOctreeFile(path, tree).ok());
         EXPECT_FALSE(std::filesystem::exists(path + ".tmp-" + std::to_string(::getpid())));
         auto back = readOctreeFile(path);
@@ -96,7 +97,8 @@ TEST(OctreeFile, MissingFilesAndUnwritableFoldersAreErrors) {
 }
 
 TEST(OctreeFile, AFailedWriteLeavesTheOldFile) {
-    const std::string path = ::testing::TempDir() + "/keep.lxo";
+    const test::TempDir tmp;
+    const std::string path = tmp.path("keep.lxo");
     ASSERT_TRUE(writeOctreeFile(path, sampleTree(false)).ok());
     Octree broken;
     broken.nodes = {300, 0, 0, 0, 0, 0, 0, 0};

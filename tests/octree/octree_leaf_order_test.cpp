@@ -18,6 +18,7 @@
 #include "luxel/octree/octree_validate.h"
 #include "luxel/voxel/generators.h"
 #include "support/gpu_test_context.h"
+#include "support/temp_dir.h"
 
 namespace luxel::octree {
 namespace {
@@ -178,7 +179,8 @@ TEST(OctreeLeafOrder, AnEditInsideAWideLeafSplicesItsColours) {
 
 TEST(OctreeLeafOrder, FilesRoundTripAndVersionOneStillReads) {
     const Octree tree = *buildOctree(jitteredVolume({24, 20, 30}, 5), kLeafOrder);
-    const std::string path = ::testing::TempDir() + "/leaf_order.lxo";
+    const test::TempDir tmp;
+    const std::string path = tmp.path("leaf_order.lxo");
     ASSERT_TRUE(writeOctreeFile(path, tree).ok());
     auto back = readOctreeFile(path);
     ASSERT_TRUE(back.ok()) << back.error().message();

@@ -18,6 +18,7 @@
 #include "luxel/octree/octree_build.h"
 #include "luxel/octree/octree_vdb.h"
 #include "octree_vdb/vdb_source.h"
+#include "support/temp_dir.h"
 
 namespace luxel::octree {
 namespace {
@@ -27,13 +28,10 @@ using openvdb::Coord;
 using openvdb::CoordBBox;
 using openvdb::FloatGrid;
 
-std::string tempPath(const std::string& name) {
-    return (fs::path(::testing::TempDir()) / ("luxel_vdb_" + name)).string();
-}
-
-std::string writeGrids(const std::string& name, const openvdb::GridPtrVec& grids) {
+std::string writeGrids(const test::TempDir& tmp, const std::string& name,
+                       const openvdb::GridPtrVec& grids) {
     openvdb::initialize();
-    const std::string path = tempPath(name);
+    const std::string path = tmp.path(name);
     openvdb::io::File(path).write(grids);
     return path;
 }
@@ -81,13 +79,14 @@ FloatGrid::Ptr fogSphere() {
 }
 
 TEST(OctreeVdb, FogSphereImportsVoxelByVoxel) {
+    const test::TempDir tmp;
     const auto fog = fogSphere();
     ASSERT_EQ(fog->getGridClass(), openvdb::GRID_FOG_VOLUME);
     auto vector = openvdb::Vec3SGrid::create();
     vector->setName("velocity");
     vector->tree().setValueOn(Coord(1, 2, 3), openvdb::Vec3s(1, 0, 0));
     // A vec3s grid first: the default is the first float grid, not the first grid.
-    const std::string path = writeGrids("fog.vdb", {vector, fog});
+    const std::string path = writeGrids(tmp, "fog.vdb", {vector, fog});
     auto tree = importVdb(path);
     ASSERT_TRUE(tree.ok()) << tree.error().message();
     EXPECT_FALSE(tree->hasColours());
@@ -101,6 +100,7 @@ TEST(OctreeVdb, FogSphereImportsVoxelByVoxel) {
 }
 
 TEST(OctreeVdb, SparseGridWithActiveTilesImportsWithoutVisitingThem) {
+    const test::TempDir tmp;
     auto grid = FloatGrid::create(0.0f);
     grid->setName("sparse");
     auto& t = grid->tree();
@@ -109,7 +109,7 @@ TEST(OctreeVdb, SparseGridWithActiveTilesImportsWithoutVisitingThem) {
     t.setValueOn(Coord(135, 100, 3), 1.0f);
     t.setValueOn(Coord(-5, 127, 40), 0.6f);  // unaligned lowest corner
     t.setValueOn(Coord(64, 64, 64), 0.8f);   // a leaf inside the big tile
-    const std::string path = writeGrids("sparse.vdb", {grid});
+    const std::string path = writeGrids(tmp, "sparse.vdb", {grid});
     auto tree = importVdb(path, {.grid = "sparse"});
     ASSERT_TRUE(tree.ok()) << tree.error().message();
     EXPECT_EQ(tree->size, Int3(141, 128, 128));
@@ -121,7 +121,7 @@ TEST(OctreeVdb, SparseGridWithActiveTilesImportsWithoutVisitingThem) {
     auto huge = FloatGrid::create(0.0f);
     huge->tree().addTile(3, Coord(0, 0, 0), 1.0f, true);  // a 4096^3 root tile
     huge->tree().setValueOn(Coord(5000, 17, 3), 0.5f);
-    tree = importVdb(writeGrids("huge.vdb", {huge}));
+    tree = importVdb(writeGrids(tmp, "huge.vdb", {huge}));
     ASSERT_TRUE(tree.ok()) << tree.error().message();
     EXPECT_EQ(tree->depth, 13);
     EXPECT_EQ(tree->size, Int3(5001, 4096, 4096));
@@ -185,10 +185,11 @@ TEST(OctreeVdb, UniformBlocksMatchTheVoxels) {
 }
 
 TEST(OctreeVdb, LevelSetInteriorIsOpaque) {
+    const test::TempDir tmp;
     auto sphere =
         openvdb::tools::createLevelSetSphere<FloatGrid>(12.0f, {0.5f, 0.0f, 0.0f}, 1.0f, 3.0f);
     sphere->setName("surface");
-    auto tree = importVdb(writeGrids("levelset.vdb", {sphere}));
+    auto tree = importVdb(writeGrids(tmp, "levelset.vdb", {sphere}));
     ASSERT_TRUE(tree.ok()) << tree.error().message();
     expectVoxelByVoxel(*tree, *sphere, [](float v) -> std::uint8_t { return v < 0 ? 255 : 0; });
     // The interior is inactive tiles and voxels: opaque all the same. Voxel centres within
@@ -198,6 +199,7 @@ TEST(OctreeVdb, LevelSetInteriorIsOpaque) {
 }
 
 TEST(OctreeVdb, RoundTripIsExact) {
+    const test::TempDir tmp;
     // Every opacity 0..255, an empty border inside the content box, and uniform 8^3 cubes.
     Volume volume = *Volume::create({37, 20, 9}, false);
     for (int z = 0; z < 9; ++z)
@@ -207,7 +209,7 @@ TEST(OctreeVdb, RoundTripIsExact) {
                 volume.set(x, y, z, static_cast<std::uint8_t>(v), Colour{});
             }
     const Octree tree = *buildOctree(volume, {.colours = false});
-    const std::string path = tempPath("round.vdb");
+    const std::string path = tmp.path("round.vdb");
     ASSERT_TRUE(exportVdb(tree, path).ok());
     EXPECT_FALSE(fs::exists(path + ".tmp-" + std::to_string(::getpid())));
 
@@ -240,10 +242,11 @@ void expectError(const Result<Octree>& r, const std::string& path, const std::st
 }
 
 TEST(OctreeVdb, BadInputIsAnErrorNamingTheFile) {
-    const std::string missing = tempPath("nowhere.vdb");
+    const test::TempDir tmp;
+    const std::string missing = tmp.path("nowhere.vdb");
     expectError(importVdb(missing), missing, "cannot read OpenVDB file");
 
-    const std::string junk = tempPath("junk.vdb");
+    const std::string junk = tmp.path("junk.vdb");
     {
         std::mt19937 rng(3);
         std::ofstream out(junk, std::ios::binary);
@@ -254,34 +257,34 @@ TEST(OctreeVdb, BadInputIsAnErrorNamingTheFile) {
     auto ints = openvdb::Int32Grid::create(0);
     ints->setName("labels");
     ints->tree().setValueOn(Coord(0, 0, 0), 3);
-    const std::string noFloat = writeGrids("ints.vdb", {ints});
+    const std::string noFloat = writeGrids(tmp, "ints.vdb", {ints});
     expectError(importVdb(noFloat), noFloat, "no float grid (the file holds labels (int32))");
     expectError(importVdb(noFloat, {.grid = "labels"}), noFloat, "holds int32 values");
 
-    const std::string fog = writeGrids("fog_named.vdb", {fogSphere()});
+    const std::string fog = writeGrids(tmp, "fog_named.vdb", {fogSphere()});
     expectError(importVdb(fog, {.grid = "density"}), fog, "no grid named 'density'");
     expectError(importVdb(fog, {.grid = "", .max = -1}), fog, "max must be a positive number");
 
     auto wide = FloatGrid::create(0.0f);
     wide->tree().setValueOn(Coord(-10, 0, 0), 1.0f);
     wide->tree().setValueOn(Coord(70000, 0, 0), 1.0f);
-    const std::string widePath = writeGrids("wide.vdb", {wide});
+    const std::string widePath = writeGrids(tmp, "wide.vdb", {wide});
     expectError(importVdb(widePath), widePath, "spans 70011 voxels along x");
 
     auto empty = FloatGrid::create(0.0f);
-    const std::string emptyPath = writeGrids("empty.vdb", {empty});
+    const std::string emptyPath = writeGrids(tmp, "empty.vdb", {empty});
     expectError(importVdb(emptyPath), emptyPath, "has no active voxels");
 
     Octree tree;
     tree.nodes.assign(8, 0);
-    const Status unnamed = exportVdb(tree, tempPath("x.vdb"), {.grid = ""});
+    const Status unnamed = exportVdb(tree, tmp.path("x.vdb"), {.grid = ""});
     ASSERT_FALSE(unnamed.ok());
     EXPECT_NE(unnamed.error().message().find("grid name must not be empty"), std::string::npos);
     tree.nodes[3] = 300;  // a branch past the end
-    const Status invalid = exportVdb(tree, tempPath("x.vdb"));
+    const Status invalid = exportVdb(tree, tmp.path("x.vdb"));
     ASSERT_FALSE(invalid.ok());
-    EXPECT_EQ(invalid.error().message().rfind(tempPath("x.vdb") + ": ", 0), 0u);
-    EXPECT_FALSE(fs::exists(tempPath("x.vdb")));
+    EXPECT_EQ(invalid.error().message().rfind(tmp.path("x.vdb") + ": ", 0), 0u);
+    EXPECT_FALSE(fs::exists(tmp.path("x.vdb")));
 }
 
 }  // namespace

@@ -1,10 +1,11 @@
 // `luxel render` post flags and `luxel upscale`: sizes, overrides and clear errors.
 #include <gtest/gtest.h>
 
-#include <filesystem>
+#include <string>
 
 #include "luxel/core/image_io.h"
 #include "support/run_command.h"
+#include "support/temp_dir.h"
 
 namespace luxel {
 namespace {
@@ -17,7 +18,8 @@ std::string scene(const char* name) {
 }
 
 TEST(PostCli, InternalScaleRendersSmallerAndUpscalesToTheRequestedSize) {
-    const auto out = (std::filesystem::temp_directory_path() / "luxel_post_cli.exr").string();
+    const test::TempDir tmp;
+    const std::string out = tmp.path("post_cli.exr");
     const auto r = test::runCommand(cli() + "render " + scene("voxel/garden.json") +
                                     " --size 64x36 --internal-scale 0.5 --upscaler bilinear "
                                     "--bloom 0.2 --backend cpu --out " +

@@ -1,24 +1,24 @@
 // The "post" section of voxel scene files: values reach PostOptions, mistakes name the field.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
+#include <string>
 
 #include "luxel/voxel/voxel_scene.h"
+#include "support/temp_dir.h"
 
 namespace luxel::post {
 namespace {
 
-std::string sceneWithPost(const std::string& name, const std::string& post) {
-    const auto path = std::filesystem::temp_directory_path() / ("luxel_post_scene_" + name);
-    std::ofstream(path) << R"({"type": "voxel", "world": {"source": "empty", "size": [8, 8, 8]},
+std::string sceneWithPost(const test::TempDir& tmp, const std::string& name,
+                          const std::string& post) {
+    return tmp.write(name, R"({"type": "voxel", "world": {"source": "empty", "size": [8, 8, 8]},
         "camera": {"position": [4, 4, -8], "look_at": [4, 4, 4], "size": [16, 8]},
-        "post": )" + post + "}";
-    return path.string();
+        "post": )" + post + "}");
 }
 
 TEST(PostScene, ReadsEveryField) {
-    auto scene = voxel::loadVoxelScene(sceneWithPost("ok.json", R"({
+    const test::TempDir tmp;
+    auto scene = voxel::loadVoxelScene(sceneWithPost(tmp, "ok.json", R"({
         "bloom": {"strength": 0.2, "levels": 4, "karis": true}, "exposure": -1.5,
         "tone": "reinhard", "internal_scale": 0.5, "upscaler": "bilinear", "sharpness": 0.3})"));
     ASSERT_TRUE(scene.ok()) << scene.error().message();
@@ -42,6 +42,7 @@ TEST(PostScene, DefaultsWithoutTheSection) {
 }
 
 TEST(PostScene, MistakesNameTheField) {
+    const test::TempDir tmp;
     const std::pair<const char*, const char*> cases[] = {
         {R"({"blooom": {}})", "unknown field 'blooom'"},
         {R"({"bloom": {"strength": 2}})", "post.bloom.strength: must be in 0..1"},
@@ -55,7 +56,7 @@ TEST(PostScene, MistakesNameTheField) {
     };
     int i = 0;
     for (auto [post, expected] : cases) {
-        const std::string path = sceneWithPost("bad" + std::to_string(i++) + ".json", post);
+        const std::string path = sceneWithPost(tmp, "bad" + std::to_string(i++) + ".json", post);
         auto scene = voxel::loadVoxelScene(path);
         ASSERT_FALSE(scene.ok()) << post;
         EXPECT_NE(scene.error().message().find(expected), std::string::npos)

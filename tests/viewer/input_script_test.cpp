@@ -7,6 +7,7 @@
 
 #include "input_script.h"
 #include "script_player.h"
+#include "support/temp_dir.h"
 
 namespace luxel::viewer {
 namespace {
@@ -115,25 +116,19 @@ TEST(InputScript, TheLongestWaitIsAccepted) {
 }
 
 TEST(InputScript, ADirectoryIsNotAScript) {
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / "luxel_InputScript_ADirectoryIsNotAScript";
-    std::filesystem::create_directories(dir);
+    const test::TempDir tmp;
+    const std::filesystem::path& dir = tmp.dir();
     auto script = loadScript(dir.string(), anyKey);
-    std::filesystem::remove_all(dir);
     ASSERT_FALSE(script);
     EXPECT_NE(script.error().message().find(dir.string() + "': Is a directory"), std::string::npos)
         << script.error().message();
 }
 
 TEST(InputScript, AFifoIsRefusedWithoutBlocking) {
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / "luxel_InputScript_AFifoIsRefusedWithoutBlocking";
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
-    const std::string fifo = (dir / "script.fifo").string();
+    const test::TempDir tmp;
+    const std::string fifo = tmp.path("script.fifo");
     ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
     auto script = loadScript(fifo, anyKey);  // opening a FIFO for reading would wait for a writer
-    std::filesystem::remove_all(dir);
     ASSERT_FALSE(script);
     EXPECT_NE(script.error().message().find("not a regular file"), std::string::npos)
         << script.error().message();

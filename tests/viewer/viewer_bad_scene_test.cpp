@@ -3,25 +3,21 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
-#include <fstream>
 #include <string>
 
 #include "support/run_command.h"
+#include "support/temp_dir.h"
 
 namespace {
 
 TEST(ViewerBadScene, DeeplyNestedSceneIsOneLineError) {
-    const std::filesystem::path scene =
-        std::filesystem::path(testing::TempDir()) / "viewer_deep_scene.json";
-    {
-        const int n = 90000;
-        std::ofstream out(scene);
-        out << "{\"canvas\": " << std::string(n, '[') << std::string(n, ']') << "}";
-    }
+    const luxel::test::TempDir tmp;
+    const int n = 90000;
+    const std::string scene =
+        tmp.write("viewer_deep_scene.json",
+                  "{\"canvas\": " + std::string(n, '[') + std::string(n, ']') + "}");
     const luxel::test::RunResult r = luxel::test::runCommand(
-        "DISPLAY= timeout 60 " + std::string(LUXEL_VIEW_PATH) + " " + scene.string());
-    std::filesystem::remove(scene);
+        "DISPLAY= timeout 60 " + std::string(LUXEL_VIEW_PATH) + " " + scene);
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("viewer_deep_scene.json:1:267: invalid JSON: nesting deeper than 256 "
                             "levels"),

@@ -7,6 +7,7 @@
 
 #include "luxel/voxel/vox_import.h"
 #include "luxel/voxel/vox_scene.h"
+#include "support/temp_dir.h"
 #include "viewer_xvfb.h"
 #include "voxel_controls.h"
 
@@ -21,7 +22,8 @@ const std::string kSample = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/sampl
 TEST(VoxelSaver, MirrorsEditsAndWritesAVoxTheLoaderReads) {
     auto scene = luxel::voxel::loadVoxScene(kSample, {64, 36});
     ASSERT_TRUE(scene.ok()) << scene.error().message();
-    const fs::path out = fs::temp_directory_path() / "luxel_voxel_saver_test.vox";
+    const luxel::test::TempDir tmp;
+    const fs::path out = tmp.dir() / "saver.vox";
     luxel::viewer::VoxelSaver saver(scene->world, scene->shading.materials, out.string());
     luxel::viewer::VoxelEdit edit;
     edit.ray = scene->camera.primaryRay(32, 18);
@@ -32,7 +34,6 @@ TEST(VoxelSaver, MirrorsEditsAndWritesAVoxTheLoaderReads) {
     ASSERT_TRUE(saver.save()) << saver.status();
     EXPECT_EQ(saver.status().rfind("saved ", 0), 0u) << saver.status();
     auto loaded = luxel::voxel::loadVox(out.string());
-    fs::remove(out);
     ASSERT_TRUE(loaded.ok()) << loaded.error().message();
     EXPECT_TRUE(*loaded == expected);
     EXPECT_EQ(loaded->solidCount() + 1, scene->world.solidCount());

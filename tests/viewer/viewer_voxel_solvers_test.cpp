@@ -49,7 +49,7 @@ class ViewerVoxelSolvers : public ViewerXvfb {
         return text.empty() ? -1 : std::atoi(text.c_str());
     }
     RunResult cli(const std::string& args) {
-        return run("cd '" + dir_.string() + "' && " + LUXEL_CLI_PATH + " render " + args);
+        return run("cd '" + dir().string() + "' && " + LUXEL_CLI_PATH + " render " + args);
     }
 };
 

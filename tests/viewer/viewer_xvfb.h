@@ -9,11 +9,12 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
+#include <iostream>
 #include <string>
 
 #include "luxel/core/image_io.h"
 #include "support/run_command.h"
+#include "support/temp_dir.h"
 
 namespace luxel::test {
 
@@ -68,35 +69,28 @@ inline double meanAbsDiff(const Image& a, const Image& b) {
     return sum / static_cast<double>(a.size());
 }
 
-class ViewerXvfb : public testing::Test {
+class ViewerXvfb : public TempDirTest {
   protected:
     void SetUp() override {
         ASSERT_EQ(run("command -v xvfb-run").exitCode, 0)
             << "xvfb-run is missing: install the Debian package xvfb (deps/debian-packages.txt, "
                "scripts/setup.sh); the viewer tests need a virtual display";
-        dir_ = fs::temp_directory_path() /
-               ("luxel_view_" + std::to_string(getpid()) + "_" +
-                testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
     }
-    // Screenshots stay for a look when a test fails or LUXEL_KEEP_VIEW_OUTPUT is set.
+    // Screenshots stay for a look when a test fails or LUXEL_KEEP_VIEW_OUTPUT is set; an empty
+    // folder (the viewer never ran) goes.
     void TearDown() override {
-        if (!HasFailure() && !std::getenv("LUXEL_KEEP_VIEW_OUTPUT")) fs::remove_all(dir_);
+        if ((HasFailure() || std::getenv("LUXEL_KEEP_VIEW_OUTPUT")) && !fs::is_empty(dir())) {
+            tempDir().keep();
+            std::cout << "luxel-view output kept in " << dir().string() << "\n";
+        }
     }
-
-    std::string write(const std::string& name, const std::string& text) {
-        std::ofstream(dir_ / name) << text;
-        return (dir_ / name).string();
-    }
-    std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
     // Runs the viewer on a private virtual display, from the test's folder.
     RunResult view(const std::string& args) {
         // Distinct starting display numbers keep parallel tests from racing for one server.
         static int serial = 0;
         const int server = 100 + (getpid() % 400) * 4 + (serial++ % 4);
-        const std::string command = "cd '" + dir_.string() + "' && SDL_RENDER_DRIVER=software " +
+        const std::string command = "cd '" + dir().string() + "' && SDL_RENDER_DRIVER=software " +
                                     kViewerSanitizerOptions + "timeout 120 xvfb-run -a -n " +
                                     std::to_string(server) + " -s '-screen 0 1024x768x24' " +
                                     LUXEL_VIEW_PATH + " " + args;
@@ -108,8 +102,6 @@ class ViewerXvfb : public testing::Test {
         EXPECT_TRUE(image) << (image ? "" : image.error().message());
         return image ? *image : Image(1, 1, 3);
     }
-
-    fs::path dir_;
 };
 
 }  // namespace luxel::test

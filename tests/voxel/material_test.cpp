@@ -4,19 +4,13 @@
 
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
+#include <string>
 
 #include "luxel/voxel/voxel_scene.h"
+#include "support/temp_dir.h"
 
 namespace luxel::voxel {
 namespace {
-
-std::string writeScene(const std::string& name, const std::string& text) {
-    const auto path = std::filesystem::temp_directory_path() / ("luxel_material_" + name);
-    std::ofstream(path) << text;
-    return path.string();
-}
 
 TEST(Material, DefaultIsARoughDielectric) {
     const Material m = defaultMaterial();
@@ -73,8 +67,9 @@ TEST(Material, TableFallsBackToThePlainMaterial) {
 }
 
 TEST(Material, SceneMaterialsReachShapesRulesTexturesAndPlainBlocks) {
+    const test::TempDir tmp;
     const std::string textureDir = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/textures/";
-    const std::string path = writeScene("scene.json", R"({"type": "voxel",
+    const std::string path = tmp.write("scene.json", R"({"type": "voxel",
         "materials": [
             {"name": "glass", "ior": 1.5, "transmission": 1, "roughness": 0.02,
              "absorption": [0.2, 0.05, 0.1]},
@@ -83,7 +78,7 @@ TEST(Material, SceneMaterialsReachShapesRulesTexturesAndPlainBlocks) {
             {"name": "leafy", "roughness": 0.6}
         ],
         "textures": [{"name": "grass", "file": ")" + textureDir +
-                                                          R"(grass.png", "material": "leafy"}],
+                                                         R"(grass.png", "material": "leafy"}],
         "world": {"source": "random", "density": 0.05, "color": [100, 100, 100],
                   "size": [16, 16, 16],
                   "shapes": [
@@ -141,6 +136,7 @@ TEST(Material, SceneMaterialsReachShapesRulesTexturesAndPlainBlocks) {
 }
 
 TEST(Material, BadSceneMaterialsAreLocated) {
+    const test::TempDir tmp;
     struct Case {
         const char* text;
         const char* expected;
@@ -184,7 +180,7 @@ TEST(Material, BadSceneMaterialsAreLocated) {
     };
     int i = 0;
     for (const Case& c : cases) {
-        auto scene = loadVoxelScene(writeScene("bad" + std::to_string(i++) + ".json", c.text));
+        auto scene = loadVoxelScene(tmp.write("bad" + std::to_string(i++) + ".json", c.text));
         ASSERT_FALSE(scene.ok()) << c.expected;
         EXPECT_NE(scene.error().message().find(c.expected), std::string::npos)
             << scene.error().message();

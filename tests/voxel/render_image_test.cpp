@@ -2,9 +2,8 @@
 // determinism across thread counts.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <set>
+#include <string>
 
 #include "gpu/shaders/shared/pixel_samples.h"
 #include "luxel/core/parallel.h"
@@ -12,6 +11,7 @@
 #include "luxel/voxel/generators.h"
 #include "luxel/voxel/render_image.h"
 #include "luxel/voxel/voxel_scene.h"
+#include "support/temp_dir.h"
 
 namespace luxel::voxel {
 namespace {
@@ -99,23 +99,23 @@ TEST(RenderImage, PrimaryConeSpreadsByOnePixel) {
     EXPECT_NEAR(length(a.direction - b.direction), cone.spread, 1e-3);
 }
 
-// A scene with `extra` fields and a bricks texture with `textureExtra`, from a temporary file.
-Result<VoxelScene> sceneWith(const std::string& name, const std::string& textureExtra,
-                             const std::string& extra) {
+// A scene with `extra` fields and a bricks texture with `textureExtra`, from a file in `tmp`.
+Result<VoxelScene> sceneWith(const test::TempDir& tmp, const std::string& name,
+                             const std::string& textureExtra, const std::string& extra) {
     const std::string dir = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/textures/";
-    const auto path = std::filesystem::temp_directory_path() / ("luxel_aa_" + name + ".json");
-    std::ofstream(path) << R"({"type": "voxel", "textures": [{"name": "bricks", "file": ")" << dir
-                        << R"(bricks.png")" << textureExtra << R"(}],
+    return loadVoxelScene(
+        tmp.write(name + ".json", R"({"type": "voxel", "textures": [{"name": "bricks", "file": ")" +
+                                      dir + R"(bricks.png")" + textureExtra + R"(}],
         "world": {"source": "empty", "size": [8, 8, 8], "shapes": [
                   {"type": "box", "min": [0, 0, 0], "max": [8, 1, 8], "texture": "bricks"}]},
-        "camera": {"position": [4, 4, -4], "look_at": [4, 0, 4]})"
-                        << extra << "}";
-    return loadVoxelScene(path.string());
+        "camera": {"position": [4, 4, -4], "look_at": [4, 0, 4]})" +
+                                      extra + "}"));
 }
 
 TEST(RenderImage, SceneFieldsForFilteringAndSamples) {
+    const test::TempDir tmp;
     const std::string dir = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/textures/";
-    auto scene = sceneWith("ok", R"(, "normal_map": ")" + dir + R"(bricks_normal.png")",
+    auto scene = sceneWith(tmp, "ok", R"(, "normal_map": ")" + dir + R"(bricks_normal.png")",
                            R"(, "render": {"samples": 9, "texture_filter": "anisotropic",
                                  "anisotropy": 8, "normal_maps": false})");
     ASSERT_TRUE(scene.ok()) << scene.error().message();
@@ -147,7 +147,7 @@ TEST(RenderImage, SceneFieldsForFilteringAndSamples) {
     };
     int i = 0;
     for (const auto& c : bad) {
-        auto s = sceneWith("bad" + std::to_string(i++), c.textureExtra, c.extra);
+        auto s = sceneWith(tmp, "bad" + std::to_string(i++), c.textureExtra, c.extra);
         ASSERT_FALSE(s.ok()) << c.expected;
         EXPECT_NE(s.error().message().find(c.expected), std::string::npos) << s.error().message();
     }

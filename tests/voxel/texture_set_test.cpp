@@ -4,20 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 
 #include "luxel/core/image_io.h"
 #include "luxel/core/tonemap.h"
+#include "support/temp_dir.h"
 
 namespace luxel::voxel {
 namespace {
-
-std::string tempPath(const std::string& name) {
-    std::string file = "luxel_texture_";
-    file += name;
-    return (std::filesystem::temp_directory_path() / file).string();
-}
 
 // A w x h texture whose texel at (column, row) is (column, row, 0, 1).
 Texture indexTexture(const std::string& name, int w, int h) {
@@ -87,12 +81,13 @@ TEST(TextureSet, LimitsAndBadTextures) {
 }
 
 TEST(TextureSet, PngColourIsDecodedAndAlphaIsLinear) {
+    const test::TempDir tmp;
     Image rgba(2, 1, 4);
     rgba.at(0, 0, 0) = srgbToLinear(128 / 255.0f);
     rgba.at(0, 0, 3) = 1.0f;
     rgba.at(1, 0, 1) = 1.0f;
     rgba.at(1, 0, 3) = 102 / 255.0f;  // 0.4: a cutout
-    const std::string path = tempPath("rgba.png");
+    const std::string path = tmp.path("rgba.png");
     ASSERT_TRUE(writePng(path, rgba).ok());
     auto t = TextureSet::load("rgba", path);
     ASSERT_TRUE(t.ok()) << t.error().message();
@@ -105,7 +100,7 @@ TEST(TextureSet, PngColourIsDecodedAndAlphaIsLinear) {
 
     Image grey(1, 1, 1);
     grey.at(0, 0, 0) = 0.25f;
-    const std::string greyPath = tempPath("grey.png");
+    const std::string greyPath = tmp.path("grey.png");
     ASSERT_TRUE(writePng(greyPath, grey).ok());
     auto g = TextureSet::load("grey", greyPath);
     ASSERT_TRUE(g.ok()) << g.error().message();
@@ -115,15 +110,16 @@ TEST(TextureSet, PngColourIsDecodedAndAlphaIsLinear) {
 }
 
 TEST(TextureSet, BadPngFilesAreErrors) {
-    EXPECT_FALSE(TextureSet::load("m", tempPath("does-not-exist.png")).ok());
-    const std::string corrupt = tempPath("corrupt.png");
+    const test::TempDir tmp;
+    EXPECT_FALSE(TextureSet::load("m", tmp.path("does-not-exist.png")).ok());
+    const std::string corrupt = tmp.path("corrupt.png");
     std::ofstream(corrupt) << "\x89PNG\r\n\x1a\n this is not a png";
     EXPECT_FALSE(TextureSet::load("c", corrupt).ok());
     // A header claiming 100000 x 100000 is refused before any pixel is decoded.
     const unsigned char header[] = {0x89, 'P',  'N', 'G', '\r', '\n', 0x1a, '\n', 0,    0, 0,
                                     13,   'I',  'H', 'D', 'R',  0,    1,    0x86, 0xa0, 0, 1,
                                     0x86, 0xa0, 8,   6,   0,    0,    0,    0,    0,    0, 0};
-    const std::string huge = tempPath("huge.png");
+    const std::string huge = tmp.path("huge.png");
     std::ofstream(huge, std::ios::binary)
         .write(reinterpret_cast<const char*>(header), sizeof(header));
     auto h = TextureSet::load("huge", huge);

@@ -8,6 +8,7 @@
 #include "luxel/voxel/texture_set.h"
 #include "luxel/voxel/vox_import.h"
 #include "luxel/voxel/vox_scene.h"
+#include "support/temp_dir.h"
 
 namespace luxel::voxel {
 namespace {
@@ -111,13 +112,11 @@ TEST(VoxExport, TexturedVoxelsAreWrittenAsTheirColourWithAWarning) {
 }
 
 TEST(VoxExport, WriteReplacesTheFileOnlyWhenComplete) {
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / "luxel_vox_export_write";
-    std::filesystem::remove_all(dir);
-    std::filesystem::create_directories(dir);
+    const test::TempDir tmp;
+    const std::filesystem::path& dir = tmp.dir();
     VoxelWorld w = VoxelWorld::create({3, 3, 3}, 4).value();
     w.set(1, 1, 1, Voxel{7, 8, 9, 255});
-    const std::string path = (dir / "w.vox").string();
+    const std::string path = tmp.path("w.vox");
     Result<std::vector<std::string>> written = writeVox(w, path);
     ASSERT_TRUE(written.ok()) << written.error().message();
     Result<VoxelWorld> loaded = loadVox(path, 4);
@@ -128,7 +127,6 @@ TEST(VoxExport, WriteReplacesTheFileOnlyWhenComplete) {
     for (const auto& entry : std::filesystem::directory_iterator(dir))
         files += entry.is_regular_file();
     EXPECT_EQ(files, 1);
-    std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -2,13 +2,13 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include "luxel/voxel/generators.h"
 #include "luxel/voxel/vox_import.h"
+#include "support/temp_dir.h"
 
 namespace luxel::voxel {
 namespace {
@@ -108,6 +108,7 @@ TEST(VoxImport, ModelsSideBySide) {
 }
 
 TEST(VoxImport, RoundTrip) {
+    const test::TempDir tmp;
     VoxelWorld w = VoxelWorld::create({20, 12, 9}, 4).value();
     addBox(w, {0, 0, 0}, {20, 1, 9}, Voxel{10, 200, 10, 255});
     addSphere(w, {10, 6, 4.5f}, 4, Voxel{200, 10, 10, 255});
@@ -122,11 +123,9 @@ TEST(VoxImport, RoundTrip) {
     EXPECT_EQ((*bytes)[36], 9);
     EXPECT_EQ((*bytes)[40], 12);
 
-    const std::string path =
-        (std::filesystem::temp_directory_path() / "luxel_vox_roundtrip_test.vox").string();
+    const std::string path = tmp.path("roundtrip.vox");
     ASSERT_TRUE(saveVox(w, path).ok());
     Result<VoxelWorld> loaded = loadVox(path);
-    std::filesystem::remove(path);
     ASSERT_TRUE(loaded.ok()) << loaded.error().message();
     EXPECT_TRUE(w == *loaded);
 
@@ -180,20 +179,19 @@ TEST(VoxImport, LoadsShippedSample) {
 }
 
 TEST(VoxImport, MissingAndOversizedFiles) {
+    const test::TempDir tmp;
     const Result<VoxelWorld> missing = loadVox("/nonexistent/none.vox");
     ASSERT_FALSE(missing.ok());
     EXPECT_NE(missing.error().message().find("/nonexistent/none.vox: cannot read"),
               std::string::npos);
     // A sparse file just over the limit is refused before reading.
-    const std::string path =
-        (std::filesystem::temp_directory_path() / "luxel_vox_huge_test.vox").string();
+    const std::string path = tmp.path("huge.vox");
     {
         std::ofstream out(path, std::ios::binary);
         out.seekp(static_cast<std::streamoff>(kMaxVoxFileBytes));
         out.put('x');
     }
     const Result<VoxelWorld> huge = loadVox(path);
-    std::filesystem::remove(path);
     ASSERT_FALSE(huge.ok());
     EXPECT_NE(huge.error().message().find("larger than the 256 MiB limit"), std::string::npos);
 }

@@ -8,6 +8,7 @@
 #include "luxel/voxel/texture_set.h"
 #include "luxel/voxel/vox_import.h"
 #include "luxel/voxel/vox_scene.h"
+#include "support/temp_dir.h"
 #include "support/vox_writer.h"
 
 namespace luxel::voxel {
@@ -174,7 +175,8 @@ TEST(VoxMaterials, AVoxFileOpensAsAFramedSceneWithItsMaterials) {
 
 TEST(VoxMaterials, JsonScenesAppendVoxMaterialsAfterTheirTextures) {
     // A texture of its own takes slot 0; the file's material moves to slot 1.
-    const std::string dir = testing::TempDir();
+    const test::TempDir tmp;
+    const std::string dir = tmp.dir().string();
     const vw::Bytes bytes = row(2, vw::material(2, {{"_type", "_metal"}}));
     {
         std::FILE* f = std::fopen((dir + "/mat.vox").c_str(), "wb");

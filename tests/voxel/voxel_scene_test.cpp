@@ -7,15 +7,10 @@
 #include <string>
 
 #include "luxel/voxel/voxel_scene.h"
+#include "support/temp_dir.h"
 
 namespace luxel::voxel {
 namespace {
-
-std::string writeScene(const std::string& name, const std::string& text) {
-    const auto path = std::filesystem::temp_directory_path() / ("luxel_voxel_scene_" + name);
-    std::ofstream(path) << text;
-    return path.string();
-}
 
 TEST(VoxelScene, ShippedDefaultSceneLoads) {
     const std::string path = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/terrain.json";
@@ -30,9 +25,10 @@ TEST(VoxelScene, ShippedDefaultSceneLoads) {
 }
 
 TEST(VoxelScene, VoxFileWorldsAndShapes) {
-    const std::string path = writeScene("vox.json", R"({"type": "voxel",
+    const test::TempDir tmp;
+    const std::string path = tmp.write("vox.json", R"({"type": "voxel",
         "world": {"source": "vox", "file": ")" + std::string(LUXEL_SOURCE_DIR) +
-                                                        R"(/scenes/voxel/sample.vox",
+                                                       R"(/scenes/voxel/sample.vox",
                   "shapes": [{"type": "box", "min": [0, 0, 0], "max": [2, 2, 2]}]},
         "camera": {"position": [10, 10, -20], "look_at": [10, 5, 10]}})");
     auto scene = loadVoxelScene(path);
@@ -41,6 +37,7 @@ TEST(VoxelScene, VoxFileWorldsAndShapes) {
 }
 
 TEST(VoxelScene, BadInputIsLocated) {
+    const test::TempDir tmp;
     struct Case {
         const char* text;
         const char* expected;
@@ -73,7 +70,7 @@ TEST(VoxelScene, BadInputIsLocated) {
     };
     int i = 0;
     for (const Case& c : cases) {
-        const std::string path = writeScene("bad" + std::to_string(i++) + ".json", c.text);
+        const std::string path = tmp.write("bad" + std::to_string(i++) + ".json", c.text);
         auto scene = loadVoxelScene(path);
         ASSERT_FALSE(scene.ok()) << c.text;
         EXPECT_NE(scene.error().message().find(c.expected), std::string::npos)
@@ -88,30 +85,25 @@ TEST(VoxelScene, BadInputIsLocated) {
 namespace luxel::voxel {
 namespace {
 
-// A scene next to a copy of the shipped textures, so relative paths resolve.
-std::string textureScene(const std::string& name, const std::string& body) {
-    // One directory per test: ctest runs tests in parallel, and copying over a texture another
-    // test is reading would make it fail now and then.
-    const auto dir = std::filesystem::temp_directory_path() /
-                     (std::string("luxel_voxel_textures_") +
-                      testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir / "textures");
+// A scene in `tmp` next to a copy of the shipped textures, so relative paths resolve.
+std::string textureScene(const test::TempDir& tmp, const std::string& name,
+                         const std::string& body) {
+    std::filesystem::create_directories(tmp.dir() / "textures");
     for (const char* t : {"bricks.png", "leaves.png"}) {
         std::filesystem::copy_file(std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/textures/" + t,
-                                   dir / "textures" / t,
+                                   tmp.dir() / "textures" / t,
                                    std::filesystem::copy_options::overwrite_existing);
     }
-    const auto path = dir / name;
-    std::ofstream(path) << body;
-    return path.string();
+    return tmp.write(name, body);
 }
 
 const char* kTextures = R"("textures": [{"name": "bricks", "file": "textures/bricks.png"},
                            {"name": "leaves", "file": "textures/leaves.png", "reflectivity": 0.5}],)";
 
 TEST(VoxelScene, TexturesOnShapesAndByColour) {
+    const test::TempDir tmp;
     const std::string path =
-        textureScene("ok.json", std::string(R"({"type": "voxel", )") + kTextures + R"(
+        textureScene(tmp, "ok.json", std::string(R"({"type": "voxel", )") + kTextures + R"(
         "world": {"source": "random", "size": [16, 8, 16], "density": 0.3,
                   "color": [80, 150, 60],
                   "shapes": [{"type": "box", "min": [2, 1, 2], "max": [4, 3, 4],
@@ -141,6 +133,7 @@ TEST(VoxelScene, TexturesOnShapesAndByColour) {
 }
 
 TEST(VoxelScene, TextureErrorsAreLocated) {
+    const test::TempDir tmp;
     struct Case {
         std::string textures, shapes, expected;
     };
@@ -170,9 +163,10 @@ TEST(VoxelScene, TextureErrorsAreLocated) {
     int i = 0;
     for (const Case& c : cases) {
         const std::string name = "bad" + std::to_string(i++) + ".json";
-        const std::string path = textureScene(name, R"({"type": "voxel", )" + c.textures + R"(
+        const std::string path = textureScene(tmp, name,
+                                              R"({"type": "voxel", )" + c.textures + R"(
             "world": {"source": "empty", "size": [8, 8, 8], "shapes": [)" +
-                                                        c.shapes + R"(]},
+                                                  c.shapes + R"(]},
             "camera": {"position": [0, 0, 0]}})");
         auto scene = loadVoxelScene(path);
         ASSERT_FALSE(scene.ok()) << c.expected;

@@ -1,25 +1,27 @@
 // The scene file's shadow fields: every key read, booleans still accepted, bad values named.
 #include <gtest/gtest.h>
 
-#include <filesystem>
-#include <fstream>
 #include <numbers>
+#include <string>
 
 #include "luxel/voxel/voxel_scene.h"
+#include "support/temp_dir.h"
 
 namespace luxel::voxel {
 namespace {
 
-Result<VoxelScene> loadWithRender(const std::string& name, const std::string& render) {
-    const auto path = std::filesystem::temp_directory_path() / ("luxel_shadow_json_" + name);
-    std::ofstream(path) << R"({"type": "voxel", "world": {"source": "empty", "size": [8, 8, 8]},
+Result<VoxelScene> loadWithRender(const test::TempDir& tmp, const std::string& name,
+                                  const std::string& render) {
+    return loadVoxelScene(
+        tmp.write(name, R"({"type": "voxel", "world": {"source": "empty", "size": [8, 8, 8]},
         "camera": {"position": [4, 6, -4], "look_at": [4, 2, 4], "fov": 60, "size": [8, 8]},
-        "render": )" + render + "}";
-    return loadVoxelScene(path.string());
+        "render": )" + render +
+                            "}"));
 }
 
 TEST(ShadowJson, ReadsEveryField) {
-    auto scene = loadWithRender("all.json", R"({"shadows": {"method": "blend", "samples": 64,
+    const test::TempDir tmp;
+    auto scene = loadWithRender(tmp, "all.json", R"({"shadows": {"method": "blend", "samples": 64,
         "map_size": 256, "storage": "16bit", "filter": "box", "filter_radius": 3,
         "moment_bias": 0.0001, "light_bleed": 0.2, "depth_bias": 0.1, "normal_offset": 0.3,
         "sdf_normal_offset": 0.07,
@@ -50,16 +52,18 @@ TEST(ShadowJson, ReadsEveryField) {
 }
 
 TEST(ShadowJson, BooleansStillWork) {
-    auto off = loadWithRender("off.json", R"({"shadows": false})");
+    const test::TempDir tmp;
+    auto off = loadWithRender(tmp, "off.json", R"({"shadows": false})");
     ASSERT_TRUE(off.ok()) << off.error().message();
     EXPECT_FALSE(off->shading.shadows);
-    auto on = loadWithRender("on.json", R"({"shadows": true})");
+    auto on = loadWithRender(tmp, "on.json", R"({"shadows": true})");
     ASSERT_TRUE(on.ok()) << on.error().message();
     EXPECT_TRUE(on->shading.shadows);
     EXPECT_EQ(on->shading.shadowSettings.method, ShadowMethod::Hard);
 }
 
 TEST(ShadowJson, BadValuesNameTheField) {
+    const test::TempDir tmp;
     const std::pair<const char*, const char*> cases[] = {
         {R"({"shadows": 3})", "render.shadows: must be true, false or an object"},
         {R"({"shadows": {"method": "pcss"}})", "render.shadows.method: must be one of"},
@@ -77,7 +81,7 @@ TEST(ShadowJson, BadValuesNameTheField) {
     };
     int i = 0;
     for (const auto& [render, needle] : cases) {
-        auto scene = loadWithRender("bad" + std::to_string(i++) + ".json", render);
+        auto scene = loadWithRender(tmp, "bad" + std::to_string(i++) + ".json", render);
         ASSERT_FALSE(scene.ok()) << render;
         EXPECT_NE(scene.error().message().find(needle), std::string::npos)
             << scene.error().message();
