@@ -32,12 +32,12 @@ struct HrcOptions {
     std::function<void(int done, int total)> onProgress;
 };
 
-// The CPU solver sweeps each frustum from its far end and keeps two planes per cascade
-// (docs/algorithms/holographic-radiance-cascades.md §7.1).
+// The CPU solver sweeps each frustum from its far end and keeps two planes per cascade, one of
+// the top cascade (docs/algorithms/holographic-radiance-cascades.md §7.1).
 struct HrcMemory {
     std::uint64_t rayIntervals = 0;   // two planes of intervals per cascade, binary16
     std::uint64_t cones = 0;          // two planes of merged cones per cascade, binary16
-    std::uint64_t mediumColumns = 0;  // the columns the traced cascades read
+    std::uint64_t mediumColumns = 0;  // per thread: the medium columns and the read-out's block
     std::uint64_t output = 0;         // the fluence, accumulated and finished in place
     std::uint64_t total() const { return rayIntervals + cones + mediumColumns + output; }
 };

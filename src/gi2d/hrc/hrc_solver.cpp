@@ -26,7 +26,8 @@ int hrcCascadeCount(int width, int height) {
 }
 
 HrcMemory estimateHrcMemory(int width, int height) {
-    const SweepMemory sweep = sweepMemory(width, height, HrcOptions{}.tracedLevels);
+    const SweepMemory sweep =
+        sweepMemory(width, height, HrcOptions{}.tracedLevels, ThreadTeam::defaultSize());
     HrcMemory m;
     m.rayIntervals = sweep.intervals;
     m.cones = sweep.cones;
@@ -58,9 +59,10 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
     // The sweep's medium window grows with 2^tracedLevels times the distinct lengths inside cells
     // (3 for the paper's 3 traced cascades): many traced cascades go cascade by cascade instead.
     const bool levelByLevel = debug || options.tracedLevels > kSweepMaxTracedLevels;
-    const std::uint64_t needed = levelByLevel ? levelByLevelBytes(w, h) + mediumBytes(w, h) / 2
-                                              : sweepMemory(w, h, options.tracedLevels).total() +
-                                                    estimateHrcMemory(w, h).output;
+    const std::uint64_t needed =
+        levelByLevel ? levelByLevelBytes(w, h) + mediumBytes(w, h) / 2
+                     : sweepMemory(w, h, options.tracedLevels, ThreadTeam::defaultSize()).total() +
+                           estimateHrcMemory(w, h).output;
     if (Status s = checkMemory(needed, "HRC at " + std::to_string(w) + "x" + std::to_string(h));
         !s) {
         return s.error();

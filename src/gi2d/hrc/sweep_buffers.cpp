@@ -85,7 +85,8 @@ void ColumnWindow::at(int x, CellTransfer* out) const {
     }
 }
 
-int ringSlots(int n, int chunk) {
+int ringSlots(int n, int levels, int chunk) {
+    if (n == levels - 1) return 1;
     return std::max(2, (chunk >> n) + 1);
 }
 
@@ -100,7 +101,7 @@ std::size_t layOut(int levels, int chunk, PerPlane perPlane, std::vector<int>& s
     starts.resize(static_cast<std::size_t>(levels));
     std::size_t total = 0;
     for (int n = 0; n < levels; ++n) {
-        slots[n] = ringSlots(n, chunk);
+        slots[n] = ringSlots(n, levels, chunk);
         starts[n] = total;
         total += static_cast<std::size_t>(slots[n]) * perPlane(n);
     }

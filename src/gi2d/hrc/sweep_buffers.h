@@ -1,8 +1,9 @@
 // What the streaming HRC solver keeps while it sweeps a frustum from its far end to its near end
 // (docs/algorithms/holographic-radiance-cascades.md §7.1): per cascade the two most recent planes
-// of ray intervals and of merged cones (both binary16), and a window of medium columns for the
-// traced cascades. Everything a plane needs lies at most one plane ahead, so two suffice; memory
-// grows with the frame's rows times 2^levels, not with the rows times the planes of every cascade.
+// of ray intervals and of merged cones (both binary16), one for the top cascade, and a window of
+// medium columns for the traced cascades. Everything a plane needs lies at most one plane ahead,
+// so two suffice; memory grows with the frame's rows times 2^levels, not with the rows times the
+// planes of every cascade.
 #pragma once
 
 #include <cstdint>
@@ -36,6 +37,8 @@ class ColumnWindow {
 
     // `bandRows`: the most rows one member loads (its band and the rows its stencils reach).
     static std::uint64_t bytesFor(int span, int lengths, int rows, int bandRows);
+    // Bytes allocated now (the raw block once a column has been loaded).
+    std::uint64_t bytes() const { return (data_.size() + block_.size()) * sizeof(float); }
 
   private:
     std::size_t offset(int slot, int length, int c) const {
@@ -50,10 +53,11 @@ class ColumnWindow {
     std::vector<float> block_;
 };
 
-// Planes of cascade n the sweep keeps when it handles `chunk` pixel columns per step: one more
-// than the chunk holds (the plane ahead of it), at least 2
+// Planes of cascade n of `levels` the sweep keeps when it handles `chunk` pixel columns per step:
+// one more than the chunk holds (the plane ahead of it), at least 2; 1 for the top cascade, whose
+// plane 1 is the only one the sweep computes (plane 0 of every cascade never reaches the image)
 // (docs/algorithms/holographic-radiance-cascades.md §7.1, §8.1).
-int ringSlots(int n, int chunk);
+int ringSlots(int n, int levels, int chunk);
 
 // The latest planes of intervals per cascade: plane p of cascade n lives in slot p mod slots(n).
 class IntervalRing {
@@ -66,6 +70,8 @@ class IntervalRing {
     IntervalRowsOut write(int n, int p, int k);
 
     static std::uint64_t bytesFor(int levels, int rows, int chunk);
+    // Bytes allocated now.
+    std::uint64_t bytes() const { return data_.size() * sizeof(std::uint16_t); }
 
   private:
     std::size_t index(int n, int p, int k) const {
@@ -91,6 +97,8 @@ class ConeRing {
     std::uint16_t* plane(int n, int p, int i, int channel);
 
     static std::uint64_t bytesFor(int levels, int rows, int chunk);
+    // Bytes allocated now.
+    std::uint64_t bytes() const { return data_.size() * sizeof(std::uint16_t); }
 
   private:
     std::size_t index(int n, int p, int i) const {

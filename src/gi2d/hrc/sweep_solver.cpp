@@ -329,19 +329,21 @@ void FrustumSweep::run(ThreadTeam& team, int member, SweepTimes* times) {
     // The last pixel's read-out plane lies beyond the frame: it sees the sky (§6.2).
     readOut(length - 1, -1, y0, y1);
     // Chunks of kSweepChunk columns from the far end; in each, cascade by cascade, so the team
-    // meets once per cascade and chunk rather than once per cascade and column (§7.1).
+    // meets once per cascade and chunk rather than once per cascade and column (§7.1). Plane 0 of
+    // every cascade (x = 0) is never computed: pixel x reads plane x + 1 out, and planes p >= 1
+    // read only planes >= 1 (§7.1), so nothing it holds reaches the image.
     for (int x0 = (length - 1) / kSweepChunk * kSweepChunk; x0 >= 0; x0 -= kSweepChunk) {
         const int x1 = std::min(length, x0 + kSweepChunk);
         std::uint64_t traced = 0;
-        for (int x = x1 - 1; x >= x0; --x) {
+        for (int x = x1 - 1; x >= std::max(x0, 1); --x) {
             window.load(medium_, frame_, x, h0, h1);
             traced += trace(window, x, y0, y1);
         }
         team.sync();
         laps.charge(SweepTimes::Trace, traced);
-        // The planes of cascade n in the chunk: first (x1 - 1) >> n, down to ceil(x0 / 2^n).
+        // The planes of cascade n in the chunk: first (x1 - 1) >> n, down to ceil(x0 / 2^n), or 1.
         auto lastPlane = [&](int n) { return (x1 - 1) >> n; };
-        auto firstPlane = [&](int n) { return (x0 + pow2(n) - 1) >> n; };
+        auto firstPlane = [&](int n) { return std::max(1, (x0 + pow2(n) - 1) >> n); };
         for (int n = traced_; n < levels_; ++n) {
             if (lastPlane(n) < firstPlane(n)) continue;
             std::uint64_t bytes = 0;
@@ -389,13 +391,13 @@ void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int thread
         });
         if (options.onProgress) options.onProgress(++done, frustums);
     }
-    if (sweepMemory(medium.width(), medium.height(), options.tracedLevels).total() <=
+    if (sweepMemory(medium.width(), medium.height(), options.tracedLevels, threads).total() <=
         kKeptSweepBytes) {
         kept = std::move(buffers);
     }
 }
 
-SweepMemory sweepMemory(int width, int height, int tracedLevels) {
+SweepMemory sweepMemory(int width, int height, int tracedLevels, int threads) {
     SweepMemory most;
     for (int r = 0; r < 2; ++r) {
         const FrustumFrame frame = makeFrame(static_cast<Frustum>(r), width, height);
@@ -406,20 +408,25 @@ SweepMemory sweepMemory(int width, int height, int tracedLevels) {
         m.cones = ConeRing::bytesFor(levels, frame.rows, kSweepChunk);
         // One window per team member; each loads its band of rows (as ThreadTeam::bandBegin
         // splits them) and the rows its stencils reach beyond it.
-        const int members = std::min(ThreadTeam::defaultSize(), frame.rows);
+        const int members = std::clamp(threads, 1, frame.rows);
         const int span = pow2(traced - 1);
-        int band = 0;
+        const int lengths = static_cast<int>(tracedRays(traced).lengths.size());
+        int band = 0, reached = 0;
         for (int i = 0; i < members; ++i) {
             const auto begin = [&](int j) {
                 return static_cast<int>(static_cast<long long>(frame.rows) * j / members);
             };
-            band = std::max(
-                band, std::min(frame.rows, begin(i + 1) + span) - std::max(0, begin(i) - span));
+            band = std::max(band, begin(i + 1) - begin(i));
+            reached = std::max(
+                reached, std::min(frame.rows, begin(i + 1) + span) - std::max(0, begin(i) - span));
         }
+        // Per member: its window, the transfer planes one trace step sees and the read-out's
+        // block of gathered columns (readOut).
         m.columns =
             static_cast<std::uint64_t>(members) *
-            ColumnWindow::bytesFor(span, static_cast<int>(tracedRays(traced).lengths.size()),
-                                   frame.rows, band);
+            (ColumnWindow::bytesFor(span, lengths, frame.rows, reached) +
+             static_cast<std::uint64_t>(span) * lengths * sizeof(CellTransfer) +
+             static_cast<std::uint64_t>(ColumnWindow::kColumnBlock) * 3 * band * sizeof(float));
         // The buffers keep their allocations from frame to frame: the larger of each.
         most.intervals = std::max(most.intervals, m.intervals);
         most.cones = std::max(most.cones, m.cones);

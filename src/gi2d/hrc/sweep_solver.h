@@ -34,14 +34,14 @@ inline constexpr int kSweepMaxTracedLevels = 5;
 void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int threads, Image& beyondSum,
                    SweepTimes* times);
 
-// Bytes of sweepFrustums' buffers for a canvas of this size: each the larger of the ±x and ±y
-// frames', since the buffers keep their allocations from frame to frame.
+// Bytes of sweepFrustums' buffers for a canvas of this size on `threads` threads: each the larger
+// of the ±x and ±y frames', since the buffers keep their allocations from frame to frame.
 struct SweepMemory {
     std::uint64_t intervals = 0;  // the ring of ray intervals
     std::uint64_t cones = 0;      // the ring of merged cones
-    std::uint64_t columns = 0;    // the medium windows, one per thread
+    std::uint64_t columns = 0;    // per thread: the medium window and the read-out's block
     std::uint64_t total() const { return intervals + cones + columns; }
 };
-SweepMemory sweepMemory(int width, int height, int tracedLevels);
+SweepMemory sweepMemory(int width, int height, int tracedLevels, int threads);
 
 }  // namespace luxel::gi2d::hrc

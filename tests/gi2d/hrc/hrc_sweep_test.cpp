@@ -7,9 +7,16 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <limits>
 
+#include "gi2d/hrc/cone_merge.h"
 #include "gi2d/hrc/finish.h"
+#include "gi2d/hrc/frustum_frame.h"
+#include "gi2d/hrc/hrc_geometry.h"
 #include "gi2d/hrc/level_by_level.h"
+#include "gi2d/hrc/ray_tables.h"
+#include "gi2d/hrc/readout.h"
 #include "gi2d/hrc/trace_stencil.h"
 #include "gi2d/shipped_scenes.h"
 #include "luxel/core/parallel.h"
@@ -63,6 +70,25 @@ Medium2D randomMedium(int w, int h, std::uint64_t seed) {
     return m;
 }
 
+// Mostly vacuum: light crosses the whole frame, so the top cascade's far plane shows in the image
+// (behind randomMedium's opaque blocks it is all but black).
+Medium2D clearMedium(int w, int h, std::uint64_t seed) {
+    Medium2D m{Image(w, h, 3), Image(w, h, 3), Rgb{0.3f, 0.2f, 0.1f}};
+    Pcg32 rng(seed);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const float kind = rng.nextFloat();
+            if (kind < 0.03f) {
+                m.absorption.setRgb(x, y, {2.0f, 1.0f, 3.0f});
+                m.emission.setRgb(x, y, {5.0f * rng.nextFloat(), 2.0f, 0.5f});
+            } else if (kind < 0.1f) {
+                m.absorption.setRgb(x, y, {0.02f, 0.05f, 0.01f});
+            }
+        }
+    }
+    return m;
+}
+
 TEST(HrcSweep, StencilsCrossTheCellsTheMarcherCrosses) {
     // One pixel of unit absorption at a time: the stencil's length in it is the marched one.
     for (int n = 0; n < 4; ++n) {
@@ -110,6 +136,8 @@ TEST(HrcSweep, MatchesTheLevelByLevelPasses) {
     cases.push_back({"pinhole 160x90 +-x", shippedScene("pinhole.json", 160, 90), twoFrustums});
     cases.push_back({"room 128", shippedScene("room.json", 128, 128), {}});
     cases.push_back({"tiny 3x2", randomMedium(3, 2, 11), {}});
+    cases.push_back({"clear 150x70", clearMedium(150, 70, 14), {}});
+    cases.push_back({"clear 40x130", clearMedium(40, 130, 15), {}});
     for (const Case& c : cases) {
         const Image expected = levelByLevel(c.medium, c.options);
         for (int threads : {1, 2, 3}) {
@@ -122,6 +150,49 @@ TEST(HrcSweep, MatchesTheLevelByLevelPasses) {
             // may round one table entry to the neighbouring half, 2^-11 relative.
             EXPECT_LT(d, 2e-3) << c.name << ", " << threads << " threads";
         }
+    }
+}
+
+TEST(HrcSweep, PlaneZeroNeverReachesTheImage) {
+    // The sweep never computes plane 0 of any cascade (§7.1): pixel x reads plane x + 1 out, a
+    // merge of plane p >= 1 reads the upper planes (p + 1) / 2, p / 2 and p / 2 + 1 and an extend
+    // the planes 2p and 2p + 1 below, all >= 1. Through the level-by-level passes, which do
+    // compute it: NaN in plane 0 of every table and cone leaves the read-out bit for bit.
+    const Medium2D medium = clearMedium(70, 50, 16);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (int r = 0; r < 4; ++r) {
+        const hrc::FrustumFrame frame = hrc::makeFrame(static_cast<hrc::Frustum>(r), 70, 50);
+        const int levels = hrc::cascadeCount(frame.length);
+        auto readOut = [&](bool poison) {
+            hrc::RayTables tables;
+            tables.reset(frame.length, frame.rows, levels);
+            hrc::traceBaseLevels(tables, RayMarcher(hrc::frameMedium(medium, frame)), 3);
+            hrc::extendLevels(tables, 3);
+            hrc::Interval bad;
+            bad.radiance = {nan, nan, nan};
+            bad.transmittance = {nan, nan, nan};
+            for (int n = 0; n < levels && poison; ++n) {
+                for (int k = 0; k <= (1 << n); ++k) {
+                    for (int y = 0; y < frame.rows; ++y) tables.set(n, 0, y, k, bad);
+                }
+            }
+            hrc::ConeBuffer buffers[2];
+            const hrc::ConeBuffer* upper = nullptr;
+            for (int n = levels - 1, current = 0; n >= 0; --n, current ^= 1) {
+                hrc::mergeCascade(tables, n, upper, medium.boundaryRadiance, buffers[current]);
+                for (int i = 0; i < (1 << n) && poison; ++i) {
+                    for (int y = 0; y < frame.rows; ++y)
+                        buffers[current].set(0, i, y, {nan, nan, nan});
+                }
+                upper = &buffers[current];
+            }
+            Image beyond(70, 50, 3);
+            hrc::readOut(frame, *upper, 0, medium.boundaryRadiance, beyond);
+            return beyond;
+        };
+        const Image clean = readOut(false), poisoned = readOut(true);
+        EXPECT_EQ(std::memcmp(clean.data(), poisoned.data(), clean.size() * sizeof(float)), 0)
+            << "frustum " << r;
     }
 }
 
