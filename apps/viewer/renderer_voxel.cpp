@@ -217,6 +217,8 @@ Result<Image> RendererVoxel::renderCascades(const voxel::Camera& internal, Frame
         if (gpu.context) frame.note = "radiance cascades on the CPU: " + cascadesGpuRefusal_;
     }
     const voxel::CascadeStats stats = cascades_->stats();
+    // An automatic spacing doubled for the runs through glass: which, and why.
+    if (frame.note.empty()) frame.note = stats.spacingNote;
     frame.converged = cascadesChange_ < voxel::CascadeOptions{}.tolerance;
     setMetadata(frame.metadata, "luxel.rc.bounces", std::to_string(stats.bounces));
     setMetadata(frame.metadata, "luxel.rc.spacing", std::to_string(stats.spacing));
