@@ -59,12 +59,15 @@ void RendererVoxel::setState(VoxelState&& state) {
         cascades_.reset();
         cascadesGpuRefusal_.clear();
     }
+    // New light for the cascades: the sun and sky, and what passes glass (refraction, the
+    // Fresnel model), which builds their faces under glass and segments again.
     const voxel::ShadeOptions &now = state.shading, &before = state_.shading;
     if (!(now.sunDirection.x == before.sunDirection.x &&
           now.sunDirection.y == before.sunDirection.y &&
           now.sunDirection.z == before.sunDirection.z &&
           now.sunIrradiance == before.sunIrradiance && now.skyTop == before.skyTop &&
-          now.skyHorizon == before.skyHorizon)) {
+          now.skyHorizon == before.skyHorizon && now.sunAngularRadius == before.sunAngularRadius &&
+          now.refraction == before.refraction && now.fresnel == before.fresnel)) {
         cascadesLight_ = true;
     }
     if (edited || state.restart || state.solver.kind != state_.solver.kind) {
@@ -217,6 +220,8 @@ Result<Image> RendererVoxel::renderCascades(const voxel::Camera& internal, Frame
         if (gpu.context) frame.note = "radiance cascades on the CPU: " + cascadesGpuRefusal_;
     }
     const voxel::CascadeStats stats = cascades_->stats();
+    // An automatic spacing doubled for the runs through glass: which, and why.
+    if (frame.note.empty()) frame.note = stats.spacingNote;
     frame.converged = cascadesChange_ < voxel::CascadeOptions{}.tolerance;
     setMetadata(frame.metadata, "luxel.rc.bounces", std::to_string(stats.bounces));
     setMetadata(frame.metadata, "luxel.rc.spacing", std::to_string(stats.spacing));

@@ -5,6 +5,7 @@
 // scene under the default limit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "luxel/core/memory.h"
@@ -84,6 +85,99 @@ TEST(CascadesGlassMemory, RunsThroughGlassPastTheLimitAreRefusedWithTheirBytes) 
     EXPECT_NE(again.error().message().find("runs through glass"), std::string::npos);
     // And back to no refraction, it casts whole again.
     EXPECT_TRUE(opaque->setLight(plain).ok());
+}
+
+// The bytes the estimate plans at a spacing given by the user and the runs through glass that
+// spacing casts, built with room to spare.
+struct SpacingNeeds {
+    std::uint64_t planned = 0;
+    std::int64_t passages = 0;
+};
+
+SpacingNeeds needsAt(const VoxelWorld& world, const ShadeOptions& o, int spacing) {
+    CascadeOptions given;
+    given.spacing = spacing;
+    given.memoryLimit = std::uint64_t(1) << 30;
+    SpacingNeeds needs;
+    needs.planned = estimateCascades(world, given).bytes;
+    auto built = RadianceCascades::create(world, nullptr, o, given);
+    EXPECT_TRUE(built.ok()) << built.error().message();
+    if (built.ok()) needs.passages = built->stats().passages;
+    return needs;
+}
+
+// An automatic spacing whose runs through glass do not fit is doubled until they do, as the
+// estimate doubles it, and the stats say which spacing was taken and why; a spacing the user
+// gave is never changed: the build is refused.
+TEST(CascadesGlassMemory, AnAutomaticSpacingDoublesWhereTheRunsThroughGlassDoNotFit) {
+    const VoxelWorld world = floorUnderGlass();
+    const ShadeOptions o = glassLight();
+    const SpacingNeeds two = needsAt(world, o, 2), four = needsAt(world, o, 4);
+    // Room for the estimate at spacing 2 and, beside spacing 4's, for its passages (their table
+    // grows by doubling: its peak stays under 3 times their bytes), but not for spacing 2's.
+    const std::uint64_t each = 20;
+    const std::uint64_t limit = std::max(two.planned, four.planned + 4 * four.passages * each);
+    ASSERT_GT(four.passages, 0);
+    ASSERT_LT(limit - two.planned, two.passages * each) << "spacing 2 would fit";
+    CascadeOptions automatic;
+    automatic.memoryLimit = limit;
+    ASSERT_EQ(estimateCascades(world, automatic).spacing, 2);
+
+    auto doubled = RadianceCascades::create(world, nullptr, o, automatic);
+    ASSERT_TRUE(doubled.ok()) << doubled.error().message();
+    const CascadeStats stats = doubled->stats();
+    EXPECT_EQ(stats.spacing, 4);
+    EXPECT_EQ(stats.passages, four.passages);
+    EXPECT_LE(stats.bytes, limit);
+    const std::string& note = stats.spacingNote;
+    EXPECT_NE(note.find("probe spacing 4, not 2"), std::string::npos) << note;
+    EXPECT_NE(note.find("runs through glass"), std::string::npos) << note;
+    EXPECT_NE(note.find(formatBytes(two.planned) + " estimated"), std::string::npos) << note;
+    EXPECT_NE(note.find("limit of " + formatBytes(limit)), std::string::npos) << note;
+    // The same light as spacing 4 given by the user.
+    CascadeOptions givenFour = automatic;
+    givenFour.spacing = 4;
+    auto four4 = RadianceCascades::create(world, nullptr, o, givenFour);
+    ASSERT_TRUE(four4.ok()) << four4.error().message();
+    EXPECT_TRUE(four4->stats().spacingNote.empty());
+    doubled->solve();
+    four4->solve();
+    const Rgb e = doubled->indirectIrradiance({12, 0, 12}, {0, 1, 0}, {12.5, 1.0, 12.5});
+    EXPECT_GT(e.g, 0.1f);
+    EXPECT_EQ(e.g, four4->indirectIrradiance({12, 0, 12}, {0, 1, 0}, {12.5, 1.0, 12.5}).g);
+
+    // Spacing 2 given by the user under the same limit: refused, not changed.
+    CascadeOptions givenTwo = automatic;
+    givenTwo.spacing = 2;
+    auto refused = RadianceCascades::create(world, nullptr, o, givenTwo);
+    ASSERT_FALSE(refused.ok());
+    const std::string message = refused.error().message();
+    EXPECT_NE(message.find("runs through glass"), std::string::npos) << message;
+    EXPECT_NE(message.find("try a larger --rc-spacing"), std::string::npos) << message;
+
+    // With room for spacing 2's runs, the automatic spacing stays 2 and there is no note.
+    CascadeOptions roomy;
+    roomy.memoryLimit = two.planned + 4 * two.passages * each;
+    auto kept = RadianceCascades::create(world, nullptr, o, roomy);
+    ASSERT_TRUE(kept.ok()) << kept.error().message();
+    EXPECT_EQ(kept->stats().spacing, 2);
+    EXPECT_TRUE(kept->stats().spacingNote.empty()) << kept->stats().spacingNote;
+
+    // Glass turned on by setLight under the limit doubles the spacing as create does, and
+    // turned off again goes back to spacing 2.
+    ShadeOptions plain = o;
+    plain.refraction = false;
+    auto later = RadianceCascades::create(world, nullptr, plain, automatic);
+    ASSERT_TRUE(later.ok()) << later.error().message();
+    EXPECT_EQ(later->stats().spacing, 2);
+    ASSERT_TRUE(later->setLight(o).ok());
+    EXPECT_EQ(later->stats().spacing, 4);
+    EXPECT_EQ(later->stats().passages, four.passages);
+    EXPECT_EQ(later->stats().spacingNote, note);
+    ASSERT_TRUE(later->setLight(plain).ok());
+    EXPECT_EQ(later->stats().spacing, 2);
+    EXPECT_EQ(later->stats().passages, 0);
+    EXPECT_TRUE(later->stats().spacingNote.empty());
 }
 
 TEST(CascadesGlassMemory, TheGlassSceneBuildsUnderTheDefaultLimit) {

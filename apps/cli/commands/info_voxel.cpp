@@ -52,12 +52,15 @@ int infoVoxelScene(const voxel::VoxelScene& loaded) {
                     .c_str());
     // What `luxel render --solver rc` would build (radiance_cascades.h).
     const voxel::CascadeEstimate rc = voxel::estimateCascades(world);
-    // Runs through glass are not estimated ahead; the build counts them against the limit.
+    // Runs through glass are not estimated ahead; the build counts them against the limit and,
+    // where they do not fit, doubles the automatic spacing.
     const bool glass = shading.refraction && shading.materials.anyTransmission();
     std::printf("  cascades (rc)      %s: spacing %d, %d levels, %lld probes, %lld faces%s%s\n",
                 formatBytes(rc.bytes).c_str(), rc.spacing, rc.levels,
                 static_cast<long long>(rc.probes), static_cast<long long>(rc.faces),
-                glass ? ", + runs through glass (checked while building)" : "",
+                glass ? ", + runs through glass (checked while building; an automatic spacing "
+                        "doubles where they do not fit)"
+                      : "",
                 rc.fits ? "" : " (over the limit: luxel render --solver rc refuses it)");
     // What `luxel render --solver path` would allocate (path_trace.h, path_trace_gpu.h), at the
     // internal size it traces at; the CPU line says whether render would refuse it.

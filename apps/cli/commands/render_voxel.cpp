@@ -269,6 +269,10 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         if (!shaded) return reportError(shaded.error());
         cascaded = std::move(*shaded);
         internal = std::move(cascaded.radiance);
+        // An automatic spacing doubled for the runs through glass: which, and why.
+        if (!cascaded.stats.spacingNote.empty()) {
+            std::fprintf(stderr, "luxel: note: %s\n", cascaded.stats.spacingNote.c_str());
+        }
         if (!note.empty()) std::fprintf(stderr, "luxel: note: %s\n", note.c_str());
     } else if (*context) {
         auto image = renderOnGpu(**context, *scene, camera);

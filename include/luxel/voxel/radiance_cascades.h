@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "luxel/core/error.h"
@@ -66,13 +67,18 @@ struct CascadeStats {
     std::uint64_t bytes = 0;
     double buildSeconds = 0.0;
     int bounces = 0;  // lighting passes run so far
+    // Why `spacing` is larger than estimateCascades picked (empty when it is not): an automatic
+    // spacing doubled because the segments' runs through glass did not fit the memory limit.
+    std::string spacingNote;
 };
 
 class RadianceCascades {
   public:
     // Finds the faces, plans the levels and casts every segment once (world, textures: kept, must
     // outlive it unchanged). Fails on an invalid light (validatePathTrace), an estimate over the
-    // memory limit, or segments' runs through glass that pass it as they are cast (not estimated).
+    // memory limit, or segments' runs through glass that pass it as they are cast (not estimated)
+    // at a spacing given in `options`; an automatic spacing is doubled until they fit
+    // (stats().spacingNote says so), and fails only past kMaxCascadeSpacing.
     static Result<RadianceCascades> create(const VoxelWorld& world, const TextureSet* textures,
                                            const ShadeOptions& shading,
                                            const CascadeOptions& options = {});
@@ -81,7 +87,10 @@ class RadianceCascades {
     ~RadianceCascades();
 
     // New light (sun, sky, materials), irradiance so far kept (a bounce a frame in the viewer).
-    // Fails on an invalid light, or as create() on runs through glass (next call casts again).
+    // Where it changes what passes glass (refraction, the glass's materials) the faces under
+    // glass, the levels' spacing and the segments are built again as create() would build them
+    // for this light. Fails on an invalid light, or as create() on runs through glass (the next
+    // call builds again).
     Status setLight(const ShadeOptions& shading);
     // One lighting pass: faces' outgoing radiance from the current irradiance, the levels merged
     // top down, each face's irradiance gathered. Returns the relative change of the summed face

@@ -28,8 +28,8 @@ class RadianceCascadesGpu {
     ~RadianceCascadesGpu();
 
     // The faces' light again after RadianceCascades::setLight (sun, sky, materials). Fails when
-    // setLight changed the glass's materials (the segments through glass were cast again: create
-    // the GPU passes anew).
+    // setLight changed what passes glass (the faces under glass and the segments were built
+    // again: create the GPU passes anew; iterate and download fail then too).
     Status uploadLight();
     // `passes` lighting passes in one submission; returns the GPU time of the last, in ms.
     Result<double> iterate(int passes = 1);

@@ -178,12 +178,21 @@ Result<RadianceCascadesGpu> RadianceCascadesGpu::create(gpu::Context& context,
     return RadianceCascadesGpu(std::move(impl));
 }
 
+namespace {
+
+// The device's copy is stale once setLight built the faces and segments again (new glass
+// materials or refraction): its tables no longer match the CPU object's.
+Status checkCurrent(const RadianceCascadesGpu::Impl& impl) {
+    if (impl.state->casts == impl.casts) return Ok{};
+    return Error(
+        "radiance cascades on the GPU: the glass's materials changed, so the faces and "
+        "segments were built again; create the GPU passes again");
+}
+
+}  // namespace
+
 Status RadianceCascadesGpu::uploadLight() {
-    if (impl_->state->casts != impl_->casts) {
-        return Error(
-            "radiance cascades on the GPU: the glass's materials changed, so the "
-            "segments were cast again; create the GPU passes again");
-    }
+    if (Status s = checkCurrent(*impl_); !s) return s;
     std::vector<RgbTexel> light, sky;
     packLight(*impl_->state, light, sky);
     if (Status s = impl_->context->upload(*impl_->light, bytesOf(light)); !s) return s;
@@ -192,6 +201,7 @@ Status RadianceCascadesGpu::uploadLight() {
 
 Result<double> RadianceCascadesGpu::iterate(int passes) {
     using namespace gpu::shared;
+    if (Status s = checkCurrent(*impl_); !s) return s.error();
     Impl& g = *impl_;
     const RadianceCascades::State& state = *g.state;
     const std::uint32_t faceCount = std::uint32_t(state.faces.table.size());
@@ -268,6 +278,7 @@ Result<double> RadianceCascadesGpu::iterate(int passes) {
 }
 
 Status RadianceCascadesGpu::download() {
+    if (Status s = checkCurrent(*impl_); !s) return s;
     const std::size_t count = impl_->state->faces.table.size();
     std::vector<RgbTexel> light(6 * count);
     if (Status s =

@@ -48,7 +48,8 @@ Rgb traceTransmittance(const SegmentTrace& trace);
 
 // What decides which voxels segments pass and how much gets through: the refraction switch, the
 // Fresnel model and each material's transmission, metallic, ior and absorption (empty when
-// nothing transmits). Segments are cast again when it changes (RadianceCascades::setLight).
+// nothing transmits). The faces and segments are built again when it changes
+// (RadianceCascades::setLight, cascade_build.cpp).
 std::vector<float> mediaSignature(const ShadeOptions& shading);
 
 // Appends passages from several threads and hands out their codes, within `budget` bytes of

@@ -8,6 +8,7 @@
 // light. The straight part, shared by the eight corners, samples the bin along its own
 // direction; only the short connector bends towards the corner.
 #include <cmath>
+#include <string>
 
 #include "cascade_passages.h"
 #include "cascade_state.h"
@@ -143,10 +144,11 @@ void castFaces(RadianceCascades::State& state, PassageWriter& passages) {
 
 }  // namespace
 
-Status castSegments(RadianceCascades::State& state) {
+Status castSegments(RadianceCascades::State& state, const std::string& hint) {
     state.passages = {};  // frees the last cast's before this one counts its own
     state.castMedia = mediaSignature(state.shading);
     state.castComplete = false;
+    state.passagesRefusedAt = 0;
     ++state.casts;
     const std::uint64_t planned = state.plannedBytes, limit = state.memoryLimit;
     PassageWriter passages(state.passages, limit > planned ? limit - planned : 0);
@@ -155,12 +157,12 @@ Status castSegments(RadianceCascades::State& state) {
     }
     if (!passages.refused()) castFaces(state, passages);
     if (passages.refused()) {
+        state.passagesRefusedAt = passages.reached();
         return Error(
             "radiance cascades: the segments' runs through glass and water need more "
             "than " +
             formatBytes(passages.reached()) + " beyond the " + formatBytes(planned) +
-            " estimated, past the limit of " + formatBytes(limit) +
-            " (try --no-refraction or a smaller world)");
+            " estimated, past the limit of " + formatBytes(limit) + " (" + hint + ")");
     }
     state.castComplete = true;
     return Ok{};

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "cascade_layout.h"
@@ -84,8 +85,8 @@ struct RadianceCascades::State {
     int casts = 0;              // how often they were cast (a GPU copy made before is stale)
     bool castComplete = false;  // false when the last cast was refused (castSegments)
     // Bytes estimated before building (estimateCascades) and the limit the passages must fit
-    // in beside them.
-    std::uint64_t plannedBytes = 0, memoryLimit = 0;
+    // in beside them; the bytes a refused cast's passages would have needed.
+    std::uint64_t plannedBytes = 0, memoryLimit = 0, passagesRefusedAt = 0;
     Vec3d sunForVisibility{};           // the sun direction sunPassing was found for
     double sunRadiusForVisibility = 0;  // and the sun's angular radius
     CascadeStats stats;
@@ -139,9 +140,21 @@ inline Rgb chainRadiance(std::uint32_t code, const std::vector<Passage>& passage
 }
 
 // Casts every segment of the faces and the levels once (cascade_segments.cpp). Refuses, with
-// the bytes, when the passages would take the cascades past State::memoryLimit (checked as they
-// are made; the cast stops early, leaving the codes not cast kVoid and castComplete false).
-Status castSegments(RadianceCascades::State& state);
+// the bytes (also in State::passagesRefusedAt) and `hint` in brackets, when the passages would
+// take the cascades past State::memoryLimit beside State::plannedBytes (checked as they are
+// made; the cast stops early, leaving the codes not cast kVoid and castComplete false).
+Status castSegments(RadianceCascades::State& state, const std::string& hint);
+// Refuses an estimate over its limit, naming its spacing and bytes.
+Status checkEstimate(const CascadeEstimate& estimate);
+// Finds the faces for the state's shading (the irradiance gathered so far stays with its face),
+// plans the levels and casts the segments (cascade_build.cpp): what create() builds, and what
+// setLight() builds again when what passes glass changes (mediaSignature). From the spacing
+// estimateCascades picks under State::memoryLimit; with an automatic spacing a cast refused for
+// its runs through glass is tried again at twice the spacing, up to kMaxCascadeSpacing, and
+// stats.spacingNote says why. Refuses as castSegments does when no spacing it may take fits.
+Status buildSegments(RadianceCascades::State& state);
+// The state's faces, levels, segments, passages and bytes into its stats.
+void updateStats(RadianceCascades::State& state);
 // Face colours and sun visibility for the state's shading (cascade_light.cpp).
 void updateFaceLight(RadianceCascades::State& state);
 // The faces' emitterIrradiance; false (and zeros) when there are too many pairs.

@@ -84,54 +84,20 @@ Result<RadianceCascades> RadianceCascades::create(const VoxelWorld& world,
     if (Status s = validatePathTrace(shading, PathTraceOptions{}); !s) return s.error();
     const auto start = std::chrono::steady_clock::now();
     const CascadeEstimate estimate = estimateCascades(world, options);
-    if (!estimate.fits) {
-        return Error("radiance cascades with probe spacing " + std::to_string(estimate.spacing) +
-                     " need " + formatBytes(estimate.bytes) + ", more than the limit of " +
-                     formatBytes(estimate.limit) + " (try a larger --rc-spacing)");
-    }
-    const std::uint64_t needed = estimate.bytes;
-    const std::int64_t exposed = estimate.faces;
-    const int spacing = estimate.spacing;
-    const std::vector<Level> levels = planLevels(world.size(), spacing);
-    DirectionBins faceBins = DirectionBins::build(kFaceBinSide);
-    if (Status s = checkMemory(needed, "radiance cascades"); !s) return s.error();
+    if (Status s = checkEstimate(estimate); !s) return s.error();
+    if (Status s = checkMemory(estimate.bytes, "radiance cascades"); !s) return s.error();
 
     auto state = std::make_unique<State>();
     state->world = &world;
     state->textures = textures;
     state->shading = shading;
     state->options = options;
-    state->plannedBytes = needed;
     state->memoryLimit = estimate.limit;
-    Result<FaceTable> table =
-        FaceTable::build(world, textures, std::max<std::int64_t>(exposed * 2, 1 << 20), &shading);
-    if (!table) return table.error();
-    state->faces.table = std::move(*table);
-    state->faces.bins = std::move(faceBins);
-    for (const Level& level : levels) {
-        LevelData data;
-        data.level = level;
-        data.bins = DirectionBins::build(level.binSide);
-        state->levels.push_back(std::move(data));
-    }
-    if (Status s = castSegments(*state); !s) return s.error();
+    state->faces.bins = DirectionBins::build(kFaceBinSide);
+    if (Status s = buildSegments(*state); !s) return s.error();
     updateFaceLight(*state);
-
-    CascadeStats& stats = state->stats;
-    stats.faces = state->faces.table.size();
-    stats.levels = int(levels.size());
-    stats.spacing = spacing;
-    stats.segments = std::int64_t(state->faces.codes.size());
-    stats.passages = std::int64_t(state->passages.size());
-    stats.bytes = state->faces.table.bytes() + state->faces.codes.size() * 4 +
-                  state->passages.size() * sizeof(cascades::Passage);
-    for (const LevelData& level : state->levels) {
-        stats.probes += level.level.probeCount();
-        stats.segments += std::int64_t(level.codes.size());
-        stats.bytes += level.codes.size() * 4 +
-                       std::uint64_t(level.level.probeCount()) * level.bins.count() * 15;
-    }
-    stats.buildSeconds = secondsSince(start);
+    updateStats(*state);
+    state->stats.buildSeconds = secondsSince(start);
     return RadianceCascades(std::move(state));
 }
 
@@ -143,7 +109,8 @@ Status RadianceCascades::setLight(const ShadeOptions& shading) {
     Status cast = Ok{};
     if (!state_->castComplete || cascades::mediaSignature(shading) != state_->castMedia) {
         state_->faces.emitterIrradiance.clear();  // their light through glass is found again
-        cast = cascades::castSegments(*state_);
+        cast = cascades::buildSegments(*state_);
+        cascades::updateStats(*state_);
     }
     // Even when the cast is refused the faces' light stays consistent with the codes it left.
     updateFaceLight(*state_);
