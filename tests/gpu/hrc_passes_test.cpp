@@ -99,7 +99,7 @@ TEST_F(HrcPasses, TraceMatchesTraceLevelInEveryFrustum) {
         for (int n = 0; n < 4; ++n) {
             // Cascade 0 with its depth scale
             // (docs/algorithms/holographic-radiance-cascades.md §3.1).
-            const float scale = gpu::shared::hrcTracedDepthScale(n, 4, 4);
+            const float scale = gpu::shared::hrcTracedDepthScale(n, 4);
             traceLevel(cpu, marcher, n, scale);
             auto ms = traceLevelOnGpu(*context_, medium, frame, gpu, n, scale);
             ASSERT_TRUE(ms.ok()) << ms.error().message();

@@ -160,9 +160,9 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
             const int planes = planeCount(frame.length, n);
             passes.push_back(
                 n < options.tracedLevels
-                    ? makeTraceDispatch(
-                          *trace, traceMedium(frame), tables[n].get(), n, frame, planes,
-                          shared::hrcTracedDepthScale(n, options.tracedLevels, levels))
+                    ? makeTraceDispatch(*trace, traceMedium(frame), tables[n].get(), n, frame,
+                                        planes,
+                                        shared::hrcTracedDepthScale(n, options.tracedLevels))
                     : makeExtendDispatch(*extend, tables[n - 1].get(), tables[n].get(), n,
                                          frame.rows, planeCount(frame.length, n - 1), planes));
             passes.back().name += tag;

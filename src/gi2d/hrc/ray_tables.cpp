@@ -78,8 +78,7 @@ void traceLevel(RayTables& tables, const RayMarcher& marcher, int n, float depth
 void traceBaseLevels(RayTables& tables, const RayMarcher& marcher, int tracedLevels) {
     const int levels = std::min(tracedLevels, tables.levels());
     for (int n = 0; n < levels; ++n) {
-        traceLevel(tables, marcher, n,
-                   gpu::shared::hrcTracedDepthScale(n, tracedLevels, tables.levels()));
+        traceLevel(tables, marcher, n, gpu::shared::hrcTracedDepthScale(n, tracedLevels));
     }
 }
 

@@ -82,9 +82,9 @@ const TracedRays& tracedRays(int traced, bool scaleC0) {
 }
 
 // Whether cascade 0 takes its depth scale (hrcTracedDepthScale: not where it is the base of ray
-// extension).
-bool scalesC0(int tracedLevels, int levels) {
-    return shared::hrcTracedDepthScale(0, tracedLevels, levels) != 1.0f;
+// extension). The option decides, as on the GPU, not the count clamped to a short frame's cascades.
+bool scalesC0(int tracedLevels) {
+    return shared::hrcTracedDepthScale(0, tracedLevels) != 1.0f;
 }
 
 // Calls fn(a, b) for the pieces of rows [y0, y1) inside which every row y + offset lies either
@@ -136,7 +136,7 @@ class FrustumSweep {
           rows_(frame.rows),
           levels_(cascadeCount(frame.length)),
           traced_(tracedFor(tracedLevels, levels_)),
-          rays_(tracedRays(traced_, scalesC0(tracedLevels, levels_))),
+          rays_(tracedRays(traced_, scalesC0(tracedLevels))),
           columns_(buffers.columns),
           tables_(buffers.tables),
           cones_(buffers.cones),
@@ -434,8 +434,7 @@ SweepMemory sweepMemory(int width, int height, int tracedLevels) {
         m.columns =
             static_cast<std::uint64_t>(members) *
             ColumnWindow::bytesFor(
-                span,
-                static_cast<int>(tracedRays(traced, scalesC0(tracedLevels, levels)).lengths.size()),
+                span, static_cast<int>(tracedRays(traced, scalesC0(tracedLevels)).lengths.size()),
                 frame.rows, band);
         // The buffers keep their allocations from frame to frame: the larger of each.
         most.intervals = std::max(most.intervals, m.intervals);

@@ -57,10 +57,10 @@ LUXEL_FUNC HrcInterval hrcAverage(HrcInterval a, HrcInterval b) {
 #define LUXEL_HRC_C0_DEPTH_SCALE 0.793515f
 
 // The factor on the optical depth of traced cascade `level` (§3.1): cascade 0's ratio, unless
-// cascade 0 is the base that ray extension builds the longer rays from (`tracedLevels` 1 with more
-// than one cascade), where the rays must keep their true length.
-LUXEL_FUNC float hrcTracedDepthScale(int level, int tracedLevels, int levels) {
-    return level == 0 && (tracedLevels > 1 || levels == 1) ? LUXEL_HRC_C0_DEPTH_SCALE : 1.0f;
+// cascade 0 is the base that ray extension builds the longer rays from (`tracedLevels` 1), where
+// the rays must keep their true length.
+LUXEL_FUNC float hrcTracedDepthScale(int level, int tracedLevels) {
+    return level == 0 && tracedLevels > 1 ? LUXEL_HRC_C0_DEPTH_SCALE : 1.0f;
 }
 
 // y offset of ray k of cascade `level` across one plane spacing (§2): 2k - 2^level.
