@@ -107,9 +107,9 @@ void RayMarcher::buildBlockLevels() {
     }
 }
 
-RaySegment RayMarcher::march(Vec2d origin, Vec2d direction, double maxDistance,
-                             float cutoff) const {
-    return marchImpl(origin, direction, maxDistance, cutoff, true);
+RaySegment RayMarcher::march(Vec2d origin, Vec2d direction, double maxDistance, float cutoff,
+                             float depthScale) const {
+    return marchImpl(origin, direction, maxDistance, cutoff, true, depthScale);
 }
 
 RaySegment RayMarcher::segment(Vec2d from, Vec2d to, bool* leavesCanvas) const {
@@ -142,7 +142,7 @@ RaySegment RayMarcher::segment(Vec2d from, Vec2d to, bool* leavesCanvas) const {
 }
 
 RaySegment RayMarcher::marchImpl(Vec2d origin, Vec2d direction, double maxDistance, float cutoff,
-                                 bool addBoundary) const {
+                                 bool addBoundary, float depthScale) const {
     LUXEL_DCHECK(std::abs(length(direction) - 1.0) < 1e-6);
     LUXEL_DCHECK(origin.x >= 0 && origin.y >= 0 && origin.x <= width_ && origin.y <= height_);
 
@@ -160,7 +160,7 @@ RaySegment RayMarcher::marchImpl(Vec2d origin, Vec2d direction, double maxDistan
     auto flushRun = [&] {
         if (run == std::numeric_limits<std::uint32_t>::max() || runLength <= 0.0) return;
         const Material& m = palette_[run];
-        const float length = static_cast<float>(runLength);
+        const float length = static_cast<float>(runLength) * depthScale;
         // Grey absorption (the common case) needs one exp for all channels.
         const bool grey = m.sigma[0] == m.sigma[1] && m.sigma[1] == m.sigma[2];
         const float greyT = grey ? std::exp(-m.sigma[0] * length) : 0.0f;

@@ -17,6 +17,7 @@
 #include "gi2d/hrc/ray_tables.h"
 #include "gi2d/hrc/readout.h"
 #include "gpu/random_medium.h"
+#include "gpu/shaders/shared/hrc_kernels.h"
 #include "luxel/core/half.h"
 #include "luxel/core/rng.h"
 #include "luxel/gi2d/ray_march.h"
@@ -96,8 +97,11 @@ TEST_F(HrcPasses, TraceMatchesTraceLevelInEveryFrustum) {
         cpu.reset(frame.length, frame.rows, 4);
         gpu.reset(frame.length, frame.rows, 4);
         for (int n = 0; n < 4; ++n) {
-            traceLevel(cpu, marcher, n);
-            auto ms = traceLevelOnGpu(*context_, medium, frame, gpu, n);
+            // Cascade 0 with its depth scale
+            // (docs/algorithms/holographic-radiance-cascades.md §3.1).
+            const float scale = gpu::shared::hrcTracedDepthScale(n, 4);
+            traceLevel(cpu, marcher, n, scale);
+            auto ms = traceLevelOnGpu(*context_, medium, frame, gpu, n, scale);
             ASSERT_TRUE(ms.ok()) << ms.error().message();
             // The same exact DDA in float on both sides; the entries are binary16.
             const float worst = worstRelativeHalves(cpu.levelHalves(n), gpu.levelHalves(n));

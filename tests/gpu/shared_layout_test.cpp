@@ -133,7 +133,8 @@ TEST(GpuSharedLayout, HrcPushConstants) {
          {LUXEL_MEMBER(HrcTraceParams, level), LUXEL_MEMBER(HrcTraceParams, rows),
           LUXEL_MEMBER(HrcTraceParams, planes), LUXEL_MEMBER(HrcTraceParams, frameLength),
           LUXEL_MEMBER(HrcTraceParams, frustum), LUXEL_MEMBER(HrcTraceParams, canvasWidth),
-          LUXEL_MEMBER(HrcTraceParams, canvasHeight), LUXEL_MEMBER(HrcTraceParams, transposed)}});
+          LUXEL_MEMBER(HrcTraceParams, canvasHeight), LUXEL_MEMBER(HrcTraceParams, transposed),
+          LUXEL_MEMBER(HrcTraceParams, depthScale)}});
     expectPushConstants(
         "hrc_merge",
         {sizeof(HrcMergeParams),

@@ -34,9 +34,11 @@ class RayMarcher {
     // Integrates from `origin` (inside the canvas or on its border) along the unit vector
     // `direction` for at most `maxDistance` pixels. A ray that leaves the canvas before
     // maxDistance picks up the boundary radiance behind what it crossed. Integration stops early
-    // once every channel's transmittance is below `cutoff`.
-    RaySegment march(Vec2d origin, Vec2d direction, double maxDistance = 1e30,
-                     float cutoff = 1e-6f) const;
+    // once every channel's transmittance is below `cutoff`. `depthScale` multiplies the length
+    // counted in every crossed pixel (HRC's cascade-0 rays,
+    // docs/algorithms/holographic-radiance-cascades.md §3.1); the path itself is unchanged.
+    RaySegment march(Vec2d origin, Vec2d direction, double maxDistance = 1e30, float cutoff = 1e-6f,
+                     float depthScale = 1.0f) const;
 
     // The part of the segment [from, to] that lies on the canvas, without boundary radiance
     // (empty space outside). `leftCanvas` tells whether `to` lies outside the canvas, i.e. whether
@@ -59,7 +61,7 @@ class RayMarcher {
     static constexpr std::uint32_t kLevelMask = (1u << kLevelBits) - 1;
 
     RaySegment marchImpl(Vec2d origin, Vec2d direction, double maxDistance, float cutoff,
-                         bool addBoundary) const;
+                         bool addBoundary, float depthScale = 1.0f) const;
     void buildPalette(const Medium2D& medium);
     void buildBlockLevels();
 

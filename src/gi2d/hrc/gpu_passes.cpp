@@ -59,15 +59,15 @@ bool traceReadsTransposed(const FrustumFrame& frame) {
 }
 
 gpu::Dispatch makeTraceDispatch(gpu::Program* program, gpu::Buffer* medium, gpu::Buffer* table,
-                                int n, const FrustumFrame& frame, int planes) {
+                                int n, const FrustumFrame& frame, int planes, float depthScale) {
     gpu::Dispatch d;
     d.name = "trace T" + std::to_string(n);
     d.program = program;
     d.buffers = {medium, table};
     d.setPush(shared::HrcTraceParams{u32(n), u32(frame.rows), u32(planes), u32(frame.length),
                                      u32(static_cast<int>(frame.frustum)), u32(frame.canvasWidth),
-                                     u32(frame.canvasHeight),
-                                     traceReadsTransposed(frame) ? 1u : 0u});
+                                     u32(frame.canvasHeight), traceReadsTransposed(frame) ? 1u : 0u,
+                                     depthScale});
     d.setThreads(u32(frame.rows), pow2(n) + 1, u32(planes));
     return d;
 }
@@ -135,7 +135,8 @@ gpu::Dispatch makeTransposeDispatch(gpu::Program* program, gpu::Buffer* rows, gp
 }
 
 Result<double> traceLevelOnGpu(gpu::Context& context, const Medium2D& medium,
-                               const FrustumFrame& frame, RayTables& tables, int n) {
+                               const FrustumFrame& frame, RayTables& tables, int n,
+                               float depthScale) {
     LUXEL_CHECK(n >= 0 && n < tables.levels());
     auto program = context.program("hrc_trace", 2, sizeof(shared::HrcTraceParams));
     if (!program) return program.error();
@@ -147,7 +148,7 @@ Result<double> traceLevelOnGpu(gpu::Context& context, const Medium2D& medium,
     auto tableBuffer = scratch.create(table.size_bytes());
     if (!tableBuffer) return tableBuffer.error();
     auto ms = runOne(context, makeTraceDispatch(*program, *canvasMedium, *tableBuffer, n, frame,
-                                                tables.planes(n)));
+                                                tables.planes(n), depthScale));
     if (!ms) return ms;
     if (Status s = context.download(**tableBuffer, std::as_writable_bytes(table)); !s) {
         return s.error();

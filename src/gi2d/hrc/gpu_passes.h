@@ -26,7 +26,7 @@ namespace luxel::gi2d::hrc {
 // row-major canvas medium for the +-y frustums and the transposed one for +-x
 // (traceReadsTransposed).
 gpu::Dispatch makeTraceDispatch(gpu::Program* program, gpu::Buffer* medium, gpu::Buffer* table,
-                                int n, const FrustumFrame& frame, int planes);
+                                int n, const FrustumFrame& frame, int planes, float depthScale);
 bool traceReadsTransposed(const FrustumFrame& frame);
 gpu::Dispatch makeExtendDispatch(gpu::Program* program, gpu::Buffer* below, gpu::Buffer* table,
                                  int n, int rows, int planesBelow, int planes);
@@ -43,10 +43,11 @@ gpu::Dispatch makeFinishDispatch(gpu::Program* program, gpu::Buffer* canvasMediu
                                  gpu::Buffer* beyond, gpu::Buffer* fluence, int width, int height,
                                  int frustums, bool blur);
 
-// T_n of `tables` marched through `medium` seen in `frame` (CPU twin: traceLevel on
-// frameMedium(medium, frame)).
+// T_n of `tables` marched through `medium` seen in `frame`, the optical depth times `depthScale`
+// (CPU twin: traceLevel on frameMedium(medium, frame)).
 Result<double> traceLevelOnGpu(gpu::Context& context, const Medium2D& medium,
-                               const FrustumFrame& frame, RayTables& tables, int n);
+                               const FrustumFrame& frame, RayTables& tables, int n,
+                               float depthScale = 1.0f);
 // T_n from T_{n-1}.
 Result<double> extendLevelOnGpu(gpu::Context& context, RayTables& tables, int n);
 // R_n into `out` from T_n, T_{n+1} weights and `upper` (null at the top).

@@ -9,6 +9,7 @@
 #include "gi2d/hrc/hrc_geometry.h"
 #include "gi2d/hrc/ray_tables.h"
 #include "gi2d/medium_gpu.h"
+#include "gpu/shaders/shared/hrc_kernels.h"
 #include "gpu/shaders/shared/hrc_layout.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/timer.h"
@@ -157,12 +158,13 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
         const std::string tag = " f" + std::to_string(r);
         for (int n = 0; n < levels; ++n) {
             const int planes = planeCount(frame.length, n);
-            passes.push_back(n < options.tracedLevels
-                                 ? makeTraceDispatch(*trace, traceMedium(frame), tables[n].get(), n,
-                                                     frame, planes)
-                                 : makeExtendDispatch(*extend, tables[n - 1].get(), tables[n].get(),
-                                                      n, frame.rows,
-                                                      planeCount(frame.length, n - 1), planes));
+            passes.push_back(
+                n < options.tracedLevels
+                    ? makeTraceDispatch(*trace, traceMedium(frame), tables[n].get(), n, frame,
+                                        planes,
+                                        shared::hrcTracedDepthScale(n, options.tracedLevels))
+                    : makeExtendDispatch(*extend, tables[n - 1].get(), tables[n].get(), n,
+                                         frame.rows, planeCount(frame.length, n - 1), planes));
             passes.back().name += tag;
         }
         int current = 0;

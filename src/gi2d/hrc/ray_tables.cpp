@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "gi2d/hrc/hrc_geometry.h"
+#include "gpu/shaders/shared/hrc_kernels.h"
 #include "luxel/core/parallel.h"
 
 namespace luxel::gi2d::hrc {
@@ -61,14 +62,14 @@ void forEachPlaneAndRay(const RayTables& tables, int n, Body&& body) {
 
 }  // namespace
 
-void traceLevel(RayTables& tables, const RayMarcher& marcher, int n) {
+void traceLevel(RayTables& tables, const RayMarcher& marcher, int n, float depthScale) {
     forEachPlaneAndRay(tables, n, [&](int p, int k) {
         const double dx = pow2(n), dy = rayOffsetY(n, k);
         const double len = std::hypot(dx, dy);
         const Vec2d direction{dx / len, dy / len};
         const double x = static_cast<double>(p) * pow2(n);
         for (int y = 0; y < tables.rows(); ++y) {
-            const RaySegment s = marcher.march({x, y + 0.5}, direction, len, 0.0f);
+            const RaySegment s = marcher.march({x, y + 0.5}, direction, len, 0.0f, depthScale);
             tables.set(n, p, y, k, {toVec3(s.radiance), toVec3(s.transmittance)});
         }
     });
@@ -76,7 +77,9 @@ void traceLevel(RayTables& tables, const RayMarcher& marcher, int n) {
 
 void traceBaseLevels(RayTables& tables, const RayMarcher& marcher, int tracedLevels) {
     const int levels = std::min(tracedLevels, tables.levels());
-    for (int n = 0; n < levels; ++n) traceLevel(tables, marcher, n);
+    for (int n = 0; n < levels; ++n) {
+        traceLevel(tables, marcher, n, gpu::shared::hrcTracedDepthScale(n, tracedLevels));
+    }
 }
 
 void extendLevels(RayTables& tables, int tracedLevels) {

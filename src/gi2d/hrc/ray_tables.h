@@ -109,9 +109,10 @@ struct DecodedRow {
     }
 };
 
-// Marches T_n with the exact DDA (exact optical depth on diagonals): the CPU twin of hrc_trace.
-void traceLevel(RayTables& tables, const RayMarcher& marcher, int n);
-// traceLevel for every n < tracedLevels.
+// Marches T_n with the exact DDA (exact optical depth on diagonals), the optical depth times
+// `depthScale` (hrcTracedDepthScale, §3.1): the CPU twin of hrc_trace.
+void traceLevel(RayTables& tables, const RayMarcher& marcher, int n, float depthScale = 1.0f);
+// traceLevel for every n < tracedLevels, each with its hrcTracedDepthScale.
 void traceBaseLevels(RayTables& tables, const RayMarcher& marcher, int tracedLevels);
 
 // Builds T_n (n >= 1) from T_{n-1} by extension (paper Eq 18-20): the CPU twin of hrc_extend.

@@ -32,12 +32,17 @@ struct TracedRays {
     std::vector<std::vector<std::vector<TraceStep>>> steps;  // [n][k]
 };
 
-TracedRays buildTracedRays(int traced) {
+// `scaleC0`: cascade 0's cells count with their lengths times LUXEL_HRC_C0_DEPTH_SCALE (§3.1).
+TracedRays buildTracedRays(int traced, bool scaleC0) {
     TracedRays rays;
     std::vector<std::vector<std::vector<StencilStep>>> stencils(static_cast<std::size_t>(traced));
     for (int n = 0; n < traced; ++n) {
         for (int k = 0; k <= pow2(n); ++k) {
             stencils[n].push_back(traceStencil(n, k));
+            if (n == 0 && scaleC0) {
+                for (StencilStep& step : stencils[n].back())
+                    step.length *= LUXEL_HRC_C0_DEPTH_SCALE;
+            }
             for (const StencilStep& step : stencils[n].back()) {
                 if (std::find(rays.lengths.begin(), rays.lengths.end(), step.length) ==
                     rays.lengths.end()) {
@@ -61,15 +66,25 @@ TracedRays buildTracedRays(int traced) {
     return rays;
 }
 
-// Built once for every traced count the sweep takes.
-const TracedRays& tracedRays(int traced) {
-    static const std::vector<TracedRays> all = [] {
-        std::vector<TracedRays> built;
-        for (int t = 0; t <= kSweepMaxTracedLevels; ++t) built.push_back(buildTracedRays(t));
+// Built once for every traced count the sweep takes, with and without cascade 0's depth scale.
+const TracedRays& tracedRays(int traced, bool scaleC0) {
+    static const std::array<std::vector<TracedRays>, 2> all = [] {
+        std::array<std::vector<TracedRays>, 2> built;
+        for (int s = 0; s < 2; ++s) {
+            for (int t = 0; t <= kSweepMaxTracedLevels; ++t) {
+                built[s].push_back(buildTracedRays(t, s != 0));
+            }
+        }
         return built;
     }();
     LUXEL_CHECK(traced >= 1 && traced <= kSweepMaxTracedLevels);
-    return all[traced];
+    return all[scaleC0 ? 1 : 0][traced];
+}
+
+// Whether cascade 0 takes its depth scale (hrcTracedDepthScale: not where it is the base of ray
+// extension). The option decides, as on the GPU, not the count clamped to a short frame's cascades.
+bool scalesC0(int tracedLevels) {
+    return shared::hrcTracedDepthScale(0, tracedLevels) != 1.0f;
 }
 
 // Calls fn(a, b) for the pieces of rows [y0, y1) inside which every row y + offset lies either
@@ -121,6 +136,7 @@ class FrustumSweep {
           rows_(frame.rows),
           levels_(cascadeCount(frame.length)),
           traced_(tracedFor(tracedLevels, levels_)),
+          rays_(tracedRays(traced_, scalesC0(tracedLevels))),
           columns_(buffers.columns),
           tables_(buffers.tables),
           cones_(buffers.cones),
@@ -131,9 +147,8 @@ class FrustumSweep {
             planes_.push_back(planeCount(frame.length, n));
             weights_.push_back(coneWeights(n));
         }
-        const TracedRays& rays = tracedRays(traced_);
         for (ColumnWindow& window : columns_) {
-            window.reshape(pow2(traced_ - 1), rays.lengths, rows_);
+            window.reshape(pow2(traced_ - 1), rays_.lengths, rows_);
         }
     }
 
@@ -167,6 +182,7 @@ class FrustumSweep {
     const Medium2D& medium_;
     FrustumFrame frame_;
     int rows_, levels_, traced_;
+    const TracedRays& rays_;
     std::vector<int> planes_;
     std::vector<std::vector<float>> weights_;
     std::vector<ColumnWindow>& columns_;  // one per team member
@@ -182,8 +198,7 @@ std::uint64_t FrustumSweep::trace(const ColumnWindow& columns, int x, int y0, in
     std::uint64_t bytes = static_cast<std::uint64_t>(rows_) * 24;  // the column loaded
     for (int n = 0; n < traced_ && (x & (pow2(n) - 1)) == 0; ++n) {
         for (int k = 0; k <= pow2(n); ++k) {
-            traceRows(tracedRays(traced_).steps[n][k], window.data(), tables_.write(n, x >> n, k),
-                      y0, y1);
+            traceRows(rays_.steps[n][k], window.data(), tables_.write(n, x >> n, k), y0, y1);
             bytes += static_cast<std::uint64_t>(rows_) * 12;
         }
     }
@@ -410,7 +425,8 @@ SweepMemory sweepMemory(int width, int height, int tracedLevels, int threads) {
         // splits them) and the rows its stencils reach beyond it.
         const int members = std::clamp(threads, 1, frame.rows);
         const int span = pow2(traced - 1);
-        const int lengths = static_cast<int>(tracedRays(traced).lengths.size());
+        const int lengths =
+            static_cast<int>(tracedRays(traced, scalesC0(tracedLevels)).lengths.size());
         int band = 0, reached = 0;
         for (int i = 0; i < members; ++i) {
             const auto begin = [&](int j) {

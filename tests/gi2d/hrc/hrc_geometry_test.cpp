@@ -179,7 +179,8 @@ TEST(HrcGeometry, UpperReadsBlendRowsWithWeightsSummingToOne) {
     const sh::vec3 one(1.0f), zero(0.0f);
     for (int n = 0; n < 28; ++n) {
         const float a = sh::hrcSecondRowWeight(n);
-        EXPECT_FLOAT_EQ(a, std::ldexp(1.0f, -(n + 1)));
+        // 7/16 at cascade 0, halving from 1/4 above (§5.1 with §3.1's depth scale).
+        EXPECT_FLOAT_EQ(a, n == 0 ? 0.4375f : std::ldexp(1.0f, -(n + 1)));
         EXPECT_FLOAT_EQ(sh::hrcBlendTwoRows(one, one, a).x, 1.0f);
         EXPECT_FLOAT_EQ(sh::hrcBlendThreeRows(one, one, one, a).x, 1.0f);
         EXPECT_FLOAT_EQ(sh::hrcBlendTwoRows(one, one, sh::hrcNearRowWeight(n)).x, 1.0f);
@@ -189,9 +190,21 @@ TEST(HrcGeometry, UpperReadsBlendRowsWithWeightsSummingToOne) {
     EXPECT_FLOAT_EQ(sh::hrcBlendThreeRows(zero, zero, one, 0.5f).x, 0.25f);
     EXPECT_EQ(sh::hrcTowardsAxis(0), 1);  // the lower side's bisector lies above its ray
     EXPECT_EQ(sh::hrcTowardsAxis(1), -1);
-    EXPECT_FLOAT_EQ(sh::hrcNearRowWeight(0), 0.5f);
+    EXPECT_FLOAT_EQ(sh::hrcNearRowWeight(0), 0.25f);
     EXPECT_FLOAT_EQ(sh::hrcNearRowWeight(1), 0.25f);
     EXPECT_FLOAT_EQ(sh::hrcNearRowWeight(2), 0.0f);
+}
+
+TEST(HrcGeometry, CascadeZeroCountsItsSubConesMeanPath) {
+    // §3.1: the directions between a frustum edge and its axis cross one pixel column over
+    // ln(1 + sqrt 2) / (pi / 4) px on average; cascade 0's diagonal ray over sqrt 2.
+    namespace sh = gpu::shared;
+    const double meanPath = std::log(1.0 + std::sqrt(2.0)) / (std::numbers::pi / 4);
+    EXPECT_NEAR(sh::hrcTracedDepthScale(0, 3), meanPath / std::sqrt(2.0), 1e-6);
+    EXPECT_FLOAT_EQ(sh::hrcTracedDepthScale(1, 3), 1.0f);
+    EXPECT_FLOAT_EQ(sh::hrcTracedDepthScale(2, 3), 1.0f);
+    // Extending from c0: cascade 0's rays build the longer ones and keep their true length.
+    EXPECT_FLOAT_EQ(sh::hrcTracedDepthScale(0, 1), 1.0f);
 }
 
 }  // namespace

@@ -33,7 +33,8 @@ void main() {
     const vec2 origin = vec2(float(p) * dx, float(y) + 0.5);
 
     // The frame medium ends at the frame: empty space beyond (no cutoff: exact to the end).
-    const Marched m = marchMedium(origin, dir, len, params.frameLength, params.rows, 0.0);
+    const Marched m =
+        marchMedium(origin, dir, len, params.frameLength, params.rows, 0.0, params.depthScale);
     const HrcInterval v = HrcInterval(m.radiance, m.transmittance);
     table[tableIndex(params.level, p, k, y, params.rows)] = packEntry(v);
 }

@@ -13,8 +13,10 @@ struct Marched {
 
 // From `start` (inside the width x height medium) along the unit direction `dir` for `span`
 // pixels, stopping at the medium's edge (empty beyond) or once every channel's transmittance is
-// below `cutoff`.
-Marched marchMedium(vec2 start, vec2 dir, float span, uint width, uint height, float cutoff) {
+// below `cutoff`. `depthScale` multiplies the length counted in every crossed pixel (RayMarcher's
+// depthScale: HRC's cascade-0 rays).
+Marched marchMedium(vec2 start, vec2 dir, float span, uint width, uint height, float cutoff,
+                    float depthScale) {
     Marched s = Marched(vec3(0.0), vec3(1.0));
     ivec2 cell = min(ivec2(floor(start)), ivec2(width - 1u, height - 1u));
     const ivec2 stepDir = ivec2(dir.x > 0.0 ? 1 : -1, dir.y > 0.0 ? 1 : -1);
@@ -31,7 +33,7 @@ Marched marchMedium(vec2 start, vec2 dir, float span, uint width, uint height, f
         if (max(s.transmittance.x, max(s.transmittance.y, s.transmittance.z)) < cutoff) break;
         const float exit = min(min(next.x, next.y), span);
         const MediumTexel m = medium[mediumIndex(cell, width)];
-        const vec3 tr = exp(-mediumSigma(m) * (exit - t));
+        const vec3 tr = exp(-mediumSigma(m) * ((exit - t) * depthScale));
         s.radiance += s.transmittance * mediumEmission(m) * (vec3(1.0) - tr);
         s.transmittance *= tr;
         t = exit;

@@ -55,7 +55,7 @@ Segment traceSegment(vec2 from, vec2 to) {
     }
     if (t0 >= t1) return s;
     const vec2 start = clamp(from + dir * t0, vec2(0.0), hi);
-    const Marched m = marchMedium(start, dir, t1 - t0, params.width, params.height, 1e-6);
+    const Marched m = marchMedium(start, dir, t1 - t0, params.width, params.height, 1e-6, 1.0);
     s.radiance = m.radiance;
     s.transmittance = m.transmittance;
     return s;

@@ -49,6 +49,20 @@ LUXEL_FUNC HrcInterval hrcAverage(HrcInterval a, HrcInterval b) {
                        (a.transmittance + b.transmittance) * 0.5f);
 }
 
+// Cascade 0's two rays run along the frustum's edges (±45 degrees), yet each stands for the half
+// of the frustum between its edge and the axis (§3.1): across the one pixel column to the next
+// plane those directions travel ln(1 + sqrt 2) / (pi / 4) = 1.1222 px on average, the diagonal
+// sqrt 2. Its traced cells count with their lengths times this ratio, so a uniform medium gets
+// the optical depth of the sub-cone rather than of its edge.
+#define LUXEL_HRC_C0_DEPTH_SCALE 0.793515f
+
+// The factor on the optical depth of traced cascade `level` (§3.1): cascade 0's ratio, unless
+// cascade 0 is the base that ray extension builds the longer rays from (`tracedLevels` 1), where
+// the rays must keep their true length.
+LUXEL_FUNC float hrcTracedDepthScale(int level, int tracedLevels) {
+    return level == 0 && tracedLevels > 1 ? LUXEL_HRC_C0_DEPTH_SCALE : 1.0f;
+}
+
 // y offset of ray k of cascade `level` across one plane spacing (§2): 2k - 2^level.
 LUXEL_FUNC int hrcRayOffsetY(int level, int k) {
     return 2 * k - (1 << level);
@@ -75,17 +89,18 @@ LUXEL_FUNC int hrcTowardsAxis(int side) {
     return side == 0 ? 1 : -1;
 }
 
-// The weight a of the row towards the bisector: 2^-(level+1), halving per cascade (1/2 would
-// interpolate the sub-cone's crossing exactly; the halving was chosen by measurement). Levels stay
-// far below 30 (at most 2^28 pixels).
+// The weight a of the row towards the bisector: 7/16 at cascade 0, then 2^-(level+1), halving
+// per cascade (1/2 would interpolate the sub-cone's crossing exactly; the halving and cascade 0's
+// 7/16, with the depth scale of §3.1, were chosen by measurement). Levels stay far below 30 (at
+// most 2^28 pixels).
 LUXEL_FUNC float hrcSecondRowWeight(int level) {
-    return 1.0f / float(1u << uint(level + 1));
+    return level == 0 ? 0.4375f : 1.0f / float(1u << uint(level + 1));
 }
 
-// The near probe's weight for the row along the side's ray: 1/2 at cascade 0, 1/4 at cascade 1,
-// none above (chosen by measurement).
+// The near probe's weight for the row along the side's ray: 1/4 at cascades 0 and 1, none above
+// (chosen by measurement; 1/2 at cascade 0 before §3.1's depth scale).
 LUXEL_FUNC float hrcNearRowWeight(int level) {
-    return level == 0 ? 0.5f : (level == 1 ? 0.25f : 0.0f);
+    return level <= 1 ? 0.25f : 0.0f;
 }
 
 // Odd planes and the near probe: (1 - a) row + a second.

@@ -59,7 +59,8 @@ struct HrcTraceParams {
     uint frustum;      // 0 +x, 1 +y, 2 -x, 3 -y (FrustumFrame)
     uint canvasWidth;
     uint canvasHeight;
-    uint transposed;  // 1: the buffer is column-major (x * canvasHeight + y)
+    uint transposed;   // 1: the buffer is column-major (x * canvasHeight + y)
+    float depthScale;  // hrcTracedDepthScale (hrc_kernels.h)
 };
 
 // Push constants of hrc_merge: R_level from R_{level+1} (hasUpper = 0 at the top cascade).
@@ -96,7 +97,7 @@ struct HrcFinishParams {
 #ifdef __cplusplus
 static_assert(sizeof(HrcTableEntry) == LUXEL_HRC_ENTRY_WORDS * 4);
 static_assert(sizeof(HrcConePair) == 4);
-static_assert(sizeof(HrcTraceParams) == 32);
+static_assert(sizeof(HrcTraceParams) == 36);
 static_assert(offsetof(HrcTraceParams, frustum) == 16);
 static_assert(sizeof(HrcMergeParams) == 32);
 static_assert(offsetof(HrcMergeParams, skyR) == 20);
