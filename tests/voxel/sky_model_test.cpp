@@ -12,7 +12,7 @@
 namespace luxel::voxel {
 namespace {
 
-const char* kPath = "scenes/sky.json";
+const char* kPath = "t/sky.json";
 
 Result<VoxelScene> sceneWithSky(const std::string& sky) {
     return parseVoxelScene(R"({"type": "voxel", "world": {"source": "empty", "size": [4, 4, 4]},
@@ -86,7 +86,7 @@ TEST(SkyModel, BadSkiesAreRefusedNamingTheField) {
         ASSERT_FALSE(scene.ok()) << c.sky;
         const std::string message = scene.error().message();
         EXPECT_NE(message.find(c.expected), std::string::npos) << message;
-        // Located in the file: "scenes/sky.json:LINE:COLUMN: ...", the sky on line 3.
+        // Located in the file: "t/sky.json:LINE:COLUMN: ...", the sky on line 3.
         EXPECT_EQ(message.rfind(std::string(kPath) + ":3:", 0), 0u) << message;
     }
 }
