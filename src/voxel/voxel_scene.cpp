@@ -16,6 +16,7 @@
 #include "post/post_json.h"
 #include "voxel/material_scene.h"
 #include "voxel/shadows/shadow_json.h"
+#include "voxel/sky_scene.h"
 #include "voxel/texture_scene_fields.h"
 #include "voxel/voxel_scene_internal.h"
 
@@ -373,18 +374,7 @@ ShadeOptions buildShading(const Json& root, const std::vector<Material>& materia
         o.sunDirection = {static_cast<float>(s[0]), static_cast<float>(s[1]),
                           static_cast<float>(s[2])};
     }
-    if (const Json* sky = find(root, "sky")) {
-        checkObject(*sky, "sky", {"top", "horizon"});
-        auto rgb = [&](const char* key, Rgb& out) {
-            if (const Json* v = find(*sky, key)) {
-                const auto c = readNumbers(*v, std::string("sky.") + key, 3, 0, 1e4);
-                out = {static_cast<float>(c[0]), static_cast<float>(c[1]),
-                       static_cast<float>(c[2])};
-            }
-        };
-        rgb("top", o.skyTop);
-        rgb("horizon", o.skyHorizon);
-    }
+    if (const Json* sky = find(root, "sky")) readSkyJson(*sky, o);
     if (const Json* render = find(root, "render")) {
         checkObject(*render, "render",
                     {"reflections", "reflection_mode", "reflectivity", "shadows", "textures",

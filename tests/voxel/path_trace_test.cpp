@@ -1,6 +1,7 @@
 // The voxel path tracer against analytic answers: the furnace (a closed box of albedo a and
-// emission E shows E / (1 - a)), a plane under a uniform or gradient sky and a sun, a white
-// furnace (albedo 1 under a uniform sky shows the sky), determinism and the standard error.
+// emission E shows E / (1 - a)), a plane under a uniform, gradient or CIE overcast sky and a
+// sun, a white furnace (albedo 1 under a uniform sky shows the sky), determinism and the
+// standard error.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +9,7 @@
 
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/sky_model.h"
 #include "voxel/plain_light_worlds.h"
 
 namespace {
@@ -178,6 +180,27 @@ TEST(PathTrace, PlaneUnderAGradientSkyMatchesTheCosineWeightedMean) {
         }
     EXPECT_GT(se, 0.0);
     EXPECT_NEAR(mean, expected, 4.0 * se / 8.0);  // 64 independent pixels: se / sqrt(64)
+}
+
+TEST(PathTrace, PlaneUnderTheCieOvercastSkyHasItsHorizontalIrradiance) {
+    // L(theta) = Lz (1 + 2 cos theta) / 3 gives E = 7 pi Lz / 9 on the floor, L = a 7 Lz / 9.
+    const VoxelWorld world = floorWorld();
+    const float a = 0.6f, zenith = 1.8f;
+    ShadeOptions o = plainLight(a, Rgb(0.0f), Rgb(0.0f));
+    const SkyGradient sky = cieOvercastSky(Rgb(zenith));
+    o.skyTop = sky.top;
+    o.skyHorizon = sky.horizon;
+    PathTraceOptions p;
+    p.samplesPerPixel = 2048;
+    const PathTraceImage image = trace(world, lookingDown(), o, p);
+    double mean = 0.0, se = 0.0;
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x) {
+            mean += image.radiance.at(x, y, 0) / 64.0;
+            se += image.standardError.at(x, y, 0) / 64.0;
+        }
+    EXPECT_GT(se, 0.0);
+    EXPECT_NEAR(mean, a * 7.0 * zenith / 9.0, 4.0 * se / 8.0);  // se / sqrt(64 pixels)
 }
 
 // Pillars and a floor of albedo 1 under a uniform sky: every path ends in the sky with weight 1,
