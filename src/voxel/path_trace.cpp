@@ -49,6 +49,29 @@ Rgb mediumTransmittance(Rgb absorption, double distance) {
     return {t.x, t.y, t.z};
 }
 
+// Through the transmissive voxels of `cell`'s medium to where the ray leaves them: the ray's
+// origin moves to the exit and the throughput is dimmed by Beer-Lambert. Its material in `m`.
+MediumExit crossMedium(const VoxelWorld& world, const ShadeOptions& o, Int3 cell, Ray& ray,
+                       Rgb& throughput, const Material*& m) {
+    m = &o.materials.forSlot(textureSlotOf(world.get(cell.x, cell.y, cell.z)));
+    const MediumExit exit = walkMedium(world, cell, ray.origin, ray.direction);
+    throughput = throughput * mediumTransmittance(m->absorption, exit.distance);
+    ray.origin = exit.point;
+    return exit;
+}
+
+// Where the ray meets the medium's face from inside: reflect back inside with the Fresnel
+// reflectance (always under total internal reflection), else refract out; the choice carries
+// the weight. Draws one number unless the reflection is total. Whether the ray stays inside.
+bool turnAtExit(const MediumExit& exit, const Material& m, const ShadeOptions& o, Ray& ray,
+                Int3& cell, PathRng& rng) {
+    const ExitSplit split = splitAtExit(ray.direction, exit.outward, m.ior, o.fresnel);
+    const bool reflect = split.total || rng.next() < split.reflectance;
+    ray.direction = reflect ? split.reflected : split.refracted;
+    cell = exit.cell;
+    return reflect;
+}
+
 // Next event estimation towards the emissive voxels: one point on one facing face of one
 // emitter, weighted against the bounce ray that could have found it (multiple importance
 // sampling, power heuristic).
@@ -94,21 +117,14 @@ Rgb sunReaching(const VoxelWorld& world, const TextureSet* textures, Vec3d origi
     // The counts and checks of tracePath's loop, so both strategies reach the same paths.
     for (int events = 0;;) {
         if (inside) {
-            const Voxel v = world.get(cell.x, cell.y, cell.z);
-            const Material& m = o.materials.forSlot(textureSlotOf(v));
-            const MediumExit exit = walkMedium(world, cell, ray.origin, ray.direction);
-            throughput = throughput * mediumTransmittance(m.absorption, exit.distance);
-            ray.origin = exit.point;
+            const Material* m = nullptr;
+            const MediumExit exit = crossMedium(world, o, cell, ray, throughput, m);
             if (exit.intoSolid) {
                 inside = false;
                 continue;
             }
             if (events == maxEvents) return {};
-            const ExitSplit split = splitAtExit(ray.direction, exit.outward, m.ior, o.fresnel);
-            const bool reflect = split.total || rng.next() < split.reflectance;
-            ray.direction = reflect ? split.reflected : split.refracted;
-            cell = exit.cell;
-            inside = reflect;
+            inside = turnAtExit(exit, *m, o, ray, cell, rng);
             ++events;
             continue;
         }
@@ -253,25 +269,15 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
     // Vertex k of the path is reached after k reflections or refractions.
     for (int k = 0;;) {
         if (inside) {
-            // Through the transmissive voxels to where the ray leaves them, dimmed by Beer-Lambert.
-            const Voxel v = world.get(cell.x, cell.y, cell.z);
-            const Material& m = o.materials.forSlot(textureSlotOf(v));
-            const MediumExit exit = walkMedium(world, cell, ray.origin, ray.direction);
-            throughput = throughput * mediumTransmittance(m.absorption, exit.distance);
-            ray.origin = exit.point;
+            const Material* m = nullptr;
+            const MediumExit exit = crossMedium(world, o, cell, ray, throughput, m);
             if (exit.intoSolid) {  // another solid behind the glass: seen directly, as in the ray
                 inside = false;    // caster (no interface, no vertex)
                 continue;
             }
             if (k == p.maxBounces) break;
             const float uRoulette = k + 1 >= p.rouletteAfter ? rng.next() : 0.0f;
-            const ExitSplit split = splitAtExit(ray.direction, exit.outward, m.ior, o.fresnel);
-            // Reflect back inside with the Fresnel reflectance (always under total internal
-            // reflection), else refract out: the choice carries the weight.
-            const bool reflect = split.total || rng.next() < split.reflectance;
-            ray.direction = reflect ? split.reflected : split.refracted;
-            cell = exit.cell;
-            inside = reflect;
+            inside = turnAtExit(exit, *m, o, ray, cell, rng);
             bouncePdf = 0.0;
             if (rouletteEnds(k, p, uRoulette, throughput)) break;
             ++k;

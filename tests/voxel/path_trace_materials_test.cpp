@@ -11,6 +11,7 @@
 #include "gpu/shaders/shared/optics.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/path_trace.h"
+#include "voxel/path_ray_estimate.h"
 #include "voxel/plain_light_worlds.h"
 
 namespace {
@@ -20,24 +21,6 @@ using namespace luxel::voxel;
 using namespace luxel::voxel::test;
 
 constexpr double kPi = 3.14159265358979323846;
-
-struct Estimate {
-    double mean = 0, standardError = 0;
-};
-
-// `n` path samples along one ray (channel 0).
-Estimate traceRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& o,
-                  const PathTraceOptions& p, int n, std::uint64_t pixel = 0) {
-    const PathEmitters emitters = PathEmitters::find(world, o.materials);
-    double sum = 0, squares = 0;
-    for (int k = 0; k < n; ++k) {
-        PathRng rng(p.seed, pixel, std::uint64_t(k));
-        const double l = tracePath(world, nullptr, ray, o, p, rng, &emitters).r;
-        sum += l, squares += l * l;
-    }
-    const double mean = sum / n;
-    return {mean, std::sqrt(std::max(0.0, squares / n - mean * mean) / (n - 1))};
-}
 
 PathTraceOptions deepPaths() {
     PathTraceOptions p;

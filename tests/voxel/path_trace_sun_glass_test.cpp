@@ -9,6 +9,7 @@
 
 #include "gpu/shaders/shared/optics.h"
 #include "luxel/voxel/path_trace.h"
+#include "voxel/path_ray_estimate.h"
 #include "voxel/plain_light_worlds.h"
 
 namespace {
@@ -18,22 +19,6 @@ using namespace luxel::voxel;
 using namespace luxel::voxel::test;
 
 constexpr double kPi = 3.14159265358979323846;
-
-struct Estimate {
-    double mean = 0, standardError = 0;
-};
-
-Estimate traceRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& o,
-                  const PathTraceOptions& p, int n) {
-    double sum = 0, squares = 0;
-    for (int k = 0; k < n; ++k) {
-        PathRng rng(p.seed, 0, std::uint64_t(k));
-        const double l = tracePath(world, nullptr, ray, o, p, rng).r;
-        sum += l, squares += l * l;
-    }
-    const double mean = sum / n;
-    return {mean, std::sqrt(std::max(0.0, squares / n - mean * mean) / (n - 1))};
-}
 
 // A white floor (y = 0, albedo `albedo`, Lambertian) under a clear glass pane one voxel thick
 // (y = 5, texture slot 0) that covers the whole world, a black sky and the sun of irradiance 1.

@@ -35,6 +35,35 @@ vec3 sunAxis() {
     return vec3(path.sunX, path.sunY, path.sunZ);
 }
 
+// crossMedium (path_trace.cpp): through the transmissive voxels of `cell`'s medium to where the
+// ray leaves them, dimmed by Beer-Lambert; the ray's origin moves to the exit.
+MediumExit crossMedium(ivec3 cell, inout vec3 o, vec3 d, inout vec3 throughput,
+                       out float ior) {
+    const VoxelMaterial m = materials[materialIndex(voxelValue(cell))];
+    const MediumExit e = walkMedium(cell, o, d);
+    throughput = throughput *
+                 voxelTransmittance(vec3(m.absorptionR, m.absorptionG, m.absorptionB), e.distance);
+    o = e.point;
+    ior = m.ior;
+    return e;
+}
+
+// turnAtExit (path_trace.cpp, splitAtExit in shading_physical.cpp): total internal reflection,
+// or reflect back inside with the Fresnel reflectance and refract out otherwise. Draws one number
+// unless the reflection is total. Whether the ray stays inside.
+bool turnAtExit(MediumExit e, float ior, inout vec3 d, inout ivec3 cell, inout uvec2 rng) {
+    const vec3 nIn = -vec3(e.outward);
+    const float cosI = -dot(nIn, d);
+    const float kk = opticsRefractK(cosI, ior);
+    const bool total = kk < 0.0;
+    bool reflect = total;
+    if (!total) reflect = pathRngNext(rng) < pathFresnel(cosI, ior, 1.0);
+    d = reflect ? normalize(opticsReflect(d, nIn))
+                : normalize(opticsRefract(d, nIn, ior, cosI, kk));
+    cell = e.cell;
+    return reflect;
+}
+
 // meetsSun (path_trace.cpp): inside the disk, or along a delta sun's axis to rounding.
 bool meetsSun(vec3 d) {
     if (path.sunOneMinusCos > 0.0) return pathConeContains(sunAxis(), path.sunOneMinusCos, d);
@@ -52,27 +81,14 @@ vec3 sunReaching(vec3 origin, vec3 l, int maxEvents, inout uvec2 rng) {
     ivec3 cell = ivec3(0);
     for (int events = 0;;) {
         if (inside) {
-            const VoxelMaterial m = materials[materialIndex(voxelValue(cell))];
-            const MediumExit e = walkMedium(cell, o, d);
-            throughput = throughput * voxelTransmittance(
-                                          vec3(m.absorptionR, m.absorptionG, m.absorptionB),
-                                          e.distance);
-            o = e.point;
+            float ior;
+            const MediumExit e = crossMedium(cell, o, d, throughput, ior);
             if (e.intoSolid) {
                 inside = false;
                 continue;
             }
             if (events == maxEvents) return vec3(0.0);
-            const vec3 nIn = -vec3(e.outward);
-            const float cosI = -dot(nIn, d);
-            const float kk = opticsRefractK(cosI, m.ior);
-            const bool total = kk < 0.0;
-            bool reflect = total;
-            if (!total) reflect = pathRngNext(rng) < pathFresnel(cosI, m.ior, 1.0);
-            d = reflect ? normalize(opticsReflect(d, nIn))
-                        : normalize(opticsRefract(d, nIn, m.ior, cosI, kk));
-            cell = e.cell;
-            inside = reflect;
+            inside = turnAtExit(e, ior, d, cell, rng);
             ++events;
             continue;
         }
@@ -167,12 +183,8 @@ vec3 tracePath(vec3 origin, vec3 direction, inout uvec2 rng) {
         if (inside) {
             // Through the transmissive voxels to where the ray leaves them (walkMedium,
             // voxel_physical.glsl), dimmed by Beer-Lambert.
-            const VoxelMaterial m = materials[materialIndex(voxelValue(cell))];
-            const MediumExit e = walkMedium(cell, o, d);
-            throughput = throughput * voxelTransmittance(
-                                          vec3(m.absorptionR, m.absorptionG, m.absorptionB),
-                                          e.distance);
-            o = e.point;
+            float ior;
+            const MediumExit e = crossMedium(cell, o, d, throughput, ior);
             if (e.intoSolid) {  // another solid behind the glass: seen directly
                 inside = false;
                 continue;
@@ -180,18 +192,7 @@ vec3 tracePath(vec3 origin, vec3 direction, inout uvec2 rng) {
             if (k == maxBounces) break;
             const bool roulette = k + 1 >= int(path.rouletteAfter);
             const float uRoulette = roulette ? pathRngNext(rng) : 0.0;
-            // splitAtExit (shading_physical.cpp): total internal reflection, or reflect back
-            // inside with the Fresnel reflectance and refract out otherwise.
-            const vec3 nIn = -vec3(e.outward);
-            const float cosI = -dot(nIn, d);
-            const float kk = opticsRefractK(cosI, m.ior);
-            const bool total = kk < 0.0;
-            bool reflect = total;
-            if (!total) reflect = pathRngNext(rng) < pathFresnel(cosI, m.ior, 1.0);
-            d = reflect ? normalize(opticsReflect(d, nIn))
-                        : normalize(opticsRefract(d, nIn, m.ior, cosI, kk));
-            cell = e.cell;
-            inside = reflect;
+            inside = turnAtExit(e, ior, d, cell, rng);
             bouncePdf = 0.0;
             if (rouletteEnds(k, uRoulette, throughput)) break;
             ++k;
