@@ -37,6 +37,21 @@ PathTraceImage trace(const VoxelWorld& world, const Camera& camera, const ShadeO
     return std::move(*image);
 }
 
+// Channel 0 over the image's pixels: the mean of their values and of their standard errors.
+struct PixelMeans {
+    double value = 0.0, standardError = 0.0;
+};
+PixelMeans pixelMeans(const PathTraceImage& image) {
+    const int w = image.radiance.width(), h = image.radiance.height();
+    PixelMeans m;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            m.value += image.radiance.at(x, y, 0) / (w * h);
+            m.standardError += image.standardError.at(x, y, 0) / (w * h);
+        }
+    return m;
+}
+
 TEST(PathTrace, FurnaceBoxShowsEmissionOverOneMinusAlbedo) {
     // A closed 8^3 box with walls one voxel thick, the camera in the middle.
     VoxelWorld world = makeWorld({8, 8, 8});
@@ -74,15 +89,9 @@ TEST(PathTrace, FurnaceBoxShowsEmissionOverOneMinusAlbedo) {
     EXPECT_NEAR(two.radiance.at(3, 3, 0), e * (1.0 + a + a * a), 1e-5);
     EXPECT_NEAR(two.standardError.at(3, 3, 0), 0.0, 1e-5);
     p.sampleEmitters = true;
-    const PathTraceImage mis = trace(world, *camera, o, p);
-    double misMean = 0.0, misError = 0.0;
-    for (int y = 0; y < 6; ++y)
-        for (int x = 0; x < 8; ++x) {
-            misMean += mis.radiance.at(x, y, 0) / 48.0;
-            misError += mis.standardError.at(x, y, 0) / 48.0;
-        }
-    EXPECT_GT(misError, 0.0);
-    EXPECT_NEAR(misMean, e * (1.0 + a + a * a), 5.0 * misError / std::sqrt(48.0));
+    const PixelMeans mis = pixelMeans(trace(world, *camera, o, p));
+    EXPECT_GT(mis.standardError, 0.0);
+    EXPECT_NEAR(mis.value, e * (1.0 + a + a * a), 5.0 * mis.standardError / std::sqrt(48.0));
 }
 
 // A closed grey room lit by one small emissive block: emitter sampling with MIS and bounce rays
@@ -192,15 +201,9 @@ TEST(PathTrace, PlaneUnderTheCieOvercastSkyHasItsHorizontalIrradiance) {
     o.skyHorizon = sky.horizon;
     PathTraceOptions p;
     p.samplesPerPixel = 2048;
-    const PathTraceImage image = trace(world, lookingDown(), o, p);
-    double mean = 0.0, se = 0.0;
-    for (int y = 0; y < 8; ++y)
-        for (int x = 0; x < 8; ++x) {
-            mean += image.radiance.at(x, y, 0) / 64.0;
-            se += image.standardError.at(x, y, 0) / 64.0;
-        }
-    EXPECT_GT(se, 0.0);
-    EXPECT_NEAR(mean, a * 7.0 * zenith / 9.0, 4.0 * se / 8.0);  // se / sqrt(64 pixels)
+    const PixelMeans m = pixelMeans(trace(world, lookingDown(), o, p));
+    EXPECT_GT(m.standardError, 0.0);
+    EXPECT_NEAR(m.value, a * 7.0 * zenith / 9.0, 4.0 * m.standardError / 8.0);  // 64 pixels
 }
 
 // Pillars and a floor of albedo 1 under a uniform sky: every path ends in the sky with weight 1,
