@@ -259,11 +259,11 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
     // Sun light sampling follows shadow rays through delta surfaces (sunReaching). Then a
     // bounce ray that meets the disk after only such surfaces is weighted against it by the
     // direction it left its last smooth vertex in: chainPdf its density (0: no such vertex, or
-    // a surface with a smooth lobe since), chainDirection, chainNormal that vertex's face.
+    // a surface with a smooth lobe since), chainDirection that direction (a smooth lobe's
+    // directions all leave above the face, as sun light sampling's do).
     const bool sunChains = p.sunThroughGlass && o.refraction && o.materials.anyTransmission();
     double chainPdf = 0.0;
     Vec3d chainDirection;
-    Int3 chainNormal;
     bool inside = false;  // the ray travels through the medium of `cell`
     Int3 cell;
     // Vertex k of the path is reached after k reflections or refractions.
@@ -293,8 +293,7 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
                 if (bouncePdf > 0.0) {
                     weight = powerHeuristic(bouncePdf, sun.pdf());
                 } else if (chainPdf > 0.0) {
-                    const bool sampled = dot(toDouble(chainNormal), chainDirection) > 0.0 &&
-                                         sun.contains(chainDirection);
+                    const bool sampled = sun.contains(chainDirection);
                     weight = powerHeuristic(chainPdf, sampled ? sun.pdf() : 0.0);
                 }
                 radiance += throughput * sun.radiance(o.sunIrradiance) * float(weight);
@@ -335,7 +334,6 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
         if (next.pdf > 0.0) {
             chainPdf = sunChains ? next.pdf : 0.0;
             chainDirection = next.direction;
-            chainNormal = hit.normal;
         } else if (bsdf.smooth()) {
             chainPdf = 0.0;  // sun light sampling stops at this surface
         }

@@ -168,12 +168,11 @@ vec3 tracePath(vec3 origin, vec3 direction, inout uvec2 rng) {
     vec3 o = origin, d = direction;
     vec3 bounceOrigin = vec3(0.0);
     float bouncePdf = 0.0;  // the last bounce ray's density (0: the camera ray or a delta lobe)
-    // Sun light sampling through delta surfaces (tracePath's chainPdf, chainDirection and
-    // chainNormal): the density and direction of the last smooth vertex's bounce, and its face.
+    // Sun light sampling through delta surfaces (tracePath's chainPdf and chainDirection): the
+    // density and direction of the last smooth vertex's bounce.
     const bool sunChains = (path.materialFlags & LUXEL_PATH_SUN_CHAINS) != 0u;
     float chainPdf = 0.0;
     vec3 chainDirection = vec3(0.0);
-    ivec3 chainNormal = ivec3(0);
     bool inside = false;    // the ray travels through the medium of `cell`
     ivec3 cell = ivec3(0);
     const bool sampleEmitters = path.emitters > 0u;
@@ -209,7 +208,6 @@ vec3 tracePath(vec3 origin, vec3 direction, inout uvec2 rng) {
                     weight = pathPowerHeuristic(bouncePdf, path.sunPdf);
                 } else if (chainPdf > 0.0) {
                     const bool sampled =
-                        dot(vec3(chainNormal), chainDirection) > 0.0 &&
                         pathConeContains(sunAxis(), path.sunOneMinusCos, chainDirection);
                     weight = pathPowerHeuristic(chainPdf, sampled ? path.sunPdf : 0.0);
                 }
@@ -249,7 +247,6 @@ vec3 tracePath(vec3 origin, vec3 direction, inout uvec2 rng) {
         if (next.pdf > 0.0) {
             chainPdf = sunChains ? next.pdf : 0.0;
             chainDirection = next.direction;
-            chainNormal = hit.normal;
         } else if (pathSmooth(b)) {
             chainPdf = 0.0;  // sun light sampling stops at this surface
         }
