@@ -20,6 +20,12 @@ int samplesPerPixel(const ShadeOptions& options) {
     return std::clamp(options.samplesPerPixel, 1, kMaxSamplesPerPixel);
 }
 
+Ray pixelSampleRay(const Camera& camera, int px, int py, int k, int n) {
+    const gpu::shared::vec2 o = gpu::shared::pixelSampleOffset(
+        static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py), k, n);
+    return camera.rayAt(px + double(o.x), py + double(o.y));
+}
+
 Rgb shadePixel(const VoxelWorld& world, const Camera& camera, int px, int py,
                const ShadeOptions& options, const TextureSet* textures) {
     const int n = samplesPerPixel(options);
@@ -28,10 +34,7 @@ Rgb shadePixel(const VoxelWorld& world, const Camera& camera, int px, int py,
     cone.spread /= std::sqrt(double(n));
     Rgb sum;
     for (int k = 0; k < n; ++k) {
-        const gpu::shared::vec2 o = gpu::shared::pixelSampleOffset(
-            static_cast<std::uint32_t>(px), static_cast<std::uint32_t>(py), k, n);
-        sum += shadeRay(world, camera.rayAt(px + double(o.x), py + double(o.y)), cone, options,
-                        textures);
+        sum += shadeRay(world, pixelSampleRay(camera, px, py, k, n), cone, options, textures);
     }
     return n == 1 ? sum : sum * (1.0f / float(n));
 }

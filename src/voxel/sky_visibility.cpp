@@ -6,6 +6,7 @@
 
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/render_image.h"
 #include "luxel/voxel/sky_visibility.h"
 #include "luxel/voxel/surface_cast.h"
 #include "path_trace_surface.h"
@@ -103,27 +104,36 @@ Result<SkyVisibilityImage> renderSkyVisibility(const VoxelWorld& world, const Ca
     }
     SkyVisibilityImage out{Image(width, height, 3), Image(width, height, 1)};
     const bool follow = solverFollowsAny(shading);
+    const int samples = samplesPerPixel(shading);
     parallelForRange(height, 1, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {
             for (int x = 0; x < width; ++x) {
-                const Ray ray = camera.rayAt(x + 0.5, y + 0.5);
-                const SurfaceHit s = castToSurface(world, textures, ray, shading.stepCap);
+                // One random stream per pixel, drawn on through its samples.
+                PathRng rng(options.seed, std::uint64_t(y) * width + x, 0);
                 Rgb radiance;
                 double visibility = 0.0;
-                if (!s.hit.hit) {  // left the world (or ran past the step cap): the sky
-                    radiance = skyColor(ray.direction, shading);
-                    visibility = 1.0;
-                } else if (s.hit.normal != Int3{}) {  // else the camera is inside a solid voxel
-                    PathRng rng(options.seed, std::uint64_t(y) * width + x, 0);
-                    const SkyVisibility v = estimateSkyVisibility(
-                        world, textures, s.hit.point, s.hit.normal, shading, options, rng);
-                    visibility = v.visibility;
-                    const SolverLight light{
-                        v.skyLight + v.emitterLight, [&](const Ray& r, bool delta) {
-                            return reflectedLight(world, textures, r, delta, 0, follow, shading,
-                                                  options.radius, rng);
-                        }};
-                    radiance = shadeSolverSurface(world, textures, s, ray, shading, light, rng);
+                for (int k = 0; k < samples; ++k) {
+                    const Ray ray = pixelSampleRay(camera, x, y, k, samples);
+                    const SurfaceHit s = castToSurface(world, textures, ray, shading.stepCap);
+                    if (!s.hit.hit) {  // left the world (or ran past the step cap): the sky
+                        radiance += skyColor(ray.direction, shading);
+                        visibility += 1.0;
+                    } else if (s.hit.normal != Int3{}) {  // else the camera is in a solid voxel
+                        const SkyVisibility v = estimateSkyVisibility(
+                            world, textures, s.hit.point, s.hit.normal, shading, options, rng);
+                        visibility += v.visibility;
+                        const SolverLight light{
+                            v.skyLight + v.emitterLight, [&](const Ray& r, bool delta) {
+                                return reflectedLight(world, textures, r, delta, 0, follow, shading,
+                                                      options.radius, rng);
+                            }};
+                        radiance +=
+                            shadeSolverSurface(world, textures, s, ray, shading, light, rng);
+                    }
+                }
+                if (samples > 1) {
+                    radiance = radiance * (1.0f / float(samples));
+                    visibility /= samples;
                 }
                 for (int c = 0; c < 3; ++c) out.radiance.at(x, y, c) = radiance[c];
                 out.visibility.at(x, y, 0) = float(visibility);

@@ -58,8 +58,8 @@ TEST_F(CliAo, RefusesAoWhereItDoesNotApply) {
                 "--solver ao applies to voxel scenes; " + kScenes + "2d/room.json is a 2D scene");
     expectError("render " + kTerrain + " --solver ao --spp 4" + out,
                 "--spp applies to --solver path");
-    expectError("render " + kTerrain + " --solver ao --samples 4" + out,
-                "apply to the ray caster; --solver ao takes --ao-rays and --ao-radius");
+    expectError("render " + kTerrain + " --solver ao --lighting classic" + out,
+                "apply to the ray caster; --solver ao takes --ao-rays, --ao-radius and --samples");
     expectError("render " + kTerrain + " --solver ao --backend gpu" + out,
                 "--solver ao runs on the CPU");
     for (const char* rays : {"0", "-3", "1e9", "nan"}) {

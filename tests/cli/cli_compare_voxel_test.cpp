@@ -98,6 +98,9 @@ TEST_F(CliCompareVoxel, RefusesTheTwoDimensionalOptions) {
     for (const char* option : {"--rays 16", "--move 4,0", "--error-image e.png"}) {
         expectError("compare-solvers " + kCottage + " " + option, "applies to 2D scenes");
     }
+    expectError(
+        "compare-solvers " + std::string(LUXEL_SOURCE_DIR) + "/scenes/2d/room.json --samples 4",
+        "--samples applies to voxel scenes");
 }
 
 // --reference: a path-traced EXR of the scene at the size compared stands in for the reference;
@@ -119,6 +122,12 @@ TEST_F(CliCompareVoxel, ReusesAPathTracedReference) {
     ASSERT_EQ(std::sscanf(r.output.c_str() + pathRow + 6, "%lf %lf", &ms, &relL1), 2) << r.output;
     EXPECT_EQ(relL1, 0.0);
     EXPECT_NE(r.output.find("\nrc "), std::string::npos) << r.output;
+    // --samples: the other solvers' pictures take that many rays a pixel.
+    const RunResult sampled =
+        runLuxel("compare-solvers " + kCottage + " --size 48x27 --samples 4 --reference " + ref);
+    ASSERT_EQ(sampled.exitCode, 0) << sampled.output;
+    EXPECT_NE(sampled.output.find("the other solvers: 4 samples/pixel"), std::string::npos)
+        << sampled.output;
 
     const std::string compare = "compare-solvers " + kCottage + " ";
     expectError(compare + "--size 32x18 --reference " + ref, "is 48x27 but");

@@ -49,6 +49,37 @@ TEST_F(CliRcVoxel, LightsAVoxelSceneWithRadianceCascades) {
     EXPECT_TRUE(luxel::readPng(path("c.png")).ok());
 }
 
+// --samples takes stratified rays inside each pixel for the cascades' picture and sky
+// visibility as for the ray caster (the path tracer keeps --spp): recorded, and the picture
+// changes where edges cross pixels.
+TEST_F(CliRcVoxel, SamplesAntialiasThePictures) {
+    for (const char* solver : {"rc", "ao"}) {
+        const std::string base = "render " + kCottage + " --solver " + solver + " --size 32x18";
+        ASSERT_EQ(runLuxel(base + " --out " + path("one.exr")).exitCode, 0);
+        const RunResult r = runLuxel(base + " --samples 4 --out " + path("four.exr"));
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        luxel::ImageMetadata metadata;
+        auto four = luxel::readExr(path("four.exr"), &metadata);
+        auto one = luxel::readExr(path("one.exr"));
+        ASSERT_TRUE(four.ok() && one.ok());
+        const std::string* samples = luxel::findMetadata(metadata, "luxel.samples");
+        ASSERT_NE(samples, nullptr);
+        EXPECT_EQ(*samples, "4");
+        double difference = 0.0, sum = 0.0;
+        for (int y = 0; y < 18; ++y)
+            for (int x = 0; x < 32; ++x) {
+                difference += std::abs(four->at(x, y, 1) - one->at(x, y, 1));
+                sum += one->at(x, y, 1);
+            }
+        EXPECT_GT(difference, 1e-3 * sum) << solver;
+        EXPECT_LT(difference, 0.2 * sum) << solver;
+    }
+    const RunResult path =
+        runLuxel("render " + kCottage + " --solver path --samples 4 --out " + this->path("p.exr"));
+    EXPECT_EQ(path.exitCode, 1);
+    EXPECT_NE(path.output.find("--solver path takes --spp"), std::string::npos) << path.output;
+}
+
 // `luxel info` says what the cascades of a voxel scene would take, as render plans them.
 TEST_F(CliRcVoxel, InfoEstimatesTheCascades) {
     const RunResult r = runLuxel("info " + kCottage);
@@ -97,8 +128,8 @@ TEST_F(CliRcVoxel, RefusesItsOptionsWhereTheyDoNotApply) {
                 "--rc-spacing applies to --solver rc on voxel scenes");
     expectError("render " + kScenes + "2d/room.json --solver rc --rc-spacing 4" + out,
                 "--rc-spacing applies to --solver rc on voxel scenes");
-    expectError("render " + kCottage + " --solver rc --samples 4" + out,
-                "apply to the ray caster; --solver rc takes --rc-spacing and --bounces");
+    expectError("render " + kCottage + " --solver rc --filter trilinear" + out,
+                "apply to the ray caster; --solver rc takes --rc-spacing, --bounces and --samples");
     expectError("render " + kCottage + " --solver rc --rc-spacing 3" + out,
                 "cascade spacing must be a power of two");
     expectError("render " + kScenes + "octree/world.json --solver rc" + out,

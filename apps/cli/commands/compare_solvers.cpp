@@ -35,6 +35,7 @@
 #include "luxel/gi2d/reference_solver.h"
 #include "luxel/post/label.h"
 #include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/render_image.h"
 #include "luxel/voxel/voxel_scene.h"
 
 extern char** environ;
@@ -46,7 +47,8 @@ struct CompareSolversArgs {
     std::string scene, size, grid, errorImage, move, reference;
     int rays = 1024;
     bool raysGiven = false;
-    int spp = 256;  // voxel scenes: the path-traced reference's samples per pixel
+    int spp = 256;    // voxel scenes: the path-traced reference's samples per pixel
+    int samples = 0;  // voxel scenes: the pictures' samples per pixel (0: the scene's)
     double errorScalePercent = 10;
     int sunSweep = 0;    // voxel scenes: frames of the sun sweep (0: none)
     double sunStep = 1;  // degrees between them
@@ -231,8 +233,12 @@ int runCompareSolvers(const CompareSolversArgs& args) {
                 1, static_cast<int>(std::lround(double(w) * camera.height() / camera.width())));
             size = std::to_string(w) + "x" + std::to_string(h);
         }
-        return compareVoxelSolvers(
-            {args.scene, size, args.grid, args.spp, args.sunSweep, args.sunStep, args.reference});
+        return compareVoxelSolvers({args.scene, size, args.grid, args.spp, args.sunSweep,
+                                    args.sunStep, args.reference, args.samples});
+    }
+    if (args.samples > 0) {
+        return reportError(Error("--samples applies to voxel scenes; " + args.scene + " is " +
+                                 sceneKindPhrase(file->kind()) + " (--rays sets the reference)"));
     }
     if (args.sunSweep > 0 || args.sunStepGiven) {
         return reportError(Error(std::string(args.sunSweep > 0 ? "--sun-sweep" : "--sun-step") +
@@ -370,6 +376,10 @@ Runner addCompareSolversCommand(CLI::App& app) {
                    "voxel scenes: samples per pixel of the path-traced reference")
         ->check(wholeIn(2, voxel::kMaxPathSamples))
         ->capture_default_str();
+    app.add_option("--samples", args->samples,
+                   "voxel scenes: samples per pixel of the other solvers' pictures, stratified "
+                   "(default: the scene's render.samples)")
+        ->check(wholeIn(1, voxel::kMaxSamplesPerPixel));
     app.add_option("--grid", args->grid, "write the display images side by side (.png)");
     app.add_option("--error-image", args->errorImage,
                    "write the reference and each solver's signed error side by side (.png)");

@@ -57,12 +57,15 @@ struct VoxelCompareRequest {
     // A path-traced radiance EXR of this scene at this size to use as the reference instead of
     // rendering one (`luxel render VOXEL.json --solver path --out FILE.exr`); "" renders it.
     std::string reference;
+    // Samples per pixel of the solvers other than the path tracer (--samples; 0: the scene's).
+    int samples = 0;
 };
 int compareVoxelSolvers(const VoxelCompareRequest& request);
 
 // The voxel solvers compare-solvers runs, the reference (the path tracer) first; a new solver is
 // one more entry.
-std::vector<SolverRun> voxelSolvers(int spp);
+// `samples` > 0 passes --samples to the others.
+std::vector<SolverRun> voxelSolvers(int spp, int samples = 0);
 
 // `compareVoxelSolvers` with request.sunSweep frames (compare_sun_sweep.cpp).
 int compareVoxelSunSweep(const VoxelCompareRequest& request);

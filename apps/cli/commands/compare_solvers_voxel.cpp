@@ -23,8 +23,8 @@
 
 namespace luxel::cli {
 
-std::vector<SolverRun> voxelSolvers(int spp) {
-    return {
+std::vector<SolverRun> voxelSolvers(int spp, int samples) {
+    std::vector<SolverRun> runs{
         {"path",
          {"--solver", "path", "--spp", std::to_string(spp), "--backend", "cpu"},
          "path tracer"},
@@ -32,6 +32,12 @@ std::vector<SolverRun> voxelSolvers(int spp) {
         {"rc", {"--solver", "rc", "--backend", "cpu"}, "radiance cascades"},
         {"ray-caster", {"--lighting", "physical", "--backend", "cpu"}, "ray caster"},
     };
+    if (samples > 0) {
+        for (std::size_t i = 1; i < runs.size(); ++i) {
+            runs[i].flags.insert(runs[i].flags.end(), {"--samples", std::to_string(samples)});
+        }
+    }
+    return runs;
 }
 
 namespace {
@@ -94,7 +100,7 @@ int compareVoxelSolvers(const VoxelCompareRequest& request) {
         if (!outcome) return reportError(outcome.error());
         reused = std::move(*outcome);
     }
-    const std::vector<SolverRun> solvers = voxelSolvers(spp);
+    const std::vector<SolverRun> solvers = voxelSolvers(spp, request.samples);
     // A reused reference stands in for the first run.
     auto solved =
         runSolverProcesses(request.scene, request.size, std::span(solvers).subspan(reused ? 1 : 0));
@@ -107,6 +113,9 @@ int compareVoxelSolvers(const VoxelCompareRequest& request) {
     std::printf("%s at %dx%d (reference: path tracer, %d samples/pixel%s%s)\n",
                 request.scene.c_str(), reference.width(), reference.height(), spp,
                 reused ? ", from " : "", request.reference.c_str());
+    if (request.samples > 0) {
+        std::printf("the other solvers: %d samples/pixel (--samples)\n", request.samples);
+    }
     std::vector<post::DarkLeak> leaks;
     for (const RunOutcome& run : runs) {
         auto leak = post::darkRegionLeak(run.fluence, reference);

@@ -181,26 +181,28 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         scene->shading.textureFilter = *filter;
     }
     const VoxelSurfaceFlags& f = request.surfaces;
-    const bool casterFlags = request.samples != 0 || !request.filter.empty() ||
-                             !f.lighting.empty() || !f.specular.empty() || !f.fresnel.empty() ||
-                             f.noRefraction || !f.shadows.empty();
-    if (request.pathSolver && casterFlags) {
+    // --samples applies to every solver that draws a picture from camera rays; the path tracer
+    // jitters its own.
+    const bool surfaceFlags = !request.filter.empty() || !f.lighting.empty() ||
+                              !f.specular.empty() || !f.fresnel.empty() || f.noRefraction ||
+                              !f.shadows.empty();
+    if (request.pathSolver && (surfaceFlags || request.samples != 0)) {
         return reportError(
             Error("--samples, --filter and the surface flags (--lighting, "
                   "--specular, --fresnel, --no-refraction, --shadows) apply to the "
                   "ray caster; --solver path takes --spp and --max-bounces"));
     }
-    if (request.aoSolver && casterFlags) {
+    if (request.aoSolver && surfaceFlags) {
         return reportError(
-            Error("--samples, --filter and the surface flags (--lighting, "
-                  "--specular, --fresnel, --no-refraction, --shadows) apply to the "
-                  "ray caster; --solver ao takes --ao-rays and --ao-radius"));
+            Error("--filter and the surface flags (--lighting, --specular, --fresnel, "
+                  "--no-refraction, --shadows) apply to the ray caster; --solver ao takes "
+                  "--ao-rays, --ao-radius and --samples"));
     }
-    if (request.cascadeSolver && casterFlags) {
+    if (request.cascadeSolver && surfaceFlags) {
         return reportError(
-            Error("--samples, --filter and the surface flags (--lighting, "
-                  "--specular, --fresnel, --no-refraction, --shadows) apply to the "
-                  "ray caster; --solver rc takes --rc-spacing and --bounces"));
+            Error("--filter and the surface flags (--lighting, --specular, --fresnel, "
+                  "--no-refraction, --shadows) apply to the ray caster; --solver rc takes "
+                  "--rc-spacing, --bounces and --samples"));
     }
     // The cascades' lighting passes and picture run on the GPU too (the build on the CPU), and so
     // does the path tracer; sky visibility is CPU only.

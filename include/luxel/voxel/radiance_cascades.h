@@ -103,7 +103,8 @@ class RadianceCascades {
     // Irradiance from everything but the direct sun at a point on a face (voxel, axis normal),
     // interpolated between the face and its coplanar neighbours.
     Rgb indirectIrradiance(Int3 voxel, Int3 normal, Vec3d point) const;
-    // The picture: one primary ray per pixel centre (cutouts honoured), shaded with the
+    // The picture: render.samples primary rays per pixel (shading.samplesPerPixel at
+    // shared/pixel_samples.h's positions; one: the pixel centre; cutouts honoured), shaded with the
     // material model (docs/algorithms/voxel-radiance-cascades.md §4.2): emission, the diffuse
     // lobe x (direct sun + indirectIrradiance / pi), the specular lobe's sun highlight and its
     // split-sum reflection of what a few GGX rays meet; rows in parallel.
@@ -122,6 +123,8 @@ class RadianceCascades {
     // face met shaded Lambertian with its sun and indirectIrradiance. `rng` draws the followed
     // faces' GGX directions.
     Rgb reflectedLight(const Ray& r, bool delta, int depth, PathRng& rng) const;
+    // The picture's radiance along one camera ray.
+    Rgb pixelRadiance(const Ray& ray, PathRng& rng) const;
     std::unique_ptr<State> state_;
 };
 

@@ -19,6 +19,11 @@ RayCone primaryCone(const Camera& camera);
 // options.samplesPerPixel clamped to 1..kMaxSamplesPerPixel.
 int samplesPerPixel(const ShadeOptions& options);
 
+// The camera ray of sample k of n in pixel (px, py), at the stratified, per-pixel deterministic
+// position of shared/pixel_samples.h (one sample: the pixel centre). The ray caster, sky
+// visibility and the radiance cascades' picture all sample pixels so.
+Ray pixelSampleRay(const Camera& camera, int px, int py, int k, int n);
+
 // Radiance of pixel (px, py): options.samplesPerPixel samples at stratified, per-pixel
 // deterministic positions (shared/pixel_samples.h; one sample: the pixel centre), averaged.
 // Each sample's cone spreads by the pixel angle / sqrt(samples).

@@ -3,16 +3,16 @@
 //
 // At a surface point, N cosine-weighted rays of length R (voxels; infinity allowed) estimate the
 // fraction V of the cosine-weighted hemisphere that sees the sky, and the sky light those rays see
-// (the scene's gradient sky, skyColor in shading.h). The renderer shades each pixel's primary hit
-// (through the pixel centre) with the path tracer's material model (its diffuse lobe x (direct
-// sun with shadow rays + the sky light of the escaping rays + the emission of the emissive voxels
-// the rays meet within R) + emission + the specular lobe's sun highlight and split-sum reflection
-// + transmission followed through the medium; src/voxel/solver_surface.h). With R = infinity and
-// Lambertian materials this is the path tracer with maxBounces = 1 (same mean; emitters are found
-// by these rays only, so small ones are noisier than the path tracer's sampled ones); a finite R
-// counts rays that meet nothing within R as seeing the sky (ambient occlusion). Random numbers come
-// from the path tracer's counter-based generator keyed by (seed, pixel), so images are identical
-// for any thread count.
+// (the scene's gradient sky, skyColor in shading.h). The renderer shades each primary hit
+// (render.samples rays per pixel, the pixel centre by default) with the path tracer's material
+// model (its diffuse lobe x (direct sun with shadow rays + the sky light of the escaping rays +
+// the emission of the emissive voxels the rays meet within R) + emission + the specular lobe's
+// sun highlight and split-sum reflection + transmission followed through the medium;
+// src/voxel/solver_surface.h). With R = infinity and Lambertian materials this is the path tracer
+// with maxBounces = 1 (same mean; emitters are found by these rays only, so small ones are noisier
+// than the path tracer's sampled ones); a finite R counts rays that meet nothing within R as seeing
+// the sky (ambient occlusion). Random numbers come from the path tracer's counter-based generator
+// keyed by (seed, pixel), so images are identical for any thread count.
 #pragma once
 
 #include <cstdint>
@@ -58,7 +58,8 @@ struct SkyVisibilityImage {
     Image visibility;  // V per pixel, one channel (1 where the primary ray sees the sky)
 };
 
-// One primary ray per pixel centre, shaded as described above; rows in parallel.
+// render.samples primary rays per pixel (shading.samplesPerPixel; one: the pixel centre),
+// shaded as described above and averaged; rows in parallel.
 Result<SkyVisibilityImage> renderSkyVisibility(const VoxelWorld& world, const Camera& camera,
                                                const ShadeOptions& shading,
                                                const SkyVisibilityOptions& options,

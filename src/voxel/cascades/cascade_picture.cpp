@@ -1,9 +1,9 @@
 // The voxel radiance cascades' picture (radiance_cascades.h;
-// docs/algorithms/voxel-radiance-cascades.md §4.2): one primary ray per pixel centre (cutouts
-// honoured), the sun by sky visibility's shadow rays over its disk, the faces' irradiance
-// interpolated; cascade_picture_gpu.cpp draws the same on the GPU. (Casting rows several rays at a
-// time, castRayBatch and occludedBatch, measured no faster here: 45-47 ms against 40-46 ms of CPU
-// at 640x360.)
+// docs/algorithms/voxel-radiance-cascades.md §4.2): render.samples primary rays per pixel, the
+// pixel centre by default (cutouts honoured), the sun by sky visibility's shadow rays over its
+// disk, the faces' irradiance interpolated; cascade_picture_gpu.cpp draws the same on the GPU.
+// (Casting rows several rays at a time, castRayBatch and occludedBatch, measured no faster here:
+// 45-47 ms against 40-46 ms of CPU at 640x360.)
 #include "cascade_picture.h"
 #include "../path_trace_surface.h"
 #include "../solver_sun.h"
@@ -11,6 +11,7 @@
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/render_image.h"
 #include "luxel/voxel/surface_cast.h"
 
 namespace luxel::voxel {
@@ -51,6 +52,19 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
     return surface.emission + surface.albedo * (sun + irradiance) * kInvPi;
 }
 
+Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
+    const VoxelWorld& world = *state_->world;
+    const ShadeOptions& shading = state_->shading;
+    const SurfaceHit s = castToSurface(world, state_->textures, ray, shading.stepCap);
+    if (!s.hit.hit) return skyColor(ray.direction, shading);
+    if (s.hit.normal == Int3{}) return {};  // the camera is inside a solid voxel
+    const SolverLight light{
+        indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point) * kInvPi,
+        [&](const Ray& r, bool delta) { return reflectedLight(r, delta, 0, rng); }, kPictureSunRays,
+        kPictureSpecularRays};
+    return shadeSolverSurface(world, state_->textures, s, ray, shading, light, rng);
+}
+
 Result<Image> RadianceCascades::render(const Camera& camera) const {
     const int width = camera.width(), height = camera.height();
     if (std::int64_t(width) * height > kMaxPathPixels) {
@@ -58,26 +72,20 @@ Result<Image> RadianceCascades::render(const Camera& camera) const {
                      std::to_string(height) + " has more than " + std::to_string(kMaxPathPixels) +
                      " pixels");
     }
-    const VoxelWorld& world = *state_->world;
-    const TextureSet* textures = state_->textures;
     const ShadeOptions& shading = state_->shading;
     Image out(width, height, 3);
+    const int samples = samplesPerPixel(shading);
     parallelForRange(height, 1, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {
             for (int x = 0; x < width; ++x) {
-                const Ray ray = camera.rayAt(x + 0.5, y + 0.5);
-                const SurfaceHit s = castToSurface(world, textures, ray, shading.stepCap);
-                Rgb radiance;
-                if (!s.hit.hit) {
-                    radiance = skyColor(ray.direction, shading);
-                } else if (s.hit.normal != Int3{}) {  // else the camera is inside a solid voxel
-                    PathRng rng(kReflectionSeed, std::uint64_t(y) * width + x, 0);
-                    const SolverLight light{
-                        indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point) * kInvPi,
-                        [&](const Ray& r, bool delta) { return reflectedLight(r, delta, 0, rng); },
-                        kPictureSunRays, kPictureSpecularRays};
-                    radiance = shadeSolverSurface(world, textures, s, ray, shading, light, rng);
+                // One random stream per pixel, drawn on through its samples (as on the GPU).
+                PathRng rng(kReflectionSeed, std::uint64_t(y) * width + x, 0);
+                Rgb sum;
+                for (int k = 0; k < samples; ++k) {
+                    const Ray ray = pixelSampleRay(camera, x, y, k, samples);
+                    sum += pixelRadiance(ray, rng);
                 }
+                const Rgb radiance = samples == 1 ? sum : sum * (1.0f / float(samples));
                 for (int c = 0; c < 3; ++c) out.at(x, y, c) = radiance[c];
             }
         }

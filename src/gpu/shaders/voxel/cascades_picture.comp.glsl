@@ -1,7 +1,7 @@
 // The voxel radiance cascades' picture on the GPU (docs/algorithms/voxel-radiance-cascades.md
 // §4.2, §4.3; CPU reference: RadianceCascades::render in src/voxel/cascades/cascade_picture.cpp):
-// one invocation per pixel casts the ray through the pixel's centre and shades what it meets with
-// the solver's material model (solver_shade.glsl) under the faces' irradiance the lighting passes
+// one invocation per pixel casts render.samples rays through it (the centre by default) and
+// shades what it meets with the solver's material model (solver_shade.glsl) under the faces' irradiance the lighting passes
 // left in the light buffer, the sun by shadow rays over its disk, and reflections and refraction
 // followed through glass and polished metal (solver_reflected.glsl), drawing the same random
 // numbers as the CPU (shared/path_rng.h). Buffers and push constants:
@@ -31,6 +31,7 @@ layout(push_constant) uniform Push { CascadePicturePush path; };
 #include "voxel/texture_sample.glsl"
 #include "voxel/voxel_shading.glsl"
 #include "shared/path_rng.h"
+#include "shared/pixel_samples.h"
 #include "shared/path_bsdf.h"
 #include "voxel/path_surface.glsl"
 #include "voxel/solver_light.glsl"
@@ -68,28 +69,36 @@ layout(push_constant) uniform Push { CascadePicturePush path; };
 #undef LUXEL_SOLVER_SHADE
 #undef LUXEL_SOLVER_RADIANCE
 
+// The picture's radiance along one camera ray.
+vec3 pixelRadiance(vec3 origin, vec3 direction, inout uvec2 rng) {
+    const SurfaceHit s = castToSurface(origin, direction);
+    if (!s.hit.hit) return skyColor(direction);
+    if (s.hit.normal == ivec3(0)) return vec3(0.0);  // the camera is inside a solid voxel
+    return shadeSurface0(s, direction, indirectIrradiance(s.hit) * LUXEL_SOLVER_INV_PI,
+                         int(path.sunRays), int(path.specularRays), true, rng);
+}
+
 void main() {
     const uint x = gl_GlobalInvocationID.x, y = gl_GlobalInvocationID.y;
     if (x >= params.width || y >= params.height) return;
     const uint pixel = y * params.width + x;
-    // Camera::rayAt at the pixel's centre.
-    const float sx = (2.0 * (float(x) + 0.5) / float(params.width) - 1.0) * params.tanHalf *
-                     params.aspect;
-    const float sy = (1.0 - 2.0 * (float(y) + 0.5) / float(params.height)) * params.tanHalf;
     const vec3 forward = vec3(params.forwardX, params.forwardY, params.forwardZ);
     const vec3 right = vec3(params.rightX, params.rightY, params.rightZ);
     const vec3 up = vec3(params.upX, params.upY, params.upZ);
     const vec3 origin = vec3(params.positionX, params.positionY, params.positionZ);
-    const vec3 direction = normalize(forward + right * sx + up * sy);
-    const SurfaceHit s = castToSurface(origin, direction);
-    vec3 radiance = vec3(0.0);
-    if (!s.hit.hit) {
-        radiance = skyColor(direction);
-    } else if (s.hit.normal != ivec3(0)) {  // else the camera is inside a solid voxel
-        uvec2 rng = pathRngKey(uvec2(path.seedLow, path.seedHigh), pixel, 0u);
-        radiance = shadeSurface0(s, direction, indirectIrradiance(s.hit) * LUXEL_SOLVER_INV_PI,
-                                 int(path.sunRays), int(path.specularRays), true, rng);
+    // One random stream per pixel, drawn on through its samples (as on the CPU).
+    uvec2 rng = pathRngKey(uvec2(path.seedLow, path.seedHigh), pixel, 0u);
+    const int n = int(clamp(params.samplesPerPixel, 1u, uint(LUXEL_MAX_SAMPLES_PER_PIXEL)));
+    vec3 sum = vec3(0.0);
+    for (int k = 0; k < n; ++k) {
+        // Camera::rayAt at the sample's position (shared/pixel_samples.h).
+        const vec2 o = pixelSampleOffset(x, y, k, n);
+        const float sx = (2.0 * (float(x) + o.x) / float(params.width) - 1.0) * params.tanHalf *
+                         params.aspect;
+        const float sy = (1.0 - 2.0 * (float(y) + o.y) / float(params.height)) * params.tanHalf;
+        sum += pixelRadiance(origin, normalize(forward + right * sx + up * sy), rng);
     }
+    const vec3 radiance = n == 1 ? sum : sum * (1.0 / float(n));
     picture[3u * pixel] = radiance.x;
     picture[3u * pixel + 1u] = radiance.y;
     picture[3u * pixel + 2u] = radiance.z;
