@@ -428,6 +428,41 @@ TEST(RendererVoxelCascades, AddsAReflectionPerFrameAndKeepsTheLightWhenTheCamera
     EXPECT_FALSE(renderer.hasMoreWork());
 }
 
+// Samples per pixel (, and .) change the cascades' picture only: no build, no new light, the
+// next reflection, and the library's picture with as many stratified rays a pixel.
+TEST(RendererVoxelCascades, SamplesPerPixelRedrawThePictureAndKeepTheLight) {
+    const voxel::VoxelWorld world = blockWorld();
+    RendererVoxel renderer(blockWorld(), makeCpuVoxelFrameSource());
+    VoxelState s = pathState(1);
+    s.solver.kind = VoxelSolver::Cascades;
+    VoxelState copy = s;
+    renderer.setState(std::move(copy));
+    const Frame first = renderer.step();
+    ASSERT_TRUE(first.note.empty()) << first.note;
+    s.shading.samplesPerPixel = 4;
+    copy = s;
+    renderer.setState(std::move(copy));
+    const Frame sampled = renderer.step();
+    for (const PassTime& p : sampled.passes) {
+        EXPECT_NE(p.name, "cascades build");
+        EXPECT_NE(p.name, "cascades light");
+    }
+    EXPECT_EQ(*metadataOf(sampled, "luxel.rc.bounces"), "2");
+    voxel::ShadeOptions centres = s.shading;
+    centres.samplesPerPixel = 1;
+    auto library = voxel::RadianceCascades::create(world, nullptr, centres);
+    ASSERT_TRUE(library.ok()) << library.error().message();
+    library->iterate();
+    library->iterate();
+    const Image oneRay = displayed(*library->render(cameraOf(s)), s);
+    library->setPictureSamples(4);
+    expectSameImage(sampled.picture, displayed(*library->render(cameraOf(s)), s));
+    int different = 0;
+    for (std::size_t i = 0; i < oneRay.size(); ++i)
+        different += oneRay.data()[i] != sampled.picture.data()[i];
+    EXPECT_GT(different, 0);
+}
+
 // On a GPU source the cascades' pass and picture run on its device: the same reflections per
 // frame and the library's CPU picture after as many passes, to float rounding (the GPU picture's
 // parity, CascadesPictureGpu.*); settled light needs no more frames there either.

@@ -92,6 +92,9 @@ class RadianceCascades {
     // for this light. Fails on an invalid light, or as create() on runs through glass (the next
     // call builds again).
     Status setLight(const ShadeOptions& shading);
+    // The picture's rays per pixel (render.samples, clamped to 1..kMaxSamplesPerPixel): a
+    // picture setting, so the light is kept (the viewer's samples per pixel).
+    void setPictureSamples(int samplesPerPixel);
     // One lighting pass: faces' outgoing radiance from the current irradiance, the levels merged
     // top down, each face's irradiance gathered. Returns the relative change of the summed face
     // irradiance (1 after the first pass from black).

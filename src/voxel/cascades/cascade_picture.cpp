@@ -5,6 +5,9 @@
 // (Casting rows several rays at a time, castRayBatch and occludedBatch, measured no faster here:
 // 45-47 ms against 40-46 ms of CPU at 640x360.)
 #include "cascade_picture.h"
+
+#include <algorithm>
+
 #include "../path_trace_surface.h"
 #include "../solver_sun.h"
 #include "../solver_surface.h"
@@ -50,6 +53,10 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
     const int face = state_->faces.table.find(s.hit.voxel, cascades::normalIndex(s.hit.normal));
     const Rgb sun = face >= 0 ? cascades::faceDirectSun(*state_, face) : Rgb{};
     return surface.emission + surface.albedo * (sun + irradiance) * kInvPi;
+}
+
+void RadianceCascades::setPictureSamples(int samplesPerPixel) {
+    state_->shading.samplesPerPixel = std::clamp(samplesPerPixel, 1, kMaxSamplesPerPixel);
 }
 
 Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
