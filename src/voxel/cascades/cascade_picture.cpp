@@ -61,6 +61,7 @@ Result<Image> RadianceCascades::render(const Camera& camera) const {
     const VoxelWorld& world = *state_->world;
     const TextureSet* textures = state_->textures;
     const ShadeOptions& shading = state_->shading;
+    const cascades::FaceData& faces = state_->faces;
     Image out(width, height, 3);
     parallelForRange(height, 1, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {
@@ -72,8 +73,14 @@ Result<Image> RadianceCascades::render(const Camera& camera) const {
                     radiance = skyColor(ray.direction, shading);
                 } else if (s.hit.normal != Int3{}) {  // else the camera is inside a solid voxel
                     PathRng rng(kReflectionSeed, std::uint64_t(y) * width + x, 0);
+                    // The emitters near the pixel taken exactly at it, the rest of their
+                    // light (emitterFar) interpolated with the faces' irradiance.
+                    const Rgb irradiance =
+                        cascades::interpolatedIrradiance(faces, faces.emitterFar, s.hit.voxel,
+                                                         s.hit.normal, s.hit.point) +
+                        cascades::nearEmitterLight(*state_, s.hit);
                     const SolverLight light{
-                        indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point) * kInvPi,
+                        irradiance * kInvPi,
                         [&](const Ray& r, bool delta) { return reflectedLight(r, delta, 0, rng); },
                         kPictureSunRays, kPictureSpecularRays};
                     radiance = shadeSolverSurface(world, textures, s, ray, shading, light, rng);

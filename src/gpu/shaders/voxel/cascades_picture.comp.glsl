@@ -4,8 +4,9 @@
 // the solver's material model (solver_shade.glsl) under the faces' irradiance the lighting passes
 // left in the light buffer, the sun by shadow rays over its disk, and reflections and refraction
 // followed through glass and polished metal (solver_reflected.glsl), drawing the same random
-// numbers as the CPU (shared/path_rng.h). Buffers and push constants:
-// shared/cascade_picture_layout.h.
+// numbers as the CPU (shared/path_rng.h); the emitters near the pixel are taken exactly at it
+// (near_emitters.glsl). Buffers and push constants: shared/cascade_picture_layout.h and
+// shared/near_emitters.h.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/voxel_layout.h"
@@ -13,6 +14,7 @@
 #include "shared/medium_layout.h"
 #include "shared/voxel_cascades_layout.h"
 #include "shared/cascade_picture_layout.h"
+#include "shared/near_emitters.h"
 
 layout(local_size_x = LUXEL_PICTURE_GROUP_X, local_size_y = LUXEL_PICTURE_GROUP_Y) in;
 // Bindings 0-14 as voxel_render's (6, its image, and 10 are not read here).
@@ -21,6 +23,12 @@ layout(std430, set = 0, binding = 15) readonly buffer FaceLight { RgbTexel light
 layout(std430, set = 0, binding = 16) readonly buffer FaceSlots { CascadeFaceSlot faceSlots[]; };
 layout(std430, set = 0, binding = 17) readonly buffer GgxAlbedo { float ggxAlbedo[]; };
 layout(std430, set = 0, binding = 18) writeonly buffer Picture { float picture[]; };
+// The emitters near each face (shared/near_emitters.h).
+layout(std430, set = 0, binding = 19) readonly buffer EmitterFar { RgbTexel emitterFar[]; };
+layout(std430, set = 0, binding = 20) readonly buffer NearOffsets { uint nearOffset[]; };
+layout(std430, set = 0, binding = 21) readonly buffer NearEmitters {
+    CascadeNearEmitter nearEmitters[];
+};
 // Named `path` so the path tracer's surface code (path_surface.glsl) reads its materialFlags.
 layout(push_constant) uniform Push { CascadePicturePush path; };
 // Bindings 11-14: the sun visibility arrays, declared by the include (the ray caster's shading
@@ -34,6 +42,7 @@ layout(push_constant) uniform Push { CascadePicturePush path; };
 #include "shared/path_bsdf.h"
 #include "voxel/path_surface.glsl"
 #include "voxel/solver_light.glsl"
+#include "voxel/near_emitters.glsl"
 
 // RadianceCascades::reflectedLight's recursion, unrolled: level 2 takes every face as
 // Lambertian; levels 1 and 0 follow glass and polished metal into the level below.
@@ -87,7 +96,9 @@ void main() {
         radiance = skyColor(direction);
     } else if (s.hit.normal != ivec3(0)) {  // else the camera is inside a solid voxel
         uvec2 rng = pathRngKey(uvec2(path.seedLow, path.seedHigh), pixel, 0u);
-        radiance = shadeSurface0(s, direction, indirectIrradiance(s.hit) * LUXEL_SOLVER_INV_PI,
+        // The emitters near the pixel taken exactly at it, the rest of their light interpolated.
+        const vec3 irradiance = interpolatedIrradiance(s.hit, true) + nearEmitterLight(s.hit);
+        radiance = shadeSurface0(s, direction, irradiance * LUXEL_SOLVER_INV_PI,
                                  int(path.sunRays), int(path.specularRays), true, rng);
     }
     picture[3u * pixel] = radiance.x;
