@@ -233,6 +233,23 @@ TEST(CascadesPictureGpu, LightNearALampMatchesTheCpuPicture) {
     const Pictures p = drawBoth(*context, world, nullptr, o, {camera});
     ASSERT_FALSE(p.gpu.empty());
     expectWithin(compare(p.cpu, p.gpu), boundsFor(*context), "lamp room");
+    // A new emission through setLight: the GPU picture takes the new lists and far shares.
+    auto cascades = RadianceCascades::create(world, nullptr, o);
+    ASSERT_TRUE(cascades.ok()) << cascades.error().message();
+    auto gpu = RadianceCascadesGpu::create(*context, *cascades);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    ASSERT_TRUE(gpu->iterate(2).ok());
+    ASSERT_TRUE(gpu->render(camera).ok());
+    ASSERT_TRUE(o.materials.setSlot(1, lampMaterial(Rgb(5.0f, 30.0f, 12.0f))).ok());
+    ASSERT_TRUE(cascades->setLight(o).ok());
+    ASSERT_TRUE(gpu->uploadLight().ok());
+    ASSERT_TRUE(gpu->iterate(2).ok());
+    auto onGpu = gpu->render(camera);
+    ASSERT_TRUE(onGpu.ok()) << onGpu.error().message();
+    ASSERT_TRUE(gpu->download().ok());
+    auto onCpu = cascades->render(camera);
+    ASSERT_TRUE(onCpu.ok()) << onCpu.error().message();
+    expectWithin(compare(*onCpu, *onGpu), boundsFor(*context), "lamp room, new emission");
 }
 
 // Over the ray caster's upload (the viewer's GPU source): the same picture as over the picture's
