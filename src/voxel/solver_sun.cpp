@@ -71,29 +71,49 @@ Rgb throughMedia(const VoxelWorld& world, const Hit& hit, Vec3d direction,
 
 }  // namespace
 
-Rgb sunRayTransmittance(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
-                        const ShadeOptions& shading) {
-    if (!shading.refraction || !shading.materials.anyTransmission()) {
+namespace {
+
+// Along `ray` until it leaves the world (target null: the sky's share) or meets the face
+// (target->voxel, target->normal) (that face's share; 0 if it leaves the world or meets another
+// opaque face first).
+Rgb lineTransmittance(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
+                      const ShadeOptions& shading, const FaceTarget* target) {
+    const bool media = shading.refraction && shading.materials.anyTransmission();
+    if (!media && !target) {
         const bool blocked = surfaceRayBlocked(world, textures, ray, kInfinity, shading.stepCap);
         return blocked ? Rgb{} : Rgb(1.0f);
     }
     Rgb t(1.0f);
     Vec3d origin = ray.origin;
-    int media = 0;
+    int passed = 0;
     for (;;) {
         const SurfaceHit s =
             castToSurface(world, textures, {origin, ray.direction}, shading.stepCap);
-        if (!s.hit.hit) return t;               // the sky (or past the step cap)
-        if (s.hit.normal == Int3{}) return {};  // started inside a solid voxel
+        if (!s.hit.hit) return target ? Rgb{} : t;  // the sky (or past the step cap)
+        if (s.hit.normal == Int3{}) return {};      // started inside a solid voxel
+        if (target && s.hit.voxel == target->voxel && s.hit.normal == target->normal) return t;
+        if (!media) return {};
         // Starting on the face of an opaque voxel under glass or water, the ray is inside the
         // medium at once: no interface with the air to enter through.
         const Int3 behind{s.hit.voxel.x + s.hit.normal.x, s.hit.voxel.y + s.hit.normal.y,
                           s.hit.voxel.z + s.hit.normal.z};
         const bool inside =
-            media == 0 && !(s.hit.t > 1e-9) && world.solid(behind.x, behind.y, behind.z);
-        t = t * throughMedia(world, s.hit, ray.direction, shading, origin, media, inside);
+            passed == 0 && !(s.hit.t > 1e-9) && world.solid(behind.x, behind.y, behind.z);
+        t = t * throughMedia(world, s.hit, ray.direction, shading, origin, passed, inside);
         if (!(t.maxComponent() > kDarkTransmittance)) return {};
     }
+}
+
+}  // namespace
+
+Rgb sunRayTransmittance(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
+                        const ShadeOptions& shading) {
+    return lineTransmittance(world, textures, ray, shading, nullptr);
+}
+
+Rgb faceRayTransmittance(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
+                         const ShadeOptions& shading, const FaceTarget& target) {
+    return lineTransmittance(world, textures, ray, shading, &target);
 }
 
 Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,

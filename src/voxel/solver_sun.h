@@ -46,6 +46,18 @@ Rgb mediumAbsorption(const Material& m, double distance);
 Rgb sunRayTransmittance(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
                         const ShadeOptions& shading);
 
+// A face a straight line aims at: its voxel and outward normal.
+struct FaceTarget {
+    Int3 voxel, normal;
+};
+
+// What of the light leaving the face `target` along -ray.direction reaches ray.origin, as
+// sunRayTransmittance takes it: 1 when the ray meets that face first, a colour when it passes
+// glass or water on the way, 0 when it meets another opaque face or leaves the world (the radiance
+// cascades' picture near a lamp, docs/algorithms/voxel-radiance-cascades.md §4.1).
+Rgb faceRayTransmittance(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
+                         const ShadeOptions& shading, const FaceTarget& target);
+
 // The sun's light on a face, each shadow ray weighted by its sunRayTransmittance: the diffuse
 // lobe `diffuse` and, when given, the smooth lobes of `specular` (whose diffuse lobe must be off;
 // each ray a delta light of its share, bsdfLight) lit by the sun's disk over `sunRays` rays of

@@ -12,6 +12,7 @@
 #include "gpu/shaders/shared/cascade_picture_layout.h"
 #include "gpu/shaders/shared/hrc_layout.h"
 #include "gpu/shaders/shared/medium_layout.h"
+#include "gpu/shaders/shared/near_emitters.h"
 #include "gpu/shaders/shared/octree_layout.h"
 #include "gpu/shaders/shared/rc_layout.h"
 #include "gpu/shaders/shared/shadow_layout.h"
@@ -210,10 +211,18 @@ TEST(GpuSharedLayout, CascadesPicturePushConstantsAndFaceSlots) {
                  {sizeof(S),
                   {LUXEL_MEMBER(S, keyLow), LUXEL_MEMBER(S, keyHigh), LUXEL_MEMBER(S, id),
                    LUXEL_MEMBER(S, pad0)}});
+    for (int binding : {15, 19}) {
+        expectBuffer(
+            "cascades_picture", binding,
+            {sizeof(RgbTexel),
+             {LUXEL_MEMBER(RgbTexel, r), LUXEL_MEMBER(RgbTexel, g), LUXEL_MEMBER(RgbTexel, b)}});
+    }
+    using E = CascadeNearEmitter;
     expectBuffer(
-        "cascades_picture", 15,
-        {sizeof(RgbTexel),
-         {LUXEL_MEMBER(RgbTexel, r), LUXEL_MEMBER(RgbTexel, g), LUXEL_MEMBER(RgbTexel, b)}});
+        "cascades_picture", 21,
+        {sizeof(E),
+         {LUXEL_MEMBER(E, x), LUXEL_MEMBER(E, y), LUXEL_MEMBER(E, z), LUXEL_MEMBER(E, normal),
+          LUXEL_MEMBER(E, r), LUXEL_MEMBER(E, g), LUXEL_MEMBER(E, b), LUXEL_MEMBER(E, pad0)}});
 }
 
 TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {

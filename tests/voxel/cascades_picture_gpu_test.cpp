@@ -209,6 +209,49 @@ TEST(CascadesPictureGpu, GlassMirrorAndMetalMatchTheCpuPicture) {
     }
 }
 
+// A lamp on the floor of a closed room, a glass voxel and a wall block beside it: the emitters'
+// light near the lamp is taken exactly at each pixel (near_emitters.glsl), through the glass
+// and past the block's shadow, as on the CPU.
+TEST(CascadesPictureGpu, LightNearALampMatchesTheCpuPicture) {
+    REQUIRE_CONTEXT(context);
+    VoxelWorld world = makeWorld({14, 14, 14});
+    for (int z = 0; z < 14; ++z)
+        for (int y = 0; y < 14; ++y)
+            for (int x = 0; x < 14; ++x) {
+                if (x == 0 || y == 0 || z == 0 || x == 13 || y == 13 || z == 13) {
+                    world.set(x, y, z, kWhite);
+                }
+            }
+    world.set(6, 1, 6, Voxel{255, 255, 255, 2});  // lamp
+    world.set(8, 1, 6, Voxel{255, 255, 255, 1});  // glass
+    world.set(6, 1, 8, kWhite);
+    world.refreshEmptySpace();
+    ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
+    ASSERT_TRUE(o.materials.setSlot(0, glass(Rgb(0.2f, 0.1f, 0.05f))).ok());
+    ASSERT_TRUE(o.materials.setSlot(1, lampMaterial(Rgb(20.0f, 15.0f, 10.0f))).ok());
+    const Camera camera = *Camera::lookAt({10.5, 6.0, 10.5}, {6.5, 1.0, 6.5}, 70.0, 64, 48);
+    const Pictures p = drawBoth(*context, world, nullptr, o, {camera});
+    ASSERT_FALSE(p.gpu.empty());
+    expectWithin(compare(p.cpu, p.gpu), boundsFor(*context), "lamp room");
+    // A new emission through setLight: the GPU picture takes the new lists and far shares.
+    auto cascades = RadianceCascades::create(world, nullptr, o);
+    ASSERT_TRUE(cascades.ok()) << cascades.error().message();
+    auto gpu = RadianceCascadesGpu::create(*context, *cascades);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    ASSERT_TRUE(gpu->iterate(2).ok());
+    ASSERT_TRUE(gpu->render(camera).ok());
+    ASSERT_TRUE(o.materials.setSlot(1, lampMaterial(Rgb(5.0f, 30.0f, 12.0f))).ok());
+    ASSERT_TRUE(cascades->setLight(o).ok());
+    ASSERT_TRUE(gpu->uploadLight().ok());
+    ASSERT_TRUE(gpu->iterate(2).ok());
+    auto onGpu = gpu->render(camera);
+    ASSERT_TRUE(onGpu.ok()) << onGpu.error().message();
+    ASSERT_TRUE(gpu->download().ok());
+    auto onCpu = cascades->render(camera);
+    ASSERT_TRUE(onCpu.ok()) << onCpu.error().message();
+    expectWithin(compare(*onCpu, *onGpu), boundsFor(*context), "lamp room, new emission");
+}
+
 // Over the ray caster's upload (the viewer's GPU source): the same picture as over the picture's
 // own upload, the world not sent again, and the ray caster's own frame unchanged by the picture
 // drawn over its buffers.

@@ -44,6 +44,10 @@ struct CascadeOptions {
     double tolerance = 1e-4;
     // Bytes the cascades may take; 0: 2 GiB or the memory the machine has, if less.
     std::uint64_t memoryLimit = 0;
+    // The picture takes the light of emissive faces within a few voxels of each pixel exactly
+    // at the pixel (docs/algorithms/voxel-radiance-cascades.md §4.1); false: between face centres
+    // as for the rest of the light.
+    bool nearEmitters = true;
 };
 
 // Options checked: spacing, bounces, tolerance finite and in range; the error names the field.

@@ -38,7 +38,7 @@ Status findFaces(RadianceCascades::State& state, std::int64_t exposed) {
     faces.table = std::move(*table);
     faces.irradiance = std::move(irradiance);
     // Everything kept per face is found again for the new table (updateFaceLight).
-    faces.emitterIrradiance.clear();
+    faces.clearEmitterLight();
     faces.emission.clear();
     return Ok{};
 }

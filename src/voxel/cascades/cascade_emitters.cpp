@@ -8,6 +8,11 @@
 // the plane they span. Visibility is the fraction of four points on the emitting face that the
 // face centre x sees (cutouts let light through, as for the sun; glass and water dim it by their
 // transmittance).
+//
+// Near a small emitter the light changes within one face by more than interpolation between face
+// centres can draw, so the picture takes each emitter's light within a few voxels exactly at the
+// pixel (cascade_near_emitters.cpp): here each face also gets the far share of its emitter
+// irradiance (1 - nearEmitterWeight at its centre) and the list of emitters near it.
 #include <array>
 #include <cmath>
 
@@ -61,15 +66,78 @@ Rgb visibleFraction(const RadianceCascades::State& state, Vec3d x, int e) {
     return seen * 0.25f;
 }
 
+// The emitting face as the picture's near lists hold it.
+gpu::shared::CascadeNearEmitter nearEmitter(const FaceData& faces, int e) {
+    const Face& face = faces.table[e];
+    const Rgb& l = faces.emission[e];
+    return {face.voxel.x, face.voxel.y, face.voxel.z, face.normal, l.r, l.g, l.b, 0};
+}
+
+// Whether emitter e can light face f: it faces f's centre, which lies in front of it (both lie
+// on voxel planes, so what holds at the centre holds over the whole face, bar its edges).
+bool emitterFaces(const FaceData& faces, int e, int f) {
+    if (e == f) return false;
+    const Int3 ni = normalFromIndex(faces.table[f].normal);
+    const Int3 ei = normalFromIndex(faces.table[e].normal);
+    const Vec3d toReceiver = faceCentre(faces.table[f]) - faceCentre(faces.table[e]);
+    return dot(Vec3d{double(ei.x), double(ei.y), double(ei.z)}, toReceiver) > 0.0 &&
+           dot(Vec3d{double(ni.x), double(ni.y), double(ni.z)}, toReceiver) < 0.0;
+}
+
+// How far from a face's centre its farthest point lies (half its diagonal), and so how much
+// nearer than its centre a point of it may be to an emitter.
+constexpr double kHalfDiagonal = 0.70710678118654752;
+
+// The share of emitter e's light the picture takes exactly at a point `distance` from its
+// centre (none when the near term is off).
+double nearShare(const RadianceCascades::State& state, double distance) {
+    if (!state.options.nearEmitters) return 0.0;
+    return gpu::shared::nearEmitterWeight(float(distance), LUXEL_NEAR_EMITTER_INNER,
+                                          LUXEL_NEAR_EMITTER_OUTER);
+}
+
+// The near lists: per face the emitters whose near share is above 0 somewhere on it.
+void listNearEmitters(RadianceCascades::State& state, const std::vector<int>& emitters) {
+    FaceData& faces = state.faces;
+    const int count = faces.table.size();
+    faces.nearOffset.assign(std::size_t(count) + 1, 0);
+    if (!state.options.nearEmitters) return;
+    const double reach = double(LUXEL_NEAR_EMITTER_OUTER) + kHalfDiagonal;
+    auto near = [&](int e, int f) {
+        return emitterFaces(faces, e, f) &&
+               length(faceCentre(faces.table[f]) - faceCentre(faces.table[e])) < reach;
+    };
+    std::vector<std::uint32_t> counts(count, 0);
+    parallelForRange(count, 256, [&](int begin, int end) {
+        for (int f = begin; f < end; ++f) {
+            for (int e : emitters) counts[f] += near(e, f) ? 1 : 0;
+        }
+    });
+    for (int f = 0; f < count; ++f) faces.nearOffset[f + 1] = faces.nearOffset[f] + counts[f];
+    faces.nearEmitters.resize(faces.nearOffset[count]);
+    parallelForRange(count, 256, [&](int begin, int end) {
+        for (int f = begin; f < end; ++f) {
+            std::uint32_t at = faces.nearOffset[f];
+            for (int e : emitters) {
+                if (near(e, f)) faces.nearEmitters[at++] = nearEmitter(faces, e);
+            }
+        }
+    });
+}
+
 }  // namespace
 
 bool computeEmitterIrradiance(RadianceCascades::State& state) {
     FaceData& faces = state.faces;
+    ++faces.emitterVersion;
     std::vector<int> emitters;
     for (int f = 0; f < faces.table.size(); ++f) {
         if (faces.emission[f].maxComponent() > 0.0f) emitters.push_back(f);
     }
     faces.emitterIrradiance.assign(faces.table.size(), Rgb{});
+    faces.emitterFar.assign(faces.table.size(), Rgb{});
+    faces.nearOffset.assign(std::size_t(faces.table.size()) + 1, 0);
+    faces.nearEmitters.clear();
     if (emitters.empty()) return true;
     if (double(emitters.size()) * faces.table.size() > kMaxEmitterPairs) return false;
     parallelForRange(faces.table.size(), 16, [&](int begin, int end) {
@@ -78,27 +146,24 @@ bool computeEmitterIrradiance(RadianceCascades::State& state) {
             const Int3 ni = normalFromIndex(face.normal);
             const Vec3d n{double(ni.x), double(ni.y), double(ni.z)};
             const Vec3d x = faceCentre(face);
-            Rgb sum;
+            Rgb sum, far;
             for (int e : emitters) {
-                if (e == f) continue;
-                const Face& emitter = faces.table[e];
-                const Int3 ei = normalFromIndex(emitter.normal);
-                const Vec3d toReceiver = x - faceCentre(emitter);
-                // The emitter must face x and lie in front of the receiving face.
-                if (!(dot(Vec3d{double(ei.x), double(ei.y), double(ei.z)}, toReceiver) > 0.0) ||
-                    !(dot(n, toReceiver) < 0.0)) {
-                    continue;
-                }
-                const double omega = projectedSolidAngle(x, n, faceCorners(emitter));
+                if (!emitterFaces(faces, e, f)) continue;
+                const Vec3d toReceiver = x - faceCentre(faces.table[e]);
+                const double omega = projectedSolidAngle(x, n, faceCorners(faces.table[e]));
                 if (!(omega > 0.0)) continue;
                 const Rgb visible = visibleFraction(state, x, e);
                 if (visible.maxComponent() > 0.0f) {
-                    sum += faces.emission[e] * visible * float(omega);
+                    const Rgb light = faces.emission[e] * visible * float(omega);
+                    sum += light;
+                    far += light * float(1.0 - nearShare(state, length(toReceiver)));
                 }
             }
             faces.emitterIrradiance[f] = sum;
+            faces.emitterFar[f] = far;
         }
     });
+    listNearEmitters(state, emitters);
     return true;
 }
 

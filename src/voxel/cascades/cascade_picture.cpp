@@ -65,8 +65,14 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
     const SurfaceHit s = castToSurface(world, state_->textures, ray, shading.stepCap);
     if (!s.hit.hit) return skyColor(ray.direction, shading);
     if (s.hit.normal == Int3{}) return {};  // the camera is inside a solid voxel
+    // The emitters near the pixel taken exactly at it, the rest of their light (emitterFar)
+    // interpolated with the faces' irradiance.
+    const cascades::FaceData& faces = state_->faces;
+    const Rgb irradiance = cascades::interpolatedIrradiance(faces, faces.emitterFar, s.hit.voxel,
+                                                            s.hit.normal, s.hit.point) +
+                           cascades::nearEmitterLight(*state_, s.hit);
     const SolverLight light{
-        indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point) * kInvPi,
+        irradiance * kInvPi,
         [&](const Ray& r, bool delta) { return reflectedLight(r, delta, 0, rng); }, kPictureSunRays,
         kPictureSpecularRays};
     return shadeSolverSurface(world, state_->textures, s, ray, shading, light, rng);

@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 
+#include "../../gpu/shaders/shared/medium_layout.h"
 #include "../../gpu/shaders/shared/path_trace_layout.h"
 #include "../ggx_albedo.h"
 #include "../solver_surface.h"
@@ -146,6 +147,36 @@ Result<std::unique_ptr<PictureGpu>> makePicture(gpu::Context& context,
     return picture;
 }
 
+// The faces' far emitter share and near lists on the device, when the CPU object has computed
+// them since the last upload.
+Status uploadNearEmitters(gpu::Context& context, const FaceData& faces, PictureGpu& picture) {
+    if (picture.nearUploaded && picture.emitterVersion == faces.emitterVersion) return Ok{};
+    const std::size_t count = std::size_t(faces.table.size());
+    std::vector<shared::RgbTexel> far(count, shared::RgbTexel{0, 0, 0});
+    for (std::size_t f = 0; f < count && f < faces.emitterFar.size(); ++f) {
+        const Rgb& c = faces.emitterFar[f];
+        far[f] = {c.r, c.g, c.b};
+    }
+    std::vector<std::uint32_t> offsets = faces.nearOffset;
+    offsets.resize(count + 1, offsets.empty() ? 0 : offsets.back());
+    const std::vector<shared::CascadeNearEmitter>& list = faces.nearEmitters;
+    picture.nearBytes = 0;
+    for (auto [target, data] : {std::pair{&picture.emitterFar, std::as_bytes(std::span(far))},
+                                std::pair{&picture.nearOffset, std::as_bytes(std::span(offsets))},
+                                std::pair{&picture.nearEmitters, std::as_bytes(std::span(list))}}) {
+        auto buffer = context.createBuffer(std::max<std::uint64_t>(data.size(), 16));
+        if (!buffer) return buffer.error();
+        if (!data.empty()) {
+            if (Status s = context.upload(**buffer, data); !s) return s;
+        }
+        *target = std::move(*buffer);
+        picture.nearBytes += data.size();
+    }
+    picture.emitterVersion = faces.emitterVersion;
+    picture.nearUploaded = true;
+    return Ok{};
+}
+
 }  // namespace
 
 void RadianceCascadesGpu::useUploadedWorld(VoxelGpuRenderer& world) {
@@ -168,7 +199,10 @@ Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilli
         g.picture = std::move(*made);
     }
     PictureGpu& p = *g.picture;
-    if (Status s = checkRoom(*g.context, camera, p.worldBytes, p.tableBytes, memoryBudget); !s) {
+    if (Status s = uploadNearEmitters(*g.context, state.faces, p); !s) return s.error();
+    if (Status s =
+            checkRoom(*g.context, camera, p.worldBytes, p.tableBytes + p.nearBytes, memoryBudget);
+        !s) {
         return s.error();
     }
     const std::uint64_t imageBytes = std::uint64_t(width) * height * 3 * sizeof(float);
@@ -191,7 +225,8 @@ Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilli
     d.name = "cascades picture " + sizeText(camera);
     d.program = p.program;
     d.buffers = *bound;
-    for (gpu::Buffer* b : {g.light.get(), p.slots.get(), p.albedo.get(), p.image.get()}) {
+    for (gpu::Buffer* b : {g.light.get(), p.slots.get(), p.albedo.get(), p.image.get(),
+                           p.emitterFar.get(), p.nearOffset.get(), p.nearEmitters.get()}) {
         d.buffers.push_back(b);
     }
     d.setPush(picturePush(state.shading, std::uint32_t(state.faces.table.size()), p.slotMask));

@@ -22,6 +22,11 @@ struct PictureGpu {
     VoxelGpuRenderer* world = nullptr;           // the world, textures and materials on the device
     std::shared_ptr<gpu::Buffer> slots, albedo, image;
     std::uint64_t imageBytes = 0;
+    // The emitters near each face (shared/near_emitters.h), uploaded again when the CPU object
+    // computed them again (FaceData::emitterVersion).
+    std::shared_ptr<gpu::Buffer> emitterFar, nearOffset, nearEmitters;
+    std::uint64_t emitterVersion = 0, nearBytes = 0;
+    bool nearUploaded = false;
     std::uint64_t worldBytes = 0, tableBytes = 0;  // the estimates the memory check counts
     std::uint32_t slotMask = 0;
     gpu::Program* program = nullptr;

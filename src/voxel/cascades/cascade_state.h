@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "../../gpu/shaders/shared/near_emitters.h"
 #include "cascade_layout.h"
 #include "luxel/voxel/radiance_cascades.h"
 #include "octahedral_bins.h"
@@ -64,6 +65,22 @@ struct FaceData {
     // chains carry reflected light only.
     std::vector<Rgb> emitterIrradiance;
     bool emittersExact = true;
+    // What the picture needs to take the emitters near a pixel exactly (cascade_near_emitters.cpp):
+    // per face its emitterIrradiance less the share nearEmitterWeight gives the near term at its
+    // centre, and the emitters that weight reaches anywhere on it (CSR: nearOffset[f] up to
+    // nearOffset[f + 1] in nearEmitters). Empty lists and emitterFar = emitterIrradiance when the
+    // exact term is off. `emitterVersion` counts the computations (the GPU picture uploads anew).
+    std::vector<Rgb> emitterFar;
+    std::vector<std::uint32_t> nearOffset;
+    std::vector<gpu::shared::CascadeNearEmitter> nearEmitters;
+    std::uint64_t emitterVersion = 0;
+    // Drops the emitters' light, so updateFaceLight computes it again.
+    void clearEmitterLight() {
+        emitterIrradiance.clear();
+        emitterFar.clear();
+        nearOffset.clear();
+        nearEmitters.clear();
+    }
 };
 
 // Most (emitting face, receiving face) pairs computed exactly; past it the chains carry emission.
@@ -157,8 +174,17 @@ Status buildSegments(RadianceCascades::State& state);
 void updateStats(RadianceCascades::State& state);
 // Face colours and sun visibility for the state's shading (cascade_light.cpp).
 void updateFaceLight(RadianceCascades::State& state);
-// The faces' emitterIrradiance; false (and zeros) when there are too many pairs.
+// The faces' emitterIrradiance, emitterFar and near lists; false (and zeros, no lists) when
+// there are too many pairs.
 bool computeEmitterIrradiance(RadianceCascades::State& state);
+// The faces' irradiance plus `emitter` (emitterIrradiance, or emitterFar for the picture's own
+// surface) at a point on a face, bilinear between the centres of the face and its open
+// neighbours in the plane (RadianceCascades::indirectIrradiance).
+Rgb interpolatedIrradiance(const FaceData& faces, const std::vector<Rgb>& emitter, Int3 voxel,
+                           Int3 normal, Vec3d point);
+// The light of the emitters near `hit` taken exactly there, each by its nearEmitterWeight
+// (cascade_near_emitters.cpp).
+Rgb nearEmitterLight(const RadianceCascades::State& state, const Hit& hit);
 // One lighting pass (cascade_light.cpp); returns the relative change of total irradiance.
 double lightingPass(RadianceCascades::State& state);
 

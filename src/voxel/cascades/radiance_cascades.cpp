@@ -108,7 +108,7 @@ Status RadianceCascades::setLight(const ShadeOptions& shading) {
     // A cast refused before is tried again (the new light may let less through).
     Status cast = Ok{};
     if (!state_->castComplete || cascades::mediaSignature(shading) != state_->castMedia) {
-        state_->faces.emitterIrradiance.clear();  // their light through glass is found again
+        state_->faces.clearEmitterLight();  // their light through glass is found again
         cast = cascades::buildSegments(*state_);
         cascades::updateStats(*state_);
     }
@@ -134,7 +134,12 @@ int RadianceCascades::solve() {
 }
 
 Rgb RadianceCascades::indirectIrradiance(Int3 voxel, Int3 normal, Vec3d point) const {
-    const FaceData& faces = state_->faces;
+    return interpolatedIrradiance(state_->faces, state_->faces.emitterIrradiance, voxel, normal,
+                                  point);
+}
+
+Rgb cascades::interpolatedIrradiance(const FaceData& faces, const std::vector<Rgb>& emitter,
+                                     Int3 voxel, Int3 normal, Vec3d point) {
     const int n = normalIndex(normal), axis = n / 2, a = (axis + 1) % 3, b = (axis + 2) % 3;
     // Bilinear between the centres of this face and its neighbours in the plane; a neighbour
     // counts when it is an open face too, and a diagonal one only through an open side neighbour
@@ -153,7 +158,7 @@ Rgb RadianceCascades::indirectIrradiance(Int3 voxel, Int3 normal, Vec3d point) c
     double total = 0.0;
     for (int i = 0; i < 4; ++i) {
         if (ids[i] < 0) continue;
-        sum += (faces.irradiance[ids[i]] + faces.emitterIrradiance[ids[i]]) * float(weights[i]);
+        sum += (faces.irradiance[ids[i]] + emitter[ids[i]]) * float(weights[i]);
         total += weights[i];
     }
     return total > 0.0 ? sum * float(1.0 / total) : Rgb{};

@@ -11,6 +11,7 @@
 //   16 CascadeFaceSlot: the faces' open-addressing table, (voxel, normal) -> face id
 //   17 float: the GGX lobe's directional albedo table (src/voxel/ggx_albedo.h)
 //   18 float: the picture, RGB per pixel, rows top to bottom
+//   19..21 the emitters near each face (shared/near_emitters.h)
 #ifndef LUXEL_GPU_SHARED_CASCADE_PICTURE_LAYOUT_H
 #define LUXEL_GPU_SHARED_CASCADE_PICTURE_LAYOUT_H
 
@@ -20,7 +21,7 @@ LUXEL_SHARED_BEGIN
 
 #define LUXEL_PICTURE_GROUP_X 8
 #define LUXEL_PICTURE_GROUP_Y 8
-#define LUXEL_PICTURE_BUFFERS 19
+#define LUXEL_PICTURE_BUFFERS 22
 // Glass and polished metal followed one inside another (kSolverFollowDepth, solver_surface.h):
 // the shader unrolls the CPU's recursion into this many levels.
 #define LUXEL_PICTURE_FOLLOW_DEPTH 2

@@ -189,6 +189,10 @@ using std::log;
 using std::pow;
 using std::sin;
 using std::sqrt;
+// GLSL's two-argument atan (atan2).
+inline float atan(float y, float x) {
+    return std::atan2(y, x);
+}
 // Index of the highest set bit, -1 for 0 (GLSL findMSB; callers pass non-negative values).
 constexpr int findMSB(int v) {
     return v <= 0 ? -1 : 31 - std::countl_zero(static_cast<unsigned>(v));

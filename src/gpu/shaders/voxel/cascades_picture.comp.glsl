@@ -1,11 +1,12 @@
 // The voxel radiance cascades' picture on the GPU (docs/algorithms/voxel-radiance-cascades.md
 // §4.2, §4.3; CPU reference: RadianceCascades::render in src/voxel/cascades/cascade_picture.cpp):
 // one invocation per pixel casts render.samples rays through it (the centre by default) and
-// shades what it meets with the solver's material model (solver_shade.glsl) under the faces' irradiance the lighting passes
-// left in the light buffer, the sun by shadow rays over its disk, and reflections and refraction
-// followed through glass and polished metal (solver_reflected.glsl), drawing the same random
-// numbers as the CPU (shared/path_rng.h). Buffers and push constants:
-// shared/cascade_picture_layout.h.
+// shades what it meets with the solver's material model (solver_shade.glsl) under the faces'
+// irradiance the lighting passes left in the light buffer, the sun by shadow rays over its disk,
+// and reflections and refraction followed through glass and polished metal
+// (solver_reflected.glsl), drawing the same random numbers as the CPU (shared/path_rng.h); the emitters near the pixel are taken exactly at it
+// (near_emitters.glsl). Buffers and push constants: shared/cascade_picture_layout.h and
+// shared/near_emitters.h.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/voxel_layout.h"
@@ -13,6 +14,7 @@
 #include "shared/medium_layout.h"
 #include "shared/voxel_cascades_layout.h"
 #include "shared/cascade_picture_layout.h"
+#include "shared/near_emitters.h"
 
 layout(local_size_x = LUXEL_PICTURE_GROUP_X, local_size_y = LUXEL_PICTURE_GROUP_Y) in;
 // Bindings 0-14 as voxel_render's (6, its image, and 10 are not read here).
@@ -21,6 +23,12 @@ layout(std430, set = 0, binding = 15) readonly buffer FaceLight { RgbTexel light
 layout(std430, set = 0, binding = 16) readonly buffer FaceSlots { CascadeFaceSlot faceSlots[]; };
 layout(std430, set = 0, binding = 17) readonly buffer GgxAlbedo { float ggxAlbedo[]; };
 layout(std430, set = 0, binding = 18) writeonly buffer Picture { float picture[]; };
+// The emitters near each face (shared/near_emitters.h).
+layout(std430, set = 0, binding = 19) readonly buffer EmitterFar { RgbTexel emitterFar[]; };
+layout(std430, set = 0, binding = 20) readonly buffer NearOffsets { uint nearOffset[]; };
+layout(std430, set = 0, binding = 21) readonly buffer NearEmitters {
+    CascadeNearEmitter nearEmitters[];
+};
 // Named `path` so the path tracer's surface code (path_surface.glsl) reads its materialFlags.
 layout(push_constant) uniform Push { CascadePicturePush path; };
 // Bindings 11-14: the sun visibility arrays, declared by the include (the ray caster's shading
@@ -35,6 +43,7 @@ layout(push_constant) uniform Push { CascadePicturePush path; };
 #include "shared/path_bsdf.h"
 #include "voxel/path_surface.glsl"
 #include "voxel/solver_light.glsl"
+#include "voxel/near_emitters.glsl"
 
 // RadianceCascades::reflectedLight's recursion, unrolled: level 2 takes every face as
 // Lambertian; levels 1 and 0 follow glass and polished metal into the level below.
@@ -74,8 +83,10 @@ vec3 pixelRadiance(vec3 origin, vec3 direction, inout uvec2 rng) {
     const SurfaceHit s = castToSurface(origin, direction);
     if (!s.hit.hit) return skyColor(direction);
     if (s.hit.normal == ivec3(0)) return vec3(0.0);  // the camera is inside a solid voxel
-    return shadeSurface0(s, direction, indirectIrradiance(s.hit) * LUXEL_SOLVER_INV_PI,
-                         int(path.sunRays), int(path.specularRays), true, rng);
+    // The emitters near the pixel taken exactly at it, the rest of their light interpolated.
+    const vec3 irradiance = interpolatedIrradiance(s.hit, true) + nearEmitterLight(s.hit);
+    return shadeSurface0(s, direction, irradiance * LUXEL_SOLVER_INV_PI, int(path.sunRays),
+                         int(path.specularRays), true, rng);
 }
 
 void main() {

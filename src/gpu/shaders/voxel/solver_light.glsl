@@ -3,8 +3,8 @@
 // sun rays through glass, the sun's light on a face's lobes over the disk's fixed spiral, the
 // disk behind a delta lobe, the faces' table, their interpolated irradiance and the GGX albedo
 // table. Needs the buffers of shared/cascade_picture_layout.h (`light`, `faceSlots`,
-// `ggxAlbedo`), `path` (CascadePicturePush), castToSurface, walkMedium, materials[] and the
-// path tracer's surface code (path_surface.glsl).
+// `ggxAlbedo`) and `emitterFar` (shared/near_emitters.h), `path` (CascadePicturePush),
+// castToSurface, walkMedium, materials[] and the path tracer's surface code (path_surface.glsl).
 
 #define LUXEL_SOLVER_INV_PI 0.31830988618379067
 // Below this the light that is left counts as none (kDarkTransmittance, solver_sun.cpp).
@@ -71,10 +71,14 @@ vec3 throughMedia(Hit hit, vec3 direction, inout vec3 origin, inout int media) {
     return vec3(0.0);
 }
 
-// sunRayTransmittance (solver_sun.h): 1 open, 0 blocked, a colour through glass.
-vec3 sunRayTransmittance(vec3 origin, vec3 direction) {
-    const uint media = LUXEL_PICTURE_REFRACTION | LUXEL_PICTURE_TRANSMISSION;
-    if ((path.materialFlags & media) != media) {
+// lineTransmittance (solver_sun.cpp): along the ray until it leaves the world (toFace false: the
+// sky's share, sunRayTransmittance) or meets the face (faceVoxel, faceNormal) (that face's share,
+// faceRayTransmittance; 0 where it leaves the world or meets another opaque face first).
+vec3 lineTransmittance(vec3 origin, vec3 direction, bool toFace, ivec3 faceVoxel,
+                       ivec3 faceNormal) {
+    const uint mediaFlags = LUXEL_PICTURE_REFRACTION | LUXEL_PICTURE_TRANSMISSION;
+    const bool media = (path.materialFlags & mediaFlags) == mediaFlags;
+    if (!media && !toFace) {
         return castToSurface(origin, direction).hit.hit ? vec3(0.0) : vec3(1.0);
     }
     vec3 t = vec3(1.0), o = origin;
@@ -82,12 +86,19 @@ vec3 sunRayTransmittance(vec3 origin, vec3 direction) {
     // Each round enters at least one medium, and past LUXEL_SOLVER_SUN_MEDIA the ray is dark.
     for (int round = 0; round <= LUXEL_SOLVER_SUN_MEDIA; ++round) {
         const SurfaceHit s = castToSurface(o, direction);
-        if (!s.hit.hit) return t;
+        if (!s.hit.hit) return toFace ? vec3(0.0) : t;
         if (s.hit.normal == ivec3(0)) return vec3(0.0);
+        if (toFace && s.hit.voxel == faceVoxel && s.hit.normal == faceNormal) return t;
+        if (!media) return vec3(0.0);
         t = t * throughMedia(s.hit, direction, o, passed);
         if (!(maxComponent(t) > LUXEL_SOLVER_DARK)) return vec3(0.0);
     }
     return vec3(0.0);
+}
+
+// sunRayTransmittance (solver_sun.h): 1 open, 0 blocked, a colour through glass.
+vec3 sunRayTransmittance(vec3 origin, vec3 direction) {
+    return lineTransmittance(origin, direction, false, ivec3(0), ivec3(0));
 }
 
 // solverSunLobes (solver_sun.h): the diffuse lobe and, when `glossy`, the smooth lobes of
@@ -163,9 +174,11 @@ vec3 faceLight(uint section, int face) {
     return texelRgb(light[section * path.faces + uint(face)]);
 }
 
-// RadianceCascades::indirectIrradiance: bilinear between the centres of this face and its open
-// neighbours in the plane (a diagonal one only through an open side neighbour).
-vec3 indirectIrradiance(Hit hit) {
+// interpolatedIrradiance (RadianceCascades::indirectIrradiance): the faces' irradiance plus their
+// emitter irradiance (`far`: its far share, `emitterFar`, for the picture's own surface),
+// bilinear between the centres of this face and its open neighbours in the plane (a diagonal one
+// only through an open side neighbour).
+vec3 interpolatedIrradiance(Hit hit, bool far) {
     const int n = normalIndex(hit.normal), axis = n / 2, a = (axis + 1) % 3, b = (axis + 2) % 3;
     const float fa = hit.point[a] - float(hit.voxel[a]) - 0.5;
     const float fb = hit.point[b] - float(hit.voxel[b]) - 0.5;
@@ -185,11 +198,16 @@ vec3 indirectIrradiance(Hit hit) {
     float total = 0.0;
     for (int i = 0; i < 4; ++i) {
         if (ids[i] < 0) continue;
-        sum += (faceLight(LUXEL_FACE_IRRADIANCE, ids[i]) + faceLight(LUXEL_FACE_EMITTER, ids[i])) *
-               weights[i];
+        const vec3 emitter = far ? texelRgb(emitterFar[ids[i]])
+                                 : faceLight(LUXEL_FACE_EMITTER, ids[i]);
+        sum += (faceLight(LUXEL_FACE_IRRADIANCE, ids[i]) + emitter) * weights[i];
         total += weights[i];
     }
     return total > 0.0 ? sum * (1.0 / total) : vec3(0.0);
+}
+
+vec3 indirectIrradiance(Hit hit) {
+    return interpolatedIrradiance(hit, false);
 }
 
 // directionalAlbedoGgx (ggx_albedo.h): the table bilinear over cosView and alpha in [0, 1].

@@ -1,0 +1,103 @@
+// The light of emissive faces near a point of the radiance cascades' picture, exactly
+// (docs/algorithms/voxel-radiance-cascades.md §4.1, "Near a lamp"): the weight that splits each
+// emitter's light between the faces' interpolated irradiance (far) and the pixel's own exact
+// term (near), and Lambert's contour integral over the emitting square at the pixel's point.
+// Shared by the CPU picture (src/voxel/cascades/cascade_near_emitters.cpp) and the GPU's
+// (src/gpu/shaders/voxel/near_emitters.glsl), in float on both so they agree to rounding; the
+// faces' own far part (cascade_emitters.cpp) takes the same weight.
+//
+// Buffers of cascades_picture after shared/cascade_picture_layout.h's 0..18:
+//   19 RgbTexel per face: its emitter irradiance less the near part at its centre (far part)
+//   20 uint per face + 1: where each face's list of near emitters starts in 21 (CSR offsets)
+//   21 CascadeNearEmitter: the lists, each entry an emitting face and its radiance
+#ifndef LUXEL_GPU_SHARED_NEAR_EMITTERS_H
+#define LUXEL_GPU_SHARED_NEAR_EMITTERS_H
+
+#include "glsl_compat.h"
+
+// Inside this distance (voxels, from the receiving point to the emitting face's centre) an
+// emitter's light is the pixel's own exact term alone; past the outer one it is the faces'
+// interpolated irradiance alone; between, a smooth step shares it (measured on thin-walls:
+// docs/voxel-gi-measures.md, "Near a lamp").
+#define LUXEL_NEAR_EMITTER_INNER 1.5f
+#define LUXEL_NEAR_EMITTER_OUTER 4.0f
+
+LUXEL_SHARED_BEGIN
+
+// An emitting face as the picture's near lists hold it: its voxel, normalIndex (0 +x, 1 -x,
+// 2 +y, 3 -y, 4 +z, 5 -z) and emitted radiance.
+struct CascadeNearEmitter {
+    int x, y, z;
+    uint normal;
+    float r, g, b;
+    uint pad0;
+};
+
+// The share of an emitter's light taken exactly at a point `d` voxels from its centre: 1 within
+// `inner`, 0 from `outer` on, a smoothstep between (continuous with its slope, so no seam).
+LUXEL_FUNC float nearEmitterWeight(float d, float inner, float outer) {
+    if (!(d > inner)) return 1.0f;
+    if (!(d < outer)) return 0.0f;
+    const float t = (d - inner) / (outer - inner);
+    return 1.0f - t * t * (3.0f - 2.0f * t);
+}
+
+LUXEL_FUNC vec3 nearEmitterNormal(uint normal) {
+    const float outward = (normal & 1u) == 0u ? 1.0f : -1.0f;
+    const uint axis = normal / 2u;
+    return vec3(axis == 0u ? outward : 0.0f, axis == 1u ? outward : 0.0f,
+                axis == 2u ? outward : 0.0f);
+}
+
+// The emitting face's centre, or with `quarter` 0..3 the centre of that quarter (faceCentre,
+// faceQuarterCentre: where the visibility rays aim).
+LUXEL_FUNC vec3 nearEmitterPoint(CascadeNearEmitter e, int quarter) {
+    vec3 p = vec3(float(e.x) + 0.5f, float(e.y) + 0.5f, float(e.z) + 0.5f) +
+             nearEmitterNormal(e.normal) * 0.5f;
+    if (quarter >= 0) {
+        const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
+        p[a] += (quarter & 1) != 0 ? 0.25f : -0.25f;
+        p[b] += (quarter & 2) != 0 ? 0.25f : -0.25f;
+    }
+    return p;
+}
+
+// Corner `i` (0..3, in order around it) of the emitting face (faceCorners, cascade_emitters.cpp).
+LUXEL_FUNC vec3 nearEmitterCorner(CascadeNearEmitter e, int i) {
+    const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
+    vec3 c = vec3(float(e.x), float(e.y), float(e.z));
+    if ((e.normal & 1u) == 0u) c[axis] += 1.0f;
+    if (i == 1 || i == 2) c[a] += 1.0f;
+    if (i == 2 || i == 3) c[b] += 1.0f;
+    return c;
+}
+
+// Lambert's contour integral without L: the projected solid angle / 2 of the emitting square at
+// `x` with unit normal `n`, |sum_i theta_i n . u_i| / 2; 0 unless the emitter faces x and lies
+// in front of it (the square never straddles the receiving plane: both lie on voxel planes).
+LUXEL_FUNC float nearEmitterFormFactor(vec3 x, vec3 n, CascadeNearEmitter e) {
+    const vec3 toReceiver = x - nearEmitterPoint(e, -1);
+    if (!(dot(nearEmitterNormal(e.normal), toReceiver) > 0.0f) || !(dot(n, toReceiver) < 0.0f)) {
+        return 0.0f;
+    }
+    float sum = 0.0f;
+    vec3 v0 = normalize(nearEmitterCorner(e, 0) - x);
+    for (int i = 0; i < 4; ++i) {
+        const vec3 v1 = normalize(nearEmitterCorner(e, (i + 1) % 4) - x);
+        const vec3 c = cross(v0, v1);
+        const float s = length(c);
+        if (s > 1e-12f) sum += atan(s, dot(v0, v1)) * dot(n, c) / s;
+        v0 = v1;
+    }
+    return abs(sum) * 0.5f;
+}
+
+LUXEL_SHARED_END
+
+#ifdef __cplusplus
+static_assert(sizeof(luxel::gpu::shared::CascadeNearEmitter) == 32);
+static_assert(offsetof(luxel::gpu::shared::CascadeNearEmitter, normal) == 12);
+static_assert(offsetof(luxel::gpu::shared::CascadeNearEmitter, r) == 16);
+#endif
+
+#endif

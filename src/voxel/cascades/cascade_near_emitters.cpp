@@ -1,0 +1,46 @@
+// The light of emissive faces near a point of the picture, exactly at the point
+// (docs/algorithms/voxel-radiance-cascades.md §4.1): next to a small lamp the irradiance changes
+// by far more within one face (1/r^2, and up to pi L at the lamp's foot) than interpolation
+// between face centres can draw. Each emitter's light is split by nearEmitterWeight of the
+// distance to its centre (shared/near_emitters.h): the faces keep the far share at their centres
+// (emitterFar, interpolated as before), and the pixel adds the near share at its own point,
+// Lambert's contour integral times the mean transmittance of four straight lines to the emitter.
+// The GPU's twin: src/gpu/shaders/voxel/near_emitters.glsl (same float arithmetic).
+#include "../solver_sun.h"
+#include "cascade_state.h"
+
+namespace luxel::voxel::cascades {
+
+namespace shared = gpu::shared;
+
+Rgb nearEmitterLight(const RadianceCascades::State& state, const Hit& hit) {
+    const FaceData& faces = state.faces;
+    if (faces.nearOffset.empty()) return {};
+    const int face = faces.table.find(hit.voxel, normalIndex(hit.normal));
+    if (face < 0) return {};
+    const shared::vec3 p(float(hit.point.x), float(hit.point.y), float(hit.point.z));
+    const shared::vec3 n(float(hit.normal.x), float(hit.normal.y), float(hit.normal.z));
+    Rgb sum;
+    for (std::uint32_t i = faces.nearOffset[face]; i < faces.nearOffset[face + 1]; ++i) {
+        const shared::CascadeNearEmitter& e = faces.nearEmitters[i];
+        const float weight =
+            shared::nearEmitterWeight(length(p - shared::nearEmitterPoint(e, -1)),
+                                      LUXEL_NEAR_EMITTER_INNER, LUXEL_NEAR_EMITTER_OUTER);
+        if (!(weight > 0.0f)) continue;
+        const float formFactor = shared::nearEmitterFormFactor(p, n, e);
+        if (!(formFactor > 0.0f)) continue;
+        const Int3 emitterNormal = normalFromIndex(int(e.normal));
+        const FaceTarget target{{e.x, e.y, e.z}, emitterNormal};
+        Rgb seen;
+        for (int q = 0; q < 4; ++q) {
+            const shared::vec3 d = normalize(shared::nearEmitterPoint(e, q) - p);
+            seen += faceRayTransmittance(*state.world, state.textures,
+                                         {hit.point, {double(d.x), double(d.y), double(d.z)}},
+                                         state.shading, target);
+        }
+        sum += Rgb(e.r, e.g, e.b) * seen * (0.25f * weight * formFactor);
+    }
+    return sum;
+}
+
+}  // namespace luxel::voxel::cascades
