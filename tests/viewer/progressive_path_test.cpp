@@ -379,15 +379,20 @@ TEST(RendererVoxelSkyVisibility, IsTheLibraryRenderAndRendersOncePerView) {
     EXPECT_FALSE(renderer.hasMoreWork());
 }
 
+// The block world's view in radiance cascades mode, posted to `renderer`.
+VoxelState showCascades(RendererVoxel& renderer) {
+    VoxelState s = pathState(1);
+    s.solver.kind = VoxelSolver::Cascades;
+    renderer.setState(VoxelState(s));
+    return s;
+}
+
 // Radiance cascades in the viewer: one more reflection per frame, each frame the library's
 // picture after as many passes; a camera move keeps the light, a new sun sets it anew.
 TEST(RendererVoxelCascades, AddsAReflectionPerFrameAndKeepsTheLightWhenTheCameraMoves) {
     const voxel::VoxelWorld world = blockWorld();
     RendererVoxel renderer(blockWorld(), makeCpuVoxelFrameSource());
-    VoxelState s = pathState(1);
-    s.solver.kind = VoxelSolver::Cascades;
-    VoxelState copy = s;
-    renderer.setState(std::move(copy));
+    VoxelState s = showCascades(renderer);
     auto library = voxel::RadianceCascades::create(world, nullptr, s.shading);
     ASSERT_TRUE(library.ok()) << library.error().message();
     for (int frameIndex = 1; frameIndex <= 3; ++frameIndex) {
@@ -406,16 +411,14 @@ TEST(RendererVoxelCascades, AddsAReflectionPerFrameAndKeepsTheLightWhenTheCamera
     }
     // The camera moves: the light carries on (no new build, the fourth reflection).
     s.camera.position.x += 1.0;
-    copy = s;
-    renderer.setState(std::move(copy));
+    renderer.setState(VoxelState(s));
     Frame moved = renderer.step();
     EXPECT_EQ(*metadataOf(moved, "luxel.rc.bounces"), "4");
     library->iterate();
     expectSameImage(moved.picture, displayed(*library->render(cameraOf(s)), s));
     // The sun moves: new light, same cascades.
     s.shading.sunDirection = {0.5f, 0.8f, 0.1f};
-    copy = s;
-    renderer.setState(std::move(copy));
+    renderer.setState(VoxelState(s));
     Frame lit = renderer.step();
     bool relit = false;
     for (const PassTime& p : lit.passes) relit |= p.name == "cascades light";
@@ -433,15 +436,11 @@ TEST(RendererVoxelCascades, AddsAReflectionPerFrameAndKeepsTheLightWhenTheCamera
 TEST(RendererVoxelCascades, SamplesPerPixelRedrawThePictureAndKeepTheLight) {
     const voxel::VoxelWorld world = blockWorld();
     RendererVoxel renderer(blockWorld(), makeCpuVoxelFrameSource());
-    VoxelState s = pathState(1);
-    s.solver.kind = VoxelSolver::Cascades;
-    VoxelState copy = s;
-    renderer.setState(std::move(copy));
+    VoxelState s = showCascades(renderer);
     const Frame first = renderer.step();
     ASSERT_TRUE(first.note.empty()) << first.note;
     s.shading.samplesPerPixel = 4;
-    copy = s;
-    renderer.setState(std::move(copy));
+    renderer.setState(VoxelState(s));
     const Frame sampled = renderer.step();
     for (const PassTime& p : sampled.passes) {
         EXPECT_NE(p.name, "cascades build");
@@ -471,10 +470,7 @@ TEST(RendererVoxelCascades, RunOnTheGpuSourcesDevice) {
     auto source = makeGpuVoxelFrameSource("", /* hardwareOnly= */ false, world, {});
     if (!source) GTEST_SKIP() << "no Vulkan device: " << source.error().message();
     RendererVoxel renderer(blockWorld(), std::move(*source));
-    VoxelState s = pathState(1);
-    s.solver.kind = VoxelSolver::Cascades;
-    VoxelState copy = s;
-    renderer.setState(std::move(copy));
+    VoxelState s = showCascades(renderer);
     auto library = voxel::RadianceCascades::create(world, nullptr, s.shading);
     ASSERT_TRUE(library.ok()) << library.error().message();
     for (int frameIndex = 1; frameIndex <= 3; ++frameIndex) {
