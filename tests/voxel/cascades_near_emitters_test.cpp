@@ -55,6 +55,16 @@ RadianceCascades solved(const LampRoom& room, bool nearEmitters) {
     return std::move(*cascades);
 }
 
+// The path tracer's picture of the room (its reference), with every bounce a path may take.
+Image pathTruth(const LampRoom& room, const Camera& camera, int samples) {
+    PathTraceOptions p;
+    p.samplesPerPixel = samples;
+    p.maxBounces = 64;
+    auto truth = pathTrace(room.world, camera, room.o, p);
+    EXPECT_TRUE(truth.ok()) << truth.error().message();
+    return truth.ok() ? std::move(truth->radiance) : Image{};
+}
+
 Image picture(const RadianceCascades& cascades, const Camera& camera) {
     auto image = cascades.render(camera);
     EXPECT_TRUE(image.ok()) << image.error().message();
@@ -135,15 +145,12 @@ Rings ringMeans(const LampRoom& room, const Camera& camera, const Image& mine, c
 TEST(CascadesNearEmitters, FloorAroundALampMatchesThePathTracer) {
     const LampRoom room;
     const Camera camera = viewOfTheFoot(64, 48);
-    PathTraceOptions p;
-    p.samplesPerPixel = 256;
-    p.maxBounces = 64;
-    auto truth = pathTrace(room.world, camera, room.o, p);
-    ASSERT_TRUE(truth.ok()) << truth.error().message();
+    const Image truth = pathTruth(room, camera, 256);
+    ASSERT_FALSE(truth.empty());
     const Image exact = picture(solved(room, true), camera);
     const Image interpolated = picture(solved(room, false), camera);
-    const Rings now = ringMeans(room, camera, exact, truth->radiance, 3);
-    const Rings before = ringMeans(room, camera, interpolated, truth->radiance, 3);
+    const Rings now = ringMeans(room, camera, exact, truth, 3);
+    const Rings before = ringMeans(room, camera, interpolated, truth, 3);
     double worstNow = 0.0, worstBefore = 0.0;
     for (int i = 0; i < 3; ++i) {
         ASSERT_GT(now.pixels[i], 20) << "ring " << i;
@@ -230,11 +237,8 @@ TEST(CascadesNearEmitters, FarFromTheLampAndWithTheNearTermOffThePictureIsInterp
 TEST(CascadesNearEmitters, TotalLightMatchesThePathTracer) {
     const LampRoom room;
     const Camera camera = *Camera::lookAt({11.5, 9.0, 11.5}, {5.0, 1.0, 5.0}, 80.0, 48, 36);
-    PathTraceOptions p;
-    p.samplesPerPixel = 128;
-    p.maxBounces = 64;
-    auto truth = pathTrace(room.world, camera, room.o, p);
-    ASSERT_TRUE(truth.ok()) << truth.error().message();
+    const Image truth = pathTruth(room, camera, 128);
+    ASSERT_FALSE(truth.empty());
     const Image image = picture(solved(room, true), camera);
     const Image interpolated = picture(solved(room, false), camera);
     // Everything but the lamp and the pixels beside it (the path tracer's jittered pixels see
@@ -249,7 +253,7 @@ TEST(CascadesNearEmitters, TotalLightMatchesThePathTracer) {
             if (lamp) continue;
             mine += pixelSum(image, x, y);
             before += pixelSum(interpolated, x, y);
-            reference += pixelSum(truth->radiance, x, y);
+            reference += pixelSum(truth, x, y);
         }
     std::printf(
         "mean over the room, lamp left out: %.4f of the path tracer's (interpolated "
