@@ -186,23 +186,24 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
     const bool surfaceFlags = !request.filter.empty() || !f.lighting.empty() ||
                               !f.specular.empty() || !f.fresnel.empty() || f.noRefraction ||
                               !f.shadows.empty();
+    // The flags the other solvers refuse, named once, with what the solver takes instead.
+    const auto rayCasterOnly = [](const char* flags, const char* solverTakes) {
+        return Error(std::string(flags) +
+                     " and the surface flags (--lighting, --specular, --fresnel, "
+                     "--no-refraction, --shadows) apply to the ray caster; --solver " +
+                     solverTakes);
+    };
     if (request.pathSolver && (surfaceFlags || request.samples != 0)) {
         return reportError(
-            Error("--samples, --filter and the surface flags (--lighting, "
-                  "--specular, --fresnel, --no-refraction, --shadows) apply to the "
-                  "ray caster; --solver path takes --spp and --max-bounces"));
+            rayCasterOnly("--samples, --filter", "path takes --spp and --max-bounces"));
     }
     if (request.aoSolver && surfaceFlags) {
         return reportError(
-            Error("--filter and the surface flags (--lighting, --specular, --fresnel, "
-                  "--no-refraction, --shadows) apply to the ray caster; --solver ao takes "
-                  "--ao-rays, --ao-radius and --samples"));
+            rayCasterOnly("--filter", "ao takes --ao-rays, --ao-radius and --samples"));
     }
     if (request.cascadeSolver && surfaceFlags) {
         return reportError(
-            Error("--filter and the surface flags (--lighting, --specular, --fresnel, "
-                  "--no-refraction, --shadows) apply to the ray caster; --solver rc takes "
-                  "--rc-spacing, --bounces and --samples"));
+            rayCasterOnly("--filter", "rc takes --rc-spacing, --bounces and --samples"));
     }
     // The cascades' lighting passes and picture run on the GPU too (the build on the CPU), and so
     // does the path tracer; sky visibility is CPU only.
