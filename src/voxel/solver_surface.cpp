@@ -105,6 +105,7 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
         const Vec3d r = direction - n * (2.0 * dot(n, direction));
         return out + b.specular * light.radianceAlong({s.hit.point, r}, true);
     }
+    if (light.nearHighlight) out += light.nearHighlight(specular);
     // Split sum: S A(cos_v, alpha) times the weighted mean radiance of GGX-sampled directions.
     specular.specular = Rgb(1.0f);
     specular.pSpecular = 1.0;
@@ -114,7 +115,9 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
         const BsdfSample sample = sampleBsdf(specular, rng);
         if (sample.lobe != BsdfSample::Lobe::Specular) continue;
         const double w = sample.weight.r;
-        weighted += light.radianceAlong({s.hit.point, sample.direction}, false) * float(w);
+        const Ray r{s.hit.point, sample.direction};
+        weighted +=
+            (light.glossyAlong ? light.glossyAlong(r) : light.radianceAlong(r, false)) * float(w);
         weights += w;
     }
     if (!(weights > 0.0)) return out;

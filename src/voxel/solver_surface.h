@@ -18,6 +18,7 @@
 #include <functional>
 
 #include "ggx_albedo.h"
+#include "path_trace_bsdf.h"
 #include "path_trace_surface.h"
 
 #include "luxel/core/vec.h"
@@ -62,6 +63,13 @@ struct SolverLight {
     int sunRays = kSunDiskRays;
     // GGX directions for the specular reflection of the surroundings.
     int specularRays = kSolverSpecularRays;
+    // Set only for the radiance cascades' camera surface (their near term, §4.2 of
+    // docs/algorithms/voxel-radiance-cascades.md): the light-sampled highlight of the emitters
+    // near the surface through its specular-only lobe (glossy, not a mirror), and the radiance
+    // along its GGX directions in place of radianceAlong(ray, false), which counts those
+    // emitters' emission only by the share the highlight leaves.
+    std::function<Rgb(const PathBsdf& specular)> nearHighlight = nullptr;
+    std::function<Rgb(const Ray&)> glossyAlong = nullptr;
 };
 
 // The radiance leaving the surface `s` towards the camera ray `ray` (s.hit.normal non-zero).

@@ -1,6 +1,7 @@
 // The voxel radiance cascades' picture on the GPU (RadianceCascadesGpu::render) against its CPU
 // reference (RadianceCascades::render) from the same faces' irradiance: the cottage, a room with
-// glass, a mirror, rough metal and a lamp under a sun with a disk, a sky-only view and a camera
+// glass, a mirror, rough metal and a lamp under a sun with a disk, a lamp's highlight on a glossy
+// floor, a sky-only view and a camera
 // inside a solid voxel; and the faces' table the shader probes. Runs on lavapipe where there is
 // no hardware GPU, and skips where there is no Vulkan device.
 //
@@ -250,6 +251,45 @@ TEST(CascadesPictureGpu, LightNearALampMatchesTheCpuPicture) {
     auto onCpu = cascades->render(camera);
     ASSERT_TRUE(onCpu.ok()) << onCpu.error().message();
     expectWithin(compare(*onCpu, *onGpu), boundsFor(*context), "lamp room, new emission");
+}
+
+// A glossy floor beside a lamp, a glass voxel and a wall block: the camera surface's highlight
+// of the near emitters is light-sampled (nearEmitterHighlight, through the glass and past the
+// block), its GGX rays counting those emitters by the share left, as on the CPU.
+TEST(CascadesPictureGpu, HighlightOfALampOnAGlossyFloorMatchesTheCpuPicture) {
+    REQUIRE_CONTEXT(context);
+    VoxelWorld world = makeWorld({14, 14, 14});
+    for (int z = 0; z < 14; ++z)
+        for (int y = 0; y < 14; ++y)
+            for (int x = 0; x < 14; ++x) {
+                if (y == 0) {
+                    world.set(x, y, z, Voxel{200, 200, 200, 3});  // glossy floor
+                } else if (x == 0 || z == 0 || x == 13 || y == 13 || z == 13) {
+                    world.set(x, y, z, kWhite);
+                }
+            }
+    world.set(6, 1, 6, Voxel{255, 255, 255, 2});  // lamp
+    world.set(8, 1, 6, Voxel{255, 255, 255, 1});  // glass
+    world.set(6, 1, 8, kWhite);
+    world.refreshEmptySpace();
+    ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
+    ASSERT_TRUE(o.materials.setSlot(0, glass(Rgb(0.2f, 0.1f, 0.05f))).ok());
+    ASSERT_TRUE(o.materials.setSlot(1, lampMaterial(Rgb(20.0f, 15.0f, 10.0f))).ok());
+    Material floor;
+    floor.name = "polished floor";
+    floor.albedo = Rgb(0.2f);
+    floor.roughness = 0.4f;
+    floor.ior = 1.5f;
+    ASSERT_TRUE(o.materials.setSlot(2, floor).ok());
+    const Camera low = *Camera::lookAt({6.5, 3.5, 1.5}, {6.5, 1.0, 5.5}, 60.0, 64, 48);
+    const Camera across = *Camera::lookAt({11.5, 3.0, 9.5}, {7.0, 1.0, 6.5}, 60.0, 64, 48);
+    std::vector<Pictures> drawn;
+    drawBoth(*context, world, nullptr, o, {low, across}, &drawn);
+    ASSERT_EQ(drawn.size(), 2u);
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+        expectWithin(compare(drawn[i].cpu, drawn[i].gpu), boundsFor(*context),
+                     i == 0 ? "glossy floor before the lamp" : "glossy floor across the lamp");
+    }
 }
 
 // Over the ray caster's upload (the viewer's GPU source): the same picture as over the picture's

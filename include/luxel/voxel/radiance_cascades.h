@@ -128,8 +128,11 @@ class RadianceCascades {
     // lobe since the camera's surface was a delta lobe), glass or polished metal shaded with its
     // material and followed while `depth` < kSolverFollowDepth (src/voxel/solver_surface.h), or the
     // face met shaded Lambertian with its sun and indirectIrradiance. `rng` draws the followed
-    // faces' GGX directions.
-    Rgb reflectedLight(const Ray& r, bool delta, int depth, PathRng& rng) const;
+    // faces' GGX directions. `nearOf`: the ray is a GGX direction of the camera's surface at that
+    // hit, so an emitter of its near list counts 1 - its near weight of its emission (the rest
+    // is the surface's light-sampled highlight).
+    Rgb reflectedLight(const Ray& r, bool delta, int depth, PathRng& rng,
+                       const Hit* nearOf = nullptr) const;
     // The picture's radiance along one camera ray.
     Rgb pixelRadiance(const Ray& ray, PathRng& rng) const;
     std::unique_ptr<State> state_;

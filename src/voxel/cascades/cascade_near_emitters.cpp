@@ -5,7 +5,13 @@
 // distance to its centre (shared/near_emitters.h): the faces keep the far share at their centres
 // (emitterFar, interpolated as before), and the pixel adds the near share at its own point,
 // Lambert's contour integral times the mean transmittance of four straight lines to the emitter.
-// The GPU's twin: src/gpu/shaders/voxel/near_emitters.glsl (same float arithmetic).
+// The camera surface's glossy lobe takes the same near share by light sampling (§4.2): each
+// emitter's four quarter points as delta lights, while its GGX rays keep the far share of the
+// emitters they meet (nearEmitterShare). The GPU's twin: src/gpu/shaders/voxel/near_emitters.glsl
+// (same float arithmetic).
+#include <cmath>
+
+#include "../path_trace_bsdf.h"
 #include "../solver_sun.h"
 #include "cascade_state.h"
 
@@ -41,6 +47,66 @@ Rgb nearEmitterLight(const RadianceCascades::State& state, const Hit& hit) {
         sum += Rgb(e.r, e.g, e.b) * seen * (0.25f * weight * formFactor);
     }
     return sum;
+}
+
+Rgb nearEmitterHighlight(const RadianceCascades::State& state, const Hit& hit,
+                         const PathBsdf& specular) {
+    const FaceData& faces = state.faces;
+    if (faces.nearOffset.empty()) return {};
+    const int face = faces.table.find(hit.voxel, normalIndex(hit.normal));
+    if (face < 0) return {};
+    const shared::vec3 p(float(hit.point.x), float(hit.point.y), float(hit.point.z));
+    Rgb sum;
+    for (std::uint32_t i = faces.nearOffset[face]; i < faces.nearOffset[face + 1]; ++i) {
+        const shared::CascadeNearEmitter& e = faces.nearEmitters[i];
+        const shared::vec3 centre = shared::nearEmitterPoint(e, -1);
+        const float weight = shared::nearEmitterWeight(length(p - centre), LUXEL_NEAR_EMITTER_INNER,
+                                                       LUXEL_NEAR_EMITTER_OUTER);
+        if (!(weight > 0.0f)) continue;
+        // A face lights only the side it faces: from behind, a GGX ray meets another face.
+        const shared::vec3 outward = shared::nearEmitterNormal(e.normal);
+        if (!(dot(outward, p - centre) > 0.0f)) continue;
+        const Int3 emitterNormal = normalFromIndex(int(e.normal));
+        const FaceTarget target{{e.x, e.y, e.z}, emitterNormal};
+        constexpr int kSide = LUXEL_NEAR_HIGHLIGHT_SIDE;
+        Rgb seen;
+        for (int q = 0; q < 4; ++q) {
+            const shared::vec3 d = normalize(shared::nearEmitterPoint(e, q) - p);
+            const Rgb t = faceRayTransmittance(*state.world, state.textures,
+                                               {hit.point, {double(d.x), double(d.y), double(d.z)}},
+                                               state.shading, target);
+            if (!(t.maxComponent() > 0.0f)) continue;
+            const Rgb radiance = Rgb(e.r, e.g, e.b) * t;
+            // Each point a delta light of its cell's solid angle, (0.25 / side^2) |n_e . l| / r^2.
+            for (int k = 0; k < kSide * kSide; ++k) {
+                const shared::vec3 to = shared::nearEmitterQuarterPoint(e, q, k, kSide) - p;
+                const shared::vec3 l = normalize(to);
+                const float solidAngle =
+                    0.25f / float(kSide * kSide) * std::abs(dot(outward, l)) / dot(to, to);
+                seen += bsdfLight(specular, {double(l.x), double(l.y), double(l.z)},
+                                  radiance * solidAngle, 0.0);
+            }
+        }
+        sum += seen * weight;
+    }
+    return sum;
+}
+
+float nearEmitterShare(const RadianceCascades::State& state, const Hit& hit, Int3 voxel,
+                       Int3 normal) {
+    const FaceData& faces = state.faces;
+    if (faces.nearOffset.empty()) return 0.0f;
+    const int face = faces.table.find(hit.voxel, normalIndex(hit.normal));
+    if (face < 0) return 0.0f;
+    const std::uint32_t met = std::uint32_t(normalIndex(normal));
+    for (std::uint32_t i = faces.nearOffset[face]; i < faces.nearOffset[face + 1]; ++i) {
+        const shared::CascadeNearEmitter& e = faces.nearEmitters[i];
+        if (e.x != voxel.x || e.y != voxel.y || e.z != voxel.z || e.normal != met) continue;
+        const shared::vec3 p(float(hit.point.x), float(hit.point.y), float(hit.point.z));
+        return shared::nearEmitterWeight(length(p - shared::nearEmitterPoint(e, -1)),
+                                         LUXEL_NEAR_EMITTER_INNER, LUXEL_NEAR_EMITTER_OUTER);
+    }
+    return 0.0f;
 }
 
 }  // namespace luxel::voxel::cascades

@@ -27,7 +27,8 @@ using cascades::kPictureSpecularRays;
 using cascades::kPictureSunRays;
 using cascades::kReflectionSeed;
 
-Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRng& rng) const {
+Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRng& rng,
+                                     const Hit* nearOf) const {
     const VoxelWorld& world = *state_->world;
     const ShadeOptions& shading = state_->shading;
     const SurfaceHit s = castToSurface(world, state_->textures, r, shading.stepCap);
@@ -52,7 +53,12 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
     const PathSurface surface = pathSurfaceAt(world, s, shading);
     const int face = state_->faces.table.find(s.hit.voxel, cascades::normalIndex(s.hit.normal));
     const Rgb sun = face >= 0 ? cascades::faceDirectSun(*state_, face) : Rgb{};
-    return surface.emission + surface.albedo * (sun + irradiance) * kInvPi;
+    Rgb emission = surface.emission;
+    if (nearOf && emission.maxComponent() > 0.0f) {
+        emission = emission *
+                   (1.0f - cascades::nearEmitterShare(*state_, *nearOf, s.hit.voxel, s.hit.normal));
+    }
+    return emission + surface.albedo * (sun + irradiance) * kInvPi;
 }
 
 void RadianceCascades::setPictureSamples(int samplesPerPixel) {
@@ -71,10 +77,16 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
     const Rgb irradiance = cascades::interpolatedIrradiance(faces, faces.emitterFar, s.hit.voxel,
                                                             s.hit.normal, s.hit.point) +
                            cascades::nearEmitterLight(*state_, s.hit);
-    const SolverLight light{
-        irradiance * kInvPi,
-        [&](const Ray& r, bool delta) { return reflectedLight(r, delta, 0, rng); }, kPictureSunRays,
-        kPictureSpecularRays};
+    SolverLight light{irradiance * kInvPi,
+                      [&](const Ray& r, bool delta) { return reflectedLight(r, delta, 0, rng); },
+                      kPictureSunRays, kPictureSpecularRays};
+    // The near emitters' glossy highlight light-sampled, their GGX rays keeping the rest.
+    if (!faces.nearOffset.empty()) {
+        light.nearHighlight = [&](const PathBsdf& specular) {
+            return cascades::nearEmitterHighlight(*state_, s.hit, specular);
+        };
+        light.glossyAlong = [&](const Ray& r) { return reflectedLight(r, false, 0, rng, &s.hit); };
+    }
     return shadeSolverSurface(world, state_->textures, s, ray, shading, light, rng);
 }
 

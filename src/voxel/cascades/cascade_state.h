@@ -13,6 +13,10 @@
 #include "octahedral_bins.h"
 #include "surface_faces.h"
 
+namespace luxel::voxel {
+struct PathBsdf;
+}  // namespace luxel::voxel
+
 namespace luxel::voxel::cascades {
 
 // A segment's code: the id of the face it meets first, or one of these.
@@ -185,6 +189,16 @@ Rgb interpolatedIrradiance(const FaceData& faces, const std::vector<Rgb>& emitte
 // The light of the emitters near `hit` taken exactly there, each by its nearEmitterWeight
 // (cascade_near_emitters.cpp).
 Rgb nearEmitterLight(const RadianceCascades::State& state, const Hit& hit);
+// The glossy highlight of the emitters near `hit` (the camera's surface), light-sampled: each
+// emitter's four quarter points as delta lights of a quarter of its solid angle through the
+// specular-only lobe `specular` (bsdfLight), times its nearEmitterWeight s; the GGX rays count
+// the same emitter's emission times 1 - s (nearEmitterShare).
+Rgb nearEmitterHighlight(const RadianceCascades::State& state, const Hit& hit,
+                         const PathBsdf& specular);
+// The nearEmitterWeight at `hit` of the emitting face (voxel, normal) when it is in the near list
+// of hit's face; 0 when it is not.
+float nearEmitterShare(const RadianceCascades::State& state, const Hit& hit, Int3 voxel,
+                       Int3 normal);
 // One lighting pass (cascade_light.cpp); returns the relative change of total irradiance.
 double lightingPass(RadianceCascades::State& state);
 

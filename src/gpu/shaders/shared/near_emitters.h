@@ -21,6 +21,11 @@
 // docs/voxel-gi-measures.md, "Near a lamp").
 #define LUXEL_NEAR_EMITTER_INNER 1.5f
 #define LUXEL_NEAR_EMITTER_OUTER 4.0f
+// The glossy highlight of a near emitter takes each quarter of the face as this many points a
+// side (the quarter's one visibility ray for all): a GGX lobe of roughness 0.4 is about as wide
+// as a quarter seen from a voxel away, so one point per quarter draws its reflection as four
+// spots.
+#define LUXEL_NEAR_HIGHLIGHT_SIDE 3
 
 LUXEL_SHARED_BEGIN
 
@@ -59,6 +64,17 @@ LUXEL_FUNC vec3 nearEmitterPoint(CascadeNearEmitter e, int quarter) {
         p[a] += (quarter & 1) != 0 ? 0.25f : -0.25f;
         p[b] += (quarter & 2) != 0 ? 0.25f : -0.25f;
     }
+    return p;
+}
+
+// Point `sub` (0 .. side^2 - 1) of a side x side grid of cell centres over quarter `quarter` of
+// the emitting face (the highlight's points).
+LUXEL_FUNC vec3 nearEmitterQuarterPoint(CascadeNearEmitter e, int quarter, int sub, int side) {
+    vec3 p = nearEmitterPoint(e, quarter);
+    const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
+    const float cell = 0.5f / float(side);
+    p[a] += (float(sub % side) + 0.5f) * cell - 0.25f;
+    p[b] += (float(sub / side) + 0.5f) * cell - 0.25f;
     return p;
 }
 

@@ -67,6 +67,14 @@ layout(push_constant) uniform Push { CascadePicturePush path; };
 #undef LUXEL_SOLVER_SHADE
 #undef LUXEL_SOLVER_RADIANCE
 
+// The camera's surface (level 0) takes its near emitters' highlight light-sampled; its GGX
+// rays count those emitters by the share left (RadianceCascades::pixelRadiance's nearHighlight
+// and glossyAlong): the surface's face and point, and whether the ray being followed is one of
+// them.
+int pictureNearFace;
+vec3 pictureNearPoint;
+bool pictureGlossyRay;
+#define LUXEL_SOLVER_NEAR
 #define LUXEL_SOLVER_REFLECTED reflectedLight0
 #define LUXEL_SOLVER_FOLLOW shadeSurface1
 #include "voxel/solver_reflected.glsl"
@@ -77,6 +85,7 @@ layout(push_constant) uniform Push { CascadePicturePush path; };
 #include "voxel/solver_shade.glsl"
 #undef LUXEL_SOLVER_SHADE
 #undef LUXEL_SOLVER_RADIANCE
+#undef LUXEL_SOLVER_NEAR
 
 // The picture's radiance along one camera ray.
 vec3 pixelRadiance(vec3 origin, vec3 direction, inout uvec2 rng) {
@@ -85,6 +94,9 @@ vec3 pixelRadiance(vec3 origin, vec3 direction, inout uvec2 rng) {
     if (s.hit.normal == ivec3(0)) return vec3(0.0);  // the camera is inside a solid voxel
     // The emitters near the pixel taken exactly at it, the rest of their light interpolated.
     const vec3 irradiance = interpolatedIrradiance(s.hit, true) + nearEmitterLight(s.hit);
+    pictureNearFace = findFace(s.hit.voxel, normalIndex(s.hit.normal));
+    pictureNearPoint = s.hit.point;
+    pictureGlossyRay = false;
     return shadeSurface0(s, direction, irradiance * LUXEL_SOLVER_INV_PI, int(path.sunRays),
                          int(path.specularRays), true, rng);
 }

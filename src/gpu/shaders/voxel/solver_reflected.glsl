@@ -4,6 +4,9 @@
 //   LUXEL_SOLVER_REFLECTED  the function to define: vec3 (origin, direction, delta, rng)
 //   LUXEL_SOLVER_FOLLOW     (only above the deepest level) the shading of the next level
 //                           (solver_shade.glsl) for glass and polished metal met by the ray
+//   LUXEL_SOLVER_NEAR       (the camera surface's level) while pictureGlossyRay, an emitter of
+//                           pictureNearFace's near list counts its emission times 1 - its near
+//                           weight at pictureNearPoint (nearEmitterShare)
 // Needs solver_light.glsl.
 
 vec3 LUXEL_SOLVER_REFLECTED(vec3 origin, vec3 direction, bool delta, inout uvec2 rng) {
@@ -26,5 +29,12 @@ vec3 LUXEL_SOLVER_REFLECTED(vec3 origin, vec3 direction, bool delta, inout uvec2
     const PathSurface surface = pathSurfaceAt(s);
     const int face = findFace(s.hit.voxel, normalIndex(s.hit.normal));
     const vec3 sun = face >= 0 ? faceLight(LUXEL_FACE_DIRECT, face) : vec3(0.0);
-    return surface.emission + surface.albedo * (sun + irradiance) * LUXEL_SOLVER_INV_PI;
+    vec3 emission = surface.emission;
+#ifdef LUXEL_SOLVER_NEAR
+    if (pictureGlossyRay && maxComponent(emission) > 0.0) {
+        emission = emission * (1.0 - nearEmitterShare(pictureNearFace, pictureNearPoint,
+                                                       s.hit.voxel, s.hit.normal));
+    }
+#endif
+    return emission + surface.albedo * (sun + irradiance) * LUXEL_SOLVER_INV_PI;
 }

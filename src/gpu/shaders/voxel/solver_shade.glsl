@@ -9,6 +9,10 @@
 //                                through delta lobes only (the camera's, a mirror's, glass's),
 //                                so its delta rays may show the sun's disk
 //   LUXEL_SOLVER_RADIANCE  the radiance along a ray leaving the surface (solver_reflected.glsl)
+//   LUXEL_SOLVER_NEAR      (the camera's surface only) its near emitters' highlight
+//                          light-sampled (nearEmitterHighlight), and pictureGlossyRay set while
+//                          a GGX direction's radiance is taken, so that LUXEL_SOLVER_RADIANCE
+//                          counts those emitters by the share the highlight leaves
 // The rays leave in the CPU's order (the medium's exits, then the mirror or GGX directions) from
 // one call site, so the level below is inlined once, and the random numbers are drawn in the
 // same order as on the CPU.
@@ -48,6 +52,10 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
         entering.pTransmission = 1.0;
         mediumDirection = pathSampleBsdf(entering, rng).direction;
     }
+#ifdef LUXEL_SOLVER_NEAR
+    const vec3 nearHighlight = glossy && !mirror ? nearEmitterHighlight(s.hit, specular)
+                                                 : vec3(0.0);
+#endif
     // Then the reflection: one mirror ray, or GGX directions weighted by their sampling weights.
     specular.specular = vec3(1.0);
     specular.pSpecular = 1.0;
@@ -110,6 +118,9 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
                 delta = false;
             }
         }
+#ifdef LUXEL_SOLVER_NEAR
+        pictureGlossyRay = !delta;
+#endif
         const vec3 arriving = LUXEL_SOLVER_RADIANCE(rayOrigin, ray, delta && arrivedDelta, rng);
         if (delta) {
             result += scale * arriving;
@@ -118,6 +129,9 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
             weights += ggxWeight;
         }
     }
+#ifdef LUXEL_SOLVER_NEAR
+    if (glossy && !mirror) result += nearHighlight;
+#endif
     if (!(weights > 0.0)) return result;
     // Split sum: S A(cos_v, alpha) times the weighted mean radiance of the GGX directions.
     return result + b.specular * weighted * (directionalAlbedoGgx(b.cosView, b.alpha) / weights);
