@@ -4,7 +4,8 @@
 // (docs/algorithms/voxel-traversal.md §4):
 // - the per-axis state lives in named scalars (three Axis values the compiler keeps in
 //   registers) instead of arrays indexed by a run-time axis;
-// - a step picks its axis with comparisons and conditional moves, no indexed store;
+// - a voxel step branches on its axis (no indexed store), tests one comparison for an infinite
+//   boundary or tMax, and moves the cell's bit in the brick mask by a constant per axis;
 // - a jump finds the cell on the other axes from floor(o + t d) and corrects it by the exit-t
 //   test (at most a step or two), whatever the size of the box.
 // The result equals the shared kernel's because every cell boundary uses the one formula
@@ -32,9 +33,10 @@ struct Axis {
     double o, d, inv;
     int stp, size, cell;
     double next;
+    int up = stp > 0 ? 1 : 0;  // the exit boundary's offset from the cell
 
     // voxelExitT for this axis (the formula of every boundary).
-    double exitAt(int c) const { return (double(c + (stp > 0 ? 1 : 0)) - o) * inv; }
+    double exitAt(int c) const { return (double(c + up) - o) * inv; }
 };
 
 // Whether the fast loop takes this ray: the brick reach is current and every non-zero
@@ -67,6 +69,8 @@ inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, doub
     int axis = w.axis;
     int steps = 0;
 
+    // t <= tLimit: t is finite and within tMax.
+    const double tLimit = std::min(tMax, std::numeric_limits<double>::max());
     const auto miss = [&](bool capped) { return shared::voxelMiss(steps, capped); };
     const auto outside = [&] {
         return static_cast<unsigned>(x.cell) >= static_cast<unsigned>(x.size) ||
@@ -87,36 +91,38 @@ inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, doub
         const std::uint64_t mask = world.brickMask(bx, by, bz);
         if (mask != 0) {
             // Voxels of this brick, one A&W step each, until one is solid or the walk leaves the
-            // brick (the mask stays in a register meanwhile).
+            // brick (the mask and the cell's bit stay in registers meanwhile).
+            int bit = VoxelWorld::brickBit(x.cell, y.cell, z.cell);
             for (;;) {
-                if ((mask >> VoxelWorld::brickBit(x.cell, y.cell, z.cell)) & 1u) {
+                if ((mask >> bit) & 1u) {
                     return shared::VoxelTrace(true, false, shared::ivec3(x.cell, y.cell, z.cell), t,
                                               axis, shared::ivec3(x.stp, y.stp, z.stp), steps);
                 }
                 // One A&W step (voxelStepOne): the smallest next boundary, lowest axis on ties.
                 // Branches, not selects: along a ray the axis pattern is regular enough to
-                // predict, and a predicted branch does not wait for the comparison.
-                const auto step = [&](Axis& s, int a, int brick) {
+                // predict, and a predicted branch does not wait for the comparison. One
+                // comparison ends the walk at an infinite boundary (no axis left to step) or
+                // past tMax.
+                const auto step = [&](Axis& s, int a, int bitStride) {
                     t = s.next;
-                    s.cell += s.stp;
                     axis = a;
-                    if (static_cast<unsigned>(s.cell) >= static_cast<unsigned>(s.size) ||
-                        t > tMax) {
+                    s.cell += s.stp;
+                    if (!(t <= tLimit) ||
+                        static_cast<unsigned>(s.cell) >= static_cast<unsigned>(s.size)) {
                         return -1;
                     }
                     s.next = s.exitAt(s.cell);
-                    return (s.cell >> kShift) != brick ? 0 : 1;
+                    bit += s.stp * bitStride;
+                    constexpr int kLast = VoxelWorld::kBrickSide - 1;
+                    return (s.cell & kLast) == (s.up ? 0 : kLast) ? 0 : 1;
                 };
                 int stayed;
                 if (x.next <= y.next ? x.next <= z.next : false) {
-                    if (x.next == kInf) return miss(false);
-                    stayed = step(x, 0, bx);
+                    stayed = step(x, 0, 1);
                 } else if (!(x.next <= y.next) && y.next <= z.next) {
-                    if (y.next == kInf) return miss(false);
-                    stayed = step(y, 1, by);
+                    stayed = step(y, 1, 4);
                 } else {
-                    if (z.next == kInf) return miss(false);
-                    stayed = step(z, 2, bz);
+                    stayed = step(z, 2, 16);
                 }
                 if (stayed < 0) return miss(false);
                 if (stayed == 0) break;  // into another brick: the outer loop reads its mask
