@@ -6,6 +6,8 @@
 //   registers) instead of arrays indexed by a run-time axis;
 // - a voxel step branches on its axis (no indexed store), tests one comparison for an infinite
 //   boundary or tMax, and moves the cell's bit in the brick mask by a constant per axis;
+// - a ray whose origin lies at least a voxel inside every face starts in its origin's cell
+//   without the slab clip (startDeepInside);
 // - a jump finds the cell on the other axes from floor(o + t d) and corrects it by the exit-t
 //   test (at most a step or two), whatever the size of the box.
 // The result equals the shared kernel's because every cell boundary uses the one formula
@@ -51,6 +53,41 @@ inline bool eligible(const VoxelWorld& world, const Ray& ray) {
     return true;
 }
 
+// voxelStart for an origin at least one voxel inside every face of the world (o in
+// [1, size - 1] on each axis): the ray starts at t = 0 in the cell of its origin, so the slab
+// clip has nothing to decide. With o >= 1 and a finite 1 / d, the world's near plane is at a t
+// strictly below zero on every moving axis (no underflow to -0, which voxelStart would count as
+// an entry from outside), and the far one strictly above.
+inline bool deepInside(const shared::VoxelWalk& w) {
+    return w.o.x >= 1.0 && w.o.y >= 1.0 && w.o.z >= 1.0 && w.o.x <= w.size.x - 1.0 &&
+           w.o.y <= w.size.y - 1.0 && w.o.z <= w.size.z - 1.0;
+}
+
+inline void startDeepInside(shared::VoxelWalk& w) {
+    double best = -kInf;
+    w.axis = -1;
+    for (int a = 0; a < 3; ++a) {
+        w.stp[a] = w.d[a] > 0.0 ? 1 : (w.d[a] < 0.0 ? -1 : 0);
+        int f = shared::voxelFloorToInt(w.o[a]);
+        // On a boundary and moving down: the ray is in the lower cell straight away.
+        if (w.o[a] == double(f) && w.stp[a] < 0) f -= 1;
+        w.cell[a] = f;
+        if (w.stp[a] == 0) {
+            w.next[a] = kInf;
+            continue;
+        }
+        // The face the origin lies on (t == 0), if any: the largest entry t, highest axis on ties.
+        const double te = shared::voxelExitT(f, -w.stp[a], w.o[a], w.inv[a]);
+        if (te >= best) {
+            best = te;
+            w.axis = a;
+        }
+        w.next[a] = shared::voxelExitT(f, w.stp[a], w.o[a], w.inv[a]);
+    }
+    if (!(best >= 0.0)) w.axis = -1;
+    w.t = 0.0;
+}
+
 // The shared kernel's voxelTraverse(jumps = true, reachCurrent = true) for an eligible ray
 // (finite, non-zero direction).
 inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, double tMax, int cap) {
@@ -60,7 +97,11 @@ inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, doub
     w.inv = shared::dvec3(1.0 / w.d.x, 1.0 / w.d.y, 1.0 / w.d.z);
     const Int3 size = world.size();
     w.size = shared::ivec3(size.x, size.y, size.z);
-    if (!shared::voxelStart(w, tMax)) return shared::voxelMiss(0, false);
+    if (deepInside(w)) {
+        startDeepInside(w);
+    } else if (!shared::voxelStart(w, tMax)) {
+        return shared::voxelMiss(0, false);
+    }
 
     Axis x{w.o.x, w.d.x, w.inv.x, w.stp[0], size.x, w.cell.x, w.next[0]};
     Axis y{w.o.y, w.d.y, w.inv.y, w.stp[1], size.y, w.cell.y, w.next[1]};

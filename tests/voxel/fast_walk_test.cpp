@@ -137,6 +137,42 @@ TEST(VoxelFastWalk, SecondaryRaysTMaxAndStepCap) {
     EXPECT_GT(capped.capped, 100);
 }
 
+// Origins at the edges of the start that skips the slab clip (every coordinate in [1, size - 1]):
+// on and next to the planes 1 and size - 1, on cell boundaries, just outside that range, with
+// zero, signed-zero, tiny and huge direction components, and tMax 0.
+TEST(VoxelFastWalk, OriginsDeepInsideStartAsTheSlabClipDoes) {
+    const Int3 size{40, 36, 44};
+    const VoxelWorld world = terrain(size, 11);
+    std::mt19937 rng(21);
+    std::uniform_int_distribution<int> pick(0, 1000);
+    const auto coordinate = [&](int n) {
+        const double edges[] = {0.0, 1.0, 2.0, n - 2.0, n - 1.0, n * 0.5, n * 0.5 + 0.5};
+        const double edge = edges[pick(rng) % 7];
+        switch (pick(rng) % 4) {
+            case 0:
+                return edge;
+            case 1:
+                return std::nextafter(edge, -kInfinity);
+            case 2:
+                return std::nextafter(edge, kInfinity);
+            default:
+                return edge + (pick(rng) - 500) * 1e-3;
+        }
+    };
+    const double components[] = {0.0, -0.0, 1.0, -1.0, 0.3, -0.7, 1e-300, -1e-300, 1e300, -2.5};
+    std::vector<Ray> rays;
+    for (int i = 0; i < 40000; ++i) {
+        const Vec3d origin{coordinate(size.x), coordinate(size.y), coordinate(size.z)};
+        Vec3d direction{components[pick(rng) % 10], components[pick(rng) % 10],
+                        components[pick(rng) % 10]};
+        if (direction == Vec3d{}) direction.z = -1.0;
+        rays.push_back({origin, direction});
+    }
+    const Counts counts = compare(world, rays);
+    EXPECT_GT(counts.hits, 5000);
+    compare(world, rays, 0.0);
+}
+
 // Long rays from far away (a jump's floor guess lands far from the cell).
 TEST(VoxelFastWalk, FarOriginsMatchTheSharedKernel) {
     const Int3 size{64, 64, 64};
