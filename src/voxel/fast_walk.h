@@ -46,11 +46,12 @@ struct Axis {
 // shared kernel orders by its own rules; it keeps those rays).
 inline bool eligible(const VoxelWorld& world, const Ray& ray) {
     if (!world.emptySpaceCurrent()) return false;
-    for (int a = 0; a < 3; ++a) {
-        const double d = ray.direction[a];
-        if (d != 0.0 && !std::isfinite(1.0 / d)) return false;
-    }
-    return true;
+    // 1 / d overflows exactly for 0 < |d| <= 2^-1024 (the next denormal up has a reciprocal
+    // below DBL_MAX): compares instead of three divisions.
+    constexpr double kSmallest = 0x1p-1024;
+    const Vec3d& d = ray.direction;
+    const auto finiteReciprocal = [](double c) { return c == 0.0 || std::abs(c) > kSmallest; };
+    return finiteReciprocal(d.x) && finiteReciprocal(d.y) && finiteReciprocal(d.z);  // NaN: no
 }
 
 // voxelStart for an origin at least one voxel inside every face of the world (o in

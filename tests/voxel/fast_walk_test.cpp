@@ -7,11 +7,13 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
 
 #include "luxel/voxel/dda.h"
 #include "luxel/voxel/generators.h"
+#include "voxel/fast_walk.h"
 #include "voxel/lane_walk.h"
 
 namespace luxel::voxel {
@@ -171,6 +173,45 @@ TEST(VoxelFastWalk, OriginsDeepInsideStartAsTheSlabClipDoes) {
     const Counts counts = compare(world, rays);
     EXPECT_GT(counts.hits, 5000);
     compare(world, rays, 0.0);
+}
+
+// The fast loop takes a ray exactly when every non-zero direction component has a finite
+// reciprocal (eligible() decides it by comparisons): around 2^-1024, where 1 / d overflows, and
+// across the denormals.
+TEST(VoxelFastWalk, EligibleExactlyWhenTheReciprocalsAreFinite) {
+    const VoxelWorld world = terrain({16, 16, 16}, 1);
+    std::vector<double> values{0.0,
+                               -0.0,
+                               0x1p-1024,
+                               0x1p-1023,
+                               0x1p-1025,
+                               0x1p-1074,
+                               std::numeric_limits<double>::min(),
+                               std::nan(""),
+                               kInfinity,
+                               1e-300,
+                               1.0,
+                               1e300};
+    for (int i = 0, n = static_cast<int>(values.size()); i < n; ++i) {
+        double down = values[i], up = values[i];
+        for (int k = 0; k < 3; ++k) {
+            down = std::nextafter(down, 0.0);
+            up = std::nextafter(up, 1.0);
+            values.push_back(down);
+            values.push_back(up);
+        }
+    }
+    for (const double v : values) {
+        for (const double d : {v, -v}) {
+            const bool finite = d == 0.0 || std::isfinite(1.0 / d);
+            for (int a = 0; a < 3; ++a) {
+                Vec3d direction{0.5, -0.25, 0.75};
+                direction[a] = d;
+                EXPECT_EQ(fast::eligible(world, {{8.5, 8.5, 8.5}, direction}), finite)
+                    << "component " << a << " = " << d;
+            }
+        }
+    }
 }
 
 // Long rays from far away (a jump's floor guess lands far from the cell).
