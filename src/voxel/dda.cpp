@@ -48,7 +48,7 @@ void streamRays(const VoxelWorld& world, std::span<const Ray> rays, double tMax,
                 Take&& take) {
     constexpr std::size_t kBlock = 1024;
     shared::VoxelTrace traces[kBlock];
-    // Filled only for blocks that mix both kinds (Ray's members zero-initialise, so no array).
+    // The lanes' rays of a block that mixes both kinds (a vector: Ray's members zero-initialise).
     thread_local std::vector<Ray> laneRays(kBlock);
     std::size_t index[kBlock];
     const stream::Walk walk{&world, tMax, resolvedCap(world, stepCap)};
