@@ -15,6 +15,14 @@ namespace luxel::voxel::stream {
 // (docs/algorithms/voxel-traversal.md §4.2). Every ray in lanes: for the tests of the SIMD walk.
 enum class Lanes { FromOutside, Every };
 
+// Whether a ray's origin lies inside the world (such rays take the one-ray loop unless
+// Lanes::Every).
+inline bool startsInside(const VoxelWorld& world, const Ray& ray) {
+    const Int3 size = world.size();
+    const Vec3d& o = ray.origin;
+    return o.x >= 0.0 && o.y >= 0.0 && o.z >= 0.0 && o.x < size.x && o.y < size.y && o.z < size.z;
+}
+
 struct Walk {
     const VoxelWorld* world;
     double tMax;

@@ -38,17 +38,40 @@ bool streamable(const VoxelWorld& world) {
     return world.emptySpaceCurrent();
 }
 
-// Runs the SIMD walk over `rays` in blocks, handing each block's traces to `take(first, traces)`.
+// Hands the trace castRay makes of each ray to `take(i, trace)`. Rays from inside the world take
+// castRay's one-ray loop (stream::Lanes), each handed over at once while the ray is at hand: a
+// buffer of traces between the walk and the hit cost 5% to 12% on such rays
+// (docs/algorithms/voxel-traversal.md §4.5). The others run through the SIMD walk in blocks,
+// which also settles the rays that never walk (non-finite, tMax < 0, not eligible).
 template <typename Take>
-void streamBlocks(const VoxelWorld& world, std::span<const Ray> rays, double tMax, int stepCap,
-                  Take&& take) {
+void streamRays(const VoxelWorld& world, std::span<const Ray> rays, double tMax, int stepCap,
+                Take&& take) {
     constexpr std::size_t kBlock = 1024;
     shared::VoxelTrace traces[kBlock];
+    // The lanes' rays of a block that mixes both kinds (a vector: Ray's members zero-initialise).
+    thread_local std::vector<Ray> laneRays(kBlock);
+    std::size_t index[kBlock];
     const stream::Walk walk{&world, tMax, resolvedCap(world, stepCap)};
+    const bool walkable = tMax >= 0.0;
     for (std::size_t first = 0; first < rays.size(); first += kBlock) {
         const std::size_t n = std::min(kBlock, rays.size() - first);
-        stream::trace(walk, rays.subspan(first, n), traces);
-        take(first, std::span<const shared::VoxelTrace>(traces, n));
+        std::size_t m = 0;
+        for (std::size_t i = first; i < first + n; ++i) {
+            const Ray& ray = rays[i];
+            if (stream::startsInside(world, ray) && walkable && finiteRay(ray) &&
+                fast::eligible(world, ray)) {
+                take(i, fast::traverse(world, ray, tMax, walk.cap));
+            } else {
+                laneRays[m] = ray;
+                index[m++] = i;
+            }
+        }
+        if (m == 0) continue;
+        // Every ray of the block takes a lane: no copy.
+        const bool all = m == n;
+        stream::trace(walk, all ? rays.subspan(first, n) : std::span<const Ray>(laneRays.data(), m),
+                      traces);
+        for (std::size_t j = 0; j < m; ++j) take(all ? first + j : index[j], traces[j]);
     }
 }
 
@@ -61,10 +84,8 @@ void castRayBatch(const VoxelWorld& world, std::span<const Ray> rays, std::span<
             hits[i] = castRay(world, rays[i], tMax, stepCap);
         return;
     }
-    streamBlocks(world, rays, tMax, stepCap, [&](std::size_t first, auto traces) {
-        for (std::size_t i = 0; i < traces.size(); ++i) {
-            hits[first + i] = hitFromTrace(rays[first + i], traces[i]);
-        }
+    streamRays(world, rays, tMax, stepCap, [&](std::size_t i, const shared::VoxelTrace& trace) {
+        hits[i] = hitFromTrace(rays[i], trace);
     });
 }
 
@@ -76,9 +97,8 @@ void occludedBatch(const VoxelWorld& world, std::span<const Ray> rays,
         }
         return;
     }
-    streamBlocks(world, rays, tMax, stepCap, [&](std::size_t first, auto traces) {
-        for (std::size_t i = 0; i < traces.size(); ++i) occludedOut[first + i] = traces[i].hit;
-    });
+    streamRays(world, rays, tMax, stepCap,
+               [&](std::size_t i, const shared::VoxelTrace& trace) { occludedOut[i] = trace.hit; });
 }
 
 Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap, ChunkSkip skip) {

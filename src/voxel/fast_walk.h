@@ -4,7 +4,10 @@
 // (docs/algorithms/voxel-traversal.md §4):
 // - the per-axis state lives in named scalars (three Axis values the compiler keeps in
 //   registers) instead of arrays indexed by a run-time axis;
-// - a step picks its axis with comparisons and conditional moves, no indexed store;
+// - a voxel step branches on its axis (no indexed store), tests one comparison for an infinite
+//   boundary or tMax, and moves the cell's bit in the brick mask by a constant per axis;
+// - a ray whose origin lies at least a voxel inside every face starts in its origin's cell
+//   without the slab clip (startDeepInside);
 // - a jump finds the cell on the other axes from floor(o + t d) and corrects it by the exit-t
 //   test (at most a step or two), whatever the size of the box.
 // The result equals the shared kernel's because every cell boundary uses the one formula
@@ -32,9 +35,10 @@ struct Axis {
     double o, d, inv;
     int stp, size, cell;
     double next;
+    int up = stp > 0 ? 1 : 0;  // the exit boundary's offset from the cell
 
     // voxelExitT for this axis (the formula of every boundary).
-    double exitAt(int c) const { return (double(c + (stp > 0 ? 1 : 0)) - o) * inv; }
+    double exitAt(int c) const { return (double(c + up) - o) * inv; }
 };
 
 // Whether the fast loop takes this ray: the brick reach is current and every non-zero
@@ -42,11 +46,47 @@ struct Axis {
 // shared kernel orders by its own rules; it keeps those rays).
 inline bool eligible(const VoxelWorld& world, const Ray& ray) {
     if (!world.emptySpaceCurrent()) return false;
+    // 1 / d overflows exactly for 0 < |d| <= 2^-1024 (the next denormal up has a reciprocal
+    // below DBL_MAX): compares instead of three divisions.
+    constexpr double kSmallest = 0x1p-1024;
+    const Vec3d& d = ray.direction;
+    const auto finiteReciprocal = [](double c) { return c == 0.0 || std::abs(c) > kSmallest; };
+    return finiteReciprocal(d.x) && finiteReciprocal(d.y) && finiteReciprocal(d.z);  // NaN: no
+}
+
+// voxelStart for an origin at least one voxel inside every face of the world (o in
+// [1, size - 1] on each axis): the ray starts at t = 0 in the cell of its origin, so the slab
+// clip has nothing to decide. With o >= 1 and a finite 1 / d, the world's near plane is at a t
+// strictly below zero on every moving axis (no underflow to -0, which voxelStart would count as
+// an entry from outside), and the far one strictly above.
+inline bool deepInside(const shared::VoxelWalk& w) {
+    return w.o.x >= 1.0 && w.o.y >= 1.0 && w.o.z >= 1.0 && w.o.x <= w.size.x - 1.0 &&
+           w.o.y <= w.size.y - 1.0 && w.o.z <= w.size.z - 1.0;
+}
+
+inline void startDeepInside(shared::VoxelWalk& w) {
+    double best = -kInf;
+    w.axis = -1;
     for (int a = 0; a < 3; ++a) {
-        const double d = ray.direction[a];
-        if (d != 0.0 && !std::isfinite(1.0 / d)) return false;
+        w.stp[a] = w.d[a] > 0.0 ? 1 : (w.d[a] < 0.0 ? -1 : 0);
+        int f = shared::voxelFloorToInt(w.o[a]);
+        // On a boundary and moving down: the ray is in the lower cell straight away.
+        if (w.o[a] == double(f) && w.stp[a] < 0) f -= 1;
+        w.cell[a] = f;
+        if (w.stp[a] == 0) {
+            w.next[a] = kInf;
+            continue;
+        }
+        // The face the origin lies on (t == 0), if any: the largest entry t, highest axis on ties.
+        const double te = shared::voxelExitT(f, -w.stp[a], w.o[a], w.inv[a]);
+        if (te >= best) {
+            best = te;
+            w.axis = a;
+        }
+        w.next[a] = shared::voxelExitT(f, w.stp[a], w.o[a], w.inv[a]);
     }
-    return true;
+    if (!(best >= 0.0)) w.axis = -1;
+    w.t = 0.0;
 }
 
 // The shared kernel's voxelTraverse(jumps = true, reachCurrent = true) for an eligible ray
@@ -58,7 +98,11 @@ inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, doub
     w.inv = shared::dvec3(1.0 / w.d.x, 1.0 / w.d.y, 1.0 / w.d.z);
     const Int3 size = world.size();
     w.size = shared::ivec3(size.x, size.y, size.z);
-    if (!shared::voxelStart(w, tMax)) return shared::voxelMiss(0, false);
+    if (deepInside(w)) {
+        startDeepInside(w);
+    } else if (!shared::voxelStart(w, tMax)) {
+        return shared::voxelMiss(0, false);
+    }
 
     Axis x{w.o.x, w.d.x, w.inv.x, w.stp[0], size.x, w.cell.x, w.next[0]};
     Axis y{w.o.y, w.d.y, w.inv.y, w.stp[1], size.y, w.cell.y, w.next[1]};
@@ -67,6 +111,8 @@ inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, doub
     int axis = w.axis;
     int steps = 0;
 
+    // t <= tLimit: t is finite and within tMax.
+    const double tLimit = std::min(tMax, std::numeric_limits<double>::max());
     const auto miss = [&](bool capped) { return shared::voxelMiss(steps, capped); };
     const auto outside = [&] {
         return static_cast<unsigned>(x.cell) >= static_cast<unsigned>(x.size) ||
@@ -87,36 +133,38 @@ inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, doub
         const std::uint64_t mask = world.brickMask(bx, by, bz);
         if (mask != 0) {
             // Voxels of this brick, one A&W step each, until one is solid or the walk leaves the
-            // brick (the mask stays in a register meanwhile).
+            // brick (the mask and the cell's bit stay in registers meanwhile).
+            int bit = VoxelWorld::brickBit(x.cell, y.cell, z.cell);
             for (;;) {
-                if ((mask >> VoxelWorld::brickBit(x.cell, y.cell, z.cell)) & 1u) {
+                if ((mask >> bit) & 1u) {
                     return shared::VoxelTrace(true, false, shared::ivec3(x.cell, y.cell, z.cell), t,
                                               axis, shared::ivec3(x.stp, y.stp, z.stp), steps);
                 }
                 // One A&W step (voxelStepOne): the smallest next boundary, lowest axis on ties.
                 // Branches, not selects: along a ray the axis pattern is regular enough to
-                // predict, and a predicted branch does not wait for the comparison.
-                const auto step = [&](Axis& s, int a, int brick) {
+                // predict, and a predicted branch does not wait for the comparison. One
+                // comparison ends the walk at an infinite boundary (no axis left to step) or
+                // past tMax.
+                const auto step = [&](Axis& s, int a, int bitStride) {
                     t = s.next;
-                    s.cell += s.stp;
                     axis = a;
-                    if (static_cast<unsigned>(s.cell) >= static_cast<unsigned>(s.size) ||
-                        t > tMax) {
+                    s.cell += s.stp;
+                    if (!(t <= tLimit) ||
+                        static_cast<unsigned>(s.cell) >= static_cast<unsigned>(s.size)) {
                         return -1;
                     }
                     s.next = s.exitAt(s.cell);
-                    return (s.cell >> kShift) != brick ? 0 : 1;
+                    bit += s.stp * bitStride;
+                    constexpr int kLast = VoxelWorld::kBrickSide - 1;
+                    return (s.cell & kLast) == (s.up ? 0 : kLast) ? 0 : 1;
                 };
                 int stayed;
                 if (x.next <= y.next ? x.next <= z.next : false) {
-                    if (x.next == kInf) return miss(false);
-                    stayed = step(x, 0, bx);
+                    stayed = step(x, 0, 1);
                 } else if (!(x.next <= y.next) && y.next <= z.next) {
-                    if (y.next == kInf) return miss(false);
-                    stayed = step(y, 1, by);
+                    stayed = step(y, 1, 4);
                 } else {
-                    if (z.next == kInf) return miss(false);
-                    stayed = step(z, 2, bz);
+                    stayed = step(z, 2, 16);
                 }
                 if (stayed < 0) return miss(false);
                 if (stayed == 0) break;  // into another brick: the outer loop reads its mask

@@ -41,12 +41,6 @@ HWY_INLINE std::size_t StartRays(D d, const Walk& walk, const Ray* rays, std::si
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0), minusOne = hn::Set(d, -1.0);
     const V inf = hn::Set(d, fast::kInf), vtMax = hn::Set(d, tMax);
     const V sizeX = hn::Set(d, size.x), sizeY = hn::Set(d, size.y), sizeZ = hn::Set(d, size.z);
-    // Rays from inside the world take the one-ray loop (Lanes::FromOutside).
-    const auto startsInside = [&](const Ray& r) {
-        const Vec3d& o = r.origin;
-        return o.x >= 0.0 && o.y >= 0.0 && o.z >= 0.0 && o.x < size.x && o.y < size.y &&
-               o.z < size.z;
-    };
     HWY_ALIGN double ray[kFields][kMaxLanes] = {};
     std::size_t m = 0;
     while (m < lanes && nextRay < count) {
@@ -60,7 +54,7 @@ HWY_INLINE std::size_t StartRays(D d, const Walk& walk, const Ray* rays, std::si
             out[i] = fast::traverseAny(world, r, tMax, walk.cap);
             continue;
         }
-        if (walk.lanes == Lanes::FromOutside && startsInside(r)) {
+        if (walk.lanes == Lanes::FromOutside && startsInside(world, r)) {
             out[i] = fast::traverse(world, r, tMax, walk.cap);
             continue;
         }

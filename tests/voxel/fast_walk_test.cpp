@@ -7,11 +7,13 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
 
 #include "luxel/voxel/dda.h"
 #include "luxel/voxel/generators.h"
+#include "voxel/fast_walk.h"
 #include "voxel/lane_walk.h"
 
 namespace luxel::voxel {
@@ -135,6 +137,81 @@ TEST(VoxelFastWalk, SecondaryRaysTMaxAndStepCap) {
     compare(world, secondary, 6.5);
     const Counts capped = compare(world, secondary, kInfinity, 5);
     EXPECT_GT(capped.capped, 100);
+}
+
+// Origins at the edges of the start that skips the slab clip (every coordinate in [1, size - 1]):
+// on and next to the planes 1 and size - 1, on cell boundaries, just outside that range, with
+// zero, signed-zero, tiny and huge direction components, and tMax 0.
+TEST(VoxelFastWalk, OriginsDeepInsideStartAsTheSlabClipDoes) {
+    const Int3 size{40, 36, 44};
+    const VoxelWorld world = terrain(size, 11);
+    std::mt19937 rng(21);
+    std::uniform_int_distribution<int> pick(0, 1000);
+    const auto coordinate = [&](int n) {
+        const double edges[] = {0.0, 1.0, 2.0, n - 2.0, n - 1.0, n * 0.5, n * 0.5 + 0.5};
+        const double edge = edges[pick(rng) % 7];
+        switch (pick(rng) % 4) {
+            case 0:
+                return edge;
+            case 1:
+                return std::nextafter(edge, -kInfinity);
+            case 2:
+                return std::nextafter(edge, kInfinity);
+            default:
+                return edge + (pick(rng) - 500) * 1e-3;
+        }
+    };
+    const double components[] = {0.0, -0.0, 1.0, -1.0, 0.3, -0.7, 1e-300, -1e-300, 1e300, -2.5};
+    std::vector<Ray> rays;
+    for (int i = 0; i < 40000; ++i) {
+        const Vec3d origin{coordinate(size.x), coordinate(size.y), coordinate(size.z)};
+        Vec3d direction{components[pick(rng) % 10], components[pick(rng) % 10],
+                        components[pick(rng) % 10]};
+        if (direction == Vec3d{}) direction.z = -1.0;
+        rays.push_back({origin, direction});
+    }
+    const Counts counts = compare(world, rays);
+    EXPECT_GT(counts.hits, 5000);
+    compare(world, rays, 0.0);
+}
+
+// The fast loop takes a ray exactly when every non-zero direction component has a finite
+// reciprocal (eligible() decides it by comparisons): around 2^-1024, where 1 / d overflows, and
+// across the denormals.
+TEST(VoxelFastWalk, EligibleExactlyWhenTheReciprocalsAreFinite) {
+    const VoxelWorld world = terrain({16, 16, 16}, 1);
+    std::vector<double> values{0.0,
+                               -0.0,
+                               0x1p-1024,
+                               0x1p-1023,
+                               0x1p-1025,
+                               0x1p-1074,
+                               std::numeric_limits<double>::min(),
+                               std::nan(""),
+                               kInfinity,
+                               1e-300,
+                               1.0,
+                               1e300};
+    for (int i = 0, n = static_cast<int>(values.size()); i < n; ++i) {
+        double down = values[i], up = values[i];
+        for (int k = 0; k < 3; ++k) {
+            down = std::nextafter(down, 0.0);
+            up = std::nextafter(up, 1.0);
+            values.push_back(down);
+            values.push_back(up);
+        }
+    }
+    for (const double v : values) {
+        for (const double d : {v, -v}) {
+            const bool finite = d == 0.0 || std::isfinite(1.0 / d);
+            for (int a = 0; a < 3; ++a) {
+                Vec3d direction{0.5, -0.25, 0.75};
+                direction[a] = d;
+                EXPECT_EQ(fast::eligible(world, {{8.5, 8.5, 8.5}, direction}), finite)
+                    << "component " << a << " = " << d;
+            }
+        }
+    }
 }
 
 // Long rays from far away (a jump's floor guess lands far from the cell).
