@@ -60,15 +60,16 @@ Rgb nearEmitterHighlight(const RadianceCascades::State& state, const Hit& hit,
     for (std::uint32_t i = faces.nearOffset[face]; i < faces.nearOffset[face + 1]; ++i) {
         const shared::CascadeNearEmitter& e = faces.nearEmitters[i];
         const shared::vec3 centre = shared::nearEmitterPoint(e, -1);
-        const float weight = shared::nearEmitterWeight(length(p - centre), LUXEL_NEAR_EMITTER_INNER,
-                                                       LUXEL_NEAR_EMITTER_OUTER);
+        const float distance = length(p - centre);
+        const float weight =
+            shared::nearEmitterWeight(distance, LUXEL_NEAR_EMITTER_INNER, LUXEL_NEAR_EMITTER_OUTER);
         if (!(weight > 0.0f)) continue;
         // A face lights only the side it faces: from behind, a GGX ray meets another face.
         const shared::vec3 outward = shared::nearEmitterNormal(e.normal);
         if (!(dot(outward, p - centre) > 0.0f)) continue;
         const Int3 emitterNormal = normalFromIndex(int(e.normal));
         const FaceTarget target{{e.x, e.y, e.z}, emitterNormal};
-        constexpr int kSide = LUXEL_NEAR_HIGHLIGHT_SIDE;
+        const int side = shared::nearHighlightSide(distance, specular.alpha);
         Rgb seen;
         for (int q = 0; q < 4; ++q) {
             const shared::vec3 d = normalize(shared::nearEmitterPoint(e, q) - p);
@@ -78,11 +79,11 @@ Rgb nearEmitterHighlight(const RadianceCascades::State& state, const Hit& hit,
             if (!(t.maxComponent() > 0.0f)) continue;
             const Rgb radiance = Rgb(e.r, e.g, e.b) * t;
             // Each point a delta light of its cell's solid angle, (0.25 / side^2) |n_e . l| / r^2.
-            for (int k = 0; k < kSide * kSide; ++k) {
-                const shared::vec3 to = shared::nearEmitterQuarterPoint(e, q, k, kSide) - p;
+            for (int k = 0; k < side * side; ++k) {
+                const shared::vec3 to = shared::nearEmitterQuarterPoint(e, q, k, side) - p;
                 const shared::vec3 l = normalize(to);
                 const float solidAngle =
-                    0.25f / float(kSide * kSide) * std::abs(dot(outward, l)) / dot(to, to);
+                    0.25f / float(side * side) * std::abs(dot(outward, l)) / dot(to, to);
                 seen += bsdfLight(specular, {double(l.x), double(l.y), double(l.z)},
                                   radiance * solidAngle, 0.0);
             }

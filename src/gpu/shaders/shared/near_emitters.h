@@ -21,10 +21,10 @@
 // docs/voxel-gi-measures.md, "Near a lamp").
 #define LUXEL_NEAR_EMITTER_INNER 1.5f
 #define LUXEL_NEAR_EMITTER_OUTER 4.0f
-// The glossy highlight of a near emitter takes each quarter of the face as this many points a
-// side (the quarter's one visibility ray for all): a GGX lobe of roughness 0.4 is about as wide
+// The glossy highlight of a near emitter takes each quarter of the face as up to this many points
+// a side (the quarter's one visibility ray for all): a GGX lobe of roughness 0.4 is about as wide
 // as a quarter seen from a voxel away, so one point per quarter draws its reflection as four
-// spots.
+// spots (nearHighlightSide picks fewer where the lobe is wider than the points' spacing).
 #define LUXEL_NEAR_HIGHLIGHT_SIDE 3
 
 LUXEL_SHARED_BEGIN
@@ -76,6 +76,16 @@ LUXEL_FUNC vec3 nearEmitterQuarterPoint(CascadeNearEmitter e, int quarter, int s
     p[a] += (float(sub % side) + 0.5f) * cell - 0.25f;
     p[b] += (float(sub / side) + 0.5f) * cell - 0.25f;
     return p;
+}
+
+// Points a side of each quarter for the highlight seen through a GGX lobe of `alpha` from
+// `distance` voxels (to the face's centre): the points of a quarter lie 0.5 / (side distance)
+// radians apart, and the fewest that keeps that spacing within alpha are taken, at most
+// LUXEL_NEAR_HIGHLIGHT_SIDE. The default roughness 0.7 (alpha 0.49) needs one point per quarter
+// past a voxel, so most pixels evaluate the lobe 4 times per emitter instead of 36.
+LUXEL_FUNC int nearHighlightSide(float distance, float alpha) {
+    const float spacing = 0.5f / (max(distance, 0.25f) * max(alpha, 1e-3f));
+    return spacing <= 1.0f ? 1 : (spacing <= 2.0f ? 2 : LUXEL_NEAR_HIGHLIGHT_SIDE);
 }
 
 // Corner `i` (0..3, in order around it) of the emitting face (faceCorners, cascade_emitters.cpp).

@@ -37,26 +37,25 @@ vec3 nearEmitterHighlight(Hit hit, PathBsdf specular) {
     for (uint i = nearOffset[face]; i < nearOffset[face + 1]; ++i) {
         const CascadeNearEmitter e = nearEmitters[i];
         const vec3 centre = nearEmitterPoint(e, -1);
-        const float weight = nearEmitterWeight(length(hit.point - centre),
-                                               LUXEL_NEAR_EMITTER_INNER, LUXEL_NEAR_EMITTER_OUTER);
+        const float distance = length(hit.point - centre);
+        const float weight =
+            nearEmitterWeight(distance, LUXEL_NEAR_EMITTER_INNER, LUXEL_NEAR_EMITTER_OUTER);
         if (!(weight > 0.0)) continue;
         const vec3 outward = nearEmitterNormal(e.normal);
         if (!(dot(outward, hit.point - centre) > 0.0)) continue;
         const ivec3 voxel = ivec3(e.x, e.y, e.z), normal = ivec3(outward);
+        const int side = nearHighlightSide(distance, specular.alpha);
         vec3 seen = vec3(0.0);
         for (int q = 0; q < 4; ++q) {
             const vec3 d = normalize(nearEmitterPoint(e, q) - hit.point);
             const vec3 t = lineTransmittance(hit.point, d, true, voxel, normal);
             if (!(maxComponent(t) > 0.0)) continue;
             const vec3 radiance = vec3(e.r, e.g, e.b) * t;
-            for (int k = 0; k < LUXEL_NEAR_HIGHLIGHT_SIDE * LUXEL_NEAR_HIGHLIGHT_SIDE; ++k) {
-                const vec3 to =
-                    nearEmitterQuarterPoint(e, q, k, LUXEL_NEAR_HIGHLIGHT_SIDE) - hit.point;
+            for (int k = 0; k < side * side; ++k) {
+                const vec3 to = nearEmitterQuarterPoint(e, q, k, side) - hit.point;
                 const vec3 l = normalize(to);
-                const float solidAngle = 0.25 /
-                                         float(LUXEL_NEAR_HIGHLIGHT_SIDE *
-                                               LUXEL_NEAR_HIGHLIGHT_SIDE) *
-                                         abs(dot(outward, l)) / dot(to, to);
+                const float solidAngle =
+                    0.25 / float(side * side) * abs(dot(outward, l)) / dot(to, to);
                 seen += pathBsdfLight(specular, l, radiance * solidAngle, 0.0);
             }
         }
