@@ -138,21 +138,23 @@ Rgb EmitterLights::light(const VoxelWorld& world, const TextureSet* textures, co
     const int cell = shared::emitterCellIndex(p, {cells_.x, cells_.y, cells_.z});
     // The strongest faces by unoccluded light, strongest first (ties: the earlier in the list).
     int kept = 0;
-    std::uint32_t keptFace[LUXEL_EMITTER_MAX_FACES];
+    std::uint32_t keptFace[LUXEL_EMITTER_MAX_FACES], keptRank[LUXEL_EMITTER_MAX_FACES];
     float keptLight[LUXEL_EMITTER_MAX_FACES], keptFormFactor[LUXEL_EMITTER_MAX_FACES];
     for (std::uint32_t i = cellOffsets_[cell]; i < cellOffsets_[cell + 1]; ++i) {
         const EmitterFace& face = faces_[cellFaces_[i]];
         const float formFactor = shared::nearEmitterFormFactor(p, ng, shaderFace(face));
         const float e0 = formFactor * largest(face);
         if (!(shared::emitterFade(e0, floor_) > 0.0f)) continue;
-        if (kept == LUXEL_EMITTER_MAX_FACES && !(e0 > keptLight[kept - 1])) continue;
+        const std::uint32_t rank = shared::emitterRank(e0);
+        if (kept == LUXEL_EMITTER_MAX_FACES && !(rank > keptRank[kept - 1])) continue;
         int j = std::min(kept, LUXEL_EMITTER_MAX_FACES - 1);
-        while (j > 0 && e0 > keptLight[j - 1]) {
-            keptFace[j] = keptFace[j - 1], keptLight[j] = keptLight[j - 1];
-            keptFormFactor[j] = keptFormFactor[j - 1];
+        while (j > 0 && rank > keptRank[j - 1]) {
+            keptFace[j] = keptFace[j - 1], keptRank[j] = keptRank[j - 1];
+            keptLight[j] = keptLight[j - 1], keptFormFactor[j] = keptFormFactor[j - 1];
             --j;
         }
-        keptFace[j] = cellFaces_[i], keptLight[j] = e0, keptFormFactor[j] = formFactor;
+        keptFace[j] = cellFaces_[i], keptRank[j] = rank;
+        keptLight[j] = e0, keptFormFactor[j] = formFactor;
         kept = std::min(kept + 1, LUXEL_EMITTER_MAX_FACES);
     }
     const int n = std::clamp(rays, 1, LUXEL_EMITTER_MAX_RAYS);

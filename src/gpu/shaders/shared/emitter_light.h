@@ -41,6 +41,18 @@ LUXEL_FUNC float emitterFade(float e, float threshold) {
     return clamp((e - threshold) / threshold, 0.0f, 1.0f);
 }
 
+// The rank by which a point keeps its strongest faces: the unoccluded irradiance `e` (>= 0) with
+// its 10 lowest mantissa bits cleared, so faces of equal light by symmetry, whose float values
+// differ in the last bits between the CPU and the GPU, tie and the earlier in the list wins on
+// both.
+LUXEL_FUNC uint emitterRank(float e) {
+#ifdef __cplusplus
+    return std::bit_cast<uint>(e) & ~0x3ffu;
+#else
+    return floatBitsToUint(e) & ~0x3ffu;
+#endif
+}
+
 // Where shadow ray `i` of `n` aims on the emitting face: a fixed rank-1 lattice over the unit
 // square (u stratified, v by the golden ratio), the same at every point so the picture has no
 // noise (a penumbra is drawn in n steps).

@@ -42,22 +42,25 @@ vec3 emitterLight(vec3 p, ivec3 faceNormal, vec3 sn, vec3 view, vec3 diffuseAlbe
     const float threshold = params.emitterFloor;
     // The strongest faces by unoccluded light, strongest first (ties: the earlier in the list).
     int kept = 0;
-    uint keptFace[LUXEL_EMITTER_MAX_FACES];
+    uint keptFace[LUXEL_EMITTER_MAX_FACES], keptRank[LUXEL_EMITTER_MAX_FACES];
     float keptLight[LUXEL_EMITTER_MAX_FACES], keptFormFactor[LUXEL_EMITTER_MAX_FACES];
     for (uint i = emitterOffset[cell]; i < emitterOffset[cell + 1]; ++i) {
         const CascadeNearEmitter e = emitterFaces[emitterList[i]];
         const float formFactor = nearEmitterFormFactor(p, ng, e);
         const float e0 = formFactor * max(e.r, max(e.g, e.b));
         if (!(emitterFade(e0, threshold) > 0.0)) continue;
-        if (kept == LUXEL_EMITTER_MAX_FACES && !(e0 > keptLight[kept - 1])) continue;
+        const uint rank = emitterRank(e0);
+        if (kept == LUXEL_EMITTER_MAX_FACES && !(rank > keptRank[kept - 1])) continue;
         int j = min(kept, LUXEL_EMITTER_MAX_FACES - 1);
-        while (j > 0 && e0 > keptLight[j - 1]) {
+        while (j > 0 && rank > keptRank[j - 1]) {
             keptFace[j] = keptFace[j - 1];
+            keptRank[j] = keptRank[j - 1];
             keptLight[j] = keptLight[j - 1];
             keptFormFactor[j] = keptFormFactor[j - 1];
             --j;
         }
         keptFace[j] = emitterList[i];
+        keptRank[j] = rank;
         keptLight[j] = e0;
         keptFormFactor[j] = formFactor;
         kept = min(kept + 1, LUXEL_EMITTER_MAX_FACES);
