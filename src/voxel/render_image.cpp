@@ -8,6 +8,7 @@
 
 #include "gpu/shaders/shared/pixel_samples.h"
 #include "luxel/core/parallel.h"
+#include "luxel/voxel/emitter_light.h"
 
 namespace luxel::voxel {
 
@@ -52,6 +53,12 @@ Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& 
             visibility.emplace(std::move(*built));
             resolved.sunVisibility = &*visibility;
         }
+    }
+    std::optional<EmitterLights> emitters;
+    if (options.lighting == ShadeOptions::Lighting::Physical && options.emitterLight &&
+        !options.emitterLights) {
+        emitters.emplace(EmitterLights::build(world, options.materials));
+        resolved.emitterLights = &*emitters;
     }
     Image image(camera.width(), camera.height(), 3);
     parallelForRange(camera.height(), 1, [&](int begin, int end) {

@@ -9,6 +9,7 @@
 
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/core/tonemap.h"
+#include "luxel/voxel/emitter_light.h"
 #include "luxel/voxel/surface_cast.h"
 #include "luxel/voxel/texel_footprint.h"
 
@@ -195,6 +196,7 @@ Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
     first.primary = true;
     stack.push(first);
     Rgb sum;
+    int emitterBudget = kEmitterPathRays;  // shadow rays the path's hits may cast in all
     while (stack.size > 0) {
         const PathRay r = stack.rays[--stack.size];
         if (r.inside) {
@@ -272,6 +274,21 @@ Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
         const shared::vec3 fMirror = shared::mix(shared::vec3(fDielectric),
                                                  shared::fresnelSchlickRgb(base, cosV), m.metallic);
         const float g = shared::voxelMirrorWeight(m.roughness);
+        if (o.emitterLight && o.emitterLights) {
+            // The highlight of a lamp takes the rough share: mirror rays see lamps themselves.
+            EmitterLights::Surface es;
+            es.point = hit.point;
+            es.faceNormal = hit.normal;
+            es.shadingNormal = {nShade.x, nShade.y, nShade.z};
+            es.view = {view.x, view.y, view.z};
+            es.diffuseAlbedo = colour * kd;
+            es.f0 = {f0.x, f0.y, f0.z};
+            es.alpha = alpha;
+            es.specularModel = model;
+            es.specularWeight = 1.0f - g;
+            sum += r.weight *
+                   o.emitterLights->light(world, textures, es, o, o.emitterRays, emitterBudget);
+        }
         if (g < 1.0f) {
             const shared::vec3 fRough = shared::voxelRoughFresnel(f0, cosV, m.roughness);
             sum += r.weight * rgb(fRough * (1.0f - g) * o.skyAmbient) *

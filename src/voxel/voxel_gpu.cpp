@@ -94,7 +94,8 @@ VoxelGpuRenderer& VoxelGpuRenderer::operator=(VoxelGpuRenderer&&) noexcept = def
 VoxelGpuRenderer::~VoxelGpuRenderer() = default;
 
 std::uint64_t VoxelGpuRenderer::deviceBytes() const {
-    return state_ ? state_->bytes + state_->shadowBytes + state_->outputBytes : 0;
+    return state_ ? state_->bytes + state_->shadowBytes + state_->emitterBytes + state_->outputBytes
+                  : 0;
 }
 
 const VoxelGpuUploads& VoxelGpuRenderer::uploads() const {
@@ -185,6 +186,7 @@ Result<VoxelGpuRenderer> VoxelGpuRenderer::create(gpu::Context& context, const V
     ShadowUpload placeholder;
     placeholder.moments = {0}, placeholder.field = {0.0f}, placeholder.levels = {0};
     if (Status st = s.setShadowArrays(placeholder); !st) return st.error();
+    if (Status st = s.setEmitterPlaceholders(); !st) return st.error();
     for (int cz = 0; cz < s.chunks.z; ++cz) {
         for (int cy = 0; cy < s.chunks.y; ++cy) {
             if (Status st = s.uploadChunkRow(world, 0, s.chunks.x, cy, cz); !st) return st.error();

@@ -11,6 +11,7 @@
 
 #include "gpu/shaders/shared/voxel_layout.h"
 #include "luxel/gpu/context.h"
+#include "luxel/voxel/emitter_light.h"
 #include "luxel/voxel/voxel_gpu.h"
 #include "voxel/shadows/shadow_upload.h"
 
@@ -44,6 +45,13 @@ struct ShadowKey {
     }
 };
 
+// What the uploaded emitter lists were built from: the world's version and the materials (the
+// emission they give), or the lists the options gave.
+struct EmitterKey {
+    const EmitterLights* given = nullptr;
+    std::uint64_t generation = 0;
+    std::vector<shared::VoxelMaterial> materials;
+};
 }  // namespace voxel_gpu
 
 struct VoxelGpuRenderer::State {
@@ -74,6 +82,14 @@ struct VoxelGpuRenderer::State {
     std::uint64_t shadowBytes = 0;
     std::optional<voxel_gpu::ShadowKey> shadowKey;
 
+    // Light from emissive voxels at bindings 15..17 (voxel_gpu_emitters.cpp): the grid's offsets,
+    // lists and faces (placeholders until physical lighting asks for it), what they were built
+    // from, and their floor.
+    std::array<std::shared_ptr<gpu::Buffer>, 3> emitters;
+    std::optional<voxel_gpu::EmitterKey> emitterKey;
+    float emitterFloor = kEmitterFloor;
+    std::uint64_t emitterBytes = 0;
+    bool emittersEmpty = true;
     // Sends `data` to `buffer` at `offset`, counted in `counter`.
     Status send(gpu::Buffer& buffer, std::span<const std::byte> data, std::uint64_t& counter,
                 std::uint64_t offset = 0) {
@@ -95,6 +111,15 @@ struct VoxelGpuRenderer::State {
     // The world part of the parameters (the rest is filled per render).
     void fillWorld(shared::VoxelRenderParams& p, int stepCap) const;
 
+    // The emitter lists options' physical lighting needs (voxel_gpu_emitters.cpp), built on the
+    // CPU as render() does (or taken from options.emitterLights) and uploaded, unless the same
+    // ones are already there; placeholders when none are needed yet.
+    Status prepareEmitters(const ShadeOptions& options,
+                           const std::vector<shared::VoxelMaterial>& gpuMaterials);
+    Status setEmitterArrays(const std::vector<std::uint32_t>& offsets,
+                            const std::vector<std::uint32_t>& list,
+                            const std::vector<EmitterFace>& faces);
+    Status setEmitterPlaceholders();
     // voxel_gpu_shadows.cpp.
     Status setShadowArrays(const ShadowUpload& u);
     // The arrays options' sun visibility needs, built on the CPU as render() does (or taken from

@@ -126,8 +126,15 @@ Status VoxelGpuRenderer::prepareRender(const Camera& camera, const ShadeOptions&
             p.flags |= LUXEL_VOXEL_SUN_VISIBILITY;
         }
     }
-    if (std::vector<shared::VoxelMaterial> m = gpuMaterials(options.materials);
-        m.size() != s.materialsHeld.size() ||
+    std::vector<shared::VoxelMaterial> m = gpuMaterials(options.materials);
+    if (options.lighting == ShadeOptions::Lighting::Physical && options.emitterLight && image) {
+        if (Status st = s.prepareEmitters(options, m); !st) return st.error();
+        if (!s.emittersEmpty) p.flags |= LUXEL_VOXEL_EMITTER_LIGHT;
+        p.emitterRays =
+            static_cast<std::uint32_t>(std::clamp(options.emitterRays, 1, kMaxEmitterRays));
+        p.emitterFloor = s.emitterFloor;
+    }
+    if (m.size() != s.materialsHeld.size() ||
         std::memcmp(m.data(), s.materialsHeld.data(), m.size() * sizeof(m[0])) != 0) {
         s.materialsHeld.clear();
         if (Status st = s.send(*s.materials, bytesOf(m), s.sent.materials); !st) return st.error();
@@ -173,6 +180,7 @@ Result<Image> VoxelGpuRenderer::render(const Camera& camera, const ShadeOptions&
         d.name = "voxel render rows " + std::to_string(row);
         d.program = s.program;
         d.buffers = renderBuffers();
+        for (const auto& b : s.emitters) d.buffers.push_back(b.get());
         const int rows = std::min(kBandRows, h - row);
         d.setPush(shared::VoxelBandPush{static_cast<std::uint32_t>(row),
                                         static_cast<std::uint32_t>(rows)});

@@ -10,6 +10,7 @@
 
 #include "core/json_fields.h"
 #include "luxel/core/file_io.h"
+#include "luxel/voxel/emitter_light.h"
 #include "luxel/voxel/generators.h"
 #include "luxel/voxel/vox_import.h"
 #include "luxel/voxel/vox_scene.h"
@@ -355,6 +356,12 @@ void readSurfaceOptions(const Json& render, const std::vector<Material>& materia
     if (const Json* v = find(render, "sky_ambient")) {
         o.skyAmbient = static_cast<float>(readNumberIn(*v, "render.sky_ambient", 0, 1));
     }
+    if (const Json* v = find(render, "emitter_light")) {
+        o.emitterLight = readBool(*v, "render.emitter_light");
+    }
+    if (const Json* v = find(render, "emitter_rays")) {
+        o.emitterRays = wholeNumber(*v, "render.emitter_rays", 1, kMaxEmitterRays);
+    }
     if (const Json* v = find(render, "material")) {
         Material m = findMaterial(materials, readString(*v, "render.material"), "render.material");
         m.proceduralTexture = true;
@@ -376,10 +383,11 @@ ShadeOptions buildShading(const Json& root, const std::vector<Material>& materia
     }
     if (const Json* sky = find(root, "sky")) readSkyJson(*sky, o);
     if (const Json* render = find(root, "render")) {
-        checkObject(*render, "render",
-                    {"reflections", "reflection_mode", "reflectivity", "shadows", "textures",
-                     "lighting", "specular", "fresnel", "refraction", "sun_irradiance",
-                     "sky_ambient", "material", "sun_radius", LUXEL_VOXEL_FILTER_RENDER_KEYS});
+        checkObject(
+            *render, "render",
+            {"reflections", "reflection_mode", "reflectivity", "shadows", "textures", "lighting",
+             "specular", "fresnel", "refraction", "sun_irradiance", "sky_ambient", "material",
+             "sun_radius", "emitter_light", "emitter_rays", LUXEL_VOXEL_FILTER_RENDER_KEYS});
         readSurfaceOptions(*render, materials, o);
         readFilterFields(*render, o);
         if (auto* v = find(*render, "reflections")) {

@@ -223,6 +223,12 @@ TEST(GpuSharedLayout, CascadesPicturePushConstantsAndFaceSlots) {
         {sizeof(E),
          {LUXEL_MEMBER(E, x), LUXEL_MEMBER(E, y), LUXEL_MEMBER(E, z), LUXEL_MEMBER(E, normal),
           LUXEL_MEMBER(E, r), LUXEL_MEMBER(E, g), LUXEL_MEMBER(E, b), LUXEL_MEMBER(E, pad0)}});
+    // The ray caster's emitting faces (shared/emitter_light.h) are the same struct.
+    expectBuffer(
+        "voxel_render", 17,
+        {sizeof(E),
+         {LUXEL_MEMBER(E, x), LUXEL_MEMBER(E, y), LUXEL_MEMBER(E, z), LUXEL_MEMBER(E, normal),
+          LUXEL_MEMBER(E, r), LUXEL_MEMBER(E, g), LUXEL_MEMBER(E, b), LUXEL_MEMBER(E, pad0)}});
 }
 
 TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
@@ -282,9 +288,9 @@ TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
                             LUXEL_MEMBER(P, textureFilter),
                             LUXEL_MEMBER(P, maxAnisotropy),
                             LUXEL_MEMBER(P, coneSpread),
-                            LUXEL_MEMBER(P, pad0),
-                            LUXEL_MEMBER(P, pad1),
-                            LUXEL_MEMBER(P, pad2)}};
+                            LUXEL_MEMBER(P, emitterRays),
+                            LUXEL_MEMBER(P, emitterFloor),
+                            LUXEL_MEMBER(P, pad0)}};
     for (const char* shader : {"voxel_render", "voxel_cast", "path_trace"}) {
         expectBuffer(shader, 0, params, /* element= */ false);
     }
@@ -297,7 +303,7 @@ TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
           LUXEL_MEMBER(VoxelTextureInfo, normalOffset),
           LUXEL_MEMBER(VoxelTextureInfo, hasNormalMap)}});
     // The sun visibility parameters where sun_visibility.glsl puts them in the render pass.
-    static_assert(LUXEL_VOXEL_BUFFERS == 15);
+    static_assert(LUXEL_VOXEL_BUFFERS == 18);
     using S = ShadowParams;
     expectBuffer("voxel_render", 11,
                  {sizeof(S), {LUXEL_MEMBER(S, lightX),       LUXEL_MEMBER(S, lightY),

@@ -113,7 +113,9 @@ post::PostOptions applyPostFlags(post::PostOptions scene, const PostFlags& flags
 struct VoxelSurfaceFlags {
     std::string lighting, specular, fresnel;
     bool noRefraction = false;
-    std::string shadows;  // --shadows: render.shadows' method (empty: the scene's)
+    std::string shadows;          // --shadows: render.shadows' method (empty: the scene's)
+    bool noEmitterLight = false;  // --no-emitter-light: render.emitter_light false
+    int emitterRays = 0;          // --emitter-rays: render.emitter_rays (0: the scene's)
 };
 void addVoxelSurfaceFlags(CLI::App& app, VoxelSurfaceFlags& flags);
 // Applies them to the scene's shading options; errors name the flag.

@@ -21,6 +21,7 @@
 #include "luxel/post/finish.h"
 #include "luxel/post/upscale.h"
 #include "luxel/post/voxel_frames.h"
+#include "luxel/voxel/emitter_light.h"
 #include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/path_trace_gpu.h"
 #include "luxel/voxel/radiance_cascades_gpu.h"
@@ -108,6 +109,12 @@ void addVoxelSurfaceFlags(CLI::App& app, VoxelSurfaceFlags& flags) {
     app.add_option("--shadows", flags.shadows,
                    "voxel, physical: sun visibility hard, exact, msm, vsm, sdf, blend or flood "
                    "(the scene's render.shadows settings otherwise; turns shadows on)");
+    app.add_flag("--no-emitter-light", flags.noEmitterLight,
+                 "voxel, physical: emissive voxels light no other surface");
+    app.add_option("--emitter-rays", flags.emitterRays,
+                   "voxel, physical: shadow rays per emissive face, 1.." +
+                       std::to_string(voxel::kMaxEmitterRays) + " (default: the scene's, else 4)")
+        ->check(wholeIn(1, voxel::kMaxEmitterRays));
 }
 
 Status applyVoxelSurfaceFlags(const VoxelSurfaceFlags& flags, voxel::ShadeOptions& o) {
@@ -136,6 +143,8 @@ Status applyVoxelSurfaceFlags(const VoxelSurfaceFlags& flags, voxel::ShadeOption
         return Error("--fresnel '" + flags.fresnel + "' is not schlick or exact");
     }
     if (flags.noRefraction) o.refraction = false;
+    if (flags.noEmitterLight) o.emitterLight = false;
+    if (flags.emitterRays != 0) o.emitterRays = flags.emitterRays;
     if (!flags.shadows.empty()) {
         voxel::ShadowMethod method;
         if (!voxel::parseShadowMethod(flags.shadows, method)) {
@@ -185,12 +194,13 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
     // jitters its own.
     const bool surfaceFlags = !request.filter.empty() || !f.lighting.empty() ||
                               !f.specular.empty() || !f.fresnel.empty() || f.noRefraction ||
-                              !f.shadows.empty();
+                              !f.shadows.empty() || f.noEmitterLight || f.emitterRays != 0;
     // The flags the other solvers refuse, named once, with what the solver takes instead.
     const auto rayCasterOnly = [](const char* flags, const char* solverTakes) {
         return Error(std::string(flags) +
                      " and the surface flags (--lighting, --specular, --fresnel, "
-                     "--no-refraction, --shadows) apply to the ray caster; --solver " +
+                     "--no-refraction, --shadows, --no-emitter-light, --emitter-rays) apply to "
+                     "the ray caster; --solver " +
                      solverTakes);
     };
     if (request.pathSolver && (surfaceFlags || request.samples != 0)) {

@@ -1,5 +1,5 @@
 // Images from the voxel renderer: samples per pixel, primary ray cones, and the sun visibility
-// structures built once per image when the options ask for them.
+// structures and the emissive faces' lists built once per image when the options ask for them.
 #pragma once
 
 #include "luxel/core/image.h"
@@ -31,7 +31,9 @@ Rgb shadePixel(const VoxelWorld& world, const Camera& camera, int px, int py,
                const ShadeOptions& options, const TextureSet* textures = nullptr);
 
 // A camera.width() x camera.height() RGB image, rows in parallel. With Physical lighting and no
-// options.sunVisibility, builds the visibility structures options.shadowSettings ask for first.
+// options.sunVisibility, builds the visibility structures options.shadowSettings ask for first,
+// and with options.emitterLight and no options.emitterLights the emissive faces' lists
+// (emitter_light.h).
 Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& options,
              const TextureSet* textures = nullptr);
 

@@ -19,6 +19,8 @@
 
 namespace luxel::voxel {
 
+class EmitterLights;
+
 struct ShadeOptions {
     // How reflected colours are combined.
     enum class ReflectionMode {
@@ -75,6 +77,12 @@ struct ShadeOptions {
     // the share of the sky a face is assumed to see for ambient light (no occlusion is traced).
     MaterialTable materials;
     float skyAmbient = 0.5f;
+    // Physical: light from emissive voxels onto other surfaces (emitter_light.h), with
+    // `emitterRays` shadow rays per face (1..kMaxEmitterRays). render() builds the faces'
+    // lists when `emitterLights` is null; shadeRay without them draws no such light.
+    bool emitterLight = true;
+    int emitterRays = 4;
+    const EmitterLights* emitterLights = nullptr;
 };
 
 // The Unity tracer's face factor min((dot(n, L) + 1) / 2 + ambient, 1); in shadow dot(n, L) is

@@ -48,6 +48,7 @@ struct VoxelGpuUploads {
     std::uint64_t materials = 0;   // the material table, when it changed
     std::uint64_t parameters = 0;  // camera, light and options, when they changed
     std::uint64_t shadows = 0;     // sun visibility arrays
+    std::uint64_t emitters = 0;    // light from emissive voxels: the faces and the grid's lists
     std::uint64_t rays = 0;        // castRays batches
 };
 

@@ -6,6 +6,7 @@
 
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/dda.h"
+#include "luxel/voxel/emitter_light.h"
 #include "luxel/voxel/render_image.h"
 
 namespace luxel::post {
@@ -43,6 +44,13 @@ Image renderJittered(const voxel::VoxelWorld& world, const voxel::Camera& camera
             visibility.emplace(std::move(*built));
             resolved.sunVisibility = &*visibility;
         }
+    }
+    // The light from emissive voxels, as render() builds it.
+    std::optional<voxel::EmitterLights> emitters;
+    if (options.lighting == voxel::ShadeOptions::Lighting::Physical && options.emitterLight &&
+        !options.emitterLights) {
+        emitters.emplace(voxel::EmitterLights::build(world, options.materials));
+        resolved.emitterLights = &*emitters;
     }
     const voxel::RayCone cone = voxel::primaryCone(camera);
     Image image(camera.width(), camera.height(), 3);

@@ -25,6 +25,8 @@
 //      sun_visibility.glsl expects them)
 //   11-14 sun visibility (shared/shadow_layout.h): ShadowParams, moments, distance field, light
 //      levels; one-word placeholders unless LUXEL_VOXEL_SUN_VISIBILITY is set
+//   15-17 light from emissive voxels (shared/emitter_light.h): the grid's offsets and lists and
+//      the faces; one-word placeholders unless LUXEL_VOXEL_EMITTER_LIGHT is set
 //
 // voxel_cast (a batch of rays; the CPU twin is castRays in dda.h) binds 0-2 as above, then
 // 3 VoxelCastRay per ray, 4 VoxelCastHit per ray, 5 brick masks, 6 brick reach.
@@ -40,7 +42,7 @@ using uint = std::uint32_t;
 
 #define LUXEL_VOXEL_GROUP_X 8
 #define LUXEL_VOXEL_GROUP_Y 8
-#define LUXEL_VOXEL_BUFFERS 15
+#define LUXEL_VOXEL_BUFFERS 18
 #define LUXEL_VOXEL_CAST_GROUP 64
 
 // VoxelRenderParams.flags
@@ -60,6 +62,9 @@ using uint = std::uint32_t;
 // Physical with shadows: the sun's visibility comes from the shadow bindings 11-14
 // (sun_visibility.glsl); else one hard shadow ray that sees cutouts, as the CPU's Hard method.
 #define LUXEL_VOXEL_SUN_VISIBILITY 4096u
+// Physical: light from emissive voxels onto other faces, from the lists at 15..17
+// (shared/emitter_light.h); else those are one-word placeholders.
+#define LUXEL_VOXEL_EMITTER_LIGHT 8192u
 
 // Material table entries: 254 texture slots and the plain blocks' material (the last).
 #define LUXEL_VOXEL_MATERIALS 255
@@ -112,7 +117,10 @@ struct VoxelRenderParams {
     uint textureFilter;    // LUXEL_TEXTURE_NEAREST, _TRILINEAR or _ANISOTROPIC
     uint maxAnisotropy;
     float coneSpread;  // primary cone spread per sample: pixel angle / sqrt(samplesPerPixel)
-    uint pad0, pad1, pad2;
+    // Light from emissive voxels (LUXEL_VOXEL_EMITTER_LIGHT, shared/emitter_light.h).
+    uint emitterRays;    // shadow rays per face, 1..LUXEL_EMITTER_MAX_RAYS
+    float emitterFloor;  // EmitterLights::floor()
+    uint pad0;
 };
 
 // Push constants: the band of rows one dispatch renders (images are split into bands so no
@@ -181,6 +189,8 @@ static_assert(offsetof(VoxelRenderParams, specular) == 172);
 static_assert(offsetof(VoxelRenderParams, alphaMin) == 192);
 static_assert(offsetof(VoxelRenderParams, samplesPerPixel) == 196);
 static_assert(offsetof(VoxelRenderParams, coneSpread) == 208);
+static_assert(offsetof(VoxelRenderParams, emitterRays) == 212);
+static_assert(offsetof(VoxelRenderParams, emitterFloor) == 216);
 static_assert(sizeof(VoxelMaterial) == 64);
 static_assert(offsetof(VoxelMaterial, absorptionR) == 32);
 static_assert(offsetof(VoxelMaterial, emissionR) == 48);

@@ -5,16 +5,9 @@
 // table. Needs the buffers of shared/cascade_picture_layout.h (`light`, `faceSlots`,
 // `ggxAlbedo`) and `emitterFar` (shared/near_emitters.h), `path` (CascadePicturePush),
 // castToSurface, walkMedium, materials[] and the path tracer's surface code (path_surface.glsl).
+// The straight line through glass and water is line_transmittance.glsl.
 
 #define LUXEL_SOLVER_INV_PI 0.31830988618379067
-// Below this the light that is left counts as none (kDarkTransmittance, solver_sun.cpp).
-#define LUXEL_SOLVER_DARK 1e-4
-// kMaxSunRayMedia (solver_sun.h).
-#define LUXEL_SOLVER_SUN_MEDIA 8
-
-float maxComponent(vec3 c) {
-    return max(c.x, max(c.y, c.z));
-}
 
 vec3 sunAxis() {
     return vec3(path.sunX, path.sunY, path.sunZ);
@@ -24,77 +17,22 @@ vec3 sunIrradiance() {
     return vec3(path.sunIrradianceR, path.sunIrradianceG, path.sunIrradianceB);
 }
 
+// The straight line through glass and water (line_transmittance.glsl) with the solvers' switches.
+bool lineMedia() {
+    const uint mediaFlags = LUXEL_PICTURE_REFRACTION | LUXEL_PICTURE_TRANSMISSION;
+    return (path.materialFlags & mediaFlags) == mediaFlags;
+}
+
+float lineTransmission(VoxelMaterial m) {
+    return (path.materialFlags & LUXEL_PICTURE_REFRACTION) != 0u ? m.transmission : 0.0;
+}
+
 // dielectricFresnel (path_trace_bsdf.cpp): from the air into `ior`; 0 for ior 1.
-float solverFresnel(float cosI, float ior) {
+float lineFresnel(float cosI, float ior) {
     return ior == 1.0 ? 0.0 : pathFresnel(cosI, 1.0, ior);
 }
 
-// The transmission lobe weight of material m entered through a face with outward `normal`
-// along unit `direction` (entryTransmission, solver_sun.cpp).
-float entryTransmission(VoxelMaterial m, ivec3 normal, vec3 direction) {
-    const float cosV = clamp(dot(vec3(normal), -direction), 0.0, 1.0);
-    const float transmission =
-        (path.materialFlags & LUXEL_PICTURE_REFRACTION) != 0u ? m.transmission : 0.0;
-    return (1.0 - m.metallic) * (1.0 - solverFresnel(cosV, m.ior)) * transmission;
-}
-
-// 1 - F where the straight line leaves the medium through `outward` (exitTransmission).
-float exitTransmission(VoxelMaterial m, vec3 direction, ivec3 outward) {
-    const float cosI = clamp(dot(direction, vec3(outward)), 0.0, 1.0);
-    return 1.0 - solverFresnel(cosI, m.ior);
-}
-
-// Through the run of transmissive voxels entered at `hit` (throughMedia, solver_sun.cpp).
-vec3 throughMedia(Hit hit, vec3 direction, inout vec3 origin, inout int media) {
-    vec3 t = vec3(1.0);
-    ivec3 cell = hit.voxel, normal = hit.normal;
-    vec3 point = hit.point;
-    for (;;) {
-        const VoxelMaterial m = materials[materialIndex(voxelValue(cell))];
-        t = t * entryTransmission(m, normal, direction);
-        ++media;
-        if (!(maxComponent(t) > LUXEL_SOLVER_DARK) || media > LUXEL_SOLVER_SUN_MEDIA) {
-            return vec3(0.0);
-        }
-        const MediumExit exit = walkMedium(cell, point, direction);
-        t = t * voxelTransmittance(vec3(m.absorptionR, m.absorptionG, m.absorptionB),
-                                   exit.distance);
-        if (!exit.intoSolid) {
-            origin = exit.point;
-            return t * exitTransmission(m, direction, exit.outward);
-        }
-        // Another solid touches the medium: entered directly, with no interface to the air.
-        cell = exit.cell + exit.outward;
-        normal = -exit.outward;
-        point = exit.point;
-    }
-    return vec3(0.0);
-}
-
-// lineTransmittance (solver_sun.cpp): along the ray until it leaves the world (toFace false: the
-// sky's share, sunRayTransmittance) or meets the face (faceVoxel, faceNormal) (that face's share,
-// faceRayTransmittance; 0 where it leaves the world or meets another opaque face first).
-vec3 lineTransmittance(vec3 origin, vec3 direction, bool toFace, ivec3 faceVoxel,
-                       ivec3 faceNormal) {
-    const uint mediaFlags = LUXEL_PICTURE_REFRACTION | LUXEL_PICTURE_TRANSMISSION;
-    const bool media = (path.materialFlags & mediaFlags) == mediaFlags;
-    if (!media && !toFace) {
-        return castToSurface(origin, direction).hit.hit ? vec3(0.0) : vec3(1.0);
-    }
-    vec3 t = vec3(1.0), o = origin;
-    int passed = 0;
-    // Each round enters at least one medium, and past LUXEL_SOLVER_SUN_MEDIA the ray is dark.
-    for (int round = 0; round <= LUXEL_SOLVER_SUN_MEDIA; ++round) {
-        const SurfaceHit s = castToSurface(o, direction);
-        if (!s.hit.hit) return toFace ? vec3(0.0) : t;
-        if (s.hit.normal == ivec3(0)) return vec3(0.0);
-        if (toFace && s.hit.voxel == faceVoxel && s.hit.normal == faceNormal) return t;
-        if (!media) return vec3(0.0);
-        t = t * throughMedia(s.hit, direction, o, passed);
-        if (!(maxComponent(t) > LUXEL_SOLVER_DARK)) return vec3(0.0);
-    }
-    return vec3(0.0);
-}
+#include "voxel/line_transmittance.glsl"
 
 // sunRayTransmittance (solver_sun.h): 1 open, 0 blocked, a colour through glass.
 vec3 sunRayTransmittance(vec3 origin, vec3 direction) {

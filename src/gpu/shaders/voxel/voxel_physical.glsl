@@ -3,8 +3,9 @@
 // per-hit terms are the shared kernels (shared/optics.h, shared/voxel_shading.h). Sun visibility
 // is sunVisibility (sun_visibility.glsl) for the map and field methods, else one hard shadow ray;
 // textures are filtered over the cone's footprint and normal maps bend the shading normal
-// (texture_sample.glsl). Included by voxel_shading.glsl after castToSurface, skyColor and
-// textureFactor.
+// (texture_sample.glsl). Light from emissive voxels is emitter_light.glsl's, in the ray caster
+// alone (LUXEL_VOXEL_EMITTER_BINDINGS). Included by voxel_shading.glsl after castToSurface,
+// skyColor and textureFactor.
 
 struct PathRay {
     vec3 origin;
@@ -107,6 +108,10 @@ MediumExit walkMedium(ivec3 cell, vec3 origin, vec3 dir) {
     return e;
 }
 
+#ifdef LUXEL_VOXEL_EMITTER_BINDINGS
+#include "voxel/emitter_light.glsl"
+#endif
+
 #define LUXEL_PUSH_PATH(ray)                                                                   \
     {                                                                                          \
         const PathRay pushed = ray;                                                            \
@@ -130,6 +135,9 @@ vec3 shadePhysical(vec3 o, vec3 d) {
                             min(int(params.maxReflections), LUXEL_VOXEL_MAX_DEPTH), false,
                             ivec3(0), 0.0, true));
     vec3 sum = vec3(0.0);
+#ifdef LUXEL_VOXEL_EMITTER_BINDINGS
+    int emitterBudget = LUXEL_EMITTER_PATH_RAYS;
+#endif
     while (size > 0) {
         const PathRay r = stack[--size];
         if (r.inside) {
@@ -214,6 +222,13 @@ vec3 shadePhysical(vec3 o, vec3 d) {
         const float fDielectric = fresnelDielectric(cosV, 1.0, m.ior);
         const vec3 fMirror = mix(vec3(fDielectric), fresnelSchlickRgb(colour, cosV), m.metallic);
         const float g = voxelMirrorWeight(m.roughness);
+#ifdef LUXEL_VOXEL_EMITTER_BINDINGS
+        if ((params.flags & LUXEL_VOXEL_EMITTER_LIGHT) != 0u) {
+            // The highlight of a lamp takes the rough share: mirror rays see lamps themselves.
+            sum += r.weight * emitterLight(h.point, h.normal, n, view, colour * kd, f0, alpha,
+                                           model, 1.0 - g, emitterBudget);
+        }
+#endif
         if (g < 1.0) {
             sum += r.weight * voxelRoughFresnel(f0, cosV, m.roughness) *
                    ((1.0 - g) * params.skyAmbient) * skyColor(reflected);

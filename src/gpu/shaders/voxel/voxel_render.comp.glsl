@@ -11,6 +11,10 @@ layout(push_constant) uniform Push { VoxelBandPush band; };
 // Bindings 11-14: the sun visibility arrays (shared/shadow_layout.h), declared by the include.
 #include "voxel/sun_visibility.glsl"
 
+// Bindings 15-17: the light from emissive voxels (shared/emitter_light.h), declared by
+// emitter_light.glsl through voxel_physical.glsl.
+#define LUXEL_VOXEL_EMITTER_BINDINGS
+
 #include "voxel/voxel_world_access.glsl"
 #include "voxel/texture_sample.glsl"
 #include "voxel/voxel_shading.glsl"

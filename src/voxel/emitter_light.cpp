@@ -1,0 +1,189 @@
+// Light from emissive voxels in the ray caster (emitter_light.h): the open faces, the grid of
+// lists, and the light at a point. The arithmetic at a point is in float, as the GPU's twin
+// (src/gpu/shaders/voxel/emitter_light.glsl) runs it, so both draw the same picture.
+#include "luxel/voxel/emitter_light.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "gpu/shaders/shared/emitter_light.h"
+#include "gpu/shaders/shared/voxel_shading.h"
+#include "luxel/voxel/path_trace_emitters.h"
+#include "luxel/voxel/shading.h"
+#include "voxel/solver_sun.h"
+
+namespace luxel::voxel {
+namespace {
+
+namespace shared = gpu::shared;
+
+static_assert(kMaxEmitterRays == LUXEL_EMITTER_MAX_RAYS && kEmitterFloor == LUXEL_EMITTER_FLOOR &&
+              kEmitterPathRays == LUXEL_EMITTER_PATH_RAYS);
+// EmitterFace is the shader's CascadeNearEmitter, byte for byte.
+static_assert(sizeof(EmitterFace) == sizeof(shared::CascadeNearEmitter) &&
+              offsetof(EmitterFace, normal) == offsetof(shared::CascadeNearEmitter, normal) &&
+              offsetof(EmitterFace, r) == offsetof(shared::CascadeNearEmitter, r) &&
+              offsetof(EmitterFace, pad0) == offsetof(shared::CascadeNearEmitter, pad0));
+
+shared::CascadeNearEmitter shaderFace(const EmitterFace& f) {
+    return {f.x, f.y, f.z, f.normal, f.r, f.g, f.b, f.pad0};
+}
+
+constexpr Int3 kNormals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+// Half the diagonal of a face: no point of it is nearer than its centre's distance less this.
+constexpr double kHalfDiagonal = 0.70711;
+
+float largest(const EmitterFace& e) {
+    return std::max(e.r, std::max(e.g, e.b));
+}
+
+// The reach of a face: past this distance from its centre its irradiance is below `floor`
+// (a unit square seen from d away subtends at most 1/d^2 of projected solid angle).
+double reachOf(const EmitterFace& e, double floor) {
+    return std::sqrt(double(largest(e)) / floor) + kHalfDiagonal;
+}
+
+// Distance from p to the axis-aligned box [lo, hi].
+double boxDistance(Vec3d p, Vec3d lo, Vec3d hi) {
+    double d2 = 0;
+    for (int a = 0; a < 3; ++a) {
+        const double d = std::max({lo[a] - p[a], 0.0, p[a] - hi[a]});
+        d2 += d * d;
+    }
+    return std::sqrt(d2);
+}
+
+// Visits the cells within `reach` of `centre` (cell side LUXEL_EMITTER_CELL).
+template <typename F>
+void forCellsInReach(Int3 cells, Vec3d centre, double reach, F&& visit) {
+    const double side = LUXEL_EMITTER_CELL;
+    Int3 lo, hi;
+    for (int a = 0; a < 3; ++a) {
+        lo[a] = std::clamp(int(std::floor((centre[a] - reach) / side)), 0, cells[a] - 1);
+        hi[a] = std::clamp(int(std::floor((centre[a] + reach) / side)), 0, cells[a] - 1);
+    }
+    for (int z = lo.z; z <= hi.z; ++z)
+        for (int y = lo.y; y <= hi.y; ++y)
+            for (int x = lo.x; x <= hi.x; ++x) {
+                const Vec3d boxLo{x * side, y * side, z * side};
+                if (boxDistance(centre, boxLo, boxLo + Vec3d{side, side, side}) <= reach) {
+                    visit((z * cells.y + y) * cells.x + x);
+                }
+            }
+}
+
+}  // namespace
+
+EmitterLights EmitterLights::build(const VoxelWorld& world, const MaterialTable& materials) {
+    EmitterLights out;
+    const PathEmitters emitters = PathEmitters::find(world, materials);
+    if (emitters.empty()) return out;
+    for (const Int3 v : emitters.voxels()) {
+        const Rgb l = materials.forSlot(textureSlotOf(world.get(v.x, v.y, v.z))).emission;
+        for (int k = 0; k < 6; ++k) {
+            const Int3 n = kNormals[k];
+            const Int3 next{v.x + n.x, v.y + n.y, v.z + n.z};
+            if (!world.inside(next.x, next.y, next.z) || world.solid(next.x, next.y, next.z)) {
+                continue;
+            }
+            if (out.faces_.size() == std::size_t(kMaxEmitterFaces)) return EmitterLights{};
+            out.faces_.push_back({v.x, v.y, v.z, std::uint32_t(k), l.r, l.g, l.b, 0u});
+        }
+    }
+    const Int3 size = world.size();
+    const int side = LUXEL_EMITTER_CELL;
+    out.cells_ = {(size.x + side - 1) / side, (size.y + side - 1) / side,
+                  (size.z + side - 1) / side};
+    const std::size_t cellCount = std::size_t(out.cells_.x) * out.cells_.y * out.cells_.z;
+    // Count first; raise the floor until the lists fit their bound.
+    std::vector<std::uint32_t> counts;
+    for (;;) {
+        counts.assign(cellCount, 0u);
+        std::int64_t total = 0;
+        for (const EmitterFace& e : out.faces_) {
+            const shared::vec3 c = shared::nearEmitterPoint(shaderFace(e), -1);
+            forCellsInReach(out.cells_, {c.x, c.y, c.z}, reachOf(e, out.floor_), [&](int cell) {
+                ++counts[std::size_t(cell)];
+                ++total;
+            });
+        }
+        if (total <= kMaxEmitterListEntries) break;
+        out.floor_ *= 2.0f;
+    }
+    out.cellOffsets_.assign(cellCount + 1, 0u);
+    for (std::size_t i = 0; i < cellCount; ++i) {
+        out.cellOffsets_[i + 1] = out.cellOffsets_[i] + counts[i];
+    }
+    out.cellFaces_.resize(out.cellOffsets_.back());
+    std::vector<std::uint32_t> filled(out.cellOffsets_.begin(), out.cellOffsets_.end() - 1);
+    for (std::size_t f = 0; f < out.faces_.size(); ++f) {
+        const EmitterFace& e = out.faces_[f];
+        const shared::vec3 c = shared::nearEmitterPoint(shaderFace(e), -1);
+        forCellsInReach(out.cells_, {c.x, c.y, c.z}, reachOf(e, out.floor_), [&](int cell) {
+            out.cellFaces_[filled[std::size_t(cell)]++] = std::uint32_t(f);
+        });
+    }
+    return out;
+}
+
+Rgb EmitterLights::light(const VoxelWorld& world, const TextureSet* textures, const Surface& s,
+                         const ShadeOptions& shading, int rays, int& budget) const {
+    const bool glossy = s.specularWeight > 0.0f && s.specularModel != LUXEL_VOXEL_SPECULAR_NONE;
+    // Nothing to reflect (clear glass, a mirror): no rays.
+    if (faces_.empty() || (!(s.diffuseAlbedo.maxComponent() > 0.0f) && !glossy)) return {};
+    if (budget < 1) return {};
+    const shared::vec3 p(float(s.point.x), float(s.point.y), float(s.point.z));
+    const shared::vec3 ng(float(s.faceNormal.x), float(s.faceNormal.y), float(s.faceNormal.z));
+    const int cell = shared::emitterCellIndex(p, {cells_.x, cells_.y, cells_.z});
+    // The strongest faces by unoccluded light, strongest first (ties: the earlier in the list).
+    int kept = 0;
+    std::uint32_t keptFace[LUXEL_EMITTER_MAX_FACES], keptRank[LUXEL_EMITTER_MAX_FACES];
+    float keptLight[LUXEL_EMITTER_MAX_FACES], keptFormFactor[LUXEL_EMITTER_MAX_FACES];
+    for (std::uint32_t i = cellOffsets_[cell]; i < cellOffsets_[cell + 1]; ++i) {
+        const EmitterFace& face = faces_[cellFaces_[i]];
+        const float formFactor = shared::nearEmitterFormFactor(p, ng, shaderFace(face));
+        const float e0 = formFactor * largest(face);
+        if (!(shared::emitterFade(e0, floor_) > 0.0f)) continue;
+        const std::uint32_t rank = shared::emitterRank(e0);
+        if (kept == LUXEL_EMITTER_MAX_FACES && !(rank > keptRank[kept - 1])) continue;
+        int j = std::min(kept, LUXEL_EMITTER_MAX_FACES - 1);
+        while (j > 0 && rank > keptRank[j - 1]) {
+            keptFace[j] = keptFace[j - 1], keptRank[j] = keptRank[j - 1];
+            keptLight[j] = keptLight[j - 1], keptFormFactor[j] = keptFormFactor[j - 1];
+            --j;
+        }
+        keptFace[j] = cellFaces_[i], keptRank[j] = rank;
+        keptLight[j] = e0, keptFormFactor[j] = formFactor;
+        kept = std::min(kept + 1, LUXEL_EMITTER_MAX_FACES);
+    }
+    const int n = std::clamp(rays, 1, LUXEL_EMITTER_MAX_RAYS);
+    kept = std::min(kept, budget / n);
+    budget -= kept * n;
+    const shared::vec3 sn(s.shadingNormal.x, s.shadingNormal.y, s.shadingNormal.z);
+    const shared::vec3 view(s.view.x, s.view.y, s.view.z);
+    const shared::vec3 f0(s.f0.x, s.f0.y, s.f0.z);
+    Rgb diffuse, specular;
+    for (int k = 0; k < kept; ++k) {
+        const shared::CascadeNearEmitter e = shaderFace(faces_[keptFace[k]]);
+        const float scale = keptFormFactor[k] * shared::emitterFade(keptLight[k], floor_);
+        const Rgb share = Rgb(e.r, e.g, e.b) * (scale / float(n));  // irradiance per ray
+        const FaceTarget target{{e.x, e.y, e.z}, kNormals[e.normal]};
+        for (int i = 0; i < n; ++i) {
+            const shared::vec3 d = normalize(shared::emitterRayTarget(e, i, n) - p);
+            const Rgb t = faceRayTransmittance(world, textures,
+                                               {s.point, {double(d.x), double(d.y), double(d.z)}},
+                                               shading, target);
+            if (!(t.maxComponent() > 0.0f)) continue;
+            diffuse += share * t;
+            if (glossy) {
+                const shared::vec3 f =
+                    shared::voxelSpecularBrdf(s.specularModel, sn, view, d, s.alpha, f0);
+                specular += share * t * Rgb(f.x, f.y, f.z);
+            }
+        }
+    }
+    return s.diffuseAlbedo * diffuse * float(1.0 / 3.14159265358979) + specular * s.specularWeight;
+}
+
+}  // namespace luxel::voxel
