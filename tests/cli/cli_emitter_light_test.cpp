@@ -1,0 +1,75 @@
+// `luxel render --no-emitter-light` and `--emitter-rays N`: the ray caster's light from emissive
+// voxels (docs/algorithms/voxel-surfaces.md) turned off or given more shadow rays from the
+// command line; the other solvers refuse both.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "luxel/core/image_io.h"
+#include "support/cli_fixture.h"
+
+namespace {
+
+using luxel::test::runLuxel;
+using luxel::test::RunResult;
+
+class CliEmitterLight : public luxel::test::CliFixture {
+  protected:
+    luxel::Image render(const std::string& name, const std::string& flags) {
+        const RunResult r = runLuxel("render " + kThinWalls + " --backend cpu --size 64x36 " +
+                                     flags + " --out " + path(name));
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        auto image = luxel::readExr(path(name));
+        EXPECT_TRUE(image.ok()) << name;
+        return image.ok() ? *image : luxel::Image{};
+    }
+
+    const std::string kThinWalls = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/thin-walls.json";
+};
+
+double meanOf(const luxel::Image& image) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < image.size(); ++i) sum += image.data()[i];
+    return image.size() ? sum / double(image.size()) : 0.0;
+}
+
+int pixelsThatDiffer(const luxel::Image& a, const luxel::Image& b) {
+    int different = 0;
+    for (std::size_t i = 0; i < a.size() && i < b.size(); ++i)
+        different += a.data()[i] != b.data()[i];
+    return different;
+}
+
+TEST_F(CliEmitterLight, TheLampLightsTheRoomUnlessTurnedOff) {
+    const luxel::Image lit = render("lit.exr", "");
+    const luxel::Image dark = render("dark.exr", "--no-emitter-light");
+    ASSERT_EQ(lit.size(), dark.size());
+    ASSERT_GT(lit.size(), 0u);
+    // The lamp's light only adds: every value at least the unlit one, and the room brighter.
+    int darker = 0;
+    for (std::size_t i = 0; i < lit.size(); ++i) darker += lit.data()[i] < dark.data()[i] - 1e-6f;
+    EXPECT_EQ(darker, 0);
+    EXPECT_GT(meanOf(lit), meanOf(dark) * 1.001);
+    EXPECT_GT(pixelsThatDiffer(lit, dark), int(lit.size() / 20));
+}
+
+TEST_F(CliEmitterLight, MoreShadowRaysChangeThePenumbraeNotTheLight) {
+    const luxel::Image four = render("four.exr", "");
+    const luxel::Image sixteen = render("sixteen.exr", "--emitter-rays 16");
+    ASSERT_EQ(four.size(), sixteen.size());
+    ASSERT_GT(four.size(), 0u);
+    EXPECT_GT(pixelsThatDiffer(four, sixteen), 0);
+    EXPECT_NEAR(meanOf(sixteen), meanOf(four), 0.02 * meanOf(four));
+}
+
+TEST_F(CliEmitterLight, BadCountsAndOtherSolversAreRefused) {
+    const std::string out = " --out " + path("x.exr");
+    expectError("render " + kThinWalls + " --emitter-rays 0" + out, "--emitter-rays");
+    expectError("render " + kThinWalls + " --emitter-rays 65" + out, "--emitter-rays");
+    expectError("render " + kThinWalls + " --solver path --no-emitter-light" + out,
+                "apply to the ray caster");
+    expectError("render " + kThinWalls + " --solver rc --emitter-rays 8" + out,
+                "apply to the ray caster");
+}
+
+}  // namespace
