@@ -72,4 +72,15 @@ TEST_F(CliEmitterLight, BadCountsAndOtherSolversAreRefused) {
                 "apply to the ray caster");
 }
 
+// `luxel info` counts what the light from emissive voxels builds: thin-walls' lamp is one voxel
+// on the floor, so five of its faces are open.
+TEST_F(CliEmitterLight, InfoCountsTheLampFacesAndTheirLists) {
+    const RunResult r = runLuxel("info " + kThinWalls);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("lamp light         5 open emissive faces, 4 shadow rays each"),
+              std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("lamp lists"), std::string::npos) << r.output;
+}
+
 }  // namespace

@@ -6,6 +6,7 @@
 #include "commands/render_memory.h"
 #include "luxel/core/memory.h"
 #include "luxel/post/upscale.h"
+#include "luxel/voxel/emitter_light.h"
 #include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/path_trace_gpu.h"
 #include "luxel/voxel/radiance_cascades.h"
@@ -40,12 +41,25 @@ int infoVoxelScene(const voxel::VoxelScene& loaded) {
                     : "running-average");
     std::printf("  shadows, textures  %s, %s\n", shading.shadows ? "on" : "off",
                 shading.textures ? "on" : "off");
+    // The ray caster's light from emissive voxels: the faces and the grid's lists a render
+    // builds (emitter_light.h; bounded by kMaxEmitterFaces and kMaxEmitterListEntries).
+    std::uint64_t lampBytes = 0;
+    if (shading.lighting == voxel::ShadeOptions::Lighting::Physical && shading.emitterLight) {
+        const voxel::EmitterLights lamps = voxel::EmitterLights::build(world, shading.materials);
+        lampBytes = lamps.faces().size() * sizeof(voxel::EmitterFace) +
+                    (lamps.cellOffsets().size() + lamps.cellFaces().size()) * sizeof(std::uint32_t);
+        std::printf("  lamp light         %d open emissive faces, %d shadow rays each, lists %s\n",
+                    lamps.faceCount(), shading.emitterRays, formatBytes(lampBytes).c_str());
+    } else {
+        std::printf("  lamp light         off\n");
+    }
     // The world is loaded already; a render then allocates its frames (render_memory.h).
     const std::uint64_t frame = frameBytes(camera.width(), camera.height(), scene->post, false);
     const std::uint64_t worldBytes = voxel::VoxelWorld::bytesFor(s, world.chunkSize());
-    std::printf("  memory (cpu)       %s (world %s, frames %s; available %s)\n",
-                formatBytes(worldBytes + frame).c_str(), formatBytes(worldBytes).c_str(),
-                formatBytes(frame).c_str(), formatBytes(availableMemoryBytes()).c_str());
+    std::printf("  memory (cpu)       %s (world %s, frames %s, lamp lists %s; available %s)\n",
+                formatBytes(worldBytes + frame + lampBytes).c_str(),
+                formatBytes(worldBytes).c_str(), formatBytes(frame).c_str(),
+                formatBytes(lampBytes).c_str(), formatBytes(availableMemoryBytes()).c_str());
     std::printf("  memory (gpu)       %s\n",
                 formatBytes(voxel::estimateVoxelGpuMemory(s, world.chunkSize(), &scene->textures,
                                                           camera.width(), camera.height()))
