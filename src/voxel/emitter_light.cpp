@@ -96,12 +96,15 @@ EmitterLights EmitterLights::build(const VoxelWorld& world, const MaterialTable&
     out.cells_ = {(size.x + side - 1) / side, (size.y + side - 1) / side,
                   (size.z + side - 1) / side};
     const std::size_t cellCount = std::size_t(out.cells_.x) * out.cells_.y * out.cells_.z;
-    // Count first; raise the floor until the lists fit their bound.
+    // Count first; raise the floor until the lists fit their bound. A count stops as soon as it
+    // is over the bound, so many bright faces (each reaching every cell) cost at most about
+    // kMaxEmitterListEntries steps per floor tried, not faces x cells.
     std::vector<std::uint32_t> counts;
     for (;;) {
         counts.assign(cellCount, 0u);
         std::int64_t total = 0;
         for (const EmitterFace& e : out.faces_) {
+            if (total > kMaxEmitterListEntries) break;
             const shared::vec3 c = shared::nearEmitterPoint(shaderFace(e), -1);
             forCellsInReach(out.cells_, {c.x, c.y, c.z}, reachOf(e, out.floor_), [&](int cell) {
                 ++counts[std::size_t(cell)];
