@@ -4,11 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 #include "gpu/shaders/shared/pixel_samples.h"
 #include "luxel/core/parallel.h"
-#include "luxel/voxel/emitter_light.h"
 
 namespace luxel::voxel {
 
@@ -40,26 +38,30 @@ Rgb shadePixel(const VoxelWorld& world, const Camera& camera, int px, int py,
     return n == 1 ? sum : sum * (1.0f / float(n));
 }
 
-Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& options,
-             const TextureSet* textures) {
-    ShadeOptions resolved = options;
-    std::optional<SunVisibility> visibility;
-    if (options.lighting == ShadeOptions::Lighting::Physical && !options.sunVisibility) {
+PreparedShading::PreparedShading(const VoxelWorld& world, const TextureSet* textures,
+                                 const ShadeOptions& options)
+    : options_(options) {
+    if (options.lighting != ShadeOptions::Lighting::Physical) return;
+    if (!options.sunVisibility) {
         SunLight sun{{options.sunDirection.x, options.sunDirection.y, options.sunDirection.z},
                      options.sunAngularRadius};
         Result<SunVisibility> built =
             SunVisibility::build(world, textures, sun, options.shadowSettings);
         if (built) {
-            visibility.emplace(std::move(*built));
-            resolved.sunVisibility = &*visibility;
+            visibility_.emplace(std::move(*built));
+            options_.sunVisibility = &*visibility_;
         }
     }
-    std::optional<EmitterLights> emitters;
-    if (options.lighting == ShadeOptions::Lighting::Physical && options.emitterLight &&
-        !options.emitterLights) {
-        emitters.emplace(EmitterLights::build(world, options.materials));
-        resolved.emitterLights = &*emitters;
+    if (options.emitterLight && !options.emitterLights) {
+        emitters_.emplace(EmitterLights::build(world, options.materials));
+        options_.emitterLights = &*emitters_;
     }
+}
+
+Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& options,
+             const TextureSet* textures) {
+    const PreparedShading prepared(world, textures, options);
+    const ShadeOptions& resolved = prepared.options();
     Image image(camera.width(), camera.height(), 3);
     parallelForRange(camera.height(), 1, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {

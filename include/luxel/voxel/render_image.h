@@ -2,9 +2,13 @@
 // structures and the emissive faces' lists built once per image when the options ask for them.
 #pragma once
 
+#include <optional>
+
 #include "luxel/core/image.h"
 #include "luxel/voxel/camera.h"
+#include "luxel/voxel/emitter_light.h"
 #include "luxel/voxel/shading.h"
+#include "luxel/voxel/shadows/sun_visibility.h"
 #include "luxel/voxel/texture_set.h"
 #include "luxel/voxel/voxel_world.h"
 
@@ -30,10 +34,27 @@ Ray pixelSampleRay(const Camera& camera, int px, int py, int k, int n);
 Rgb shadePixel(const VoxelWorld& world, const Camera& camera, int px, int py,
                const ShadeOptions& options, const TextureSet* textures = nullptr);
 
-// A camera.width() x camera.height() RGB image, rows in parallel. With Physical lighting and no
-// options.sunVisibility, builds the visibility structures options.shadowSettings ask for first,
-// and with options.emitterLight and no options.emitterLights the emissive faces' lists
-// (emitter_light.h).
+// `options` with what an image of them needs built once before its rays, where they ask for it
+// and do not give it: with Physical lighting and no options.sunVisibility, the visibility
+// structures options.shadowSettings ask for; with options.emitterLight and no
+// options.emitterLights, the emissive faces' lists (emitter_light.h). options() points into what
+// it holds, so it is neither copied nor moved.
+class PreparedShading {
+  public:
+    PreparedShading(const VoxelWorld& world, const TextureSet* textures,
+                    const ShadeOptions& options);
+    PreparedShading(const PreparedShading&) = delete;
+    PreparedShading& operator=(const PreparedShading&) = delete;
+
+    const ShadeOptions& options() const { return options_; }
+
+  private:
+    ShadeOptions options_;
+    std::optional<SunVisibility> visibility_;
+    std::optional<EmitterLights> emitters_;
+};
+
+// A camera.width() x camera.height() RGB image, rows in parallel, of PreparedShading's options.
 Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& options,
              const TextureSet* textures = nullptr);
 

@@ -2,11 +2,9 @@
 #include "luxel/post/voxel_frames.h"
 
 #include <cmath>
-#include <optional>
 
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/dda.h"
-#include "luxel/voxel/emitter_light.h"
 #include "luxel/voxel/render_image.h"
 
 namespace luxel::post {
@@ -33,25 +31,9 @@ PinholeView viewOf(const voxel::Camera& camera) {
 Image renderJittered(const voxel::VoxelWorld& world, const voxel::Camera& camera,
                      const voxel::ShadeOptions& options, const voxel::TextureSet* textures,
                      Vec2d jitter) {
-    voxel::ShadeOptions resolved = options;
-    std::optional<voxel::SunVisibility> visibility;
-    if (options.lighting == voxel::ShadeOptions::Lighting::Physical && !options.sunVisibility) {
-        voxel::SunLight sun{
-            {options.sunDirection.x, options.sunDirection.y, options.sunDirection.z},
-            options.sunAngularRadius};
-        auto built = voxel::SunVisibility::build(world, textures, sun, options.shadowSettings);
-        if (built) {
-            visibility.emplace(std::move(*built));
-            resolved.sunVisibility = &*visibility;
-        }
-    }
-    // The light from emissive voxels, as render() builds it.
-    std::optional<voxel::EmitterLights> emitters;
-    if (options.lighting == voxel::ShadeOptions::Lighting::Physical && options.emitterLight &&
-        !options.emitterLights) {
-        emitters.emplace(voxel::EmitterLights::build(world, options.materials));
-        resolved.emitterLights = &*emitters;
-    }
+    // The sun's visibility and the emitters' lists, as render() builds them.
+    const voxel::PreparedShading prepared(world, textures, options);
+    const voxel::ShadeOptions& resolved = prepared.options();
     const voxel::RayCone cone = voxel::primaryCone(camera);
     Image image(camera.width(), camera.height(), 3);
     parallelForRange(camera.height(), 1, [&](int begin, int end) {
