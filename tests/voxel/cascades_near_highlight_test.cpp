@@ -47,12 +47,7 @@ struct GlossyLampRoom {
         world.set(kLamp.x, kLamp.y, kLamp.z, Voxel{255, 255, 255, alphaForSlot(0)});
         world.refreshEmptySpace();
         EXPECT_TRUE(o.materials.setSlot(0, lampMaterial(Rgb(20.0f, 15.0f, 10.0f))).ok());
-        Material floor;
-        floor.name = "polished floor";
-        floor.albedo = Rgb(0.1f);
-        floor.roughness = 0.4f;
-        floor.ior = 1.5f;
-        EXPECT_TRUE(o.materials.setSlot(1, floor).ok());
+        EXPECT_TRUE(o.materials.setSlot(1, polishedFloor(0.1f)).ok());
     }
 };
 

@@ -276,12 +276,7 @@ TEST(CascadesPictureGpu, HighlightOfALampOnAGlossyFloorMatchesTheCpuPicture) {
     const Voxel glossyFloor{200, 200, 200, 3};
     const VoxelWorld world = lampRoom(&glossyFloor);
     ShadeOptions o = lampRoomLight();
-    Material floor;
-    floor.name = "polished floor";
-    floor.albedo = Rgb(0.2f);
-    floor.roughness = 0.4f;
-    floor.ior = 1.5f;
-    ASSERT_TRUE(o.materials.setSlot(2, floor).ok());
+    ASSERT_TRUE(o.materials.setSlot(2, polishedFloor(0.2f)).ok());
     const Camera low = *Camera::lookAt({6.5, 3.5, 1.5}, {6.5, 1.0, 5.5}, 60.0, 64, 48);
     const Camera across = *Camera::lookAt({11.5, 3.0, 9.5}, {7.0, 1.0, 6.5}, 60.0, 64, 48);
     std::vector<Pictures> drawn;

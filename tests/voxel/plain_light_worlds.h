@@ -69,6 +69,17 @@ inline Material metal(float roughness, Rgb albedo) {
     return m;
 }
 
+// A polished dielectric floor (ior 1.5, roughness 0.4: a GGX lobe narrow enough to show a lamp's
+// reflection) of diffuse albedo `albedo`.
+inline Material polishedFloor(float albedo) {
+    Material m;
+    m.name = "polished floor";
+    m.albedo = Rgb(albedo);
+    m.roughness = 0.4f;
+    m.ior = 1.5f;
+    return m;
+}
+
 // A glowing voxel's material: emission only, the default albedo.
 inline Material lampMaterial(Rgb emission) {
     Material m;
