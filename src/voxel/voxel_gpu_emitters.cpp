@@ -1,27 +1,22 @@
 // VoxelGpuRenderer's light from emissive voxels: the lists of EmitterLights (built on the CPU
 // from the world given to create, as render() builds them) uploaded to bindings 15..17
 // (shared/emitter_light.h), again only when the world or the materials changed.
-#include <cstring>
-
 #include "voxel/voxel_gpu_internal.h"
 
 namespace luxel::voxel {
 
 using voxel_gpu::bytesOf;
-
-namespace {
-
-bool sameMaterials(const std::vector<shared::VoxelMaterial>& a,
-                   const std::vector<shared::VoxelMaterial>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(a[0])) == 0;
-}
-
-}  // namespace
+using voxel_gpu::sameBytes;
 
 Status VoxelGpuRenderer::State::setEmitterArrays(const std::vector<std::uint32_t>& offsets,
                                                  const std::vector<std::uint32_t>& list,
                                                  const std::vector<EmitterFace>& faces) {
-    const std::span<const std::byte> data[3] = {bytesOf(offsets), bytesOf(list), bytesOf(faces)};
+    // A buffer holds at least one element: empty arrays go up as one-element stand-ins.
+    const std::vector<std::uint32_t> noOffsets{0u, 0u}, noList{0u};
+    const std::vector<EmitterFace> noFaces(1);
+    const std::span<const std::byte> data[3] = {bytesOf(offsets.empty() ? noOffsets : offsets),
+                                                bytesOf(list.empty() ? noList : list),
+                                                bytesOf(faces.empty() ? noFaces : faces)};
     emitters = {};
     emitterBytes = 0;
     for (std::size_t i = 0; i < 3; ++i) {
@@ -37,7 +32,7 @@ Status VoxelGpuRenderer::State::setEmitterArrays(const std::vector<std::uint32_t
 Status VoxelGpuRenderer::State::setEmitterPlaceholders() {
     emitterKey.reset();
     emittersEmpty = true;
-    return setEmitterArrays({0u, 0u}, {0u}, std::vector<EmitterFace>(1));
+    return setEmitterArrays({}, {}, {});
 }
 
 Status VoxelGpuRenderer::State::prepareEmitters(
@@ -48,7 +43,7 @@ Status VoxelGpuRenderer::State::prepareEmitters(
     voxel_gpu::EmitterKey key{options.emitterLights, generation, gpuMaterials};
     if (emitterKey && emitterKey->given == key.given &&
         (key.given || (emitterKey->generation == key.generation &&
-                       sameMaterials(emitterKey->materials, key.materials)))) {
+                       sameBytes(emitterKey->materials, key.materials)))) {
         return Ok{};
     }
     EmitterLights built;
@@ -59,13 +54,10 @@ Status VoxelGpuRenderer::State::prepareEmitters(
     }
     emittersEmpty = lights->empty();
     emitterFloor = lights->floor();
-    std::vector<std::uint32_t> offsets = lights->cellOffsets(), list = lights->cellFaces();
-    std::vector<EmitterFace> faces = lights->faces();
-    // Empty vectors still need a buffer of one element.
-    if (offsets.empty()) offsets = {0u, 0u};
-    if (list.empty()) list = {0u};
-    if (faces.empty()) faces.resize(1);
-    if (Status st = setEmitterArrays(offsets, list, faces); !st) return st;
+    if (Status st = setEmitterArrays(lights->cellOffsets(), lights->cellFaces(), lights->faces());
+        !st) {
+        return st;
+    }
     emitterKey = std::move(key);
     return Ok{};
 }

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <span>
@@ -28,6 +29,12 @@ std::uint64_t chunkTotal(Int3 chunks);
 template <typename T>
 std::span<const std::byte> bytesOf(const std::vector<T>& v) {
     return std::as_bytes(std::span(v));
+}
+
+// Whether two arrays of plain structs hold the same bytes.
+template <typename T>
+bool sameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
 constexpr std::uint64_t kMaterialBytes = LUXEL_VOXEL_MATERIALS * sizeof(shared::VoxelMaterial);

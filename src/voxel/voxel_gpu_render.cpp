@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <cstring>
 #include <numbers>
 #include <string>
 
@@ -134,8 +133,7 @@ Status VoxelGpuRenderer::prepareRender(const Camera& camera, const ShadeOptions&
             static_cast<std::uint32_t>(std::clamp(options.emitterRays, 1, kMaxEmitterRays));
         p.emitterFloor = s.emitterFloor;
     }
-    if (m.size() != s.materialsHeld.size() ||
-        std::memcmp(m.data(), s.materialsHeld.data(), m.size() * sizeof(m[0])) != 0) {
+    if (!voxel_gpu::sameBytes(m, s.materialsHeld)) {
         s.materialsHeld.clear();
         if (Status st = s.send(*s.materials, bytesOf(m), s.sent.materials); !st) return st.error();
         s.materialsHeld = std::move(m);
