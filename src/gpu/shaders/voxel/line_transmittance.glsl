@@ -18,6 +18,15 @@ float maxComponent(vec3 c) {
     return max(c.x, max(c.y, c.z));
 }
 
+// VoxelWorld::solid: a voxel of the world with nonzero alpha (outside the world: air).
+bool lineSolidAt(ivec3 c) {
+    if (any(lessThan(c, ivec3(0))) ||
+        any(greaterThanEqual(c, ivec3(params.sizeX, params.sizeY, params.sizeZ)))) {
+        return false;
+    }
+    return voxelSolidAt(0u, c);
+}
+
 // The transmission lobe weight of material m entered through a face with outward `normal`
 // along unit `direction` (mediumEntryTransmission, solver_sun.cpp).
 float entryTransmission(VoxelMaterial m, ivec3 normal, vec3 direction) {
@@ -31,14 +40,16 @@ float exitTransmission(VoxelMaterial m, vec3 direction, ivec3 outward) {
     return 1.0 - lineFresnel(cosI, m.ior);
 }
 
-// Through the run of transmissive voxels entered at `hit` (throughMedia, solver_sun.cpp).
-vec3 throughMedia(Hit hit, vec3 direction, inout vec3 origin, inout int media) {
+// Through the run of transmissive voxels entered at `hit` (throughMedia, solver_sun.cpp; with
+// `inside`, the ray starts in hit.voxel at hit.point and crosses no entry face).
+vec3 throughMedia(Hit hit, vec3 direction, inout vec3 origin, inout int media, bool inside) {
     vec3 t = vec3(1.0);
     ivec3 cell = hit.voxel, normal = hit.normal;
     vec3 point = hit.point;
     for (;;) {
         const VoxelMaterial m = materials[materialIndex(voxelValue(cell))];
-        t = t * entryTransmission(m, normal, direction);
+        if (!inside) t = t * entryTransmission(m, normal, direction);
+        inside = false;
         ++media;
         if (!(maxComponent(t) > LUXEL_SOLVER_DARK) || media > LUXEL_SOLVER_SUN_MEDIA) {
             return vec3(0.0);
@@ -76,7 +87,11 @@ vec3 lineTransmittance(vec3 origin, vec3 direction, bool toFace, ivec3 faceVoxel
         if (s.hit.normal == ivec3(0)) return vec3(0.0);
         if (toFace && s.hit.voxel == faceVoxel && s.hit.normal == faceNormal) return t;
         if (!media) return vec3(0.0);
-        t = t * throughMedia(s.hit, direction, o, passed);
+        // Starting on the face of an opaque voxel under glass or water, the ray is inside the
+        // medium at once: no interface with the air to enter through (as lineTransmittance).
+        const ivec3 behind = s.hit.voxel + s.hit.normal;
+        const bool inside = passed == 0 && !(s.hit.t > 1e-9) && lineSolidAt(behind);
+        t = t * throughMedia(s.hit, direction, o, passed, inside);
         if (!(maxComponent(t) > LUXEL_SOLVER_DARK)) return vec3(0.0);
     }
     return vec3(0.0);
