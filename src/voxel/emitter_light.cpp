@@ -4,8 +4,11 @@
 #include "luxel/voxel/emitter_light.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <tuple>
+#include <utility>
 
 #include "gpu/shaders/shared/emitter_light.h"
 #include "gpu/shaders/shared/voxel_shading.h"
@@ -24,24 +27,105 @@ static_assert(kMaxEmitterRays == LUXEL_EMITTER_MAX_RAYS && kEmitterFloor == LUXE
 static_assert(sizeof(EmitterFace) == sizeof(shared::CascadeNearEmitter) &&
               offsetof(EmitterFace, normal) == offsetof(shared::CascadeNearEmitter, normal) &&
               offsetof(EmitterFace, r) == offsetof(shared::CascadeNearEmitter, r) &&
-              offsetof(EmitterFace, pad0) == offsetof(shared::CascadeNearEmitter, pad0));
+              offsetof(EmitterFace, extent) == offsetof(shared::CascadeNearEmitter, extent));
 
 shared::CascadeNearEmitter shaderFace(const EmitterFace& f) {
-    return {f.x, f.y, f.z, f.normal, f.r, f.g, f.b, f.pad0};
+    return {f.x, f.y, f.z, f.normal, f.r, f.g, f.b, f.extent};
 }
 
 constexpr Int3 kNormals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-// Half the diagonal of a face: no point of it is nearer than its centre's distance less this.
-constexpr double kHalfDiagonal = 0.70711;
 
 float largest(const EmitterFace& e) {
     return std::max(e.r, std::max(e.g, e.b));
 }
 
-// The reach of a face: past this distance from its centre its irradiance is below `floor`
-// (a unit square seen from d away subtends at most 1/d^2 of projected solid angle).
+int sizeA(const EmitterFace& e) {
+    return int(e.extent & 0xffffu) + 1;
+}
+int sizeB(const EmitterFace& e) {
+    return int(e.extent >> 16u) + 1;
+}
+
+// The centre of the emitter's rectangle.
+Vec3d centreOf(const EmitterFace& e) {
+    const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
+    Vec3d c{double(e.x), double(e.y), double(e.z)};
+    if ((e.normal & 1u) == 0u) c[axis] += 1.0;
+    c[a] += 0.5 * sizeA(e);
+    c[b] += 0.5 * sizeB(e);
+    return c;
+}
+
+// The reach of an emitter: past this distance from its centre its irradiance is below `floor`
+// (a rectangle of area A seen from d away subtends at most A/d^2 of projected solid angle, and
+// no point of it is nearer than the centre's distance less half its diagonal).
 double reachOf(const EmitterFace& e, double floor) {
-    return std::sqrt(double(largest(e)) / floor) + kHalfDiagonal;
+    const double a = sizeA(e), b = sizeB(e);
+    return std::sqrt(double(largest(e)) * a * b / floor) + 0.5 * std::sqrt(a * a + b * b) + 1e-3;
+}
+
+// The open faces of emissive voxels merged into rectangles: faces of one normal, plane and
+// radiance (bit for bit) grown greedily, first along a then along b, up to
+// LUXEL_EMITTER_RECT_SIDE faces a side. Each rectangle's light is exact (its contour integral)
+// whatever its size, so a lamp panel lights a point with all of its faces instead of its 16
+// strongest; the sides are bounded so its shadow rays still resolve penumbrae.
+std::vector<EmitterFace> mergedRectangles(std::vector<EmitterFace> faces) {
+    const auto key = [](const EmitterFace& f) {
+        const int axis = int(f.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
+        const Int3 v{f.x, f.y, f.z};
+        return std::tuple(f.normal, v[axis], std::bit_cast<std::uint32_t>(f.r),
+                          std::bit_cast<std::uint32_t>(f.g), std::bit_cast<std::uint32_t>(f.b),
+                          v[b], v[a]);
+    };
+    std::sort(faces.begin(), faces.end(),
+              [&](const EmitterFace& l, const EmitterFace& r) { return key(l) < key(r); });
+    std::vector<EmitterFace> out;
+    std::vector<char> used(faces.size(), 0);
+    std::size_t groupEnd = 0;
+    for (std::size_t begin = 0; begin < faces.size(); begin = groupEnd) {
+        const auto group = [&](std::size_t i) {
+            const auto k = key(faces[i]);
+            return std::tuple(std::get<0>(k), std::get<1>(k), std::get<2>(k), std::get<3>(k),
+                              std::get<4>(k));
+        };
+        groupEnd = begin + 1;
+        while (groupEnd < faces.size() && group(groupEnd) == group(begin)) ++groupEnd;
+        const int axis = int(faces[begin].normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
+        // The face at (ca, cb) of this group, or -1.
+        const auto find = [&](int ca, int cb) -> std::ptrdiff_t {
+            const auto first = faces.begin() + std::ptrdiff_t(begin);
+            const auto last = faces.begin() + std::ptrdiff_t(groupEnd);
+            const auto it = std::lower_bound(first, last, std::pair(cb, ca),
+                                             [&](const EmitterFace& f, std::pair<int, int> c) {
+                                                 const Int3 v{f.x, f.y, f.z};
+                                                 return std::pair(v[b], v[a]) < c;
+                                             });
+            if (it == last) return -1;
+            const Int3 v{it->x, it->y, it->z};
+            return v[a] == ca && v[b] == cb ? it - faces.begin() : -1;
+        };
+        const auto freeAt = [&](int ca, int cb) {
+            const std::ptrdiff_t i = find(ca, cb);
+            return i >= 0 && !used[std::size_t(i)];
+        };
+        for (std::size_t i = begin; i < groupEnd; ++i) {
+            if (used[i]) continue;
+            const Int3 v{faces[i].x, faces[i].y, faces[i].z};
+            int wa = 1, wb = 1;
+            while (wa < LUXEL_EMITTER_RECT_SIDE && freeAt(v[a] + wa, v[b])) ++wa;
+            for (bool grow = true; grow && wb < LUXEL_EMITTER_RECT_SIDE;) {
+                for (int k = 0; k < wa && grow; ++k) grow = freeAt(v[a] + k, v[b] + wb);
+                if (grow) ++wb;
+            }
+            for (int j = 0; j < wb; ++j) {
+                for (int k = 0; k < wa; ++k) used[std::size_t(find(v[a] + k, v[b] + j))] = 1;
+            }
+            EmitterFace rect = faces[i];
+            rect.extent = std::uint32_t(wa - 1) | (std::uint32_t(wb - 1) << 16u);
+            out.push_back(rect);
+        }
+    }
+    return out;
 }
 
 // Distance from p to the axis-aligned box [lo, hi].
@@ -91,6 +175,8 @@ EmitterLights EmitterLights::build(const VoxelWorld& world, const MaterialTable&
             out.faces_.push_back({v.x, v.y, v.z, std::uint32_t(k), l.r, l.g, l.b, 0u});
         }
     }
+    out.openFaces_ = int(out.faces_.size());
+    out.faces_ = mergedRectangles(std::move(out.faces_));
     const Int3 size = world.size();
     const int side = LUXEL_EMITTER_CELL;
     out.cells_ = {(size.x + side - 1) / side, (size.y + side - 1) / side,
@@ -105,8 +191,7 @@ EmitterLights EmitterLights::build(const VoxelWorld& world, const MaterialTable&
         std::int64_t total = 0;
         for (const EmitterFace& e : out.faces_) {
             if (total > kMaxEmitterListEntries) break;
-            const shared::vec3 c = shared::nearEmitterPoint(shaderFace(e), -1);
-            forCellsInReach(out.cells_, {c.x, c.y, c.z}, reachOf(e, out.floor_), [&](int cell) {
+            forCellsInReach(out.cells_, centreOf(e), reachOf(e, out.floor_), [&](int cell) {
                 ++counts[std::size_t(cell)];
                 ++total;
             });
@@ -122,8 +207,7 @@ EmitterLights EmitterLights::build(const VoxelWorld& world, const MaterialTable&
     std::vector<std::uint32_t> filled(out.cellOffsets_.begin(), out.cellOffsets_.end() - 1);
     for (std::size_t f = 0; f < out.faces_.size(); ++f) {
         const EmitterFace& e = out.faces_[f];
-        const shared::vec3 c = shared::nearEmitterPoint(shaderFace(e), -1);
-        forCellsInReach(out.cells_, {c.x, c.y, c.z}, reachOf(e, out.floor_), [&](int cell) {
+        forCellsInReach(out.cells_, centreOf(e), reachOf(e, out.floor_), [&](int cell) {
             out.cellFaces_[filled[std::size_t(cell)]++] = std::uint32_t(f);
         });
     }
@@ -139,14 +223,15 @@ Rgb EmitterLights::light(const VoxelWorld& world, const TextureSet* textures, co
     const shared::vec3 p(float(s.point.x), float(s.point.y), float(s.point.z));
     const shared::vec3 ng(float(s.faceNormal.x), float(s.faceNormal.y), float(s.faceNormal.z));
     const int cell = shared::emitterCellIndex(p, {cells_.x, cells_.y, cells_.z});
-    // The strongest faces by unoccluded light, strongest first (ties: the earlier in the list).
+    // The strongest emitters by unoccluded light, strongest first (ties: the earlier in the list).
     int kept = 0;
     std::uint32_t keptFace[LUXEL_EMITTER_MAX_FACES], keptRank[LUXEL_EMITTER_MAX_FACES];
     float keptLight[LUXEL_EMITTER_MAX_FACES], keptFormFactor[LUXEL_EMITTER_MAX_FACES];
     for (std::uint32_t i = cellOffsets_[cell]; i < cellOffsets_[cell + 1]; ++i) {
-        const EmitterFace& face = faces_[cellFaces_[i]];
-        const float formFactor = shared::nearEmitterFormFactor(p, ng, shaderFace(face));
-        const float e0 = formFactor * largest(face);
+        const shared::CascadeNearEmitter face = shaderFace(faces_[cellFaces_[i]]);
+        const shared::EmitterSpan span = shared::emitterSpanInFront(p, ng, face);
+        const float formFactor = shared::emitterFormFactor(p, ng, face, span);
+        const float e0 = formFactor * std::max(face.r, std::max(face.g, face.b));
         if (!(shared::emitterFade(e0, floor_) > 0.0f)) continue;
         const std::uint32_t rank = shared::emitterRank(e0);
         if (kept == LUXEL_EMITTER_MAX_FACES && !(rank > keptRank[kept - 1])) continue;
@@ -161,19 +246,21 @@ Rgb EmitterLights::light(const VoxelWorld& world, const TextureSet* textures, co
         kept = std::min(kept + 1, LUXEL_EMITTER_MAX_FACES);
     }
     const int n = std::clamp(rays, 1, LUXEL_EMITTER_MAX_RAYS);
-    kept = std::min(kept, budget / n);
-    budget -= kept * n;
     const shared::vec3 sn(s.shadingNormal.x, s.shadingNormal.y, s.shadingNormal.z);
     const shared::vec3 view(s.view.x, s.view.y, s.view.z);
     const shared::vec3 f0(s.f0.x, s.f0.y, s.f0.z);
     Rgb diffuse, specular;
     for (int k = 0; k < kept; ++k) {
         const shared::CascadeNearEmitter e = shaderFace(faces_[keptFace[k]]);
+        const shared::EmitterSpan span = shared::emitterSpanInFront(p, ng, e);
+        // Strongest first, each emitter its rays while the path's budget lasts.
+        if (n > budget) break;
+        budget -= n;
         const float scale = keptFormFactor[k] * shared::emitterFade(keptLight[k], floor_);
         const Rgb share = Rgb(e.r, e.g, e.b) * (scale / float(n));  // irradiance per ray
-        const FaceTarget target{{e.x, e.y, e.z}, kNormals[e.normal]};
+        const FaceTarget target{{e.x, e.y, e.z}, kNormals[e.normal], e.extent};
         for (int i = 0; i < n; ++i) {
-            const shared::vec3 d = normalize(shared::emitterRayTarget(e, i, n) - p);
+            const shared::vec3 d = normalize(shared::emitterRayTarget(e, span, i, n) - p);
             const Rgb t = faceRayTransmittance(world, textures,
                                                {s.point, {double(d.x), double(d.y), double(d.z)}},
                                                shading, target);

@@ -73,6 +73,15 @@ Rgb throughMedia(const VoxelWorld& world, const Hit& hit, Vec3d direction,
 
 namespace {
 
+// Whether `voxel` is one of the target's faces (its rectangle, on the target's plane).
+bool targetHolds(const FaceTarget& target, Int3 voxel) {
+    const int axis = target.normal.x != 0 ? 0 : (target.normal.y != 0 ? 1 : 2);
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    const int da = voxel[a] - target.voxel[a], db = voxel[b] - target.voxel[b];
+    return voxel[axis] == target.voxel[axis] && da >= 0 && db >= 0 &&
+           da <= int(target.extent & 0xffffu) && db <= int(target.extent >> 16u);
+}
+
 // Along `ray` until it leaves the world (target null: the sky's share) or meets the face
 // (target->voxel, target->normal) (that face's share; 0 if it leaves the world or meets another
 // opaque face first).
@@ -91,7 +100,7 @@ Rgb lineTransmittance(const VoxelWorld& world, const TextureSet* textures, const
             castToSurface(world, textures, {origin, ray.direction}, shading.stepCap);
         if (!s.hit.hit) return target ? Rgb{} : t;  // the sky (or past the step cap)
         if (s.hit.normal == Int3{}) return {};      // started inside a solid voxel
-        if (target && s.hit.voxel == target->voxel && s.hit.normal == target->normal) return t;
+        if (target && s.hit.normal == target->normal && targetHolds(*target, s.hit.voxel)) return t;
         if (!media) return {};
         // Starting on the face of an opaque voxel under glass or water, the ray is inside the
         // medium at once: no interface with the air to enter through.

@@ -46,9 +46,12 @@ Rgb mediumAbsorption(const Material& m, double distance);
 Rgb sunRayTransmittance(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
                         const ShadeOptions& shading);
 
-// A face a straight line aims at: its voxel and outward normal.
+// A face a straight line aims at: its voxel and outward normal, or with `extent` (the
+// CascadeNearEmitter encoding: size less one along a = (axis + 1) % 3 in the low 16 bits, along
+// b = (axis + 2) % 3 in the high 16) the rectangle of faces of that normal from that voxel.
 struct FaceTarget {
     Int3 voxel, normal;
+    std::uint32_t extent = 0;
 };
 
 // What of the light leaving the face `target` along -ray.direction reaches ray.origin, as

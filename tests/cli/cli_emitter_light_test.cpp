@@ -77,7 +77,8 @@ TEST_F(CliEmitterLight, BadCountsAndOtherSolversAreRefused) {
 TEST_F(CliEmitterLight, InfoCountsTheLampFacesAndTheirLists) {
     const RunResult r = runLuxel("info " + kThinWalls);
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_NE(r.output.find("lamp light         5 open emissive faces, 4 shadow rays each"),
+    EXPECT_NE(r.output.find(
+                  "lamp light         5 open emissive faces in 5 rectangles, 4 shadow rays each"),
               std::string::npos)
         << r.output;
     EXPECT_NE(r.output.find("lamp lists"), std::string::npos) << r.output;

@@ -67,5 +67,49 @@ TEST(EmitterLightGpu, MatchesTheCpuOnShippedScenes) {
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
 }
 
+// A room lit by a 14 x 10 lamp panel in its ceiling (merged into rectangles of up to 4 x 4
+// faces, more than the 16 emitters a point keeps before merging) over a pillar that casts a soft
+// shadow: the rectangles' light, their clipping at the walls under the panel's plane and the
+// shadow rays aimed over each rectangle, the same on both backends.
+TEST(EmitterLightGpu, MatchesTheCpuUnderALampPanel) {
+    LUXEL_REQUIRE_GPU(context);
+    auto scene = parseVoxelScene(R"({
+        "type": "voxel",
+        "materials": [{"name": "lamp", "emission": [2.0, 1.8, 1.5]}],
+        "world": {"source": "empty", "size": [32, 12, 32], "chunk": 8, "shapes": [
+            {"type": "box", "min": [0, 0, 0], "max": [32, 1, 32], "color": [180, 180, 180]},
+            {"type": "box", "min": [4, 1, 4], "max": [5, 10, 28], "color": [200, 190, 170]},
+            {"type": "box", "min": [27, 1, 4], "max": [28, 10, 28], "color": [200, 190, 170]},
+            {"type": "box", "min": [4, 1, 27], "max": [28, 10, 28], "color": [200, 190, 170]},
+            {"type": "box", "min": [4, 10, 4], "max": [28, 11, 28], "color": [200, 190, 170]},
+            {"type": "box", "min": [9, 9, 12], "max": [23, 10, 22], "material": "lamp"},
+            {"type": "box", "min": [14, 1, 15], "max": [17, 5, 18], "color": [120, 60, 50]}]},
+        "camera": {"position": [16, 6, 2], "look_at": [16, 2, 20], "fov": 75, "size": [128, 72]},
+        "sky": {"top": [0, 0, 0], "horizon": [0, 0, 0]},
+        "render": {"lighting": "physical", "shadows": true, "textures": false,
+                   "sky_ambient": 0}})",
+                                 "panel.json");
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    const EmitterLights lights = EmitterLights::build(scene->world, scene->shading.materials);
+    EXPECT_EQ(lights.faceCount(), 14 * 10 + 2 * 14 + 2 * 10);  // its top touches the ceiling
+    // Below, 4 x 3 rectangles (sides of 4, 4, 4, 2 along x and 4, 4, 2 along z); the sides in runs
+    // of up to 4: 3 on each x side, 4 on each z side.
+    EXPECT_EQ(lights.emitterCount(), 12 + 2 * 3 + 2 * 4);
+    auto gpu = VoxelGpuRenderer::create(*context, scene->world, &scene->textures);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    for (const int rays : {4, 9}) {
+        ShadeOptions o = scene->shading;
+        o.emitterRays = rays;
+        auto image = gpu->render(scene->camera, o);
+        ASSERT_TRUE(image.ok()) << image.error().message();
+        const Parity p =
+            compareDisplay(*image, render(scene->world, scene->camera, o, &scene->textures));
+        printParity("lamp panel, " + std::to_string(rays) + " rays", p);
+        EXPECT_LT(p.differingPixels, 0.01);
+        EXPECT_LT(p.meanAbs, 0.1);
+    }
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
 }  // namespace
 }  // namespace luxel::voxel

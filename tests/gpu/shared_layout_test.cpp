@@ -222,13 +222,13 @@ TEST(GpuSharedLayout, CascadesPicturePushConstantsAndFaceSlots) {
         "cascades_picture", 21,
         {sizeof(E),
          {LUXEL_MEMBER(E, x), LUXEL_MEMBER(E, y), LUXEL_MEMBER(E, z), LUXEL_MEMBER(E, normal),
-          LUXEL_MEMBER(E, r), LUXEL_MEMBER(E, g), LUXEL_MEMBER(E, b), LUXEL_MEMBER(E, pad0)}});
-    // The ray caster's emitting faces (shared/emitter_light.h) are the same struct.
+          LUXEL_MEMBER(E, r), LUXEL_MEMBER(E, g), LUXEL_MEMBER(E, b), LUXEL_MEMBER(E, extent)}});
+    // The ray caster's emitters (shared/emitter_light.h) are the same struct.
     expectBuffer(
         "voxel_render", 17,
         {sizeof(E),
          {LUXEL_MEMBER(E, x), LUXEL_MEMBER(E, y), LUXEL_MEMBER(E, z), LUXEL_MEMBER(E, normal),
-          LUXEL_MEMBER(E, r), LUXEL_MEMBER(E, g), LUXEL_MEMBER(E, b), LUXEL_MEMBER(E, pad0)}});
+          LUXEL_MEMBER(E, r), LUXEL_MEMBER(E, g), LUXEL_MEMBER(E, b), LUXEL_MEMBER(E, extent)}});
 }
 
 TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {

@@ -57,22 +57,24 @@ VoxelWorld floorWorld() {
     return world;
 }
 
-// The irradiance at `p` on an upward face from the unit cube `lamp` of radiance 1: the form
-// factor of each of its faces that face p, by the midpoint rule on an n x n grid (no occluders).
-double quadratureIrradiance(Vec3d p, Int3 lamp, int n = 400) {
+// The irradiance at `p` on an upward face from the box of emissive voxels [lo, hi) of radiance 1:
+// the form factor of each of its outer faces that face p, by the midpoint rule on an n x n grid
+// per unit of its side (no occluders).
+double quadratureIrradiance(Vec3d p, Int3 lo, Int3 hi, int n) {
     double sum = 0;
     for (int axis = 0; axis < 3; ++axis) {
         for (int side = 0; side < 2; ++side) {
-            const double plane = lamp[axis] + side;
+            const double plane = side == 1 ? hi[axis] : lo[axis];
             const double outward = side == 1 ? 1.0 : -1.0;
             if (!((p[axis] - plane) * outward > 0.0)) continue;  // p behind this face
             const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-            for (int i = 0; i < n; ++i) {
-                for (int j = 0; j < n; ++j) {
+            const int na = n * (hi[a] - lo[a]), nb = n * (hi[b] - lo[b]);
+            for (int i = 0; i < na; ++i) {
+                for (int j = 0; j < nb; ++j) {
                     Vec3d q;
                     q[axis] = plane;
-                    q[a] = lamp[a] + (i + 0.5) / n;
-                    q[b] = lamp[b] + (j + 0.5) / n;
+                    q[a] = lo[a] + (i + 0.5) / n;
+                    q[b] = lo[b] + (j + 0.5) / n;
                     const Vec3d d = q - p;
                     const double r2 = dot(d, d);
                     const double cosReceiver = d.y / std::sqrt(r2);
@@ -84,6 +86,11 @@ double quadratureIrradiance(Vec3d p, Int3 lamp, int n = 400) {
         }
     }
     return sum;  // the projected solid angle: E = L * sum
+}
+
+// The same for the unit cube `lamp`.
+double quadratureIrradiance(Vec3d p, Int3 lamp, int n = 400) {
+    return quadratureIrradiance(p, lamp, {lamp.x + 1, lamp.y + 1, lamp.z + 1}, n);
 }
 
 // The irradiance the ray caster takes at a point of the floor: its light with albedo pi.
@@ -148,30 +155,95 @@ TEST(EmitterLight, TheRayCasterShowsTheFloorLitByTheLamp) {
     EXPECT_NEAR(shadeRay(world, {{12.5, 10, 12.5}, {0, -1, 0}}, o).g, 2.0f, 1e-6f);
 }
 
-TEST(EmitterLight, APathSpendsItsBudgetOfFaces) {
+TEST(EmitterLight, APathSpendsItsBudgetOfRays) {
     VoxelWorld world = floorWorld();
     for (int x = 10; x < 13; ++x) {
         for (int z = 10; z < 13; ++z) world.set(x, 3, z, kLamp);  // a 3 x 3 lamp panel
     }
     const ShadeOptions o = darkRoom(Rgb(1.0f));
     const EmitterLights lights = EmitterLights::build(world, o.materials);
+    // 9 faces below, 9 above, 3 on each side: one rectangle each.
+    EXPECT_EQ(lights.faceCount(), 30);
+    EXPECT_EQ(lights.emitterCount(), 6);
     EmitterLights::Surface s;
     s.point = {14.5, 1, 11.5};
     s.faceNormal = {0, 1, 0};
     s.shadingNormal = {0, 1, 0};
     s.view = {0, 1, 0};
     s.diffuseAlbedo = Rgb(1.0f);
-    int full = kEmitterPathRays, two = 8, none = 3;
+    // Two rectangles face the point, the bottom (9 faces) the stronger and the +x side (3):
+    // 2 x 4 rays spent; the bottom alone when only 6 rays are left, nothing with 3 (fewer than
+    // an emitter takes).
+    int full = kEmitterPathRays, six = 6, none = 3;
     const Rgb all = lights.light(world, nullptr, s, o, 4, full);
-    const Rgb strongest = lights.light(world, nullptr, s, o, 4, two);
-    // The 9 bottom faces and 3 side faces face the point: 12 x 4 rays spent; 2 faces when only
-    // 8 rays are left, none with 3 (fewer than a face takes).
-    EXPECT_EQ(full, kEmitterPathRays - 48);
-    EXPECT_EQ(two, 0);
-    EXPECT_GT(strongest.g, 0.0f);
-    EXPECT_LT(strongest.g, all.g);
+    const Rgb bottom = lights.light(world, nullptr, s, o, 4, six);
+    EXPECT_EQ(full, kEmitterPathRays - 8);
+    EXPECT_EQ(six, 2);
+    EXPECT_GT(bottom.g, 0.5f * all.g);
+    EXPECT_LT(bottom.g, all.g);
     EXPECT_EQ(lights.light(world, nullptr, s, o, 4, none).maxComponent(), 0.0f);
     EXPECT_EQ(none, 3);
+}
+
+// A lamp panel larger than the 16 emitters a point keeps: its coplanar faces are merged into
+// rectangles, each lit exactly, so the floor takes the light of the whole panel.
+TEST(EmitterLight, ALargePanelLightsWithAllItsFaces) {
+    VoxelWorld world = floorWorld();
+    const Int3 lo{4, 6, 6}, hi{20, 7, 18};  // 16 x 1 x 12 voxels, its bottom 6 above the floor
+    for (int x = lo.x; x < hi.x; ++x) {
+        for (int z = lo.z; z < hi.z; ++z) world.set(x, lo.y, z, kLamp);
+    }
+    const ShadeOptions o = darkRoom(Rgb(1.0f));
+    const EmitterLights lights = EmitterLights::build(world, o.materials);
+    // 192 faces below, 192 above, 2 x 16 + 2 x 12 on the sides.
+    EXPECT_EQ(lights.faceCount(), 440);
+    // 4 x 3 rectangles of 4 x 4 below and above, sides in runs of 4.
+    EXPECT_EQ(lights.emitterCount(), 12 + 12 + 4 + 4 + 3 + 3);
+    for (const Vec3d p :
+         {Vec3d{12.0, 1, 12.0}, Vec3d{5.5, 1, 7.25}, Vec3d{2.0, 1, 12.0}, Vec3d{21.5, 1, 12.0}}) {
+        const double truth = quadratureIrradiance(p, lo, hi, 64);
+        const Rgb e = floorIrradiance(lights, world, o, p);
+        std::printf("  (%.2f, %.2f): E/L %.6f, quadrature %.6f, relative %.2e\n", p.x, p.z, e.g,
+                    truth, std::abs(e.g - truth) / truth);
+        // Every rectangle the point sees is kept (at most 16 face it) and none fades here.
+        EXPECT_NEAR(e.g, truth, 2e-4 * truth);
+    }
+}
+
+// A receiving face across the plane of a panel (a wall under it) takes only the part of each
+// rectangle in front of it: the rest lies behind the wall.
+TEST(EmitterLight, AWallUnderAPanelTakesOnlyThePartInFront) {
+    VoxelWorld world = floorWorld();
+    for (int x = 4; x < 12; ++x) {
+        for (int z = 8; z < 12; ++z) world.set(x, 8, z, kLamp);  // 8 x 4 panel at y = 8
+    }
+    for (int y = 1; y < 8; ++y) {
+        for (int z = 0; z < 24; ++z) world.set(6, y, z, kWhite);  // a wall under it at x = 6
+    }
+    const ShadeOptions o = darkRoom(Rgb(1.0f));
+    const EmitterLights lights = EmitterLights::build(world, o.materials);
+    EmitterLights::Surface s;
+    s.point = {7.0, 4.5, 10.0};  // on the wall's +x face
+    s.faceNormal = {1, 0, 0};
+    s.shadingNormal = {1, 0, 0};
+    s.view = {1, 0, 0};
+    s.diffuseAlbedo = Rgb(float(kPi));
+    int budget = kEmitterPathRays;
+    const double e = lights.light(world, nullptr, s, o, 4, budget).g;
+    // The truth: the part of the panel's bottom with x > 7 (x in [7, 12)), seen from p with
+    // normal +x, by the midpoint rule.
+    double truth = 0;
+    const int n = 200;
+    for (int i = 0; i < 5 * n; ++i) {
+        for (int j = 0; j < 4 * n; ++j) {
+            const Vec3d q{7.0 + (i + 0.5) / n, 8.0, 8.0 + (j + 0.5) / n};
+            const Vec3d d = q - s.point;
+            const double r2 = dot(d, d);
+            truth += (d.x / std::sqrt(r2)) * (d.y / std::sqrt(r2)) / r2 / (double(n) * n);
+        }
+    }
+    std::printf("  wall: E/L %.6f, quadrature %.6f\n", e, truth);
+    EXPECT_NEAR(e, truth, 2e-4 * truth);
 }
 
 TEST(EmitterLight, OneVoxelWallCastsAFullShadow) {

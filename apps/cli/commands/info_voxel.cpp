@@ -41,15 +41,19 @@ int infoVoxelScene(const voxel::VoxelScene& loaded) {
                     : "running-average");
     std::printf("  shadows, textures  %s, %s\n", shading.shadows ? "on" : "off",
                 shading.textures ? "on" : "off");
-    // The ray caster's light from emissive voxels: the faces and the grid's lists a render
-    // builds (emitter_light.h; bounded by kMaxEmitterFaces and kMaxEmitterListEntries).
+    // The ray caster's light from emissive voxels: the faces, their rectangles and the grid's
+    // lists a render builds (emitter_light.h; bounded by kMaxEmitterFaces and
+    // kMaxEmitterListEntries).
     std::uint64_t lampBytes = 0;
     if (shading.lighting == voxel::ShadeOptions::Lighting::Physical && shading.emitterLight) {
         const voxel::EmitterLights lamps = voxel::EmitterLights::build(world, shading.materials);
         lampBytes = lamps.faces().size() * sizeof(voxel::EmitterFace) +
                     (lamps.cellOffsets().size() + lamps.cellFaces().size()) * sizeof(std::uint32_t);
-        std::printf("  lamp light         %d open emissive faces, %d shadow rays each, lists %s\n",
-                    lamps.faceCount(), shading.emitterRays, formatBytes(lampBytes).c_str());
+        std::printf(
+            "  lamp light         %d open emissive faces in %d rectangles, %d shadow rays "
+            "each, lists %s\n",
+            lamps.faceCount(), lamps.emitterCount(), shading.emitterRays,
+            formatBytes(lampBytes).c_str());
     } else {
         std::printf("  lamp light         off\n");
     }

@@ -8,7 +8,8 @@
 //   15 uint per grid cell + 1: where each cell's list of faces starts in 16 (CSR offsets); the
 //      grid covers the world in cubes of LUXEL_EMITTER_CELL voxels, x fastest
 //   16 uint: the lists, each entry an index into 17
-//   17 CascadeNearEmitter: the emitting faces (voxel, normal index, radiance)
+//   17 CascadeNearEmitter: the emitters, rectangles of open emissive faces of one radiance on one
+//      plane (voxel, normal index, radiance, extent)
 #ifndef LUXEL_GPU_SHARED_EMITTER_LIGHT_H
 #define LUXEL_GPU_SHARED_EMITTER_LIGHT_H
 
@@ -17,8 +18,8 @@
 
 // Side of the grid's cells, in voxels.
 #define LUXEL_EMITTER_CELL 8
-// The faces that light one point: the strongest (by unoccluded light) this many get shadow rays,
-// the rest none (a bound on the cost per point in worlds with many lamps).
+// The emitters that light one point: the strongest (by unoccluded light) this many get shadow
+// rays, the rest none (a bound on the cost per point in worlds with many lamps).
 #define LUXEL_EMITTER_MAX_FACES 16
 // Shadow rays over all the hits of one camera sample's path (primary, mirror and refracted ones,
 // in the tracer's order): each hit takes as many of its strongest faces as the rays left allow
@@ -28,6 +29,10 @@
 #define LUXEL_EMITTER_PATH_RAYS 64
 // Shadow rays per face: render.emitter_rays in 1..LUXEL_EMITTER_MAX_RAYS.
 #define LUXEL_EMITTER_MAX_RAYS 64
+// Coplanar open faces of one radiance are merged into rectangles of at most this many faces a
+// side (EmitterLights::build), each lit as one emitter with its exact light and
+// render.emitter_rays shadow rays over it (larger ones would draw coarser penumbrae).
+#define LUXEL_EMITTER_RECT_SIDE 4
 // The default floor: a face whose unoccluded irradiance (largest channel) at a point is below
 // this lights it not at all, and below twice this only partly (emitterFade).
 #define LUXEL_EMITTER_FLOOR 5e-4f
@@ -53,17 +58,67 @@ LUXEL_FUNC uint emitterRank(float e) {
 #endif
 }
 
-// Where shadow ray `i` of `n` aims on the emitting face: a fixed rank-1 lattice over the unit
-// square (u stratified, v by the golden ratio), the same at every point so the picture has no
-// noise (a penumbra is drawn in n steps).
-LUXEL_FUNC vec3 emitterRayTarget(CascadeNearEmitter e, int i, int n) {
-    const float u = (float(i) + 0.5f) / float(n);
-    const float s = (float(i) + 0.5f) * 0.6180339887f;
-    const float v = s - floor(s);
-    vec3 p = nearEmitterCorner(e, 0);
+// The rectangle an emitter stands for (CascadeNearEmitter's extent), in world coordinates along
+// its plane's axes a = (axis + 1) % 3 and b = (axis + 2) % 3: [loA, hiA] x [loB, hiB].
+struct EmitterSpan {
+    float loA, hiA, loB, hiB;
+};
+
+// The emitter's rectangle cut to the part in front of the receiving face through `x` with
+// axis-aligned outward normal `n`: a receiving plane across the emitter's own axes cuts its
+// rectangle along that axis (both lie on voxel planes), and the part behind it lights nothing.
+// Empty (lo >= hi on an axis) when nothing is left.
+LUXEL_FUNC EmitterSpan emitterSpanInFront(vec3 x, vec3 n, CascadeNearEmitter e) {
     const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
-    p[a] += u;
-    p[b] += v;
+    const vec3 c = vec3(float(e.x), float(e.y), float(e.z));
+    EmitterSpan s = EmitterSpan(c[a], c[a] + float((e.extent & 0xffffu) + 1u), c[b],
+                                c[b] + float((e.extent >> 16u) + 1u));
+    if (n[a] > 0.5f) s.loA = max(s.loA, x[a]);
+    if (n[a] < -0.5f) s.hiA = min(s.hiA, x[a]);
+    if (n[b] > 0.5f) s.loB = max(s.loB, x[b]);
+    if (n[b] < -0.5f) s.hiB = min(s.hiB, x[b]);
+    return s;
+}
+
+LUXEL_FUNC float emitterSpanArea(EmitterSpan s) {
+    return max(s.hiA - s.loA, 0.0f) * max(s.hiB - s.loB, 0.0f);
+}
+
+// Corner `i` (0..3, in order around it, as nearEmitterCorner) of the span on the emitter's plane.
+LUXEL_FUNC vec3 emitterSpanCorner(CascadeNearEmitter e, EmitterSpan s, int i) {
+    const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
+    vec3 c = vec3(float(e.x), float(e.y), float(e.z));
+    if ((e.normal & 1u) == 0u) c[axis] += 1.0f;
+    c[a] = (i == 1 || i == 2) ? s.hiA : s.loA;
+    c[b] = (i == 2 || i == 3) ? s.hiB : s.loB;
+    return c;
+}
+
+// The unoccluded light of the span at `x` (receiving normal `n`), Lambert's contour integral
+// (quadFormFactor); 0 when the span is empty, faces away from x or, on a plane parallel to the
+// receiver's, lies behind it. For a unit face it is nearEmitterFormFactor.
+LUXEL_FUNC float emitterFormFactor(vec3 x, vec3 n, CascadeNearEmitter e, EmitterSpan s) {
+    if (!(emitterSpanArea(s) > 0.0f)) return 0.0f;
+    const vec3 c0 = emitterSpanCorner(e, s, 0);
+    const vec3 toReceiver = x - c0;
+    const int axis = int(e.normal / 2u);
+    if (!(dot(nearEmitterNormal(e.normal), toReceiver) > 0.0f)) return 0.0f;
+    if (abs(n[axis]) > 0.5f && !(dot(n, toReceiver) < 0.0f)) return 0.0f;
+    return quadFormFactor(x, n, c0, emitterSpanCorner(e, s, 1), emitterSpanCorner(e, s, 2),
+                          emitterSpanCorner(e, s, 3));
+}
+
+// Where shadow ray `i` of `n` aims on the span: a fixed rank-1 lattice over it (u stratified,
+// v by the golden ratio), the same at every point so the picture has no noise (a penumbra is
+// drawn in n steps).
+LUXEL_FUNC vec3 emitterRayTarget(CascadeNearEmitter e, EmitterSpan s, int i, int n) {
+    const float u = (float(i) + 0.5f) / float(n);
+    const float t = (float(i) + 0.5f) * 0.6180339887f;
+    const float v = t - floor(t);
+    const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
+    vec3 p = emitterSpanCorner(e, s, 0);
+    p[a] = s.loA + u * (s.hiA - s.loA);
+    p[b] = s.loB + v * (s.hiB - s.loB);
     return p;
 }
 

@@ -30,12 +30,15 @@
 LUXEL_SHARED_BEGIN
 
 // An emitting face as the picture's near lists hold it: its voxel, normalIndex (0 +x, 1 -x,
-// 2 +y, 3 -y, 4 +z, 5 -z) and emitted radiance.
+// 2 +y, 3 -y, 4 +z, 5 -z) and emitted radiance. The ray caster's lamp light
+// (shared/emitter_light.h) uses the same record for a rectangle of coplanar faces of one
+// radiance: `extent` holds its size less one along a = (axis + 1) % 3 (low 16 bits) and
+// b = (axis + 2) % 3 (high 16 bits), from the voxel given; the cascades' faces have extent 0.
 struct CascadeNearEmitter {
     int x, y, z;
     uint normal;
     float r, g, b;
-    uint pad0;
+    uint extent;
 };
 
 // The share of an emitter's light taken exactly at a point `d` voxels from its centre: 1 within
@@ -98,24 +101,31 @@ LUXEL_FUNC vec3 nearEmitterCorner(CascadeNearEmitter e, int i) {
     return c;
 }
 
-// Lambert's contour integral without L: the projected solid angle / 2 of the emitting square at
-// `x` with unit normal `n`, |sum_i theta_i n . u_i| / 2; 0 unless the emitter faces x and lies
-// in front of it (the square never straddles the receiving plane: both lie on voxel planes).
-LUXEL_FUNC float nearEmitterFormFactor(vec3 x, vec3 n, CascadeNearEmitter e) {
-    const vec3 toReceiver = x - nearEmitterPoint(e, -1);
-    if (!(dot(nearEmitterNormal(e.normal), toReceiver) > 0.0f) || !(dot(n, toReceiver) < 0.0f)) {
-        return 0.0f;
-    }
+// Lambert's contour integral without L over the quadrilateral c0..c3 (in order around it): the
+// projected solid angle / 2 of that polygon at `x` with unit normal `n`, |sum_i theta_i n . u_i|
+// / 2. The caller makes sure the polygon lies in front of x's plane and faces x.
+LUXEL_FUNC float quadFormFactor(vec3 x, vec3 n, vec3 c0, vec3 c1, vec3 c2, vec3 c3) {
     float sum = 0.0f;
-    vec3 v0 = normalize(nearEmitterCorner(e, 0) - x);
+    vec3 v0 = normalize(c0 - x);
     for (int i = 0; i < 4; ++i) {
-        const vec3 v1 = normalize(nearEmitterCorner(e, (i + 1) % 4) - x);
+        const vec3 v1 = normalize((i == 0 ? c1 : (i == 1 ? c2 : (i == 2 ? c3 : c0))) - x);
         const vec3 c = cross(v0, v1);
         const float s = length(c);
         if (s > 1e-12f) sum += atan(s, dot(v0, v1)) * dot(n, c) / s;
         v0 = v1;
     }
     return abs(sum) * 0.5f;
+}
+
+// quadFormFactor of the emitting square at `x`; 0 unless the emitter faces x and lies in front
+// of it (the square never straddles the receiving plane: both lie on voxel planes).
+LUXEL_FUNC float nearEmitterFormFactor(vec3 x, vec3 n, CascadeNearEmitter e) {
+    const vec3 toReceiver = x - nearEmitterPoint(e, -1);
+    if (!(dot(nearEmitterNormal(e.normal), toReceiver) > 0.0f) || !(dot(n, toReceiver) < 0.0f)) {
+        return 0.0f;
+    }
+    return quadFormFactor(x, n, nearEmitterCorner(e, 0), nearEmitterCorner(e, 1),
+                          nearEmitterCorner(e, 2), nearEmitterCorner(e, 3));
 }
 
 LUXEL_SHARED_END

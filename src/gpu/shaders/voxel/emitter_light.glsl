@@ -40,13 +40,14 @@ vec3 emitterLight(vec3 p, ivec3 faceNormal, vec3 sn, vec3 view, vec3 diffuseAlbe
     const int cell = emitterCellIndex(p, cells);
     const vec3 ng = vec3(faceNormal);
     const float threshold = params.emitterFloor;
-    // The strongest faces by unoccluded light, strongest first (ties: the earlier in the list).
+    // The strongest emitters by unoccluded light, strongest first (ties: the earlier in the list).
     int kept = 0;
     uint keptFace[LUXEL_EMITTER_MAX_FACES], keptRank[LUXEL_EMITTER_MAX_FACES];
     float keptLight[LUXEL_EMITTER_MAX_FACES], keptFormFactor[LUXEL_EMITTER_MAX_FACES];
     for (uint i = emitterOffset[cell]; i < emitterOffset[cell + 1]; ++i) {
         const CascadeNearEmitter e = emitterFaces[emitterList[i]];
-        const float formFactor = nearEmitterFormFactor(p, ng, e);
+        const EmitterSpan span = emitterSpanInFront(p, ng, e);
+        const float formFactor = emitterFormFactor(p, ng, e, span);
         const float e0 = formFactor * max(e.r, max(e.g, e.b));
         if (!(emitterFade(e0, threshold) > 0.0)) continue;
         const uint rank = emitterRank(e0);
@@ -66,17 +67,19 @@ vec3 emitterLight(vec3 p, ivec3 faceNormal, vec3 sn, vec3 view, vec3 diffuseAlbe
         kept = min(kept + 1, LUXEL_EMITTER_MAX_FACES);
     }
     const int n = clamp(int(params.emitterRays), 1, LUXEL_EMITTER_MAX_RAYS);
-    kept = min(kept, budget / n);
-    budget -= kept * n;
     vec3 diffuse = vec3(0.0), specular = vec3(0.0);
     for (int k = 0; k < kept; ++k) {
         const CascadeNearEmitter e = emitterFaces[keptFace[k]];
+        const EmitterSpan span = emitterSpanInFront(p, ng, e);
+        // Strongest first, each emitter its rays while the path's budget lasts.
+        if (n > budget) break;
+        budget -= n;
         const float scale = keptFormFactor[k] * emitterFade(keptLight[k], threshold);
         const vec3 share = vec3(e.r, e.g, e.b) * (scale / float(n));
         const ivec3 voxel = ivec3(e.x, e.y, e.z), normal = ivec3(nearEmitterNormal(e.normal));
         for (int i = 0; i < n; ++i) {
-            const vec3 d = normalize(emitterRayTarget(e, i, n) - p);
-            const vec3 t = lineTransmittance(p, d, true, voxel, normal);
+            const vec3 d = normalize(emitterRayTarget(e, span, i, n) - p);
+            const vec3 t = lineTransmittance(p, d, true, voxel, normal, e.extent);
             if (!(maxComponent(t) > 0.0)) continue;
             diffuse += share * t;
             if (glossy) specular += share * t * voxelSpecularBrdf(model, sn, view, d, alpha, f0);

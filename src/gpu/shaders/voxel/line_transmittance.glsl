@@ -69,11 +69,22 @@ vec3 throughMedia(Hit hit, vec3 direction, inout vec3 origin, inout int media, b
     return vec3(0.0);
 }
 
+// targetHolds (solver_sun.cpp): whether `voxel` is one of the faces of the target rectangle from
+// faceVoxel with normal faceNormal and `extent` (CascadeNearEmitter's encoding; 0: one face).
+bool lineTargetHolds(ivec3 faceVoxel, ivec3 faceNormal, uint extent, ivec3 voxel) {
+    const int axis = faceNormal.x != 0 ? 0 : (faceNormal.y != 0 ? 1 : 2);
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    const int da = voxel[a] - faceVoxel[a], db = voxel[b] - faceVoxel[b];
+    return voxel[axis] == faceVoxel[axis] && da >= 0 && db >= 0 &&
+           da <= int(extent & 0xffffu) && db <= int(extent >> 16u);
+}
+
 // lineTransmittance (solver_sun.cpp): along the ray until it leaves the world (toFace false: the
-// sky's share, sunRayTransmittance) or meets the face (faceVoxel, faceNormal) (that face's share,
-// faceRayTransmittance; 0 where it leaves the world or meets another opaque face first).
+// sky's share, sunRayTransmittance) or meets the face (faceVoxel, faceNormal) or the rectangle of
+// faces `extent` gives (that face's share, faceRayTransmittance; 0 where it leaves the world or
+// meets another opaque face first).
 vec3 lineTransmittance(vec3 origin, vec3 direction, bool toFace, ivec3 faceVoxel,
-                       ivec3 faceNormal) {
+                       ivec3 faceNormal, uint extent) {
     const bool media = lineMedia();
     if (!media && !toFace) {
         return castToSurface(origin, direction).hit.hit ? vec3(0.0) : vec3(1.0);
@@ -85,7 +96,10 @@ vec3 lineTransmittance(vec3 origin, vec3 direction, bool toFace, ivec3 faceVoxel
         const SurfaceHit s = castToSurface(o, direction);
         if (!s.hit.hit) return toFace ? vec3(0.0) : t;
         if (s.hit.normal == ivec3(0)) return vec3(0.0);
-        if (toFace && s.hit.voxel == faceVoxel && s.hit.normal == faceNormal) return t;
+        if (toFace && s.hit.normal == faceNormal &&
+            lineTargetHolds(faceVoxel, faceNormal, extent, s.hit.voxel)) {
+            return t;
+        }
         if (!media) return vec3(0.0);
         // Starting on the face of an opaque voxel under glass or water, the ray is inside the
         // medium at once: no interface with the air to enter through (as lineTransmittance).
@@ -95,4 +109,10 @@ vec3 lineTransmittance(vec3 origin, vec3 direction, bool toFace, ivec3 faceVoxel
         if (!(maxComponent(t) > LUXEL_SOLVER_DARK)) return vec3(0.0);
     }
     return vec3(0.0);
+}
+
+// One face (or none: the sky) as the target.
+vec3 lineTransmittance(vec3 origin, vec3 direction, bool toFace, ivec3 faceVoxel,
+                       ivec3 faceNormal) {
+    return lineTransmittance(origin, direction, toFace, faceVoxel, faceNormal, 0u);
 }
