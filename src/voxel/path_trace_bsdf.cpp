@@ -134,7 +134,7 @@ PathBsdf pathBsdf(const Material& m, Rgb colour, Int3 normal, Vec3d direction,
     return b;
 }
 
-BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng) {
+BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng, bool density) {
     using Lobe = BsdfSample::Lobe;
     BsdfSample out;
     const int lobes = (b.pSpecular > 0.0) + (b.pTransmission > 0.0) + (b.pDiffuse > 0.0);
@@ -187,7 +187,7 @@ BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng) {
     const double vis = shared::ggxSmithVisibility(float(b.cosView), float(cosL), b.alpha);
     out.weight = b.specular * float(4.0 * b.cosView * cosL * vis /
                                     (ggxMasking(b.cosView, b.alpha) * b.pSpecular));
-    out.pdf = b.pSpecular * ggxPdf(b, out.direction);
+    if (density) out.pdf = b.pSpecular * ggxPdf(b, out.direction);
     return out;
 }
 

@@ -64,7 +64,9 @@ struct BsdfSample {
 
 // Picks a lobe and samples its direction. Draws one number for the lobe when more than one lobe
 // has a non-zero probability, then two for the direction when the lobe is diffuse or GGX.
-BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng);
+// `density` false leaves a GGX sample's pdf 0 (the real-time solvers' split sum reads only the
+// direction and weight, which are the same either way).
+BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng, bool density = true);
 
 // Light of `radiance` arriving from unit direction l that the smooth lobes send towards the
 // view: f cos L / lightPdf, each lobe weighted by the power heuristic against the density with

@@ -112,7 +112,7 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
     Rgb weighted;
     double weights = 0.0;
     for (int k = 0; k < light.specularRays; ++k) {
-        const BsdfSample sample = sampleBsdf(specular, rng);
+        const BsdfSample sample = sampleBsdf(specular, rng, false);  // its pdf is not read
         if (sample.lobe != BsdfSample::Lobe::Specular) continue;
         const double w = sample.weight.r;
         const Ray r{s.hit.point, sample.direction};

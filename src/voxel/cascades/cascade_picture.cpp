@@ -11,6 +11,7 @@
 #include "../path_trace_surface.h"
 #include "../solver_sun.h"
 #include "../solver_surface.h"
+#include "cascade_near_rays.h"
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/path_trace.h"
@@ -72,20 +73,32 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
     if (!s.hit.hit) return skyColor(ray.direction, shading);
     if (s.hit.normal == Int3{}) return {};  // the camera is inside a solid voxel
     // The emitters near the pixel taken exactly at it, the rest of their light (emitterFar)
-    // interpolated with the faces' irradiance.
+    // interpolated with the faces' irradiance; their visibility lines cast once for this light
+    // and the highlight below (§5).
     const cascades::FaceData& faces = state_->faces;
+    cascades::NearEmitterRays nearRays(*state_, s.hit);
     const Rgb irradiance = cascades::interpolatedIrradiance(faces, faces.emitterFar, s.hit.voxel,
                                                             s.hit.normal, s.hit.point) +
-                           cascades::nearEmitterLight(*state_, s.hit);
+                           cascades::nearEmitterLight(*state_, nearRays);
+    // The callbacks capture two pointers each, which std::function keeps without allocating.
     SolverLight light{irradiance * kInvPi,
-                      [&](const Ray& r, bool delta) { return reflectedLight(r, delta, 0, rng); },
+                      [this, &rng](const Ray& r, bool delta) {
+                          return reflectedLight(r, delta, 0, rng);
+                      },
                       kPictureSunRays, kPictureSpecularRays};
     // The near emitters' glossy highlight light-sampled, their GGX rays keeping the rest.
+    struct Glossy {
+        const RadianceCascades* cascades;
+        PathRng* rng;
+        const Hit* at;
+    } glossy{this, &rng, &s.hit};
     if (!faces.nearOffset.empty()) {
-        light.nearHighlight = [&](const PathBsdf& specular) {
-            return cascades::nearEmitterHighlight(*state_, s.hit, specular);
+        light.nearHighlight = [this, &nearRays](const PathBsdf& specular) {
+            return cascades::nearEmitterHighlight(*state_, nearRays, specular);
         };
-        light.glossyAlong = [&](const Ray& r) { return reflectedLight(r, false, 0, rng, &s.hit); };
+        light.glossyAlong = [&glossy](const Ray& r) {
+            return glossy.cascades->reflectedLight(r, false, 0, *glossy.rng, glossy.at);
+        };
     }
     return shadeSolverSurface(world, state_->textures, s, ray, shading, light, rng);
 }
