@@ -21,13 +21,13 @@ namespace luxel::voxel::cascades {
 
 namespace shared = gpu::shared;
 
-NearEmitterRays::NearEmitterRays(const RadianceCascades::State& state, const Hit& hit)
+NearEmitterRays::NearEmitterRays(const RadianceCascades::State& state, const Hit& hit, int face)
     : state_(state),
       hit_(hit),
       point_(float(hit.point.x), float(hit.point.y), float(hit.point.z)) {
     const FaceData& faces = state.faces;
     if (faces.nearOffset.empty()) return;
-    face_ = faces.table.find(hit.voxel, normalIndex(hit.normal));
+    face_ = face == kFindFace ? faces.table.find(hit.voxel, normalIndex(hit.normal)) : face;
     if (face_ < 0) return;
     begin_ = faces.nearOffset[face_];
     end_ = faces.nearOffset[face_ + 1];
@@ -36,7 +36,7 @@ NearEmitterRays::NearEmitterRays(const RadianceCascades::State& state, const Hit
 Rgb NearEmitterRays::transmittance(std::uint32_t i, int q) {
     const std::uint32_t slot = 4 * (i - begin_) + std::uint32_t(q);
     const bool kept = i - begin_ < kKept;
-    if (kept && (known_ >> slot & 1u) != 0) return seen_[slot];
+    if (kept && (known_ >> slot & 1u) != 0) return Rgb(seen_[slot][0], seen_[slot][1], seen_[slot][2]);
     const shared::CascadeNearEmitter& e = state_.faces.nearEmitters[i];
     const FaceTarget target{{e.x, e.y, e.z}, normalFromIndex(int(e.normal))};
     const shared::vec3 d = normalize(shared::nearEmitterPoint(e, q) - point_);
@@ -45,7 +45,7 @@ Rgb NearEmitterRays::transmittance(std::uint32_t i, int q) {
                                        state_.shading, target);
     ++cast_;
     if (kept) {
-        seen_[slot] = t;
+        seen_[slot][0] = t.r, seen_[slot][1] = t.g, seen_[slot][2] = t.b;
         known_ |= std::uint64_t(1) << slot;
     }
     return t;

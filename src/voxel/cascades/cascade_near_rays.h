@@ -4,7 +4,6 @@
 // casts each line once, when the first of them asks, and both read it.
 #pragma once
 
-#include <array>
 #include <cstdint>
 
 #include "cascade_state.h"
@@ -13,7 +12,9 @@ namespace luxel::voxel::cascades {
 
 class NearEmitterRays {
   public:
-    NearEmitterRays(const RadianceCascades::State& state, const Hit& hit);
+    // `face`: the hit's face id when the caller has it (-1: not a face), else looked up.
+    NearEmitterRays(const RadianceCascades::State& state, const Hit& hit, int face = kFindFace);
+    static constexpr int kFindFace = -2;
 
     const Hit& hit() const { return hit_; }
     // The hit's face (-1: not a face, no near list) and its list in faces.nearEmitters.
@@ -39,7 +40,7 @@ class NearEmitterRays {
     gpu::shared::vec3 point_;
     int cast_ = 0;
     std::uint64_t known_ = 0;  // bit 4 (i - begin) + q: line cast and kept in seen_
-    std::array<Rgb, 4 * kKept> seen_;
+    float seen_[4 * kKept][3];  // left uninitialised: read only where known_ says it was cast
 };
 
 }  // namespace luxel::voxel::cascades

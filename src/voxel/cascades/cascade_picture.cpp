@@ -38,7 +38,11 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
                (delta ? sunDiskAlong(r.direction, shading) : Rgb{});
     }
     if (s.hit.normal == Int3{}) return {};
-    const Rgb irradiance = indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point);
+    // indirectIrradiance, keeping the face's id for its sun below.
+    int face = -1;
+    const Rgb irradiance =
+        cascades::interpolatedIrradiance(state_->faces, state_->faces.emitterIrradiance,
+                                         s.hit.voxel, s.hit.normal, s.hit.point, &face);
     if (depth < kSolverFollowDepth && solverFollows(world, s, shading)) {
         // Glass or polished metal: shaded with its material, what lies behind it or what it
         // reflects followed as for the camera's ray.
@@ -52,7 +56,6 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
     // were lit (no shadow rays per pixel: a reflection is blurred by its lobe anyway) and the
     // cascades' irradiance.
     const PathSurface surface = pathSurfaceAt(world, s, shading);
-    const int face = state_->faces.table.find(s.hit.voxel, cascades::normalIndex(s.hit.normal));
     const Rgb sun = face >= 0 ? cascades::faceDirectSun(*state_, face) : Rgb{};
     Rgb emission = surface.emission;
     if (nearOf && emission.maxComponent() > 0.0f) {
@@ -76,10 +79,11 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
     // interpolated with the faces' irradiance; their visibility lines cast once for this light
     // and the highlight below (§5).
     const cascades::FaceData& faces = state_->faces;
-    cascades::NearEmitterRays nearRays(*state_, s.hit);
-    const Rgb irradiance = cascades::interpolatedIrradiance(faces, faces.emitterFar, s.hit.voxel,
-                                                            s.hit.normal, s.hit.point) +
-                           cascades::nearEmitterLight(*state_, nearRays);
+    int face = -1;
+    const Rgb far = cascades::interpolatedIrradiance(faces, faces.emitterFar, s.hit.voxel,
+                                                     s.hit.normal, s.hit.point, &face);
+    cascades::NearEmitterRays nearRays(*state_, s.hit, face);
+    const Rgb irradiance = far + cascades::nearEmitterLight(*state_, nearRays);
     // The callbacks capture two pointers each, which std::function keeps without allocating.
     SolverLight light{irradiance * kInvPi,
                       [this, &rng](const Ray& r, bool delta) {

@@ -184,8 +184,10 @@ bool computeEmitterIrradiance(RadianceCascades::State& state);
 // The faces' irradiance plus `emitter` (emitterIrradiance, or emitterFar for the picture's own
 // surface) at a point on a face, bilinear between the centres of the face and its open
 // neighbours in the plane (RadianceCascades::indirectIrradiance).
+// `face`, when given, receives the id of the face at `point` (-1: none), which callers would
+// otherwise look up again.
 Rgb interpolatedIrradiance(const FaceData& faces, const std::vector<Rgb>& emitter, Int3 voxel,
-                           Int3 normal, Vec3d point);
+                           Int3 normal, Vec3d point, int* face = nullptr);
 // The light of the emitters near `hit` taken exactly there, each by its nearEmitterWeight
 // (cascade_near_emitters.cpp). With `rays`, the visibility lines are read from (and cast into)
 // them, so that nearEmitterHighlight at the same hit casts none twice; without, each call
