@@ -220,10 +220,6 @@ Rgb bsdfLight(const PathBsdf& b, Vec3d l, Rgb radiance, double lightPdf) {
     return out;
 }
 
-}  // namespace luxel::voxel
-
-namespace luxel::voxel {
-
 GgxSampler::GgxSampler(const PathBsdf& b)
     : b_(b),
       ggx_(b.pSpecular == 1.0 && b.pTransmission == 0.0 && b.pDiffuse == 0.0 && !b.mirror()) {

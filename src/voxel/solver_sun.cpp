@@ -3,6 +3,8 @@
 #include "solver_sun.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <vector>
 
 #include "gpu/shaders/shared/voxel_shading.h"
@@ -131,10 +133,15 @@ struct SunSpiral {
     std::vector<Vec3d> directions;
 };
 
+// Compared bit for bit: -0 and 0 give the disk different tangents (copysign).
 bool sameSun(const SunSpiral& c, const ShadeOptions& shading, int sunRays) {
     const Vec3 d = shading.sunDirection;
-    return c.rays == sunRays && c.angularRadius == shading.sunAngularRadius &&
-           c.direction.x == d.x && c.direction.y == d.y && c.direction.z == d.z;
+    return c.rays == sunRays &&
+           std::bit_cast<std::uint64_t>(c.angularRadius) ==
+               std::bit_cast<std::uint64_t>(shading.sunAngularRadius) &&
+           std::bit_cast<std::uint32_t>(c.direction.x) == std::bit_cast<std::uint32_t>(d.x) &&
+           std::bit_cast<std::uint32_t>(c.direction.y) == std::bit_cast<std::uint32_t>(d.y) &&
+           std::bit_cast<std::uint32_t>(c.direction.z) == std::bit_cast<std::uint32_t>(d.z);
 }
 
 // Two kept: the camera's surface and the followed glass behind it ask for different counts.

@@ -24,6 +24,7 @@ namespace {
 using namespace luxel;
 using namespace luxel::voxel;
 using namespace luxel::voxel::cascades;
+using namespace luxel::voxel::test;
 
 // The cascades' state as RadianceCascades::create builds it (faces, segments, the emitters'
 // light and near lists); the near terms need no lighting pass.
@@ -73,16 +74,16 @@ Tally compareOverThePicture(const RadianceCascades::State& state, const Camera& 
             const Rgb ownLight = nearEmitterLight(state, forLight);
             const Rgb ownHighlight = nearEmitterHighlight(state, forHighlight, specular);
             // The plain entry points cast their own lines too.
-            const Rgb plainLight = nearEmitterLight(state, s.hit);
-            const Rgb plainHighlight = nearEmitterHighlight(state, s.hit, specular);
+            const Rgb aloneLight = nearEmitterLight(state, s.hit);
+            const Rgb aloneHighlight = nearEmitterHighlight(state, s.hit, specular);
             for (int c = 0; c < 3; ++c) {
                 if (light[c] != ownLight[c] || highlight[c] != ownHighlight[c] ||
-                    light[c] != plainLight[c] || highlight[c] != plainHighlight[c]) {
+                    light[c] != aloneLight[c] || highlight[c] != aloneHighlight[c]) {
                     ADD_FAILURE() << "pixel " << x << "," << y << " channel " << c << ": light "
                                   << light[c] << " against " << ownLight[c] << " and "
-                                  << plainLight[c] << ", highlight " << highlight[c]
+                                  << aloneLight[c] << ", highlight " << highlight[c]
                                   << " against " << ownHighlight[c] << " and "
-                                  << plainHighlight[c];
+                                  << aloneHighlight[c];
                     return tally;
                 }
             }
@@ -110,9 +111,9 @@ TEST(CascadesNearRays, SharedLinesGiveTheSameLightAndHighlightOnThinWalls) {
 }
 
 TEST(CascadesNearRays, SharedLinesGiveTheSameLightPastTheKeptEmitters) {
-    // A 6x6 patch of lamps on a glossy floor in a closed room: the floor around the patch has
-    // far more than 16 near emitting faces (the lamps' tops and sides within 4 voxels), so the
-    // lines past the kept ones are cast at every ask, and must still agree.
+    // A 6x6 patch of lamps hung two voxels over a glossy floor in a closed room: the floor under
+    // it has far more than 16 near emitting faces (the lamps' undersides within 4 voxels), so
+    // the lines past the kept ones are cast at every ask, and must still agree.
     VoxelWorld world = makeWorld({20, 8, 20});
     ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
     ASSERT_TRUE(o.materials.setSlot(0, lampMaterial(Rgb(4.0f, 3.0f, 2.0f))).ok());
@@ -127,7 +128,7 @@ TEST(CascadesNearRays, SharedLinesGiveTheSameLightPastTheKeptEmitters) {
                 }
             }
     for (int z = 7; z < 13; ++z)
-        for (int x = 7; x < 13; ++x) world.set(x, 1, z, Voxel{255, 255, 255, alphaForSlot(0)});
+        for (int x = 7; x < 13; ++x) world.set(x, 3, z, Voxel{255, 255, 255, alphaForSlot(0)});
     world.refreshEmptySpace();
     const auto state = buildState(world, nullptr, o);
     const FaceData& faces = state->faces;
