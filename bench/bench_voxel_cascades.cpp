@@ -26,8 +26,8 @@ VoxelScene& shippedScene(const std::string& name) {
     static std::map<std::string, VoxelScene> scenes;
     auto found = scenes.find(name);
     if (found != scenes.end()) return found->second;
-    auto loaded = loadVoxelScene(
-        std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/" + name + ".json", 640, 360);
+    auto loaded =
+        loadVoxelScene(std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/" + name + ".json", 640, 360);
     if (!loaded) throw std::runtime_error(loaded.error().message());
     return scenes.emplace(name, std::move(*loaded)).first->second;
 }
@@ -157,10 +157,10 @@ BENCHMARK(BM_VoxelCascadesPicture)
     ->Name("voxel_cascades/picture_640x360/cottage")
     ->MeasureProcessCPUTime()
     ->Unit(benchmark::kMillisecond);
-#define LUXEL_FRAME_BENCHMARK(id, scene)                         \
+#define LUXEL_FRAME_BENCHMARK(id, scene)                             \
     BENCHMARK_CAPTURE(BM_VoxelCascadesFrame, id, std::string(scene)) \
-        ->Name("voxel_cascades/frame_640x360/" scene)                 \
-        ->MeasureProcessCPUTime()                                     \
+        ->Name("voxel_cascades/frame_640x360/" scene)                \
+        ->MeasureProcessCPUTime()                                    \
         ->Unit(benchmark::kMillisecond)
 LUXEL_FRAME_BENCHMARK(cottage, "cottage");
 LUXEL_FRAME_BENCHMARK(fence, "fence");

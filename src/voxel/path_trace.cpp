@@ -203,8 +203,8 @@ PathSurface pathSurfaceAt(const VoxelWorld& world, const SurfaceHit& s, const Sh
     const Voxel voxel = world.get(hit.voxel.x, hit.voxel.y, hit.voxel.z);
     const int materialSlot = textureSlotOf(voxel);
     const Material& m = o.materials.forSlot(materialSlot);
-    Rgb colour = Rgb(linearOfByte(voxel.r), linearOfByte(voxel.g), linearOfByte(voxel.b)) *
-                 m.albedo;
+    Rgb colour =
+        Rgb(linearOfByte(voxel.r), linearOfByte(voxel.g), linearOfByte(voxel.b)) * m.albedo;
     if (s.slot >= 0) colour = colour * Rgb(s.texel.r, s.texel.g, s.texel.b);
     const bool procedural =
         o.textures && (s.slot < 0 ? !o.materials.hasSlot(materialSlot) || m.proceduralTexture

@@ -43,9 +43,9 @@ std::unique_ptr<RadianceCascades::State> buildState(const VoxelWorld& world,
 }
 
 struct Tally {
-    int nearPixels = 0;    // pixels whose surface has near emitters and some of their light
-    int highlighted = 0;   // of those, pixels with a highlight
-    long sharedCast = 0;   // lines cast by one NearEmitterRays for both terms
+    int nearPixels = 0;     // pixels whose surface has near emitters and some of their light
+    int highlighted = 0;    // of those, pixels with a highlight
+    long sharedCast = 0;    // lines cast by one NearEmitterRays for both terms
     long separateCast = 0;  // lines cast by one for each term
 };
 
@@ -81,9 +81,8 @@ Tally compareOverThePicture(const RadianceCascades::State& state, const Camera& 
                     light[c] != aloneLight[c] || highlight[c] != aloneHighlight[c]) {
                     ADD_FAILURE() << "pixel " << x << "," << y << " channel " << c << ": light "
                                   << light[c] << " against " << ownLight[c] << " and "
-                                  << aloneLight[c] << ", highlight " << highlight[c]
-                                  << " against " << ownHighlight[c] << " and "
-                                  << aloneHighlight[c];
+                                  << aloneLight[c] << ", highlight " << highlight[c] << " against "
+                                  << ownHighlight[c] << " and " << aloneHighlight[c];
                     return tally;
                 }
             }

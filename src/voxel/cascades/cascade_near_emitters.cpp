@@ -22,9 +22,7 @@ namespace luxel::voxel::cascades {
 namespace shared = gpu::shared;
 
 NearEmitterRays::NearEmitterRays(const RadianceCascades::State& state, const Hit& hit, int face)
-    : state_(state),
-      hit_(hit),
-      point_(float(hit.point.x), float(hit.point.y), float(hit.point.z)) {
+    : state_(state), hit_(hit), point_(float(hit.point.x), float(hit.point.y), float(hit.point.z)) {
     const FaceData& faces = state.faces;
     if (faces.nearOffset.empty()) return;
     face_ = face == kFindFace ? faces.table.find(hit.voxel, normalIndex(hit.normal)) : face;
@@ -36,7 +34,9 @@ NearEmitterRays::NearEmitterRays(const RadianceCascades::State& state, const Hit
 Rgb NearEmitterRays::transmittance(std::uint32_t i, int q) {
     const std::uint32_t slot = 4 * (i - begin_) + std::uint32_t(q);
     const bool kept = i - begin_ < kKept;
-    if (kept && (known_ >> slot & 1u) != 0) return Rgb(seen_[slot][0], seen_[slot][1], seen_[slot][2]);
+    if (kept && (known_ >> slot & 1u) != 0) {
+        return Rgb(seen_[slot][0], seen_[slot][1], seen_[slot][2]);
+    }
     const shared::CascadeNearEmitter& e = state_.faces.nearEmitters[i];
     const FaceTarget target{{e.x, e.y, e.z}, normalFromIndex(int(e.normal))};
     const shared::vec3 d = normalize(shared::nearEmitterPoint(e, q) - point_);

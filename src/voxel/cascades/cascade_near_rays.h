@@ -39,7 +39,7 @@ class NearEmitterRays {
     std::uint32_t begin_ = 0, end_ = 0;
     gpu::shared::vec3 point_;
     int cast_ = 0;
-    std::uint64_t known_ = 0;  // bit 4 (i - begin) + q: line cast and kept in seen_
+    std::uint64_t known_ = 0;   // bit 4 (i - begin) + q: line cast and kept in seen_
     float seen_[4 * kKept][3];  // left uninitialised: read only where known_ says it was cast
 };
 

@@ -85,11 +85,10 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
     cascades::NearEmitterRays nearRays(*state_, s.hit, face);
     const Rgb irradiance = far + cascades::nearEmitterLight(*state_, nearRays);
     // The callbacks capture two pointers each, which std::function keeps without allocating.
-    SolverLight light{irradiance * kInvPi,
-                      [this, &rng](const Ray& r, bool delta) {
-                          return reflectedLight(r, delta, 0, rng);
-                      },
-                      kPictureSunRays, kPictureSpecularRays};
+    SolverLight light{
+        irradiance * kInvPi,
+        [this, &rng](const Ray& r, bool delta) { return reflectedLight(r, delta, 0, rng); },
+        kPictureSunRays, kPictureSpecularRays};
     // The near emitters' glossy highlight light-sampled, their GGX rays keeping the rest.
     struct Glossy {
         const RadianceCascades* cascades;
