@@ -1,11 +1,13 @@
 // Voxel radiance cascades (docs/algorithms/voxel-radiance-cascades.md): the parts of a real-time
 // frame on a shipped scene, in CPU time: one lighting pass (a bounce), the picture at 640x360,
-// and the one-off build. `--benchmark_filter=voxel_cascades`; the CPU column is the whole
+// and the one-off build; a whole frame (a pass and the picture) on each small shipped scene.
+// `--benchmark_filter=voxel_cascades`; the CPU column is the whole
 // process (all threads): on an idle 2-core machine a frame takes about half of it. The `_gpu`
 // benchmarks time the lighting pass and the picture on the GPU by its timestamps (transfers
 // excluded); they are skipped without a Vulkan device and on a CPU device (lavapipe).
 #include <benchmark/benchmark.h>
 
+#include <map>
 #include <memory>
 #include <string>
 
@@ -19,14 +21,19 @@ namespace {
 using namespace luxel;
 using namespace luxel::voxel;
 
+// scenes/voxel/<name>.json at 640x360, loaded once.
+VoxelScene& shippedScene(const std::string& name) {
+    static std::map<std::string, VoxelScene> scenes;
+    auto found = scenes.find(name);
+    if (found != scenes.end()) return found->second;
+    auto loaded =
+        loadVoxelScene(std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/" + name + ".json", 640, 360);
+    if (!loaded) throw std::runtime_error(loaded.error().message());
+    return scenes.emplace(name, std::move(*loaded)).first->second;
+}
+
 VoxelScene& cottage() {
-    static VoxelScene scene = [] {
-        auto loaded =
-            loadVoxelScene(std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/cottage.json", 640, 360);
-        if (!loaded) throw std::runtime_error(loaded.error().message());
-        return std::move(*loaded);
-    }();
-    return scene;
+    return shippedScene("cottage");
 }
 
 void BM_VoxelCascadesBuild(benchmark::State& state) {
@@ -53,6 +60,23 @@ void BM_VoxelCascadesPicture(benchmark::State& state) {
     }
     state.counters["Mpixel/s"] = benchmark::Counter(
         double(scene.camera.width()) * scene.camera.height() * 1e-6, benchmark::Counter::kIsRate);
+}
+
+// A real-time frame (docs/algorithms/voxel-radiance-cascades.md §5): one lighting pass and the
+// picture at 640x360, after a solve, on a shipped scene.
+void BM_VoxelCascadesFrame(benchmark::State& state, const std::string& name) {
+    VoxelScene& scene = shippedScene(name);
+    auto cascades = RadianceCascades::create(scene.world, &scene.textures, scene.shading);
+    if (!cascades) {
+        state.SkipWithError(cascades.error().message().c_str());
+        return;
+    }
+    cascades->solve();
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(cascades->iterate());
+        auto image = cascades->render(scene.camera);
+        benchmark::DoNotOptimize(image.ok());
+    }
 }
 
 // A hardware Vulkan device, or null (with the reason in `why`).
@@ -133,3 +157,13 @@ BENCHMARK(BM_VoxelCascadesPicture)
     ->Name("voxel_cascades/picture_640x360/cottage")
     ->MeasureProcessCPUTime()
     ->Unit(benchmark::kMillisecond);
+#define LUXEL_FRAME_BENCHMARK(id, scene)                             \
+    BENCHMARK_CAPTURE(BM_VoxelCascadesFrame, id, std::string(scene)) \
+        ->Name("voxel_cascades/frame_640x360/" scene)                \
+        ->MeasureProcessCPUTime()                                    \
+        ->Unit(benchmark::kMillisecond)
+LUXEL_FRAME_BENCHMARK(cottage, "cottage");
+LUXEL_FRAME_BENCHMARK(fence, "fence");
+LUXEL_FRAME_BENCHMARK(garden, "garden");
+LUXEL_FRAME_BENCHMARK(glass, "glass");
+LUXEL_FRAME_BENCHMARK(thin_walls, "thin-walls");

@@ -4,6 +4,7 @@
 // voxels (multiple importance sampling) and sampled for the next direction; refracted rays walk
 // the transmissive voxels with Beer-Lambert absorption; Russian roulette.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -181,14 +182,29 @@ bool rouletteEnds(int k, const PathTraceOptions& p, float u, Rgb& throughput) {
 
 }  // namespace
 
+namespace {
+
+// srgbToLinear(byte / 255) for every byte, computed once: a voxel's colour is three bytes, and a
+// powf per channel at every surface was 4% of the radiance cascades' picture
+// (docs/algorithms/voxel-radiance-cascades.md §5). The same values, so nothing changes.
+float linearOfByte(std::uint8_t byte) {
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        for (int i = 0; i < 256; ++i) t[i] = srgbToLinear(float(i) / 255.0f);
+        return t;
+    }();
+    return table[byte];
+}
+
+}  // namespace
+
 PathSurface pathSurfaceAt(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& o) {
     const Hit& hit = s.hit;
     const Voxel voxel = world.get(hit.voxel.x, hit.voxel.y, hit.voxel.z);
     const int materialSlot = textureSlotOf(voxel);
     const Material& m = o.materials.forSlot(materialSlot);
-    Rgb colour = Rgb(srgbToLinear(voxel.r / 255.0f), srgbToLinear(voxel.g / 255.0f),
-                     srgbToLinear(voxel.b / 255.0f)) *
-                 m.albedo;
+    Rgb colour =
+        Rgb(linearOfByte(voxel.r), linearOfByte(voxel.g), linearOfByte(voxel.b)) * m.albedo;
     if (s.slot >= 0) colour = colour * Rgb(s.texel.r, s.texel.g, s.texel.b);
     const bool procedural =
         o.textures && (s.slot < 0 ? !o.materials.hasSlot(materialSlot) || m.proceduralTexture

@@ -71,18 +71,30 @@ double ggxReflectance(const PathBsdf& b, Vec3d l, double cosL) {
            shared::ggxSmithVisibility(float(b.cosView), float(cosL), b.alpha);
 }
 
+}  // namespace
+
+// What sampleGgx needs of the lobe alone, whatever numbers are drawn.
+GgxSampler::Frame GgxSampler::frameOf(const PathBsdf& b) {
+    Frame f;
+    faceFrame(b.normal, f.tu, f.tv);
+    f.n = toDouble(b.normal);
+    const double a = b.alpha;
+    const Vec3d v{dot(b.view, f.tu), dot(b.view, f.tv), b.cosView};
+    f.vh = normalize(Vec3d{a * v.x, a * v.y, v.z});
+    const Vec3d& vh = f.vh;
+    const double lensq = vh.x * vh.x + vh.y * vh.y;
+    f.t1 = lensq > 0.0 ? Vec3d{-vh.y, vh.x, 0.0} / std::sqrt(lensq) : Vec3d{1, 0, 0};
+    f.t2 = cross(vh, f.t1);
+    return f;
+}
+
+namespace {
+
 // A visible normal of GGX (Heitz 2018, "Sampling the GGX Distribution of Visible Normals") in
 // the frame (tu, tv, n), and the view reflected about it.
-Vec3d sampleGgx(const PathBsdf& b, float u1, float u2) {
-    Vec3d tu, tv;
-    faceFrame(b.normal, tu, tv);
-    const Vec3d n = toDouble(b.normal);
+Vec3d sampleGgx(const PathBsdf& b, const GgxSampler::Frame& f, float u1, float u2) {
+    const Vec3d &tu = f.tu, &tv = f.tv, &n = f.n, &vh = f.vh, &t1 = f.t1, &t2 = f.t2;
     const double a = b.alpha;
-    const Vec3d v{dot(b.view, tu), dot(b.view, tv), b.cosView};
-    const Vec3d vh = normalize(Vec3d{a * v.x, a * v.y, v.z});
-    const double lensq = vh.x * vh.x + vh.y * vh.y;
-    const Vec3d t1 = lensq > 0.0 ? Vec3d{-vh.y, vh.x, 0.0} / std::sqrt(lensq) : Vec3d{1, 0, 0};
-    const Vec3d t2 = cross(vh, t1);
     const double r = std::sqrt(double(u1)), phi = 2.0 * kPi * double(u2);
     const double p1 = r * std::cos(phi);
     const double s = 0.5 * (1.0 + vh.z);
@@ -134,7 +146,7 @@ PathBsdf pathBsdf(const Material& m, Rgb colour, Int3 normal, Vec3d direction,
     return b;
 }
 
-BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng) {
+BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng, bool density) {
     using Lobe = BsdfSample::Lobe;
     BsdfSample out;
     const int lobes = (b.pSpecular > 0.0) + (b.pTransmission > 0.0) + (b.pDiffuse > 0.0);
@@ -177,7 +189,7 @@ BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng) {
         return out;
     }
     const float u1 = rng.next(), u2 = rng.next();
-    out.direction = sampleGgx(b, u1, u2);
+    out.direction = sampleGgx(b, GgxSampler::frameOf(b), u1, u2);
     const double cosL = dot(n, out.direction);
     if (!(cosL > 0.0) || !(b.cosView > 0.0)) {  // below the face: lost (single scattering)
         out.lobe = Lobe::None;
@@ -187,7 +199,7 @@ BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng) {
     const double vis = shared::ggxSmithVisibility(float(b.cosView), float(cosL), b.alpha);
     out.weight = b.specular * float(4.0 * b.cosView * cosL * vis /
                                     (ggxMasking(b.cosView, b.alpha) * b.pSpecular));
-    out.pdf = b.pSpecular * ggxPdf(b, out.direction);
+    if (density) out.pdf = b.pSpecular * ggxPdf(b, out.direction);
     return out;
 }
 
@@ -205,6 +217,33 @@ Rgb bsdfLight(const PathBsdf& b, Vec3d l, Rgb radiance, double lightPdf) {
         const double w = deltaLight ? 1.0 : powerHeuristic(lightPdf, b.pSpecular * ggxPdf(b, l));
         out += b.specular * radiance * float(ggxReflectance(b, l, cosL) * cosL * w / divide);
     }
+    return out;
+}
+
+GgxSampler::GgxSampler(const PathBsdf& b)
+    : b_(b),
+      ggx_(b.pSpecular == 1.0 && b.pTransmission == 0.0 && b.pDiffuse == 0.0 && !b.mirror()) {
+    if (ggx_) {
+        frame_ = frameOf(b);
+        frame_.masking = ggxMasking(b.cosView, b.alpha);
+    }
+}
+
+BsdfSample GgxSampler::sample(PathRng& rng) const {
+    if (!ggx_) return sampleBsdf(b_, rng, false);
+    // sampleBsdf's GGX branch for one lobe (no number drawn for the lobe).
+    const PathBsdf& b = b_;
+    BsdfSample out;
+    out.lobe = BsdfSample::Lobe::Specular;
+    const float u1 = rng.next(), u2 = rng.next();
+    out.direction = sampleGgx(b, frame_, u1, u2);
+    const double cosL = dot(frame_.n, out.direction);
+    if (!(cosL > 0.0) || !(b.cosView > 0.0)) {
+        out.lobe = BsdfSample::Lobe::None;
+        return out;
+    }
+    const double vis = shared::ggxSmithVisibility(float(b.cosView), float(cosL), b.alpha);
+    out.weight = b.specular * float(4.0 * b.cosView * cosL * vis / (frame_.masking * b.pSpecular));
     return out;
 }
 

@@ -64,7 +64,32 @@ struct BsdfSample {
 
 // Picks a lobe and samples its direction. Draws one number for the lobe when more than one lobe
 // has a non-zero probability, then two for the direction when the lobe is diffuse or GGX.
-BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng);
+// `density` false leaves a GGX sample's pdf 0 (the real-time solvers' split sum reads only the
+// direction and weight, which are the same either way).
+BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng, bool density = true);
+
+// The real-time solvers' GGX directions of one lobe, drawn one after another: for a
+// specular-only lobe (pSpecular 1, no other lobe, not a mirror) sampleBsdf(b, rng, false)'s
+// directions and weights to the bit, with what depends on the lobe alone (its frame, the
+// visible normals' hemisphere, the view's masking) made once instead of at every sample
+// (docs/algorithms/voxel-radiance-cascades.md §5); any other lobe goes to sampleBsdf. `b` must
+// outlive the sampler.
+class GgxSampler {
+  public:
+    explicit GgxSampler(const PathBsdf& b);
+    BsdfSample sample(PathRng& rng) const;
+
+    struct Frame {
+        Vec3d tu, tv, n, vh, t1, t2;
+        double masking = 0.0;  // G1 of the view (set by the sampler)
+    };
+    static Frame frameOf(const PathBsdf& b);
+
+  private:
+    const PathBsdf& b_;
+    bool ggx_;
+    Frame frame_;
+};
 
 // Light of `radiance` arriving from unit direction l that the smooth lobes send towards the
 // view: f cos L / lightPdf, each lobe weighted by the power heuristic against the density with

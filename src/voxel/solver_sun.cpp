@@ -3,6 +3,9 @@
 #include "solver_sun.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <vector>
 
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/voxel/surface_cast.h"
@@ -125,18 +128,66 @@ Rgb faceRayTransmittance(const VoxelWorld& world, const TextureSet* textures, co
     return lineTransmittance(world, textures, ray, shading, &target);
 }
 
+namespace {
+
+// The sun's disk and its spiral's directions for `rays` rays, kept per thread for the last sun
+// asked for: they are the same at every pixel, and making them at each (a frame, a square root,
+// a sine and a cosine per ray) was 6% of the radiance cascades' picture
+// (docs/algorithms/voxel-radiance-cascades.md §5). The same values, so nothing changes.
+struct SunSpiral {
+    Vec3 direction{};
+    double angularRadius = -1.0;
+    int rays = 0;
+    SunDisk sun;
+    std::vector<Vec3d> directions;
+};
+
+// Compared bit for bit: -0 and 0 give the disk different tangents (copysign).
+bool sameSun(const SunSpiral& c, const ShadeOptions& shading, int sunRays) {
+    const Vec3 d = shading.sunDirection;
+    return c.rays == sunRays &&
+           std::bit_cast<std::uint64_t>(c.angularRadius) ==
+               std::bit_cast<std::uint64_t>(shading.sunAngularRadius) &&
+           std::bit_cast<std::uint32_t>(c.direction.x) == std::bit_cast<std::uint32_t>(d.x) &&
+           std::bit_cast<std::uint32_t>(c.direction.y) == std::bit_cast<std::uint32_t>(d.y) &&
+           std::bit_cast<std::uint32_t>(c.direction.z) == std::bit_cast<std::uint32_t>(d.z);
+}
+
+// Two kept: the camera's surface and the followed glass behind it ask for different counts.
+const SunSpiral& sunSpiral(const ShadeOptions& shading, int sunRays) {
+    thread_local SunSpiral cached[2];
+    thread_local int next = 0;
+    for (const SunSpiral& c : cached) {
+        if (sameSun(c, shading, sunRays)) return c;
+    }
+    SunSpiral& c = cached[next];
+    next ^= 1;
+    c.direction = shading.sunDirection;
+    c.angularRadius = shading.sunAngularRadius;
+    c.rays = sunRays;
+    c.sun = SunDisk::make(c.direction, shading.sunAngularRadius);
+    // A delta sun: one shadow ray; a disk: the spiral's rays.
+    const int rays = c.sun.delta() ? 1 : std::max(sunRays, 1);
+    c.directions.resize(std::size_t(rays));
+    for (int i = 0; i < rays; ++i) c.directions[std::size_t(i)] = c.sun.spiral(i, rays);
+    return c;
+}
+
+}  // namespace
+
 Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
                    const PathBsdf* specular, const ShadeOptions& shading, int sunRays) {
     if (!(shading.sunIrradiance.maxComponent() > 0.0f)) return {};
     if (!(diffuse.maxComponent() > 0.0f) && !specular) return {};
-    const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
+    const SunSpiral& spiral = sunSpiral(shading, sunRays);
+    const SunDisk& sun = spiral.sun;
     const Vec3d n{double(hit.normal.x), double(hit.normal.y), double(hit.normal.z)};
-    // A delta sun: one shadow ray; a disk: the spiral's rays, each bringing radiance / pdf.
-    const int rays = sun.delta() ? 1 : std::max(sunRays, 1);
+    // Each of the spiral's rays brings radiance / pdf.
+    const int rays = int(spiral.directions.size());
     const Rgb perRay = sun.radianceOverPdf(shading.sunIrradiance) * float(1.0 / rays);
     Rgb cosines, glossy;  // the sum of cos x transmittance; the smooth lobes' light
     for (int i = 0; i < rays; ++i) {
-        const Vec3d l = sun.spiral(i, rays);
+        const Vec3d& l = spiral.directions[std::size_t(i)];
         const double cosSun = dot(n, l);
         // Rays start on the face; castRay's start-cell rule puts them in the cell in front.
         if (!(cosSun > 0.0)) continue;

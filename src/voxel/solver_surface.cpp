@@ -111,8 +111,9 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
     specular.pSpecular = 1.0;
     Rgb weighted;
     double weights = 0.0;
+    const GgxSampler ggx(specular);
     for (int k = 0; k < light.specularRays; ++k) {
-        const BsdfSample sample = sampleBsdf(specular, rng);
+        const BsdfSample sample = ggx.sample(rng);
         if (sample.lobe != BsdfSample::Lobe::Specular) continue;
         const double w = sample.weight.r;
         const Ray r{s.hit.point, sample.direction};

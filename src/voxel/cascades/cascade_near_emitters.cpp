@@ -7,58 +7,83 @@
 // Lambert's contour integral times the mean transmittance of four straight lines to the emitter.
 // The camera surface's glossy lobe takes the same near share by light sampling (§4.2): each
 // emitter's four quarter points as delta lights, while its GGX rays keep the far share of the
-// emitters they meet (nearEmitterShare). The GPU's twin: src/gpu/shaders/voxel/near_emitters.glsl
-// (same float arithmetic).
+// emitters they meet (nearEmitterShare). Both aim the same lines at the same points, which the
+// picture casts once for both (NearEmitterRays, cascade_near_rays.h). The GPU's twin:
+// src/gpu/shaders/voxel/near_emitters.glsl (same float arithmetic).
 #include <cmath>
 
 #include "../path_trace_bsdf.h"
 #include "../solver_sun.h"
+#include "cascade_near_rays.h"
 #include "cascade_state.h"
 
 namespace luxel::voxel::cascades {
 
 namespace shared = gpu::shared;
 
-Rgb nearEmitterLight(const RadianceCascades::State& state, const Hit& hit) {
+NearEmitterRays::NearEmitterRays(const RadianceCascades::State& state, const Hit& hit, int face)
+    : state_(state), hit_(hit), point_(float(hit.point.x), float(hit.point.y), float(hit.point.z)) {
     const FaceData& faces = state.faces;
-    if (faces.nearOffset.empty()) return {};
-    const int face = faces.table.find(hit.voxel, normalIndex(hit.normal));
-    if (face < 0) return {};
-    const shared::vec3 p(float(hit.point.x), float(hit.point.y), float(hit.point.z));
-    const shared::vec3 n(float(hit.normal.x), float(hit.normal.y), float(hit.normal.z));
+    if (faces.nearOffset.empty()) return;
+    face_ = face == kFindFace ? faces.table.find(hit.voxel, normalIndex(hit.normal)) : face;
+    if (face_ < 0) return;
+    begin_ = faces.nearOffset[face_];
+    end_ = faces.nearOffset[face_ + 1];
+}
+
+Rgb NearEmitterRays::transmittance(std::uint32_t i, int q) {
+    const std::uint32_t slot = 4 * (i - begin_) + std::uint32_t(q);
+    const bool kept = i - begin_ < kKept;
+    if (kept && (known_ >> slot & 1u) != 0) {
+        return Rgb(seen_[slot][0], seen_[slot][1], seen_[slot][2]);
+    }
+    const shared::CascadeNearEmitter& e = state_.faces.nearEmitters[i];
+    const FaceTarget target{{e.x, e.y, e.z}, normalFromIndex(int(e.normal))};
+    const shared::vec3 d = normalize(shared::nearEmitterPoint(e, q) - point_);
+    const Rgb t = faceRayTransmittance(*state_.world, state_.textures,
+                                       {hit_.point, {double(d.x), double(d.y), double(d.z)}},
+                                       state_.shading, target);
+    ++cast_;
+    if (kept) {
+        seen_[slot][0] = t.r, seen_[slot][1] = t.g, seen_[slot][2] = t.b;
+        known_ |= std::uint64_t(1) << slot;
+    }
+    return t;
+}
+
+Rgb nearEmitterLight(const RadianceCascades::State& state, NearEmitterRays& rays) {
+    if (rays.face() < 0) return {};
+    const shared::vec3& p = rays.point();
+    const Int3 normal = rays.hit().normal;
+    const shared::vec3 n(float(normal.x), float(normal.y), float(normal.z));
     Rgb sum;
-    for (std::uint32_t i = faces.nearOffset[face]; i < faces.nearOffset[face + 1]; ++i) {
-        const shared::CascadeNearEmitter& e = faces.nearEmitters[i];
+    for (std::uint32_t i = rays.begin(); i < rays.end(); ++i) {
+        const shared::CascadeNearEmitter& e = state.faces.nearEmitters[i];
         const float weight =
             shared::nearEmitterWeight(length(p - shared::nearEmitterPoint(e, -1)),
                                       LUXEL_NEAR_EMITTER_INNER, LUXEL_NEAR_EMITTER_OUTER);
         if (!(weight > 0.0f)) continue;
         const float formFactor = shared::nearEmitterFormFactor(p, n, e);
         if (!(formFactor > 0.0f)) continue;
-        const Int3 emitterNormal = normalFromIndex(int(e.normal));
-        const FaceTarget target{{e.x, e.y, e.z}, emitterNormal};
         Rgb seen;
-        for (int q = 0; q < 4; ++q) {
-            const shared::vec3 d = normalize(shared::nearEmitterPoint(e, q) - p);
-            seen += faceRayTransmittance(*state.world, state.textures,
-                                         {hit.point, {double(d.x), double(d.y), double(d.z)}},
-                                         state.shading, target);
-        }
+        for (int q = 0; q < 4; ++q) seen += rays.transmittance(i, q);
         sum += Rgb(e.r, e.g, e.b) * seen * (0.25f * weight * formFactor);
     }
     return sum;
 }
 
-Rgb nearEmitterHighlight(const RadianceCascades::State& state, const Hit& hit,
+Rgb nearEmitterLight(const RadianceCascades::State& state, const Hit& hit) {
+    NearEmitterRays rays(state, hit);
+    return nearEmitterLight(state, rays);
+}
+
+Rgb nearEmitterHighlight(const RadianceCascades::State& state, NearEmitterRays& rays,
                          const PathBsdf& specular) {
-    const FaceData& faces = state.faces;
-    if (faces.nearOffset.empty()) return {};
-    const int face = faces.table.find(hit.voxel, normalIndex(hit.normal));
-    if (face < 0) return {};
-    const shared::vec3 p(float(hit.point.x), float(hit.point.y), float(hit.point.z));
+    if (rays.face() < 0) return {};
+    const shared::vec3& p = rays.point();
     Rgb sum;
-    for (std::uint32_t i = faces.nearOffset[face]; i < faces.nearOffset[face + 1]; ++i) {
-        const shared::CascadeNearEmitter& e = faces.nearEmitters[i];
+    for (std::uint32_t i = rays.begin(); i < rays.end(); ++i) {
+        const shared::CascadeNearEmitter& e = state.faces.nearEmitters[i];
         const shared::vec3 centre = shared::nearEmitterPoint(e, -1);
         const float distance = length(p - centre);
         const float weight =
@@ -67,15 +92,10 @@ Rgb nearEmitterHighlight(const RadianceCascades::State& state, const Hit& hit,
         // A face lights only the side it faces: from behind, a GGX ray meets another face.
         const shared::vec3 outward = shared::nearEmitterNormal(e.normal);
         if (!(dot(outward, p - centre) > 0.0f)) continue;
-        const Int3 emitterNormal = normalFromIndex(int(e.normal));
-        const FaceTarget target{{e.x, e.y, e.z}, emitterNormal};
         const int side = shared::nearHighlightSide(distance, specular.alpha);
         Rgb seen;
         for (int q = 0; q < 4; ++q) {
-            const shared::vec3 d = normalize(shared::nearEmitterPoint(e, q) - p);
-            const Rgb t = faceRayTransmittance(*state.world, state.textures,
-                                               {hit.point, {double(d.x), double(d.y), double(d.z)}},
-                                               state.shading, target);
+            const Rgb t = rays.transmittance(i, q);
             if (!(t.maxComponent() > 0.0f)) continue;
             const Rgb radiance = Rgb(e.r, e.g, e.b) * t;
             // Each point a delta light of its cell's solid angle, (0.25 / side^2) |n_e . l| / r^2.
@@ -91,6 +111,12 @@ Rgb nearEmitterHighlight(const RadianceCascades::State& state, const Hit& hit,
         sum += seen * weight;
     }
     return sum;
+}
+
+Rgb nearEmitterHighlight(const RadianceCascades::State& state, const Hit& hit,
+                         const PathBsdf& specular) {
+    NearEmitterRays rays(state, hit);
+    return nearEmitterHighlight(state, rays, specular);
 }
 
 float nearEmitterShare(const RadianceCascades::State& state, const Hit& hit, Int3 voxel,

@@ -11,6 +11,7 @@
 #include "../path_trace_surface.h"
 #include "../solver_sun.h"
 #include "../solver_surface.h"
+#include "cascade_near_rays.h"
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/path_trace.h"
@@ -37,7 +38,11 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
                (delta ? sunDiskAlong(r.direction, shading) : Rgb{});
     }
     if (s.hit.normal == Int3{}) return {};
-    const Rgb irradiance = indirectIrradiance(s.hit.voxel, s.hit.normal, s.hit.point);
+    // indirectIrradiance, keeping the face's id for its sun below.
+    int face = -1;
+    const Rgb irradiance =
+        cascades::interpolatedIrradiance(state_->faces, state_->faces.emitterIrradiance,
+                                         s.hit.voxel, s.hit.normal, s.hit.point, &face);
     if (depth < kSolverFollowDepth && solverFollows(world, s, shading)) {
         // Glass or polished metal: shaded with its material, what lies behind it or what it
         // reflects followed as for the camera's ray.
@@ -51,7 +56,6 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
     // were lit (no shadow rays per pixel: a reflection is blurred by its lobe anyway) and the
     // cascades' irradiance.
     const PathSurface surface = pathSurfaceAt(world, s, shading);
-    const int face = state_->faces.table.find(s.hit.voxel, cascades::normalIndex(s.hit.normal));
     const Rgb sun = face >= 0 ? cascades::faceDirectSun(*state_, face) : Rgb{};
     Rgb emission = surface.emission;
     if (nearOf && emission.maxComponent() > 0.0f) {
@@ -72,20 +76,32 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
     if (!s.hit.hit) return skyColor(ray.direction, shading);
     if (s.hit.normal == Int3{}) return {};  // the camera is inside a solid voxel
     // The emitters near the pixel taken exactly at it, the rest of their light (emitterFar)
-    // interpolated with the faces' irradiance.
+    // interpolated with the faces' irradiance; their visibility lines cast once for this light
+    // and the highlight below (§5).
     const cascades::FaceData& faces = state_->faces;
-    const Rgb irradiance = cascades::interpolatedIrradiance(faces, faces.emitterFar, s.hit.voxel,
-                                                            s.hit.normal, s.hit.point) +
-                           cascades::nearEmitterLight(*state_, s.hit);
-    SolverLight light{irradiance * kInvPi,
-                      [&](const Ray& r, bool delta) { return reflectedLight(r, delta, 0, rng); },
-                      kPictureSunRays, kPictureSpecularRays};
+    int face = -1;
+    const Rgb far = cascades::interpolatedIrradiance(faces, faces.emitterFar, s.hit.voxel,
+                                                     s.hit.normal, s.hit.point, &face);
+    cascades::NearEmitterRays nearRays(*state_, s.hit, face);
+    const Rgb irradiance = far + cascades::nearEmitterLight(*state_, nearRays);
+    // The callbacks capture two pointers each, which std::function keeps without allocating.
+    SolverLight light{
+        irradiance * kInvPi,
+        [this, &rng](const Ray& r, bool delta) { return reflectedLight(r, delta, 0, rng); },
+        kPictureSunRays, kPictureSpecularRays};
     // The near emitters' glossy highlight light-sampled, their GGX rays keeping the rest.
+    struct Glossy {
+        const RadianceCascades* cascades;
+        PathRng* rng;
+        const Hit* at;
+    } glossy{this, &rng, &s.hit};
     if (!faces.nearOffset.empty()) {
-        light.nearHighlight = [&](const PathBsdf& specular) {
-            return cascades::nearEmitterHighlight(*state_, s.hit, specular);
+        light.nearHighlight = [this, &nearRays](const PathBsdf& specular) {
+            return cascades::nearEmitterHighlight(*state_, nearRays, specular);
         };
-        light.glossyAlong = [&](const Ray& r) { return reflectedLight(r, false, 0, rng, &s.hit); };
+        light.glossyAlong = [&glossy](const Ray& r) {
+            return glossy.cascades->reflectedLight(r, false, 0, *glossy.rng, glossy.at);
+        };
     }
     return shadeSolverSurface(world, state_->textures, s, ray, shading, light, rng);
 }

@@ -184,16 +184,24 @@ bool computeEmitterIrradiance(RadianceCascades::State& state);
 // The faces' irradiance plus `emitter` (emitterIrradiance, or emitterFar for the picture's own
 // surface) at a point on a face, bilinear between the centres of the face and its open
 // neighbours in the plane (RadianceCascades::indirectIrradiance).
+// `face`, when given, receives the id of the face at `point` (-1: none), which callers would
+// otherwise look up again.
 Rgb interpolatedIrradiance(const FaceData& faces, const std::vector<Rgb>& emitter, Int3 voxel,
-                           Int3 normal, Vec3d point);
+                           Int3 normal, Vec3d point, int* face = nullptr);
 // The light of the emitters near `hit` taken exactly there, each by its nearEmitterWeight
-// (cascade_near_emitters.cpp).
+// (cascade_near_emitters.cpp). With `rays`, the visibility lines are read from (and cast into)
+// them, so that nearEmitterHighlight at the same hit casts none twice; without, each call
+// casts its own.
+class NearEmitterRays;
 Rgb nearEmitterLight(const RadianceCascades::State& state, const Hit& hit);
+Rgb nearEmitterLight(const RadianceCascades::State& state, NearEmitterRays& rays);
 // The glossy highlight of the emitters near `hit` (the camera's surface), light-sampled: each
 // emitter's four quarter points as delta lights of a quarter of its solid angle through the
 // specular-only lobe `specular` (bsdfLight), times its nearEmitterWeight s; the GGX rays count
 // the same emitter's emission times 1 - s (nearEmitterShare).
 Rgb nearEmitterHighlight(const RadianceCascades::State& state, const Hit& hit,
+                         const PathBsdf& specular);
+Rgb nearEmitterHighlight(const RadianceCascades::State& state, NearEmitterRays& rays,
                          const PathBsdf& specular);
 // The nearEmitterWeight at `hit` of the emitting face (voxel, normal) when it is in the near list
 // of hit's face; 0 when it is not.

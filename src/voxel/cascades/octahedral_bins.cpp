@@ -51,18 +51,6 @@ Vec3d octahedralDirection(double u, double v) {
     return normalize(octahedronPoint(u, v));
 }
 
-int normalIndex(Int3 n) {
-    if (n.x != 0) return n.x > 0 ? 0 : 1;
-    if (n.y != 0) return n.y > 0 ? 2 : 3;
-    return n.z > 0 ? 4 : 5;
-}
-
-Int3 normalFromIndex(int index) {
-    Int3 n{};
-    n[index / 2] = (index % 2) ? -1 : 1;
-    return n;
-}
-
 DirectionBins DirectionBins::build(int side) {
     DirectionBins bins;
     bins.side = side;

@@ -139,7 +139,7 @@ Rgb RadianceCascades::indirectIrradiance(Int3 voxel, Int3 normal, Vec3d point) c
 }
 
 Rgb cascades::interpolatedIrradiance(const FaceData& faces, const std::vector<Rgb>& emitter,
-                                     Int3 voxel, Int3 normal, Vec3d point) {
+                                     Int3 voxel, Int3 normal, Vec3d point, int* face) {
     const int n = normalIndex(normal), axis = n / 2, a = (axis + 1) % 3, b = (axis + 2) % 3;
     // Bilinear between the centres of this face and its neighbours in the plane; a neighbour
     // counts when it is an open face too, and a diagonal one only through an open side neighbour
@@ -152,6 +152,7 @@ Rgb cascades::interpolatedIrradiance(const FaceData& faces, const std::vector<Rg
     const int self = faces.table.find(voxel, n), sideA = faces.table.find(va, n),
               sideB = faces.table.find(vb, n);
     const int diagonal = (sideA >= 0 || sideB >= 0) ? faces.table.find(vab, n) : -1;
+    if (face) *face = self;
     const int ids[4] = {self, sideA, sideB, diagonal};
     const double weights[4] = {(1 - wa) * (1 - wb), wa * (1 - wb), (1 - wa) * wb, wa * wb};
     Rgb sum;
