@@ -300,6 +300,8 @@ void ModeVoxel::drawSurfacePanel() {
     const char* filters[] = {"nearest", "trilinear", "anisotropic"};
     touched |= enumCombo("texture filter (X)", s.textureFilter, filters);
     touched |= ImGui::SliderInt("samples per pixel (, .)", &s.samplesPerPixel, 1, 64);
+    // Radiance cascades: the pixels of strong contrast drawn again (0: off).
+    touched |= ImGui::SliderInt("adaptive samples (cascades)", &s.adaptiveSamples, 0, 64);
     touched |= ImGui::SliderFloat("bloom (O)", &p.bloom.strength, 0.0f, 1.0f, "%.2f");
     touched |= ImGui::SliderInt("bloom levels", &p.bloom.levels, 1, 8);
     touched |= ImGui::SliderFloat("internal scale", &p.internalScale, post::kMinInternalScale, 1.0f,

@@ -176,8 +176,11 @@ Result<Image> RendererVoxel::renderCascades(const voxel::Camera& internal, Frame
         cascadesLight_ = false;
         frame.passes.push_back({"cascades light", clock.milliseconds()});
     }
-    // The samples per pixel (, and .) draw the picture only: the light stays.
+    // The samples per pixel (, and .) and the adaptive samples draw the picture only: the light
+    // stays.
     cascades_->setPictureSamples(state_.shading.samplesPerPixel);
+    cascades_->setPictureAdaptiveSamples(state_.shading.adaptiveSamples,
+                                         state_.shading.adaptiveContrast);
     // On a GPU source the pass and the picture run on its device (radiance_cascades_gpu.h);
     // where the device cannot take them the CPU does, and the frame says why.
     const GpuWorld gpu = source_->gpuWorld();

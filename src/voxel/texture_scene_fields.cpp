@@ -12,6 +12,15 @@ void readFilterFields(const Json& render, ShadeOptions& options) {
         options.samplesPerPixel =
             static_cast<int>(readWholeNumber(*v, "render.samples", 1, kMaxSamplesPerPixel));
     }
+    // The radiance cascades' adaptive pass (src/voxel/cascades/adaptive_samples.h): 0 turns it
+    // off.
+    if (const Json* v = find(render, "adaptive_samples")) {
+        options.adaptiveSamples = static_cast<int>(
+            readWholeNumber(*v, "render.adaptive_samples", 0, kMaxSamplesPerPixel));
+    }
+    if (const Json* v = find(render, "adaptive_contrast")) {
+        options.adaptiveContrast = readNumberIn(*v, "render.adaptive_contrast", 1e-3, 1e6);
+    }
     if (const Json* v = find(render, "texture_filter")) {
         const std::optional<TextureFilter> f =
             parseTextureFilter(v->is_string() ? v->get<std::string>() : "");

@@ -1,6 +1,7 @@
 // The scene-file fields of texture filtering, normal maps and anti-aliasing, read for
-// voxel_scene.cpp: "render": {"samples", "texture_filter", "anisotropy", "normal_maps"} and a
-// texture entry's "normal_map". Both throw json::Invalid naming the field.
+// voxel_scene.cpp: "render": {"samples", "adaptive_samples", "adaptive_contrast",
+// "texture_filter", "anisotropy", "normal_maps"} and a texture entry's "normal_map". Both throw
+// json::Invalid naming the field.
 #pragma once
 
 #include <filesystem>
@@ -13,7 +14,9 @@
 namespace luxel::voxel {
 
 // The keys readFilterFields reads (for the "render" object's allowed list).
-#define LUXEL_VOXEL_FILTER_RENDER_KEYS "samples", "texture_filter", "anisotropy", "normal_maps"
+#define LUXEL_VOXEL_FILTER_RENDER_KEYS                                                  \
+    "samples", "adaptive_samples", "adaptive_contrast", "texture_filter", "anisotropy", \
+        "normal_maps"
 
 // Reads the filtering and anti-aliasing fields of a scene's "render" object into `options`.
 void readFilterFields(const json::Json& render, ShadeOptions& options);

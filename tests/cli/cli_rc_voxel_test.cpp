@@ -80,6 +80,39 @@ TEST_F(CliRcVoxel, SamplesAntialiasThePictures) {
     EXPECT_NE(path.output.find("--solver path takes --spp"), std::string::npos) << path.output;
 }
 
+// --adaptive-samples: the cascades' picture draws thin-walls' lamp silhouette again by default,
+// says how many pixels in the summary and the metadata, and 0 turns it off; other solvers refuse
+// it.
+TEST_F(CliRcVoxel, AdaptiveSamplesRefineTheLampsEdges) {
+    const std::string thinWalls = kScenes + "voxel/thin-walls.json";
+    const std::string base = "render " + thinWalls + " --solver rc --size 64x36 --backend cpu";
+    const RunResult on = runLuxel(base + " --stats --out " + path("on.exr"));
+    ASSERT_EQ(on.exitCode, 0) << on.output;
+    EXPECT_NE(on.output.find("picture: 1 samples per pixel, "), std::string::npos) << on.output;
+    EXPECT_EQ(on.output.find(" 0 pixels (0.00%) again"), std::string::npos) << on.output;
+    const RunResult off = runLuxel(base + " --adaptive-samples 0 --stats --out " + path("off.exr"));
+    ASSERT_EQ(off.exitCode, 0) << off.output;
+    EXPECT_NE(off.output.find(" 0 pixels (0.00%) again with 0 samples"), std::string::npos)
+        << off.output;
+    luxel::ImageMetadata metadata;
+    auto refined = luxel::readExr(path("on.exr"), &metadata);
+    auto plain = luxel::readExr(path("off.exr"));
+    ASSERT_TRUE(refined.ok() && plain.ok());
+    const std::string* count = luxel::findMetadata(metadata, "luxel.rc.refined_pixels");
+    ASSERT_NE(count, nullptr);
+    EXPECT_GT(std::stoi(*count), 0);
+    EXPECT_LT(std::stoi(*count), 64 * 36 / 32 + 1);
+    int different = 0;
+    for (int y = 0; y < 36; ++y)
+        for (int x = 0; x < 64; ++x) different += refined->at(x, y, 1) != plain->at(x, y, 1);
+    EXPECT_EQ(different, std::stoi(*count));
+    const RunResult path = runLuxel("render " + thinWalls + " --solver path --adaptive-samples 4" +
+                                    " --out " + this->path("p.exr"));
+    EXPECT_EQ(path.exitCode, 1);
+    EXPECT_NE(path.output.find("--adaptive-samples applies to --solver rc"), std::string::npos)
+        << path.output;
+}
+
 // `luxel info` says what the cascades of a voxel scene would take, as render plans them.
 TEST_F(CliRcVoxel, InfoEstimatesTheCascades) {
     const RunResult r = runLuxel("info " + kCottage);

@@ -204,8 +204,8 @@ TEST(GpuSharedLayout, CascadesPicturePushConstantsAndFaceSlots) {
                                               LUXEL_MEMBER(P, sunBitangentX),
                                               LUXEL_MEMBER(P, sunBitangentY),
                                               LUXEL_MEMBER(P, sunBitangentZ),
-                                              LUXEL_MEMBER(P, pad0),
-                                              LUXEL_MEMBER(P, pad1)}});
+                                              LUXEL_MEMBER(P, refineCount),
+                                              LUXEL_MEMBER(P, refineSamples)}});
     using S = CascadeFaceSlot;
     expectBuffer("cascades_picture", 16,
                  {sizeof(S),

@@ -123,6 +123,14 @@ TEST(RenderImage, SceneFieldsForFilteringAndSamples) {
     EXPECT_EQ(scene->shading.textureFilter, TextureFilter::Anisotropic);
     EXPECT_EQ(scene->shading.maxAnisotropy, 8);
     EXPECT_FALSE(scene->shading.normalMaps);
+    // The radiance cascades' adaptive samples: on by default, 0 turns them off.
+    EXPECT_EQ(scene->shading.adaptiveSamples, ShadeOptions{}.adaptiveSamples);
+    EXPECT_GT(ShadeOptions{}.adaptiveSamples, 1);
+    auto adaptive = sceneWith(tmp, "adaptive", "",
+                              R"(, "render": {"adaptive_samples": 0, "adaptive_contrast": 2.5})");
+    ASSERT_TRUE(adaptive.ok()) << adaptive.error().message();
+    EXPECT_EQ(adaptive->shading.adaptiveSamples, 0);
+    EXPECT_EQ(adaptive->shading.adaptiveContrast, 2.5);
     ASSERT_TRUE(scene->textures.hasNormalMap(0));
     // The shipped brick normal map tilts out of mortar grooves, and is flat on a brick's face.
     int tilted = 0;
@@ -136,6 +144,11 @@ TEST(RenderImage, SceneFieldsForFilteringAndSamples) {
     } bad[] = {
         {"", R"(, "render": {"samples": 0})", "render.samples"},
         {"", R"(, "render": {"samples": 1000})", "render.samples"},
+        {"", R"(, "render": {"adaptive_samples": -1})", "render.adaptive_samples"},
+        {"", R"(, "render": {"adaptive_samples": 257})", "render.adaptive_samples"},
+        {"", R"(, "render": {"adaptive_samples": 2.5})", "render.adaptive_samples"},
+        {"", R"(, "render": {"adaptive_contrast": 0})", "render.adaptive_contrast"},
+        {"", R"(, "render": {"adaptive_contrast": "high"})", "render.adaptive_contrast"},
         {"", R"(, "render": {"texture_filter": "bilinear"})", "render.texture_filter"},
         {"", R"(, "render": {"anisotropy": 0})", "render.anisotropy"},
         {"", R"(, "render": {"normal_maps": 1})", "render.normal_maps"},
@@ -150,6 +163,12 @@ TEST(RenderImage, SceneFieldsForFilteringAndSamples) {
         auto s = sceneWith(tmp, "bad" + std::to_string(i++), c.textureExtra, c.extra);
         ASSERT_FALSE(s.ok()) << c.expected;
         EXPECT_NE(s.error().message().find(c.expected), std::string::npos) << s.error().message();
+        // The file is named too.
+        if (c.expected.starts_with("render.adaptive")) {
+            EXPECT_NE(s.error().message().find("bad" + std::to_string(i - 1) + ".json"),
+                      std::string::npos)
+                << s.error().message();
+        }
     }
 }
 

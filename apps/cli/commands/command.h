@@ -134,6 +134,7 @@ struct VoxelRenderRequest {
     // --samples and --filter (0, empty: the scene's).
     int samples = 0;
     std::string filter = {};
+    int adaptiveSamples = -1;   // --adaptive-samples (-1: the scene's), --solver rc
     bool autoExposure = false;  // --exposure auto (commands/render_outputs.h)
     // --solver path: the path tracer (voxel/path_trace.h) instead of the ray caster.
     bool pathSolver = false;

@@ -47,8 +47,9 @@ struct CompareSolversArgs {
     std::string scene, size, grid, errorImage, move, reference;
     int rays = 1024;
     bool raysGiven = false;
-    int spp = 256;    // voxel scenes: the path-traced reference's samples per pixel
-    int samples = 0;  // voxel scenes: the pictures' samples per pixel (0: the scene's)
+    int spp = 256;             // voxel scenes: the path-traced reference's samples per pixel
+    int samples = 0;           // voxel scenes: the pictures' samples per pixel (0: the scene's)
+    int adaptiveSamples = -1;  // voxel scenes: the cascades' adaptive samples (-1: the scene's)
     double errorScalePercent = 10;
     int sunSweep = 0;    // voxel scenes: frames of the sun sweep (0: none)
     double sunStep = 1;  // degrees between them
@@ -234,11 +235,14 @@ int runCompareSolvers(const CompareSolversArgs& args) {
             size = std::to_string(w) + "x" + std::to_string(h);
         }
         return compareVoxelSolvers({args.scene, size, args.grid, args.spp, args.sunSweep,
-                                    args.sunStep, args.reference, args.samples});
+                                    args.sunStep, args.reference, args.samples,
+                                    args.adaptiveSamples});
     }
-    if (args.samples > 0) {
-        return reportError(Error("--samples applies to voxel scenes; " + args.scene + " is " +
-                                 sceneKindPhrase(file->kind()) + " (--rays sets the reference)"));
+    if (args.samples > 0 || args.adaptiveSamples >= 0) {
+        return reportError(
+            Error(std::string(args.samples > 0 ? "--samples" : "--adaptive-samples") +
+                  " applies to voxel scenes; " + args.scene + " is " +
+                  sceneKindPhrase(file->kind()) + " (--rays sets the reference)"));
     }
     if (args.sunSweep > 0 || args.sunStepGiven) {
         return reportError(Error(std::string(args.sunSweep > 0 ? "--sun-sweep" : "--sun-step") +
@@ -380,6 +384,10 @@ Runner addCompareSolversCommand(CLI::App& app) {
                    "voxel scenes: samples per pixel of the other solvers' pictures, stratified "
                    "(default: the scene's render.samples)")
         ->check(wholeIn(1, voxel::kMaxSamplesPerPixel));
+    app.add_option("--adaptive-samples", args->adaptiveSamples,
+                   "voxel scenes: samples per pixel where the radiance cascades' picture has "
+                   "strong contrast, 0 off (default: the scene's render.adaptive_samples)")
+        ->check(wholeIn(0, voxel::kMaxSamplesPerPixel));
     app.add_option("--grid", args->grid, "write the display images side by side (.png)");
     app.add_option("--error-image", args->errorImage,
                    "write the reference and each solver's signed error side by side (.png)");

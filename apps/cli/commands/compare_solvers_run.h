@@ -59,13 +59,16 @@ struct VoxelCompareRequest {
     std::string reference;
     // Samples per pixel of the solvers other than the path tracer (--samples; 0: the scene's).
     int samples = 0;
+    // The radiance cascades' adaptive samples (--adaptive-samples; -1: the scene's, 0: off).
+    int adaptiveSamples = -1;
 };
 int compareVoxelSolvers(const VoxelCompareRequest& request);
 
 // The voxel solvers compare-solvers runs, the reference (the path tracer) first; a new solver is
 // one more entry.
-// `samples` > 0 passes --samples to the others.
-std::vector<SolverRun> voxelSolvers(int spp, int samples = 0);
+// `samples` > 0 passes --samples to the others, `adaptiveSamples` >= 0 --adaptive-samples to the
+// radiance cascades.
+std::vector<SolverRun> voxelSolvers(int spp, int samples = 0, int adaptiveSamples = -1);
 
 // `compareVoxelSolvers` with request.sunSweep frames (compare_sun_sweep.cpp).
 int compareVoxelSunSweep(const VoxelCompareRequest& request);

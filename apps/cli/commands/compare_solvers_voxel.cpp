@@ -23,7 +23,7 @@
 
 namespace luxel::cli {
 
-std::vector<SolverRun> voxelSolvers(int spp, int samples) {
+std::vector<SolverRun> voxelSolvers(int spp, int samples, int adaptiveSamples) {
     std::vector<SolverRun> runs{
         {"path",
          {"--solver", "path", "--spp", std::to_string(spp), "--backend", "cpu"},
@@ -36,6 +36,10 @@ std::vector<SolverRun> voxelSolvers(int spp, int samples) {
         for (std::size_t i = 1; i < runs.size(); ++i) {
             runs[i].flags.insert(runs[i].flags.end(), {"--samples", std::to_string(samples)});
         }
+    }
+    if (adaptiveSamples >= 0) {
+        runs[2].flags.insert(runs[2].flags.end(),
+                             {"--adaptive-samples", std::to_string(adaptiveSamples)});
     }
     return runs;
 }
@@ -100,7 +104,8 @@ int compareVoxelSolvers(const VoxelCompareRequest& request) {
         if (!outcome) return reportError(outcome.error());
         reused = std::move(*outcome);
     }
-    const std::vector<SolverRun> solvers = voxelSolvers(spp, request.samples);
+    const std::vector<SolverRun> solvers =
+        voxelSolvers(spp, request.samples, request.adaptiveSamples);
     // A reused reference stands in for the first run.
     auto solved =
         runSolverProcesses(request.scene, request.size, std::span(solvers).subspan(reused ? 1 : 0));
@@ -115,6 +120,10 @@ int compareVoxelSolvers(const VoxelCompareRequest& request) {
                 reused ? ", from " : "", request.reference.c_str());
     if (request.samples > 0) {
         std::printf("the other solvers: %d samples/pixel (--samples)\n", request.samples);
+    }
+    if (request.adaptiveSamples >= 0) {
+        std::printf("radiance cascades: %d adaptive samples/pixel (--adaptive-samples)\n",
+                    request.adaptiveSamples);
     }
     std::vector<post::DarkLeak> leaks;
     for (const RunOutcome& run : runs) {

@@ -16,7 +16,8 @@
 namespace luxel::cli {
 
 int compareVoxelSunSweep(const VoxelCompareRequest& request) {
-    std::vector<SolverRun> solvers = voxelSolvers(request.spp, request.samples);
+    std::vector<SolverRun> solvers =
+        voxelSolvers(request.spp, request.samples, request.adaptiveSamples);
     // The reference again with other random numbers: its flicker is the reference's noise alone,
     // the floor under every other solver's.
     SolverRun seed2 = solvers[0];

@@ -154,6 +154,7 @@ int runRender(const RenderArgs& args) {
                                    tone,        args.quiet,         args.stats, args.backend,
                                    args.device, loadTime.seconds(), args.post,  args.surfaces};
         request.samples = args.samples;
+        request.adaptiveSamples = args.adaptiveSamples;
         request.filter = args.filter;
         request.autoExposure = args.exposure.automatic;
         request.pathSolver = args.pathSolver;
@@ -167,9 +168,11 @@ int runRender(const RenderArgs& args) {
         request.cascades.spacing = args.rcSpacing;
         request.cascades.bounces = std::max(0, args.bounces);
         request.sunYawDegrees = args.sunYaw;
-        if (!voxel && (args.samples != 0 || !args.filter.empty())) {
-            return reportError(Error("--samples and --filter apply to voxel scenes; " + args.scene +
-                                     " is " + sceneKindPhrase(file->kind())));
+        if (!voxel && (args.samples != 0 || args.adaptiveSamples >= 0 || !args.filter.empty())) {
+            return reportError(
+                Error("--samples, --adaptive-samples and --filter apply to voxel "
+                      "scenes; " +
+                      args.scene + " is " + sceneKindPhrase(file->kind())));
         }
         return voxel ? renderVoxelScene(request, std::move(file->voxel()))
                      : renderOctreeScene(request, std::move(file->octree()));

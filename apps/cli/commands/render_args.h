@@ -62,6 +62,8 @@ struct RenderArgs {
     // Voxel scenes: anti-aliasing and texture filtering (0 / empty: the scene's).
     int samples = 0;
     std::string filter;
+    // Voxel scenes, --solver rc: the picture's adaptive samples (-1: the scene's; 0: off).
+    int adaptiveSamples = -1;
     // Voxel scenes, --solver path (voxel/path_trace.h); pathGiven: --spp or --max-bounces given.
     int spp = voxel::PathTraceOptions{}.samplesPerPixel;
     int maxBounces = voxel::PathTraceOptions{}.maxBounces;

@@ -142,6 +142,10 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_option("--samples", args->samples,
                    "voxel: samples per pixel, stratified (default: the scene's render.samples)")
         ->check(wholeIn(0, voxel::kMaxSamplesPerPixel));
+    app.add_option("--adaptive-samples", args->adaptiveSamples,
+                   "voxel, --solver rc: samples per pixel where the picture's contrast is strong, "
+                   "0 off (default: the scene's render.adaptive_samples)")
+        ->check(wholeIn(0, voxel::kMaxSamplesPerPixel));
     app.add_option(
         "--filter", args->filter,
         "voxel: texture filter nearest, trilinear or anisotropic (default: the scene's)");

@@ -52,8 +52,10 @@ void printAoSummary(const voxel::SkyVisibilityOptions& ao) {
                 ao.radius, static_cast<unsigned long long>(ao.seed));
 }
 
-// The radiance cascades' line of the summary: their layout, memory and times.
-void printCascadeSummary(const voxel::CascadeImage& c) {
+// The radiance cascades' line of the summary: their layout, memory and times, and the pixels
+// of the `pixels` the adaptive pass drew again.
+void printCascadeSummary(const voxel::CascadeImage& c, const voxel::ShadeOptions& shading,
+                         double pixels) {
     const std::string passages =
         c.stats.passages > 0 ? " (" + std::to_string(c.stats.passages) + " runs through glass)"
                              : std::string();
@@ -64,6 +66,9 @@ void printCascadeSummary(const voxel::CascadeImage& c) {
         static_cast<long long>(c.stats.segments), passages.c_str(),
         formatBytes(c.stats.bytes).c_str(), c.stats.buildSeconds, c.stats.bounces, c.lightSeconds,
         c.renderSeconds);
+    std::printf("  picture: %d samples per pixel, %d pixels (%.2f%%) again with %d samples\n",
+                voxel::samplesPerPixel(shading), c.refinedPixels,
+                pixels > 0 ? 100.0 * c.refinedPixels / pixels : 0.0, shading.adaptiveSamples);
 }
 
 bool endsWithExr(const std::string& path) {
@@ -180,6 +185,16 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
                 Error("--samples must be in 1.." + std::to_string(voxel::kMaxSamplesPerPixel)));
         }
         scene->shading.samplesPerPixel = request.samples;
+    }
+    if (request.adaptiveSamples >= 0) {
+        if (!request.cascadeSolver) {
+            return reportError(Error("--adaptive-samples applies to --solver rc"));
+        }
+        if (request.adaptiveSamples > voxel::kMaxSamplesPerPixel) {
+            return reportError(Error("--adaptive-samples must be in 0.." +
+                                     std::to_string(voxel::kMaxSamplesPerPixel)));
+        }
+        scene->shading.adaptiveSamples = request.adaptiveSamples;
     }
     if (!request.filter.empty()) {
         const auto filter = voxel::parseTextureFilter(request.filter);
@@ -329,6 +344,8 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         setNumber(images.metadata, "luxel.rc.spacing", cascaded.stats.spacing);
         setNumber(images.metadata, "luxel.rc.levels", cascaded.stats.levels);
         setNumber(images.metadata, "luxel.rc.bounces", cascaded.stats.bounces);
+        setNumber(images.metadata, "luxel.rc.adaptive_samples", scene->shading.adaptiveSamples);
+        setNumber(images.metadata, "luxel.rc.refined_pixels", cascaded.refinedPixels);
     }
     if (request.sunYawDegrees != 0)
         setNumber(images.metadata, "luxel.sun_yaw", request.sunYawDegrees);
@@ -361,7 +378,8 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
         } else if (request.aoSolver) {
             printAoSummary(request.ao);
         } else if (request.cascadeSolver) {
-            printCascadeSummary(cascaded);
+            printCascadeSummary(cascaded, scene->shading,
+                                double(internal.width()) * internal.height());
         } else {
             std::printf("  %d samples per pixel, %s textures\n",
                         voxel::samplesPerPixel(scene->shading),

@@ -99,6 +99,8 @@ class RadianceCascades {
     // The picture's rays per pixel (render.samples, clamped to 1..kMaxSamplesPerPixel): a
     // picture setting, so the light is kept (the viewer's samples per pixel).
     void setPictureSamples(int samplesPerPixel);
+    // The picture's adaptive samples and contrast (render.adaptive_samples, adaptive_contrast).
+    void setPictureAdaptiveSamples(int adaptiveSamples, double adaptiveContrast);
     // One lighting pass: faces' outgoing radiance from the current irradiance, the levels merged
     // top down, each face's irradiance gathered. Returns the relative change of the summed face
     // irradiance (1 after the first pass from black).
@@ -114,8 +116,10 @@ class RadianceCascades {
     // shared/pixel_samples.h's positions; one: the pixel centre; cutouts honoured), shaded with the
     // material model (docs/algorithms/voxel-radiance-cascades.md §4.2): emission, the diffuse
     // lobe x (direct sun + indirectIrradiance / pi), the specular lobe's sun highlight and its
-    // split-sum reflection of what a few GGX rays meet; rows in parallel.
-    Result<Image> render(const Camera& camera) const;
+    // split-sum reflection of what a few GGX rays meet; rows in parallel. Then the pixels of
+    // strong contrast drawn again with shading.adaptiveSamples rays (src/voxel/cascades/
+    // adaptive_samples.h); `refinedPixels` receives how many.
+    Result<Image> render(const Camera& camera, int* refinedPixels = nullptr) const;
 
     CascadeStats stats() const;
 
@@ -142,6 +146,7 @@ struct CascadeImage {
     Image radiance;
     CascadeStats stats;
     double lightSeconds = 0.0, renderSeconds = 0.0;
+    int refinedPixels = 0;  // the picture's pixels drawn again with the adaptive samples
 };
 
 // create(), solve() and render() in one call.

@@ -43,9 +43,10 @@ class RadianceCascadesGpu {
     // textures and the faces' table. Fails (naming why) when the image has more than
     // kMaxPathPixels pixels or the world's upload, the faces' table and the image need more
     // than `memoryBudget` bytes (0: the device's memory). `gpuMilliseconds` receives the
-    // dispatch's GPU time.
+    // dispatches' GPU time (the first pass and the adaptive one), `refinedPixels` the pixels the
+    // adaptive pass drew again (the CPU's rule on the downloaded first pass).
     Result<Image> render(const Camera& camera, double* gpuMilliseconds = nullptr,
-                         std::uint64_t memoryBudget = 0);
+                         std::uint64_t memoryBudget = 0, int* refinedPixels = nullptr);
     // Draws the picture over `world`, an upload of the cascades' own world and textures on this
     // object's context that outlives it (the viewer's ray caster's), instead of uploading a
     // copy of its own on the first render; the memory check then counts only the faces' table

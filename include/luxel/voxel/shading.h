@@ -73,6 +73,13 @@ struct ShadeOptions {
     int maxAnisotropy = 16;
     bool normalMaps = true;
     int samplesPerPixel = 1;  // stratified within the pixel
+    // The radiance cascades' picture draws the pixels whose luminance differs from a neighbour's
+    // by more than adaptiveContrast x the image's mean luminance again with adaptiveSamples
+    // stratified rays (0, or no more than samplesPerPixel: off; src/voxel/cascades/
+    // adaptive_samples.h, docs/algorithms/voxel-radiance-cascades.md §4.2): a bright emitter's
+    // silhouette, not the sunlit scenes' edges (contrast 12 measured best on thin-walls).
+    int adaptiveSamples = 16;
+    double adaptiveContrast = 12.0;
     // Physical: materials by texture slot (material.h; plain blocks use materials.plain()), and
     // the share of the sky a face is assumed to see for ambient light (no occlusion is traced).
     MaterialTable materials;

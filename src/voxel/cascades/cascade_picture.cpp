@@ -1,7 +1,8 @@
 // The voxel radiance cascades' picture (radiance_cascades.h;
 // docs/algorithms/voxel-radiance-cascades.md §4.2): render.samples primary rays per pixel, the
-// pixel centre by default (cutouts honoured), the sun by sky visibility's shadow rays over its
-// disk, the faces' irradiance interpolated; cascade_picture_gpu.cpp draws the same on the GPU.
+// pixel centre by default (cutouts honoured), then the pixels of strong contrast again with
+// render.adaptive_samples rays (adaptive_samples.h), the sun by sky visibility's shadow rays over
+// its disk, the faces' irradiance interpolated; cascade_picture_gpu.cpp draws the same on the GPU.
 // (Casting rows several rays at a time, castRayBatch and occludedBatch, measured no faster here:
 // 45-47 ms against 40-46 ms of CPU at 640x360.)
 #include "cascade_picture.h"
@@ -11,6 +12,7 @@
 #include "../path_trace_surface.h"
 #include "../solver_sun.h"
 #include "../solver_surface.h"
+#include "adaptive_samples.h"
 #include "cascade_near_rays.h"
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"
@@ -69,6 +71,11 @@ void RadianceCascades::setPictureSamples(int samplesPerPixel) {
     state_->shading.samplesPerPixel = std::clamp(samplesPerPixel, 1, kMaxSamplesPerPixel);
 }
 
+void RadianceCascades::setPictureAdaptiveSamples(int adaptiveSamples, double adaptiveContrast) {
+    state_->shading.adaptiveSamples = std::clamp(adaptiveSamples, 0, kMaxSamplesPerPixel);
+    state_->shading.adaptiveContrast = adaptiveContrast;
+}
+
 Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
     const VoxelWorld& world = *state_->world;
     const ShadeOptions& shading = state_->shading;
@@ -106,7 +113,7 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
     return shadeSolverSurface(world, state_->textures, s, ray, shading, light, rng);
 }
 
-Result<Image> RadianceCascades::render(const Camera& camera) const {
+Result<Image> RadianceCascades::render(const Camera& camera, int* refinedPixels) const {
     const int width = camera.width(), height = camera.height();
     if (std::int64_t(width) * height > kMaxPathPixels) {
         return Error("radiance cascades: image " + std::to_string(width) + "x" +
@@ -115,22 +122,31 @@ Result<Image> RadianceCascades::render(const Camera& camera) const {
     }
     const ShadeOptions& shading = state_->shading;
     Image out(width, height, 3);
+    // Pixel (x, y) from n stratified rays: one random stream per pixel, drawn on through its
+    // samples (as on the GPU), from its start again when the pixel is drawn again.
+    const auto draw = [&](int x, int y, int n) {
+        PathRng rng(kReflectionSeed, std::uint64_t(y) * width + x, 0);
+        Rgb sum;
+        for (int k = 0; k < n; ++k) sum += pixelRadiance(pixelSampleRay(camera, x, y, k, n), rng);
+        const Rgb radiance = n == 1 ? sum : sum * (1.0f / float(n));
+        for (int c = 0; c < 3; ++c) out.at(x, y, c) = radiance[c];
+    };
     const int samples = samplesPerPixel(shading);
     parallelForRange(height, 1, [&](int begin, int end) {
-        for (int y = begin; y < end; ++y) {
-            for (int x = 0; x < width; ++x) {
-                // One random stream per pixel, drawn on through its samples (as on the GPU).
-                PathRng rng(kReflectionSeed, std::uint64_t(y) * width + x, 0);
-                Rgb sum;
-                for (int k = 0; k < samples; ++k) {
-                    const Ray ray = pixelSampleRay(camera, x, y, k, samples);
-                    sum += pixelRadiance(ray, rng);
-                }
-                const Rgb radiance = samples == 1 ? sum : sum * (1.0f / float(samples));
-                for (int c = 0; c < 3; ++c) out.at(x, y, c) = radiance[c];
-            }
-        }
+        for (int y = begin; y < end; ++y)
+            for (int x = 0; x < width; ++x) draw(x, y, samples);
     });
+    // The pixels of strong contrast again with more rays, their mean replacing the first value
+    // (the first pass's centre ray is not one of the stratified positions; §4.2).
+    const int refine = cascades::adaptiveSamples(shading);
+    const std::vector<std::uint32_t> pixels =
+        refine > 0 ? cascades::adaptivePixels(out, shading.adaptiveContrast)
+                   : std::vector<std::uint32_t>{};
+    parallelForRange(int(pixels.size()), 4, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i)
+            draw(int(pixels[i] % width), int(pixels[i] / width), refine);
+    });
+    if (refinedPixels) *refinedPixels = int(pixels.size());
     return out;
 }
 

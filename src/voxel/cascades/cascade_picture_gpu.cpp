@@ -1,7 +1,8 @@
 // The voxel radiance cascades' picture on the GPU (radiance_cascades_gpu.h;
 // docs/algorithms/voxel-radiance-cascades.md §4.3): the world through VoxelGpuRenderer's buffers,
 // the faces' table and the GGX albedo table uploaded once, and one dispatch of
-// cascades_picture.comp.glsl over the image reading the light buffer the lighting passes write.
+// cascades_picture.comp.glsl over the image reading the light buffer the lighting passes write,
+// then one over the pixels adaptive_samples.h picks on the downloaded image.
 #include <algorithm>
 #include <bit>
 #include <chrono>
@@ -13,6 +14,7 @@
 #include "../ggx_albedo.h"
 #include "../solver_surface.h"
 #include "../sun_disk.h"
+#include "adaptive_samples.h"
 #include "cascade_gpu_state.h"
 #include "cascade_picture.h"
 #include "luxel/core/memory.h"
@@ -177,6 +179,19 @@ Status uploadNearEmitters(gpu::Context& context, const FaceData& faces, PictureG
     return Ok{};
 }
 
+// `buffer` holding at least `bytes` (made anew, larger, when it does not).
+Status ensureBuffer(gpu::Context& context, std::shared_ptr<gpu::Buffer>& buffer,
+                    std::uint64_t& size, std::uint64_t bytes) {
+    if (buffer && size >= bytes) return Ok{};
+    buffer.reset();
+    size = 0;
+    auto made = context.createBuffer(bytes);
+    if (!made) return made.error();
+    buffer = std::move(*made);
+    size = bytes;
+    return Ok{};
+}
+
 }  // namespace
 
 void RadianceCascadesGpu::useUploadedWorld(VoxelGpuRenderer& world) {
@@ -185,7 +200,7 @@ void RadianceCascadesGpu::useUploadedWorld(VoxelGpuRenderer& world) {
 }
 
 Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilliseconds,
-                                          std::uint64_t memoryBudget) {
+                                          std::uint64_t memoryBudget, int* refinedPixels) {
     Impl& g = *impl_;
     const RadianceCascades::State& state = *g.state;
     const int width = camera.width(), height = camera.height();
@@ -206,14 +221,10 @@ Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilli
         return s.error();
     }
     const std::uint64_t imageBytes = std::uint64_t(width) * height * 3 * sizeof(float);
-    if (!p.image || p.imageBytes < imageBytes) {
-        p.image.reset();
-        p.imageBytes = 0;
-        auto buffer = g.context->createBuffer(imageBytes);
-        if (!buffer) return buffer.error();
-        p.image = std::move(*buffer);
-        p.imageBytes = imageBytes;
+    if (Status s = ensureBuffer(*g.context, p.image, p.imageBytes, imageBytes); !s) {
+        return s.error();
     }
+    if (Status s = ensureBuffer(*g.context, p.refine, p.refineBytes, 16); !s) return s.error();
     // The ray caster's parameters for this camera, without its sun visibility arrays (the
     // picture's sun is shadow rays).
     ShadeOptions o = state.shading;
@@ -225,21 +236,44 @@ Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilli
     d.name = "cascades picture " + sizeText(camera);
     d.program = p.program;
     d.buffers = *bound;
-    for (gpu::Buffer* b : {g.light.get(), p.slots.get(), p.albedo.get(), p.image.get(),
-                           p.emitterFar.get(), p.nearOffset.get(), p.nearEmitters.get()}) {
+    for (gpu::Buffer* b :
+         {g.light.get(), p.slots.get(), p.albedo.get(), p.image.get(), p.emitterFar.get(),
+          p.nearOffset.get(), p.nearEmitters.get(), p.refine.get()}) {
         d.buffers.push_back(b);
     }
-    d.setPush(picturePush(state.shading, std::uint32_t(state.faces.table.size()), p.slotMask));
+    shared::CascadePicturePush push =
+        picturePush(state.shading, std::uint32_t(state.faces.table.size()), p.slotMask);
+    d.setPush(push);
     d.setThreads(std::uint64_t(width), std::uint64_t(height));
-    auto timings = g.context->run(std::span(&d, 1));
-    if (!timings) return timings.error();
-    if (gpuMilliseconds) *gpuMilliseconds = timings->empty() ? 0.0 : timings->front().milliseconds;
     Image out(width, height, 3);
-    if (Status s = g.context->download(*p.image,
-                                       std::as_writable_bytes(std::span(out.data(), out.size())));
-        !s) {
+    const auto drawAndDownload = [&]() -> Status {
+        auto timings = g.context->run(std::span(&d, 1));
+        if (!timings) return timings.error();
+        if (gpuMilliseconds && !timings->empty()) *gpuMilliseconds += timings->front().milliseconds;
+        return g.context->download(*p.image,
+                                   std::as_writable_bytes(std::span(out.data(), out.size())));
+    };
+    if (gpuMilliseconds) *gpuMilliseconds = 0.0;
+    if (Status s = drawAndDownload(); !s) return s.error();
+    // The adaptive pass: the CPU's rule on the first pass's image, then the same shader over the
+    // list with more rays, writing those pixels over the first pass's (§4.2).
+    const int refine = adaptiveSamples(state.shading);
+    const std::vector<std::uint32_t> pixels =
+        refine > 0 ? adaptivePixels(out, state.shading.adaptiveContrast)
+                   : std::vector<std::uint32_t>{};
+    if (refinedPixels) *refinedPixels = int(pixels.size());
+    if (pixels.empty()) return out;
+    const std::span<const std::byte> list = std::as_bytes(std::span(pixels));
+    if (Status s = ensureBuffer(*g.context, p.refine, p.refineBytes, list.size()); !s) {
         return s.error();
     }
+    if (Status s = g.context->upload(*p.refine, list); !s) return s.error();
+    d.buffers.back() = p.refine.get();
+    push.refineCount = std::uint32_t(pixels.size());
+    push.refineSamples = std::uint32_t(refine);
+    d.setPush(push);
+    d.setThreads(std::uint64_t(width), (pixels.size() + width - 1) / std::uint64_t(width));
+    if (Status s = drawAndDownload(); !s) return s.error();
     return out;
 }
 
@@ -261,14 +295,14 @@ Result<CascadeImage> renderRadianceCascadesGpu(gpu::Context& context, const Voxe
     if (auto solved = gpu->solve(); !solved) return solved.error();
     out.lightSeconds = since(start);
     start = Clock::now();
-    Result<Image> image = gpu->render(camera);
+    Result<Image> image = gpu->render(camera, nullptr, 0, &out.refinedPixels);
     if (!image) {
         // solve() downloaded the faces' irradiance: the CPU draws the same picture.
         if (note) {
             *note =
                 "the radiance cascades' picture was drawn on the CPU: " + image.error().message();
         }
-        image = cascades->render(camera);
+        image = cascades->render(camera, &out.refinedPixels);
         if (!image) return image.error();
     }
     out.renderSeconds = since(start);

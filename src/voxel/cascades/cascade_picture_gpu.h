@@ -22,6 +22,9 @@ struct PictureGpu {
     VoxelGpuRenderer* world = nullptr;           // the world, textures and materials on the device
     std::shared_ptr<gpu::Buffer> slots, albedo, image;
     std::uint64_t imageBytes = 0;
+    // The adaptive pass's pixel list (adaptive_samples.h), grown as needed.
+    std::shared_ptr<gpu::Buffer> refine;
+    std::uint64_t refineBytes = 0;
     // The emitters near each face (shared/near_emitters.h), uploaded again when the CPU object
     // computed them again (FaceData::emitterVersion).
     std::shared_ptr<gpu::Buffer> emitterFar, nearOffset, nearEmitters;

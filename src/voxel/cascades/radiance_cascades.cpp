@@ -180,7 +180,7 @@ Result<CascadeImage> cascades::renderCascadesWith(
     if (Status s = solve(*cascades); !s) return s.error();
     out.lightSeconds = secondsSince(start);
     start = std::chrono::steady_clock::now();
-    Result<Image> image = cascades->render(camera);
+    Result<Image> image = cascades->render(camera, &out.refinedPixels);
     if (!image) return image.error();
     out.renderSeconds = secondsSince(start);
     out.radiance = std::move(*image);

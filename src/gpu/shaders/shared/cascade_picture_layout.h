@@ -12,6 +12,8 @@
 //   17 float: the GGX lobe's directional albedo table (src/voxel/ggx_albedo.h)
 //   18 float: the picture, RGB per pixel, rows top to bottom
 //   19..21 the emitters near each face (shared/near_emitters.h)
+//   22 uint: the pixels (y * width + x) the adaptive pass draws again (src/voxel/cascades/
+//      adaptive_samples.h), read when refineCount > 0
 #ifndef LUXEL_GPU_SHARED_CASCADE_PICTURE_LAYOUT_H
 #define LUXEL_GPU_SHARED_CASCADE_PICTURE_LAYOUT_H
 
@@ -21,7 +23,7 @@ LUXEL_SHARED_BEGIN
 
 #define LUXEL_PICTURE_GROUP_X 8
 #define LUXEL_PICTURE_GROUP_Y 8
-#define LUXEL_PICTURE_BUFFERS 22
+#define LUXEL_PICTURE_BUFFERS 23
 // Glass and polished metal followed one inside another (kSolverFollowDepth, solver_surface.h):
 // the shader unrolls the CPU's recursion into this many levels.
 #define LUXEL_PICTURE_FOLLOW_DEPTH 2
@@ -51,7 +53,10 @@ struct CascadePicturePush {
     float sunOneMinusCos, sunRadianceScale, sunOverPdfScale;
     float sunTangentX, sunTangentY, sunTangentZ;
     float sunBitangentX, sunBitangentY, sunBitangentZ;
-    uint pad0, pad1;
+    // The adaptive pass: 0 draws every pixel with VoxelRenderParams::samplesPerPixel rays; n > 0
+    // draws the n pixels of binding 22 (invocation y * width + x takes entry y * width + x) with
+    // refineSamples rays each.
+    uint refineCount, refineSamples;
 };
 
 // One slot of the faces' table: the key of (voxel, normal) and the face's id (EMPTY: free).
@@ -82,6 +87,7 @@ static_assert(sizeof(luxel::gpu::shared::CascadePicturePush) == 96);
 static_assert(offsetof(luxel::gpu::shared::CascadePicturePush, sunX) == 28);
 static_assert(offsetof(luxel::gpu::shared::CascadePicturePush, sunOneMinusCos) == 52);
 static_assert(offsetof(luxel::gpu::shared::CascadePicturePush, sunBitangentZ) == 84);
+static_assert(offsetof(luxel::gpu::shared::CascadePicturePush, refineSamples) == 92);
 static_assert(sizeof(luxel::gpu::shared::CascadeFaceSlot) == 16);
 #endif
 

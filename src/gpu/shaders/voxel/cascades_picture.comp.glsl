@@ -5,7 +5,8 @@
 // irradiance the lighting passes left in the light buffer, the sun by shadow rays over its disk,
 // and reflections and refraction followed through glass and polished metal
 // (solver_reflected.glsl), drawing the same random numbers as the CPU (shared/path_rng.h); the emitters near the pixel are taken exactly at it
-// (near_emitters.glsl). Buffers and push constants: shared/cascade_picture_layout.h and
+// (near_emitters.glsl). A second dispatch draws the pixels of strong contrast again with more
+// rays (adaptive_samples.h). Buffers and push constants: shared/cascade_picture_layout.h and
 // shared/near_emitters.h.
 #version 450
 #extension GL_GOOGLE_include_directive : require
@@ -29,6 +30,8 @@ layout(std430, set = 0, binding = 20) readonly buffer NearOffsets { uint nearOff
 layout(std430, set = 0, binding = 21) readonly buffer NearEmitters {
     CascadeNearEmitter nearEmitters[];
 };
+// The adaptive pass's pixels (src/voxel/cascades/adaptive_samples.h).
+layout(std430, set = 0, binding = 22) readonly buffer RefinePixels { uint refinePixels[]; };
 // Named `path` so the path tracer's surface code (path_surface.glsl) reads its materialFlags.
 layout(push_constant) uniform Push { CascadePicturePush path; };
 // Bindings 11-14: the sun visibility arrays, declared by the include (the ray caster's shading
@@ -102,16 +105,26 @@ vec3 pixelRadiance(vec3 origin, vec3 direction, inout uvec2 rng) {
 }
 
 void main() {
-    const uint x = gl_GlobalInvocationID.x, y = gl_GlobalInvocationID.y;
-    if (x >= params.width || y >= params.height) return;
-    const uint pixel = y * params.width + x;
+    uint x = gl_GlobalInvocationID.x, y = gl_GlobalInvocationID.y;
+    if (x >= params.width) return;
+    uint pixel = y * params.width + x;
+    int n = int(clamp(params.samplesPerPixel, 1u, uint(LUXEL_MAX_SAMPLES_PER_PIXEL)));
+    if (path.refineCount > 0u) {
+        // The adaptive pass: this invocation's entry of the list, with more rays.
+        if (pixel >= path.refineCount) return;
+        pixel = refinePixels[pixel];
+        x = pixel % params.width;
+        y = pixel / params.width;
+        n = int(clamp(path.refineSamples, 1u, uint(LUXEL_MAX_SAMPLES_PER_PIXEL)));
+    } else if (y >= params.height) {
+        return;
+    }
     const vec3 forward = vec3(params.forwardX, params.forwardY, params.forwardZ);
     const vec3 right = vec3(params.rightX, params.rightY, params.rightZ);
     const vec3 up = vec3(params.upX, params.upY, params.upZ);
     const vec3 origin = vec3(params.positionX, params.positionY, params.positionZ);
     // One random stream per pixel, drawn on through its samples (as on the CPU).
     uvec2 rng = pathRngKey(uvec2(path.seedLow, path.seedHigh), pixel, 0u);
-    const int n = int(clamp(params.samplesPerPixel, 1u, uint(LUXEL_MAX_SAMPLES_PER_PIXEL)));
     vec3 sum = vec3(0.0);
     for (int k = 0; k < n; ++k) {
         // Camera::rayAt at the sample's position (shared/pixel_samples.h).
