@@ -111,21 +111,8 @@ TEST(AdaptiveSamples, OnlyWhenMoreThanTheFirstPass) {
 constexpr Int3 kLamp{7, 5, 8};
 constexpr int kWidth = 96, kHeight = 72;
 
-struct LampRoom {
-    VoxelWorld world = makeWorld({14, 14, 14});
-    ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
-    LampRoom() {
-        for (int z = 0; z < 14; ++z)
-            for (int y = 0; y < 14; ++y)
-                for (int x = 0; x < 14; ++x) {
-                    if (x == 0 || y == 0 || z == 0 || x == 13 || y == 13 || z == 13) {
-                        world.set(x, y, z, kWhite);
-                    }
-                }
-        world.set(kLamp.x, kLamp.y, kLamp.z, Voxel{255, 255, 255, 1});  // texture slot 0
-        world.refreshEmptySpace();
-        EXPECT_TRUE(o.materials.setSlot(0, lampMaterial(Rgb(40.0f, 30.0f, 20.0f))).ok());
-    }
+struct LampRoom : ClosedLampRoom {
+    LampRoom() : ClosedLampRoom(kLamp, 0.5f, Rgb(40.0f, 30.0f, 20.0f)) {}
 };
 
 // Off the lamp's axes, so its silhouette crosses pixels at many fractions; the lamp about 7

@@ -29,21 +29,8 @@ constexpr float kAlbedo = 0.5f;
 constexpr Int3 kLamp{6, 1, 6};
 
 // A closed 14-voxel grey room (walls one voxel thick) with the lamp on its floor.
-struct LampRoom {
-    VoxelWorld world = makeWorld({14, 14, 14});
-    ShadeOptions o = plainLight(kAlbedo, Rgb(0.0f), Rgb(0.0f));
-    LampRoom() {
-        for (int z = 0; z < 14; ++z)
-            for (int y = 0; y < 14; ++y)
-                for (int x = 0; x < 14; ++x) {
-                    if (x == 0 || y == 0 || z == 0 || x == 13 || y == 13 || z == 13) {
-                        world.set(x, y, z, kWhite);
-                    }
-                }
-        world.set(kLamp.x, kLamp.y, kLamp.z, Voxel{255, 255, 255, 1});  // texture slot 0
-        world.refreshEmptySpace();
-        EXPECT_TRUE(o.materials.setSlot(0, lampMaterial(Rgb(20.0f, 15.0f, 10.0f))).ok());
-    }
+struct LampRoom : ClosedLampRoom {
+    LampRoom() : ClosedLampRoom(kLamp, kAlbedo, Rgb(20.0f, 15.0f, 10.0f)) {}
 };
 
 RadianceCascades solved(const LampRoom& room, bool nearEmitters) {

@@ -88,6 +88,26 @@ inline Material lampMaterial(Rgb emission) {
     return m;
 }
 
+// A closed 14-voxel room of kWhite walls one voxel thick, in plainLight(albedo) with no sky,
+// and one lamp voxel (texture slot 0, lampMaterial(radiance)) at `lamp`.
+struct ClosedLampRoom {
+    VoxelWorld world = makeWorld({14, 14, 14});
+    ShadeOptions o;
+    ClosedLampRoom(Int3 lamp, float albedo, Rgb radiance)
+        : o(plainLight(albedo, Rgb(0.0f), Rgb(0.0f))) {
+        for (int z = 0; z < 14; ++z)
+            for (int y = 0; y < 14; ++y)
+                for (int x = 0; x < 14; ++x) {
+                    if (x == 0 || y == 0 || z == 0 || x == 13 || y == 13 || z == 13) {
+                        world.set(x, y, z, kWhite);
+                    }
+                }
+        world.set(lamp.x, lamp.y, lamp.z, Voxel{255, 255, 255, 1});
+        world.refreshEmptySpace();
+        EXPECT_TRUE(o.materials.setSlot(0, lampMaterial(radiance)).ok());
+    }
+};
+
 // An 8x8x16 world with a wall at z = 0 (texture slot 1) seen through a slab three voxels thick
 // across the whole cross-section (z = 6..8, texture slot 0): the Fresnel-series glass tests.
 inline VoxelWorld slabBeforeAWall() {
