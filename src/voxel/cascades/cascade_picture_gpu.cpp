@@ -92,19 +92,23 @@ shared::CascadePicturePush picturePush(const ShadeOptions& shading, std::uint32_
     return p;
 }
 
-// Refuses, with the bytes, a picture whose world, faces' table and image exceed `budget` (0: the
-// device's memory).
+// Refuses, with the bytes, a picture whose world, faces' table, image and adaptive pass's pixel
+// list (at most kAdaptiveMaxShare of the pixels, 4 bytes each) exceed `budget` (0: the device's
+// memory).
 Status checkRoom(const gpu::Context& context, const Camera& camera, std::uint64_t world,
                  std::uint64_t table, std::uint64_t budget) {
-    const std::uint64_t image = std::uint64_t(camera.width()) * camera.height() * 3 * sizeof(float);
-    const std::uint64_t need = world + table + image;
+    const std::uint64_t pixels = std::uint64_t(camera.width()) * camera.height();
+    const std::uint64_t image = pixels * 3 * sizeof(float);
+    const std::uint64_t list =
+        std::max<std::uint64_t>(16, std::uint64_t(kAdaptiveMaxShare * double(pixels)) * 4);
+    const std::uint64_t need = world + table + image + list;
     const std::uint64_t room = budget > 0 ? budget : context.device().deviceLocalBytes;
     if (room > 0 && need > room) {
         return Error("the radiance cascades' picture " + sizeText(camera) + " on the GPU needs " +
                      formatBytes(need) + " of device memory (world " + formatBytes(world) +
                      ", faces' table " + formatBytes(table) + ", image " + formatBytes(image) +
-                     "), " + (budget > 0 ? "the budget is " : "the device has ") +
-                     formatBytes(room));
+                     ", adaptive pixel list " + formatBytes(list) + "), " +
+                     (budget > 0 ? "the budget is " : "the device has ") + formatBytes(room));
     }
     return Ok{};
 }
