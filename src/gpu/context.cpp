@@ -350,6 +350,18 @@ Result<std::shared_ptr<Buffer>> Context::createBuffer(std::uint64_t bytes) {
     });
 }
 
+Status Context::ensureBuffer(std::shared_ptr<Buffer>& buffer, std::uint64_t& held,
+                             std::uint64_t bytes) {
+    if (buffer && held >= bytes) return Ok{};
+    buffer.reset();
+    held = 0;
+    auto made = createBuffer(bytes);
+    if (!made) return made.error();
+    buffer = std::move(*made);
+    held = bytes;
+    return Ok{};
+}
+
 namespace {
 
 // Staging buffers below this size are not checked: a check reads /proc and the cgroup files (about

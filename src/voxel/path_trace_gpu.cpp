@@ -167,14 +167,7 @@ struct PathTracerGpu::State {
             for (const Int3& v : found.voxels()) voxels.push_back({v.x, v.y, v.z, 0});
             if (voxels.empty()) voxels.push_back({});
             const std::uint64_t bytes = voxels.size() * sizeof(shared::PathEmitterVoxel);
-            if (!emitters || emittersBytes < bytes) {
-                emitters.reset();
-                emittersBytes = 0;
-                auto b = context->createBuffer(bytes);
-                if (!b) return b.error();
-                emitters = *b;
-                emittersBytes = bytes;
-            }
+            if (Status st = context->ensureBuffer(emitters, emittersBytes, bytes); !st) return st;
             if (Status st = context->upload(*emitters, std::as_bytes(std::span(voxels))); !st) {
                 return st;
             }

@@ -61,13 +61,10 @@ Status VoxelGpuRenderer::prepareRender(const Camera& camera, const ShadeOptions&
     }
     const int w = camera.width(), h = camera.height();
     const std::uint64_t outputBytes = static_cast<std::uint64_t>(w) * h * 16;
-    if (image && (!s.output || s.outputBytes < outputBytes)) {
-        s.output.reset();
-        s.outputBytes = 0;
-        auto b = s.context->createBuffer(outputBytes);
-        if (!b) return b.error();
-        s.output = *b;
-        s.outputBytes = outputBytes;
+    if (image) {
+        if (Status st = s.context->ensureBuffer(s.output, s.outputBytes, outputBytes); !st) {
+            return st.error();
+        }
     }
 
     shared::VoxelRenderParams p{};

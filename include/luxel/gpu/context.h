@@ -60,6 +60,10 @@ class Context {
     // A device-local storage buffer of `bytes` (shared: it outlives nothing but the context);
     // fails when the device memory would not fit.
     Result<std::shared_ptr<Buffer>> createBuffer(std::uint64_t bytes);
+    // `buffer` (of `held` bytes) holding at least `bytes`: kept when it does, else made anew at
+    // `bytes`, the old one freed first so the two never hold device memory at once. On failure
+    // `buffer` is empty and `held` 0.
+    Status ensureBuffer(std::shared_ptr<Buffer>& buffer, std::uint64_t& held, std::uint64_t bytes);
     // Copies `data` into the buffer at byte `offset` (a multiple of 4).
     Status upload(Buffer& buffer, std::span<const std::byte> data, std::uint64_t offset = 0);
     // Copies `bytes` into the buffer at `offset` that `write` puts straight into the mapped

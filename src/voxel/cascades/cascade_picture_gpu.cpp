@@ -183,19 +183,6 @@ Status uploadNearEmitters(gpu::Context& context, const FaceData& faces, PictureG
     return Ok{};
 }
 
-// `buffer` holding at least `bytes` (made anew, larger, when it does not).
-Status ensureBuffer(gpu::Context& context, std::shared_ptr<gpu::Buffer>& buffer,
-                    std::uint64_t& size, std::uint64_t bytes) {
-    if (buffer && size >= bytes) return Ok{};
-    buffer.reset();
-    size = 0;
-    auto made = context.createBuffer(bytes);
-    if (!made) return made.error();
-    buffer = std::move(*made);
-    size = bytes;
-    return Ok{};
-}
-
 }  // namespace
 
 void RadianceCascadesGpu::useUploadedWorld(VoxelGpuRenderer& world) {
@@ -225,10 +212,10 @@ Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilli
         return s.error();
     }
     const std::uint64_t imageBytes = std::uint64_t(width) * height * 3 * sizeof(float);
-    if (Status s = ensureBuffer(*g.context, p.image, p.imageBytes, imageBytes); !s) {
+    if (Status s = g.context->ensureBuffer(p.image, p.imageBytes, imageBytes); !s) {
         return s.error();
     }
-    if (Status s = ensureBuffer(*g.context, p.refine, p.refineBytes, 16); !s) return s.error();
+    if (Status s = g.context->ensureBuffer(p.refine, p.refineBytes, 16); !s) return s.error();
     // The ray caster's parameters for this camera, without its sun visibility arrays (the
     // picture's sun is shadow rays).
     ShadeOptions o = state.shading;
@@ -268,7 +255,7 @@ Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilli
     if (refinedPixels) *refinedPixels = int(pixels.size());
     if (pixels.empty()) return out;
     const std::span<const std::byte> list = std::as_bytes(std::span(pixels));
-    if (Status s = ensureBuffer(*g.context, p.refine, p.refineBytes, list.size()); !s) {
+    if (Status s = g.context->ensureBuffer(p.refine, p.refineBytes, list.size()); !s) {
         return s.error();
     }
     if (Status s = g.context->upload(*p.refine, list); !s) return s.error();
