@@ -40,10 +40,10 @@ float largest(const EmitterFace& e) {
 }
 
 int sizeA(const EmitterFace& e) {
-    return int(e.extent & 0xffffu) + 1;
+    return int(shared::emitterSizeA(e.extent));
 }
 int sizeB(const EmitterFace& e) {
-    return int(e.extent >> 16u) + 1;
+    return int(shared::emitterSizeB(e.extent));
 }
 
 // The centre of the emitter's rectangle.
@@ -70,39 +70,38 @@ double reachOf(const EmitterFace& e, double floor) {
 // whatever its size, so a lamp panel lights a point with all of its faces instead of its 16
 // strongest; the sides are bounded so its shadow rays still resolve penumbrae.
 std::vector<EmitterFace> mergedRectangles(std::vector<EmitterFace> faces) {
-    const auto key = [](const EmitterFace& f) {
-        const int axis = int(f.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
+    // Faces of one group share normal, plane and radiance; within it a face is at (b, a) on the
+    // plane's axes a = (axis + 1) % 3, b = (axis + 2) % 3.
+    const auto groupOf = [](const EmitterFace& f) {
         const Int3 v{f.x, f.y, f.z};
-        return std::tuple(f.normal, v[axis], std::bit_cast<std::uint32_t>(f.r),
-                          std::bit_cast<std::uint32_t>(f.g), std::bit_cast<std::uint32_t>(f.b),
-                          v[b], v[a]);
+        return std::tuple(f.normal, v[int(f.normal / 2u)], std::bit_cast<std::uint32_t>(f.r),
+                          std::bit_cast<std::uint32_t>(f.g), std::bit_cast<std::uint32_t>(f.b));
     };
-    std::sort(faces.begin(), faces.end(),
-              [&](const EmitterFace& l, const EmitterFace& r) { return key(l) < key(r); });
+    const auto cellOf = [](const EmitterFace& f) {
+        const int axis = int(f.normal / 2u);
+        const Int3 v{f.x, f.y, f.z};
+        return std::pair(v[(axis + 2) % 3], v[(axis + 1) % 3]);
+    };
+    std::sort(faces.begin(), faces.end(), [&](const EmitterFace& l, const EmitterFace& r) {
+        return std::pair(groupOf(l), cellOf(l)) < std::pair(groupOf(r), cellOf(r));
+    });
     std::vector<EmitterFace> out;
     std::vector<char> used(faces.size(), 0);
     std::size_t groupEnd = 0;
     for (std::size_t begin = 0; begin < faces.size(); begin = groupEnd) {
-        const auto group = [&](std::size_t i) {
-            const auto k = key(faces[i]);
-            return std::tuple(std::get<0>(k), std::get<1>(k), std::get<2>(k), std::get<3>(k),
-                              std::get<4>(k));
-        };
         groupEnd = begin + 1;
-        while (groupEnd < faces.size() && group(groupEnd) == group(begin)) ++groupEnd;
+        while (groupEnd < faces.size() && groupOf(faces[groupEnd]) == groupOf(faces[begin])) {
+            ++groupEnd;
+        }
         const int axis = int(faces[begin].normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
         // The face at (ca, cb) of this group, or -1.
         const auto find = [&](int ca, int cb) -> std::ptrdiff_t {
             const auto first = faces.begin() + std::ptrdiff_t(begin);
             const auto last = faces.begin() + std::ptrdiff_t(groupEnd);
-            const auto it = std::lower_bound(first, last, std::pair(cb, ca),
-                                             [&](const EmitterFace& f, std::pair<int, int> c) {
-                                                 const Int3 v{f.x, f.y, f.z};
-                                                 return std::pair(v[b], v[a]) < c;
-                                             });
-            if (it == last) return -1;
-            const Int3 v{it->x, it->y, it->z};
-            return v[a] == ca && v[b] == cb ? it - faces.begin() : -1;
+            const auto it = std::lower_bound(
+                first, last, std::pair(cb, ca),
+                [&](const EmitterFace& f, std::pair<int, int> c) { return cellOf(f) < c; });
+            return it != last && cellOf(*it) == std::pair(cb, ca) ? it - faces.begin() : -1;
         };
         const auto freeAt = [&](int ca, int cb) {
             const std::ptrdiff_t i = find(ca, cb);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "gpu/shaders/shared/near_emitters.h"
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/voxel/surface_cast.h"
 #include "voxel/path_trace_bsdf.h"
@@ -79,10 +80,8 @@ namespace {
 // Whether `voxel` is one of the target's faces (its rectangle, on the target's plane).
 bool targetHolds(const FaceTarget& target, Int3 voxel) {
     const int axis = target.normal.x != 0 ? 0 : (target.normal.y != 0 ? 1 : 2);
-    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-    const int da = voxel[a] - target.voxel[a], db = voxel[b] - target.voxel[b];
-    return voxel[axis] == target.voxel[axis] && da >= 0 && db >= 0 &&
-           da <= int(target.extent & 0xffffu) && db <= int(target.extent >> 16u);
+    return gpu::shared::emitterRectHolds({target.voxel.x, target.voxel.y, target.voxel.z}, axis,
+                                         target.extent, {voxel.x, voxel.y, voxel.z});
 }
 
 // Along `ray` until it leaves the world (target null: the sky's share) or meets the face

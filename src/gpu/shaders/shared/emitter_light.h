@@ -71,8 +71,8 @@ struct EmitterSpan {
 LUXEL_FUNC EmitterSpan emitterSpanInFront(vec3 x, vec3 n, CascadeNearEmitter e) {
     const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
     const vec3 c = vec3(float(e.x), float(e.y), float(e.z));
-    EmitterSpan s = EmitterSpan(c[a], c[a] + float((e.extent & 0xffffu) + 1u), c[b],
-                                c[b] + float((e.extent >> 16u) + 1u));
+    EmitterSpan s = EmitterSpan(c[a], c[a] + float(emitterSizeA(e.extent)), c[b],
+                                c[b] + float(emitterSizeB(e.extent)));
     if (n[a] > 0.5f) s.loA = max(s.loA, x[a]);
     if (n[a] < -0.5f) s.hiA = min(s.hiA, x[a]);
     if (n[b] > 0.5f) s.loB = max(s.loB, x[b]);

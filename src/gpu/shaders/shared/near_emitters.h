@@ -41,6 +41,23 @@ struct CascadeNearEmitter {
     uint extent;
 };
 
+// The size of an emitter's rectangle along a and along b (CascadeNearEmitter's extent).
+LUXEL_FUNC uint emitterSizeA(uint extent) {
+    return (extent & 0xffffu) + 1u;
+}
+LUXEL_FUNC uint emitterSizeB(uint extent) {
+    return (extent >> 16u) + 1u;
+}
+
+// Whether `voxel` is one of the rectangle's: on the plane of `axis` (its normal / 2), from
+// `corner` up to its size along a and b (faceRayTransmittance's target, both backends).
+LUXEL_FUNC bool emitterRectHolds(ivec3 corner, int axis, uint extent, ivec3 voxel) {
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    const int da = voxel[a] - corner[a], db = voxel[b] - corner[b];
+    return voxel[axis] == corner[axis] && da >= 0 && db >= 0 && da < int(emitterSizeA(extent)) &&
+           db < int(emitterSizeB(extent));
+}
+
 // The share of an emitter's light taken exactly at a point `d` voxels from its centre: 1 within
 // `inner`, 0 from `outer` on, a smoothstep between (continuous with its slope, so no seam).
 LUXEL_FUNC float nearEmitterWeight(float d, float inner, float outer) {

@@ -8,6 +8,7 @@
 //   float lineTransmission(VoxelMaterial)  the material's transmission (0 with refraction off)
 //   float lineFresnel(float cosI, float ior)  the dielectric Fresnel from the air into `ior`
 // and has castToSurface, walkMedium, materialIndex and materials[].
+#include "shared/near_emitters.h"  // emitterRectHolds: a face target's rectangle
 
 // Below this the light that is left counts as none (kDarkTransmittance, solver_sun.cpp).
 #define LUXEL_SOLVER_DARK 1e-4
@@ -73,10 +74,7 @@ vec3 throughMedia(Hit hit, vec3 direction, inout vec3 origin, inout int media, b
 // faceVoxel with normal faceNormal and `extent` (CascadeNearEmitter's encoding; 0: one face).
 bool lineTargetHolds(ivec3 faceVoxel, ivec3 faceNormal, uint extent, ivec3 voxel) {
     const int axis = faceNormal.x != 0 ? 0 : (faceNormal.y != 0 ? 1 : 2);
-    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-    const int da = voxel[a] - faceVoxel[a], db = voxel[b] - faceVoxel[b];
-    return voxel[axis] == faceVoxel[axis] && da >= 0 && db >= 0 &&
-           da <= int(extent & 0xffffu) && db <= int(extent >> 16u);
+    return emitterRectHolds(faceVoxel, axis, extent, voxel);
 }
 
 // lineTransmittance (solver_sun.cpp): along the ray until it leaves the world (toFace false: the
