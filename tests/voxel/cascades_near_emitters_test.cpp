@@ -16,6 +16,7 @@
 #include "luxel/voxel/radiance_cascades.h"
 #include "luxel/voxel/surface_cast.h"
 #include "voxel/plain_light_worlds.h"
+#include "voxel/room_pixels.h"
 
 namespace {
 
@@ -56,15 +57,6 @@ Image picture(const RadianceCascades& cascades, const Camera& camera) {
     auto image = cascades.render(camera);
     EXPECT_TRUE(image.ok()) << image.error().message();
     return std::move(*image);
-}
-
-double pixelSum(const Image& image, int x, int y) {
-    return double(image.at(x, y, 0)) + image.at(x, y, 1) + image.at(x, y, 2);
-}
-
-// Where a pixel centre's ray meets the world.
-Hit hitAt(const LampRoom& room, const Camera& camera, int x, int y) {
-    return castToSurface(room.world, nullptr, camera.rayAt(x + 0.5, y + 0.5), room.o.stepCap).hit;
 }
 
 bool onFloor(const Hit& hit) {

@@ -18,6 +18,7 @@
 #include "luxel/voxel/radiance_cascades.h"
 #include "luxel/voxel/surface_cast.h"
 #include "voxel/plain_light_worlds.h"
+#include "voxel/room_pixels.h"
 
 namespace {
 
@@ -66,14 +67,6 @@ Image picture(const GlossyLampRoom& room, bool nearEmitters, int samples) {
     auto image = cascades->render(view());
     EXPECT_TRUE(image.ok()) << image.error().message();
     return std::move(*image);
-}
-
-double pixelSum(const Image& image, int x, int y) {
-    return double(image.at(x, y, 0)) + image.at(x, y, 1) + image.at(x, y, 2);
-}
-
-Hit hitAt(const GlossyLampRoom& room, const Camera& camera, int x, int y) {
-    return castToSurface(room.world, nullptr, camera.rayAt(x + 0.5, y + 0.5), room.o.stepCap).hit;
 }
 
 // The floor pixels in front of the lamp, within 2.5 voxels of its foot, whose eight neighbours
