@@ -52,6 +52,8 @@ voxel_row() {  # name size output description, then the render flags
 }
 voxel_row terrain 960x540 terrain "voxel ray casting; radiance in out/terrain.exr" \
   --out out/terrain.exr --png out/terrain.png
+voxel_row terrain-evening 960x540 terrain-evening "a low sun under a Preetham clear sky" \
+  --png out/terrain-evening.png
 voxel_row garden 960x540 garden "textures with cutouts" --png out/garden.png
 voxel_row glass 960x540 glass "physical lighting, 4 samples per pixel, bloom 0.3" \
   --bloom 0.3 --samples 4 --png out/glass.png

@@ -341,6 +341,15 @@ void ModeVoxel::drawPanel() {
     bool sun = ImGui::SliderFloat("sun azimuth (J/L)", &azimuth, -180.0f, 180.0f, "%.0f deg");
     sun |= ImGui::SliderFloat("sun elevation (I/K)", &elevation, -10.0f, 90.0f, "%.0f deg");
     if (sun) setSun(azimuth, elevation);
+    // The sky: the scene's gradient, or the Preetham clear sky around the sun.
+    const char* skies[] = {"gradient", "Preetham clear sky"};
+    if (enumCombo("sky", s.skyModel, skies)) changed();
+    if (s.skyModel == voxel::ShadeOptions::SkyModel::Preetham) {
+        if (ImGui::SliderFloat("turbidity", &s.skyTurbidity, 2.0f, 10.0f, "%.1f")) changed();
+        if (ImGui::SliderFloat("zenith luminance", &s.skyZenithLuminance, 0.0f, 4.0f, "%.2f")) {
+            changed();
+        }
+    }
     // Exposure only changes how the light is shown: the path tracer keeps its samples.
     if (ImGui::SliderFloat("exposure", &state_.exposure, -6.0f, 6.0f, "%.1f stops")) dirty_ = true;
     drawSurfacePanel();

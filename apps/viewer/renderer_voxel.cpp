@@ -66,7 +66,10 @@ void RendererVoxel::setState(VoxelState&& state) {
           now.sunDirection.y == before.sunDirection.y &&
           now.sunDirection.z == before.sunDirection.z &&
           now.sunIrradiance == before.sunIrradiance && now.skyTop == before.skyTop &&
-          now.skyHorizon == before.skyHorizon && now.sunAngularRadius == before.sunAngularRadius &&
+          now.skyHorizon == before.skyHorizon && now.skyModel == before.skyModel &&
+          now.skyTurbidity == before.skyTurbidity &&
+          now.skyZenithLuminance == before.skyZenithLuminance &&
+          now.sunAngularRadius == before.sunAngularRadius &&
           now.refraction == before.refraction && now.fresnel == before.fresnel)) {
         cascadesLight_ = true;
     }

@@ -12,6 +12,7 @@
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/voxel/path_trace.h"
+#include "luxel/voxel/sky_model.h"
 #include "luxel/voxel/surface_cast.h"
 #include "path_trace_surface.h"
 #include "voxel/path_trace_bsdf.h"
@@ -259,6 +260,15 @@ Status validatePathTrace(const ShadeOptions& o, const PathTraceOptions& p) {
          {finiteNonNegative("sun irradiance", o.sunIrradiance),
           finiteNonNegative("sky top", o.skyTop), finiteNonNegative("sky horizon", o.skyHorizon)}) {
         if (!s) return s;
+    }
+    if (o.skyModel == ShadeOptions::SkyModel::Preetham) {
+        if (!(o.skyTurbidity >= kPreethamMinTurbidity && o.skyTurbidity <= kPreethamMaxTurbidity)) {
+            return Error("sky turbidity must be in [2, 10], got " + text(o.skyTurbidity));
+        }
+        if (!(o.skyZenithLuminance >= 0.0f) || !std::isfinite(o.skyZenithLuminance)) {
+            return Error("sky zenith luminance must be finite and non-negative, got " +
+                         text(o.skyZenithLuminance));
+        }
     }
     return Ok{};
 }

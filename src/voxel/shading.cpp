@@ -6,7 +6,9 @@
 #include <cmath>
 #include <cstdint>
 
+#include "gpu/shaders/shared/sky_preetham.h"
 #include "gpu/shaders/shared/voxel_shading.h"
+#include "luxel/voxel/sky_model.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/voxel/surface_cast.h"
 #include "luxel/voxel/texel_footprint.h"
@@ -29,6 +31,34 @@ shared::ivec3 toIvec3(Int3 v) {
 
 Vec3d toDouble(Vec3 v) {
     return {v.x, v.y, v.z};
+}
+shared::vec3 toFloat(Vec3d v) {
+    return {float(v.x), float(v.y), float(v.z)};
+}
+
+shared::SkyPerez perezOf(const std::array<float, 5>& p) {
+    return {p[0], p[1], p[2], p[3], p[4]};
+}
+
+// The Preetham sky of the options, made again only when its turbidity, zenith or sun change (once
+// per thread and scene, not per ray).
+const shared::PreethamSky& preethamSkyOf(const ShadeOptions& o) {
+    struct Made {
+        float turbidity = -1.0f, zenith = -1.0f;
+        Vec3 sun;
+        shared::PreethamSky sky;
+    };
+    thread_local Made made;
+    if (made.turbidity != o.skyTurbidity || made.zenith != o.skyZenithLuminance ||
+        !(made.sun == o.sunDirection)) {
+        const PreethamCoefficients c = preethamSky(o.skyTurbidity, o.sunDirection,
+                                                   o.skyZenithLuminance);
+        made = {o.skyTurbidity, o.skyZenithLuminance, o.sunDirection,
+                shared::PreethamSky(perezOf(c.luminance), perezOf(c.x), perezOf(c.y),
+                                    shared::vec3(c.zenithOverF0[0], c.zenithOverF0[1],
+                                                 c.zenithOverF0[2]))};
+    }
+    return made.sky;
 }
 Vec3d toDouble(Int3 v) {
     return {double(v.x), double(v.y), double(v.z)};
@@ -115,6 +145,15 @@ float faceFactor(Int3 normal, Vec3 sunDirection, float ambient, bool inShadow) {
 
 Rgb skyColor(Vec3d direction, const ShadeOptions& options) {
     const double len = length(direction);
+    if (options.skyModel == ShadeOptions::SkyModel::Preetham) {
+        const Vec3 sun = options.sunDirection;
+        const float sunLength = std::sqrt(sun.x * sun.x + sun.y * sun.y + sun.z * sun.z);
+        const shared::vec3 w = len > 0.0 ? toFloat(direction * (1.0 / len)) : shared::vec3(0.0f);
+        const shared::vec3 s = sunLength > 0.0f
+                                   ? shared::vec3(sun.x, sun.y, sun.z) * (1.0f / sunLength)
+                                   : shared::vec3(0.0f, 1.0f, 0.0f);
+        return toRgb(shared::preethamSkyColor(preethamSkyOf(options), w, s));
+    }
     const float s = len > 0.0 ? static_cast<float>(std::clamp(direction.y / len, 0.0, 1.0)) : 0.0f;
     return toRgb(shared::voxelSkyColor(toVec3(options.skyHorizon), toVec3(options.skyTop), s));
 }

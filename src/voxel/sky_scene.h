@@ -1,5 +1,6 @@
 // The scene-file "sky" of voxel scenes, read for voxel_scene.cpp: an analytic sky model,
-// {"top", "horizon"} (the default "gradient" model) or {"model": "cie-overcast", "zenith"}.
+// {"top", "horizon"} (the default "gradient" model), {"model": "cie-overcast", "zenith"} or
+// {"model": "preetham", "turbidity", "zenith"}.
 // Format: docs/scene-format-voxel.md.
 #pragma once
 
@@ -8,8 +9,8 @@
 
 namespace luxel::voxel {
 
-// Sets options.skyTop and options.skyHorizon from a scene's "sky" object (fields it leaves out
-// keep their values). Throws json::Invalid naming the field.
+// Sets options' sky (skyModel and the model's fields) from a scene's "sky" object (fields it
+// leaves out keep their values). Throws json::Invalid naming the field.
 void readSkyJson(const json::Json& sky, ShadeOptions& options);
 
 }  // namespace luxel::voxel

@@ -6,11 +6,13 @@
 #include <numbers>
 #include <string>
 
+#include "gpu/shaders/shared/sky_preetham.h"
 #include "gpu/shaders/shared/texture_filter.h"
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/timer.h"
 #include "luxel/voxel/render_image.h"
+#include "luxel/voxel/sky_model.h"
 #include "luxel/voxel/surface_cast.h"
 #include "voxel/cast_batch.h"
 #include "voxel/material_gpu.h"
@@ -93,6 +95,18 @@ Status VoxelGpuRenderer::prepareRender(const Camera& camera, const ShadeOptions&
     p.skyTopR = options.skyTop.r, p.skyTopG = options.skyTop.g, p.skyTopB = options.skyTop.b;
     p.skyHorizonR = options.skyHorizon.r, p.skyHorizonG = options.skyHorizon.g,
     p.skyHorizonB = options.skyHorizon.b;
+    if (options.skyModel == ShadeOptions::SkyModel::Preetham) {
+        // The CPU's coefficients (skyColor in shading.cpp evaluates the same floats).
+        const PreethamCoefficients c =
+            preethamSky(options.skyTurbidity, options.sunDirection, options.skyZenithLuminance);
+        p.skyModel = LUXEL_SKY_PREETHAM;
+        for (int i = 0; i < 5; ++i) {
+            p.skyPerez[i] = c.luminance[i];
+            p.skyPerez[5 + i] = c.x[i];
+            p.skyPerez[10 + i] = c.y[i];
+        }
+        for (int i = 0; i < 3; ++i) p.skyZenithOverF0[i] = c.zenithOverF0[i];
+    }
     p.textureStrength = options.textureStrength;
     p.textureTexels = static_cast<std::uint32_t>(std::max(options.textureTexels, 1));
     if (options.lighting == ShadeOptions::Lighting::Physical) {

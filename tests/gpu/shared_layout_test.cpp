@@ -290,7 +290,9 @@ TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
                             LUXEL_MEMBER(P, coneSpread),
                             LUXEL_MEMBER(P, emitterRays),
                             LUXEL_MEMBER(P, emitterFloor),
-                            LUXEL_MEMBER(P, pad0)}};
+                            LUXEL_MEMBER(P, skyModel),
+                            LUXEL_MEMBER(P, skyPerez),
+                            LUXEL_MEMBER(P, skyZenithOverF0)}};
     for (const char* shader : {"voxel_render", "voxel_cast", "path_trace"}) {
         expectBuffer(shader, 0, params, /* element= */ false);
     }

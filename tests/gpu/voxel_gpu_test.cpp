@@ -126,6 +126,41 @@ TEST(VoxelGpu, TexturedTerrainMatchesTheCpu) {
     EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
 }
 
+// The Preetham clear sky (sky_model.h) on both backends: seen above the terrain, in its mirror
+// reflections and, with physical lighting, as the faces' ambient light; a low sun brightens the
+// sky around it.
+TEST(VoxelGpu, PreethamSkyMatchesTheCpu) {
+    LUXEL_REQUIRE_GPU(context);
+    const VoxelWorld world = texturedTerrain();
+    const TextureSet textures = testTextures();
+    const Camera camera = Camera::lookAt({48, 44, -10}, {48, 40, 50}, 70, 160, 96).value();
+    auto gpu = VoxelGpuRenderer::create(*context, world, &textures);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    for (auto lighting : {ShadeOptions::Lighting::Classic, ShadeOptions::Lighting::Physical}) {
+        ShadeOptions options = terrainShading(ShadeOptions::ReflectionMode::EnergyConserving);
+        options.lighting = lighting;
+        options.skyModel = ShadeOptions::SkyModel::Preetham;
+        options.skyTurbidity = 4.0f;
+        options.skyZenithLuminance = 0.6f;
+        options.sunDirection = {0.3f, 0.25f, 1.0f};
+        auto image = gpu->render(camera, options);
+        ASSERT_TRUE(image.ok()) << image.error().message();
+        const Image cpu = render(world, camera, options, &textures);
+        const Parity p = compareDisplay(*image, cpu);
+        printParity(lighting == ShadeOptions::Lighting::Physical ? "Preetham sky, physical"
+                                                                 : "Preetham sky, classic",
+                    p);
+        EXPECT_LT(p.differingPixels, 0.005);
+        EXPECT_LT(p.meanAbs, 0.05);
+        // The sky is the model's, not the gradient's: the top row differs from the default sky.
+        ShadeOptions gradient = options;
+        gradient.skyModel = ShadeOptions::SkyModel::Gradient;
+        const Parity other = compareDisplay(cpu, render(world, camera, gradient, &textures));
+        EXPECT_GT(other.differingPixels, 0.2);
+    }
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
 // The shipped garden: PNG textures, cutout leaves, per-texture reflectivity.
 TEST(VoxelGpu, GardenSceneMatchesTheCpu) {
     LUXEL_REQUIRE_GPU(context);

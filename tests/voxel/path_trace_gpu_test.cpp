@@ -84,6 +84,20 @@ TEST(PathTraceGpu, MeanImageAgreesWithTheCpuWithinItsStandardError) {
     expectParity(*context, s.world, s.camera, s.o, p, nullptr, "noisy scene");
 }
 
+// The Preetham clear sky lights the paths (sky_model.h): each backend evaluates the same
+// coefficients.
+TEST(PathTraceGpu, PreethamSkyAgreesWithTheCpu) {
+    REQUIRE_CONTEXT(context);
+    NoisyScene s;
+    s.o.skyModel = ShadeOptions::SkyModel::Preetham;
+    s.o.skyTurbidity = 5.0f;
+    s.o.skyZenithLuminance = 0.8f;
+    s.o.sunDirection = Vec3(0.6f, 0.5f, -0.3f);
+    PathTraceOptions p;
+    p.samplesPerPixel = 32;
+    expectParity(*context, s.world, s.camera, s.o, p, nullptr, "Preetham sky");
+}
+
 // Texture slots: an opaque texture on the wall, cutout leaves (every other texel a hole, which
 // camera, bounce and shadow rays pass) over the floor, the procedural texture elsewhere.
 TEST(PathTraceGpu, TexturesAndCutoutsAgreeWithTheCpu) {

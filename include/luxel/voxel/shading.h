@@ -38,6 +38,13 @@ struct ShadeOptions {
     Vec3 sunDirection{0.0f, 1.0f, 0.5f};
     Rgb skyTop{0.20f, 0.40f, 0.85f};      // linear, straight up
     Rgb skyHorizon{0.75f, 0.85f, 1.00f};  // linear, at and below the horizon
+    // The sky's model (sky_model.h): the gradient of skyTop and skyHorizon, or the Preetham clear
+    // sky around sunDirection, of turbidity skyTurbidity (2..10) and zenith luminance
+    // skyZenithLuminance (the default: about the default skyTop's).
+    enum class SkyModel { Gradient, Preetham };
+    SkyModel skyModel = SkyModel::Gradient;
+    float skyTurbidity = 3.0f;
+    float skyZenithLuminance = 0.4f;
     int maxReflections = 2;               // 0: no reflection rays
     ReflectionMode reflectionMode = ReflectionMode::RunningAverage;
     float reflectivity = 0.3f;  // EnergyConserving, for every voxel unless overridden below
@@ -96,8 +103,9 @@ struct ShadeOptions {
 // clamped to at most 0 (the direct part is removed). A zero normal reads as dot 0.
 float faceFactor(Int3 normal, Vec3 sunDirection, float ambient, bool inShadow);
 
-// The sky seen along a direction: horizon colour blended to the top colour by the direction's
-// elevation (sine), the horizon colour below the horizon.
+// The sky seen along a direction: for the gradient, the horizon colour blended to the top colour by
+// the direction's elevation (sine), the horizon colour below the horizon; for the Preetham sky,
+// its radiance there (shared/sky_preetham.h).
 Rgb skyColor(Vec3d direction, const ShadeOptions& options);
 
 // Deterministic texel brightness in [1 - strength, 1] for a hit on a voxel face.

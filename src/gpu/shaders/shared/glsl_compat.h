@@ -181,6 +181,7 @@ using dvec3 = tvec3<double>;
 
 // GLSL built-ins on scalars (the std:: ones, plus those std lacks under the GLSL name).
 using std::abs;
+using std::acos;
 using std::ceil;
 using std::cos;
 using std::exp;

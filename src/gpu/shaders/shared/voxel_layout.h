@@ -120,7 +120,12 @@ struct VoxelRenderParams {
     // Light from emissive voxels (LUXEL_VOXEL_EMITTER_LIGHT, shared/emitter_light.h).
     uint emitterRays;    // shadow rays per face, 1..LUXEL_EMITTER_MAX_RAYS
     float emitterFloor;  // EmitterLights::floor()
-    uint pad0;
+    // The sky's model (LUXEL_SKY_GRADIENT: skyTop and skyHorizon; LUXEL_SKY_PREETHAM: the Perez
+    // coefficients A..E of Y, x and y in turn and their zenith values over F(0, θs), as
+    // shared/sky_preetham.h's PreethamSky).
+    uint skyModel;
+    float skyPerez[15];
+    float skyZenithOverF0[3];
 };
 
 // Push constants: the band of rows one dispatch renders (images are split into bands so no
@@ -184,7 +189,10 @@ struct VoxelTextureInfo {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(VoxelRenderParams) == 224);
+static_assert(sizeof(VoxelRenderParams) == 296);
+static_assert(offsetof(VoxelRenderParams, skyModel) == 220);
+static_assert(offsetof(VoxelRenderParams, skyPerez) == 224);
+static_assert(offsetof(VoxelRenderParams, skyZenithOverF0) == 284);
 static_assert(offsetof(VoxelRenderParams, specular) == 172);
 static_assert(offsetof(VoxelRenderParams, alphaMin) == 192);
 static_assert(offsetof(VoxelRenderParams, samplesPerPixel) == 196);

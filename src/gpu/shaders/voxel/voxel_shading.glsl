@@ -3,6 +3,7 @@
 // shared header shared/voxel_shading.h and the cutout restart point is voxelContinueThrough in
 // shared/voxel_dda.h; this file holds the buffer glue, the cutout loop and the bounce loop.
 // Needs voxel_world_access.glsl and the texture buffers.
+#include "shared/sky_preetham.h"
 #include "shared/voxel_shading.h"
 
 vec3 albedo(uint packed) {
@@ -10,7 +11,23 @@ vec3 albedo(uint packed) {
                 srgbTable[(packed >> 16) & 0xffu]);
 }
 
+SkyPerez skyPerezAt(int first) {
+    return SkyPerez(params.skyPerez[first], params.skyPerez[first + 1], params.skyPerez[first + 2],
+                    params.skyPerez[first + 3], params.skyPerez[first + 4]);
+}
+
 vec3 skyColor(vec3 direction) {
+    if (params.skyModel == LUXEL_SKY_PREETHAM) {
+        const PreethamSky sky = PreethamSky(
+            skyPerezAt(0), skyPerezAt(5), skyPerezAt(10),
+            vec3(params.skyZenithOverF0[0], params.skyZenithOverF0[1], params.skyZenithOverF0[2]));
+        const float len = length(direction);
+        const vec3 w = len > 0.0 ? direction * (1.0 / len) : vec3(0.0);
+        const vec3 sun = vec3(params.sunX, params.sunY, params.sunZ);
+        const float sunLength = length(sun);
+        return preethamSkyColor(sky, w, sunLength > 0.0 ? sun * (1.0 / sunLength)
+                                                        : vec3(0.0, 1.0, 0.0));
+    }
     const vec3 top = vec3(params.skyTopR, params.skyTopG, params.skyTopB);
     const vec3 horizon = vec3(params.skyHorizonR, params.skyHorizonG, params.skyHorizonB);
     const float len = length(direction);
