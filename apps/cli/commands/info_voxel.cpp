@@ -35,6 +35,14 @@ int infoVoxelScene(const voxel::VoxelScene& loaded) {
     std::printf("  image              %dx%d\n", camera.width(), camera.height());
     const Vec3 sun = shading.sunDirection;
     std::printf("  sun                (%g, %g, %g)\n", sun.x, sun.y, sun.z);
+    if (shading.skyModel == voxel::ShadeOptions::SkyModel::Preetham) {
+        std::printf("  sky                Preetham clear sky, turbidity %g, zenith luminance %g\n",
+                    shading.skyTurbidity, shading.skyZenithLuminance);
+    } else {
+        const Rgb top = shading.skyTop, horizon = shading.skyHorizon;
+        std::printf("  sky                gradient, top (%g, %g, %g), horizon (%g, %g, %g)\n", top.r,
+                    top.g, top.b, horizon.r, horizon.g, horizon.b);
+    }
     std::printf("  reflections        %d (%s)\n", shading.maxReflections,
                 shading.reflectionMode == voxel::ShadeOptions::ReflectionMode::EnergyConserving
                     ? "energy"
