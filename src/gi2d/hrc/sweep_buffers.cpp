@@ -39,25 +39,58 @@ void ColumnWindow::load(const Medium2D& medium, const FrustumFrame& frame, int x
         const int first = x - x % kColumnBlock;
         const float* sigma = medium.absorption.data();
         const float* emission = medium.emission.data();
-        const std::size_t width = static_cast<std::size_t>(medium.width());
-        auto copy = [&](int u, int v) {
-            int cx, cy;
-            frame.toCanvas(u, v, cx, cy);
-            const std::size_t i = (static_cast<std::size_t>(cy) * width + cx) * 3;
-            for (int c = 0; c < 3; ++c) {
-                raw(u - first, c)[v - v0] = sigma[i + c];
-                raw(u - first, 3 + c)[v - v0] = emission[i + c];
-            }
-        };
-        // Canvas rows are contiguous: along them for the ±x frames, down the frame column else.
+        const std::ptrdiff_t width = medium.width();
+        // Frame pixel (u, v) is canvas pixel (cx, cy) by FrustumFrame::toCanvas, an affine map:
+        // its RGB triple starts (cy · width + cx) · 3 floats into either image, and a step of u
+        // or of v moves that by a fixed number of floats.
+        int cx0, cy0, cxU, cyU, cxV, cyV;
+        frame.toCanvas(first, v0, cx0, cy0);
+        frame.toCanvas(first + 1, v0, cxU, cyU);
+        frame.toCanvas(first, v0 + 1, cxV, cyV);
+        const std::ptrdiff_t origin = (cy0 * width + cx0) * 3;
+        const std::ptrdiff_t stepU = ((cyU - cy0) * width + (cxU - cx0)) * 3;
+        const std::ptrdiff_t stepV = ((cyV - cy0) * width + (cxV - cx0)) * 3;
+        const int columns = x - first + 1, count = v1 - v0;
+        float* out[kColumnBlock][6];
+        for (int j = 0; j < columns; ++j) {
+            for (int c = 0; c < 6; ++c) out[j][c] = raw(j, c);
+        }
+        // Canvas rows are contiguous: along them (u) for the ±x frames, down the frame column (v)
+        // else; the loop runs along the canvas row in the inner loop.
         const bool alongX = frame.frustum == Frustum::PlusX || frame.frustum == Frustum::MinusX;
         if (alongX) {
-            for (int v = v0; v < v1; ++v) {
-                for (int u = first; u <= x; ++u) copy(u, v);
+            // Each frame row is another canvas row: the prefetcher does not follow strides of a
+            // canvas row, so the block's rows a few ahead are fetched by hand.
+            const std::ptrdiff_t lineFloats = 16, blockFloats = std::ptrdiff_t(columns) * 3;
+            for (int i = 0; i < count; ++i) {
+                const std::ptrdiff_t row = origin + i * stepV;
+                if (i + kPrefetchRows < count) {
+                    const std::ptrdiff_t ahead = row + kPrefetchRows * stepV;
+                    const std::ptrdiff_t lo = std::min(ahead, ahead + (columns - 1) * stepU);
+                    for (std::ptrdiff_t f = 0; f < blockFloats + lineFloats; f += lineFloats) {
+                        __builtin_prefetch(sigma + lo + f);
+                        __builtin_prefetch(emission + lo + f);
+                    }
+                }
+                for (int j = 0; j < columns; ++j) {
+                    const std::ptrdiff_t k = row + j * stepU;
+                    for (int c = 0; c < 3; ++c) {
+                        out[j][c][i] = sigma[k + c];
+                        out[j][3 + c][i] = emission[k + c];
+                    }
+                }
             }
         } else {
-            for (int u = first; u <= x; ++u) {
-                for (int v = v0; v < v1; ++v) copy(u, v);
+            for (int j = 0; j < columns; ++j) {
+                const std::ptrdiff_t column = origin + j * stepU;
+                float* const* to = out[j];
+                for (int i = 0; i < count; ++i) {
+                    const std::ptrdiff_t k = column + i * stepV;
+                    for (int c = 0; c < 3; ++c) {
+                        to[c][i] = sigma[k + c];
+                        to[3 + c][i] = emission[k + c];
+                    }
+                }
             }
         }
     }

@@ -15,6 +15,11 @@
 
 namespace luxel::gi2d::hrc {
 
+// How many rows ahead the canvas is prefetched where the sweep walks a ±x frame's block of
+// columns row by row: each row is another canvas row, a stride the hardware prefetcher does not
+// follow (1024^2, one thread: the medium's load from 11.4% of the solve to 8.0%).
+inline constexpr int kPrefetchRows = 8;
+
 // The frame's medium columns x .. x + span - 1 as cell transfers (sweep_kernels.h) for each ray
 // length the traced cascades use, padded with vacuum rows above and below; columns beyond the
 // frame read as vacuum.

@@ -312,6 +312,15 @@ std::uint64_t FrustumSweep::readOut(int u, int plane, int y0, int y1) {
         case Frustum::PlusX:
         case Frustum::MinusX:
             for (int v = y0; v < y1; ++v) {
+                // Each v is another canvas row: its block a few rows ahead is fetched by hand
+                // (the prefetcher does not follow strides of a canvas row; ColumnWindow::load).
+                if (v + kPrefetchRows < y1) {
+                    const int lo = frame_.frustum == Frustum::PlusX ? u : width - 1 - last;
+                    const float* ahead = pixel(lo, v + kPrefetchRows);
+                    for (int f = 0; f < (last - u + 1) * 3 + 16; f += 16) {
+                        __builtin_prefetch(ahead + f, 1);
+                    }
+                }
                 for (int w = u; w <= last; ++w) {
                     float* p = pixel(frame_.frustum == Frustum::PlusX ? w : width - 1 - w, v);
                     for (int c = 0; c < 3; ++c) p[c] += gathered(w, c)[v - y0];
