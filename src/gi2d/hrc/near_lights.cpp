@@ -19,8 +19,9 @@ constexpr int kFar = 9;
 
 // What a pixel emits towards a ray crossing it, per channel at most E min(sigma, 1).
 float lightScore(const float* e, const float* s) {
-    return std::max(
-        {e[0] * std::min(s[0], 1.0f), e[1] * std::min(s[1], 1.0f), e[2] * std::min(s[2], 1.0f)});
+    const float r = e[0] * std::min(s[0], 1.0f), g = e[1] * std::min(s[1], 1.0f),
+                b = e[2] * std::min(s[2], 1.0f);
+    return std::max(r, std::max(g, b));
 }
 
 // The kept fraction in 64ths for a squared pixel-centre distance below 9: none within 1 px, the
@@ -43,6 +44,12 @@ std::uint64_t NearLightMask::hostBytesFor(int width, int height) {
 
 NearLightMask NearLightMask::fromMedium(const Medium2D& medium) {
     NearLightMask mask;
+    mask.build(medium);
+    return mask;
+}
+
+void NearLightMask::build(const Medium2D& medium) {
+    NearLightMask& mask = *this;
     const int w = medium.width(), h = medium.height();
     mask.width_ = w;
     mask.height_ = h;
@@ -63,7 +70,7 @@ NearLightMask NearLightMask::fromMedium(const Medium2D& medium) {
         }
     });
     const float brightest = *std::max_element(rowMost.begin(), rowMost.end());
-    if (!(brightest > 0.0f)) return mask;
+    if (!(brightest > 0.0f)) return;
     const float threshold = brightest / 64.0f;
     static constexpr std::array<std::uint8_t, kFar + 1> kept = keptTable();
     parallelForRange(h, kGrain, [&](int y0, int y1) {
@@ -120,7 +127,6 @@ NearLightMask NearLightMask::fromMedium(const Medium2D& medium) {
         const std::uint8_t* row = mask.bytes_.data() + static_cast<std::size_t>(y) * w;
         for (int x = 0; x < w; ++x) mask.columnNear_[static_cast<std::size_t>(x)] |= row[x] < 64;
     }
-    return mask;
 }
 
 }  // namespace luxel::gi2d::hrc

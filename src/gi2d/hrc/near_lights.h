@@ -19,6 +19,8 @@ class NearLightMask {
     // pixel's; each pixel keeps hrcNearLightKept (shared/hrc_kernels.h) of its distance to the
     // nearest one. A canvas without emission keeps the whole blend everywhere.
     static NearLightMask fromMedium(const Medium2D& medium);
+    // The same in place, keeping the allocations of a mask of the same size.
+    void build(const Medium2D& medium);
 
     int width() const { return width_; }
     int height() const { return height_; }

@@ -149,6 +149,10 @@ class FrustumSweep {
             planes_.push_back(planeCount(frame.length, n));
             weights_.push_back(coneWeights(n));
         }
+        for (int kept = 0; kept <= 64; ++kept) {
+            weightOf_[static_cast<std::size_t>(kept)] =
+                shared::hrcNearRowWeightAt(0, static_cast<unsigned>(kept));
+        }
         for (ColumnWindow& window : columns_) {
             window.reshape(pow2(traced_ - 1), rays_.lengths, rows_);
         }
@@ -184,6 +188,7 @@ class FrustumSweep {
 
     const Medium2D& medium_;
     const NearLightMask& nearLights_;
+    std::array<float, 65> weightOf_{};  // hrcNearRowWeightAt(0, kept) for every mask value
     FrustumFrame frame_;
     int rows_, levels_, traced_;
     const TracedRays& rays_;
@@ -241,10 +246,14 @@ const float* FrustumSweep::nearRows(int p, int y0, int y1) const {
     if (alongColumn ? !nearLights_.columnNear(cx) : !nearLights_.rowNear(cy)) return nullptr;
     thread_local std::vector<float> weights;
     weights.resize(static_cast<std::size_t>(rows_ + kSweepRowPad));
+    // The frame's rows step through the canvas by a fixed stride (one pixel, or one row).
+    int nx = 0, ny = 0;
+    frame_.toCanvas(p - 1, 1, nx, ny);
+    const std::ptrdiff_t width = nearLights_.width();
+    const std::ptrdiff_t stride = (ny - cy) * width + (nx - cx);
+    const std::uint8_t* mask = nearLights_.bytes().data() + cy * width + cx;
     for (int y = y0; y < y1; ++y) {
-        int x = 0, v = 0;
-        frame_.toCanvas(p - 1, y, x, v);
-        weights[static_cast<std::size_t>(y)] = shared::hrcNearRowWeightAt(0, nearLights_.at(x, v));
+        weights[static_cast<std::size_t>(y)] = weightOf_[mask[y * stride]];
     }
     return weights.data();
 }
@@ -420,7 +429,8 @@ void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int thread
     thread_local SweepBuffers kept;
     SweepBuffers buffers = std::move(kept);
     kept = {};
-    const NearLightMask nearLights = NearLightMask::fromMedium(medium);
+    buffers.nearLights.build(medium);
+    const NearLightMask& nearLights = buffers.nearLights;
     for (int r = 0; r < 4; ++r) {
         if (!(options.frustumMask & (1u << r))) continue;
         const FrustumFrame frame =
