@@ -154,7 +154,7 @@ TEST(HrcSolver, SolveFitsSixCanvasImages) {
     // leaves 3.25 (18 + 9 + 12), 5.25 with the medium. The extra ring planes of the lowest
     // cascades, the `+1` ray of every plane, the near-light mask (a byte per pixel, 1/12 image,
     // §12.3) and each thread's window and read-out block come on top: 6 images hold from 8192^2
-    // on up to 215 threads (at 1024^2 on up to 18).
+    // on up to 162 threads (at 1024^2 on up to 14).
     const std::uint64_t gib = 1ull << 30;
     for (const int size : {1024, 8192, 16384}) {
         const std::uint64_t image = imageBytes(size, size, 3);
