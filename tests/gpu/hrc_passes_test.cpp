@@ -14,6 +14,7 @@
 #include "gi2d/hrc/frustum_frame.h"
 #include "gi2d/hrc/gpu_passes.h"
 #include "gi2d/hrc/hrc_geometry.h"
+#include "gi2d/hrc/near_lights.h"
 #include "gi2d/hrc/ray_tables.h"
 #include "gi2d/hrc/readout.h"
 #include "gpu/random_medium.h"
@@ -158,6 +159,49 @@ TEST_F(HrcPasses, MergeMatchesMergeCascade) {
         EXPECT_LT(d.worst, 1e-4f) << "level " << n;
         EXPECT_LE(d.roundingSteps * 1000, cpu.halves().size()) << "level " << n;
         upperCpu = std::move(cpu);
+    }
+}
+
+TEST_F(HrcPasses, MergeNearLightsMatchesMergeCascade) {
+    // Cascade 0 next to lights (§12.3): the near probe's row blend weighed by the mask read at
+    // the pixel each plane is read out for, in every frustum's frame.
+    const int w = 45, h = 33;
+    const Medium2D medium = randomMedium(w, h, 17);
+    Medium2D lights{Image(w, h, 3), Image(w, h, 3), Rgb{}};
+    for (const auto& [x, y] : {std::pair{3, 4}, std::pair{20, 16}, std::pair{21, 17},
+                               std::pair{44, 30}, std::pair{0, 32}}) {
+        lights.emission.setRgb(x, y, {4.0f, 4.0f, 4.0f});
+        lights.absorption.setRgb(x, y, {1.0f, 1.0f, 1.0f});
+    }
+    const NearLightMask mask = NearLightMask::fromMedium(lights);
+    for (int r = 0; r < 4; ++r) {
+        const FrustumFrame frame = makeFrame(static_cast<Frustum>(r), w, h);
+        RayTables tables;
+        const int levels = cascadeCount(frame.length);
+        tables.reset(frame.length, frame.rows, levels);
+        traceBaseLevels(tables, RayMarcher(frameMedium(medium, frame)), 3);
+        extendLevels(tables, 3);
+        const Rgb sky = medium.boundaryRadiance;
+        ConeBuffer upper, cpu, gpu, whole;
+        for (int n = levels - 1; n >= 1; --n) {
+            mergeCascade(tables, n, n == levels - 1 ? nullptr : &upper, sky, cpu);
+            upper = std::move(cpu);
+        }
+        mergeCascade(tables, 0, &upper, sky, cpu, {&mask, frame});
+        mergeCascade(tables, 0, &upper, sky, whole);
+        auto ms = mergeCascadeOnGpu(*context_, tables, 0, &upper, sky, gpu, {&mask, frame});
+        ASSERT_TRUE(ms.ok()) << ms.error().message();
+        ASSERT_EQ(cpu.halves().size(), gpu.halves().size());
+        const ConeDifference d = compareCones(cpu.halves(), gpu.halves());
+        EXPECT_LT(d.worst, 1e-4f) << "frustum " << r;
+        EXPECT_LE(d.roundingSteps * 1000, cpu.halves().size()) << "frustum " << r;
+        // The mask changes the cones next to the lights and nowhere else.
+        std::size_t changed = 0;
+        for (std::size_t v = 0; v < cpu.halves().size(); ++v) {
+            changed += cpu.halves()[v] != whole.halves()[v];
+        }
+        EXPECT_GT(changed, 0u) << "frustum " << r;
+        EXPECT_LT(changed, cpu.halves().size() / 10) << "frustum " << r;
     }
 }
 

@@ -142,7 +142,9 @@ TEST(GpuSharedLayout, HrcPushConstants) {
          {LUXEL_MEMBER(HrcMergeParams, level), LUXEL_MEMBER(HrcMergeParams, rows),
           LUXEL_MEMBER(HrcMergeParams, planes), LUXEL_MEMBER(HrcMergeParams, upperPlanes),
           LUXEL_MEMBER(HrcMergeParams, hasUpper), LUXEL_MEMBER(HrcMergeParams, skyR),
-          LUXEL_MEMBER(HrcMergeParams, skyG), LUXEL_MEMBER(HrcMergeParams, skyB)}});
+          LUXEL_MEMBER(HrcMergeParams, skyG), LUXEL_MEMBER(HrcMergeParams, skyB),
+          LUXEL_MEMBER(HrcMergeParams, frustum), LUXEL_MEMBER(HrcMergeParams, canvasWidth),
+          LUXEL_MEMBER(HrcMergeParams, canvasHeight), LUXEL_MEMBER(HrcMergeParams, nearLights)}});
     expectPushConstants(
         "hrc_readout",
         {sizeof(HrcReadoutParams),

@@ -112,10 +112,11 @@ int runInfo(const InfoArgs& args) {
         case gi2d::Solver2D::Hrc: {
             const gi2d::HrcMemory m = gi2d::estimateHrcMemory(w, h);
             std::printf(
-                "  hrc: %d cascades; ray intervals %s, cones %s, medium columns %s, output %s\n",
+                "  hrc: %d cascades; ray intervals %s, cones %s, medium columns %s, near-light "
+                "mask %s, output %s\n",
                 gi2d::hrcCascadeCount(w, h), formatBytes(m.rayIntervals).c_str(),
                 formatBytes(m.cones).c_str(), formatBytes(m.mediumColumns).c_str(),
-                formatBytes(m.output).c_str());
+                formatBytes(m.nearLights).c_str(), formatBytes(m.output).c_str());
             break;
         }
         case gi2d::Solver2D::Rc:

@@ -38,8 +38,11 @@ struct HrcMemory {
     std::uint64_t rayIntervals = 0;   // two planes of intervals per cascade, binary16
     std::uint64_t cones = 0;          // two planes of merged cones per cascade, binary16
     std::uint64_t mediumColumns = 0;  // per thread: the medium columns and the read-out's block
+    std::uint64_t nearLights = 0;     // where the lights are, a byte per pixel (§12.3)
     std::uint64_t output = 0;         // the fluence, accumulated and finished in place
-    std::uint64_t total() const { return rayIntervals + cones + mediumColumns + output; }
+    std::uint64_t total() const {
+        return rayIntervals + cones + mediumColumns + nearLights + output;
+    }
 };
 
 // Memory solveHrc needs for a canvas of this size (the input medium not counted).

@@ -27,8 +27,8 @@ std::vector<float> coneWeights(int level) {
     return w;
 }
 
-void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb sky,
-                  ConeBuffer& out) {
+void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb sky, ConeBuffer& out,
+                  const MergeNearLights& nearLights) {
     const int cones = pow2(n), rows = tables.rows();
     out.reset(tables.planes(n), cones, rows);
     const std::vector<float> weight = coneWeights(n);
@@ -40,7 +40,13 @@ void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb s
     // The rows each read blends (§5.1): towards the cone's bisector, and the near probe's row
     // along the side's ray.
     const float second = gpu::shared::hrcSecondRowWeight(n);
-    const float nearSecond = gpu::shared::hrcNearRowWeight(n);
+    // Plane p is read out for pixel p - 1 (§6.2); plane 0 for none (it never reaches the image).
+    auto nearWeight = [&](int p, int y) {
+        if (nearLights.mask == nullptr || p < 1) return gpu::shared::hrcNearRowWeight(n);
+        int x = 0, v = 0;
+        nearLights.frame.toCanvas(p - 1, y, x, v);
+        return gpu::shared::hrcNearRowWeightAt(n, nearLights.mask->at(x, v));
+    };
     parallelForRange(out.planes() * cones, 1, [&](int begin, int end) {
         // Per-thread scratch: the two rays' table rows here and on the next plane.
         thread_local DecodedRow here[2], next[2];
@@ -53,6 +59,7 @@ void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb s
             }
             for (int y = 0; y < rows; ++y) {
                 gpu::shared::vec3 sum(0.0f);
+                const float nearSecond = odd ? 0.0f : nearWeight(p, y);
                 for (int s = 0; s < 2; ++s) {
                     const int k = i + s, j = 2 * i + s, dy = gpu::shared::hrcRayOffsetY(n, k);
                     const int axis = gpu::shared::hrcTowardsAxis(s);

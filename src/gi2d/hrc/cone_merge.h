@@ -10,6 +10,8 @@
 #include <span>
 #include <vector>
 
+#include "gi2d/hrc/frustum_frame.h"
+#include "gi2d/hrc/near_lights.h"
 #include "gi2d/hrc/ray_tables.h"
 #include "luxel/core/half.h"
 #include "luxel/core/vec.h"
@@ -56,12 +58,19 @@ class ConeBuffer {
 // 13): w[j] = width of cone j at level n+1.
 std::vector<float> coneWeights(int level);
 
+// Where cascade 0's merge finds the lights (§12.3): the canvas mask and the frame it merges in.
+struct MergeNearLights {
+    const NearLightMask* mask = nullptr;
+    FrustumFrame frame{};
+};
+
 // R_n from R_{n+1} (`upper`; nullptr for the top level, where every probe sees only the sky).
 // Probes outside the frame read `sky` radiance times the cone width, so boundary light is still
 // shadowed by everything on the canvas in front of it. Odd planes merge at the ray end (Eq 14);
 // even planes average the merged near and far fluences (Eq 15-17), never interpolating before
-// the merge.
-void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb sky,
-                  ConeBuffer& out);
+// the merge. `nearLights` (cascade 0; none: the whole near-probe blend everywhere) weighs the near
+// probe's row blend by the mask at the pixel each plane is read out for (hrcNearRowWeightAt).
+void mergeCascade(const RayTables& tables, int n, const ConeBuffer* upper, Rgb sky, ConeBuffer& out,
+                  const MergeNearLights& nearLights = {});
 
 }  // namespace luxel::gi2d::hrc

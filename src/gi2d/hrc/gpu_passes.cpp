@@ -84,15 +84,20 @@ gpu::Dispatch makeExtendDispatch(gpu::Program* program, gpu::Buffer* below, gpu:
 }
 
 gpu::Dispatch makeMergeDispatch(gpu::Program* program, gpu::Buffer* table, gpu::Buffer* upper,
-                                gpu::Buffer* out, gpu::Buffer* weights, int n, int rows, int planes,
-                                int upperPlanes, Rgb sky) {
+                                gpu::Buffer* out, gpu::Buffer* weights, gpu::Buffer* nearLights,
+                                int n, const FrustumFrame& frame, int planes, int upperPlanes,
+                                Rgb sky) {
     gpu::Dispatch d;
     d.name = "merge R" + std::to_string(n);
     d.program = program;
-    // The top cascade reads no upper buffer; the output is bound twice then (never read).
-    d.buffers = {table, upper ? upper : out, out, weights};
+    const int rows = frame.rows;
+    // The top cascade reads no upper buffer; the output is bound twice then (never read). Without
+    // a mask the weights stand in for it (never read).
+    d.buffers = {table, upper ? upper : out, out, weights, nearLights ? nearLights : weights};
     d.setPush(shared::HrcMergeParams{u32(n), u32(rows), u32(planes), upper ? u32(upperPlanes) : 0u,
-                                     upper ? 1u : 0u, sky.r, sky.g, sky.b});
+                                     upper ? 1u : 0u, sky.r, sky.g, sky.b,
+                                     u32(static_cast<int>(frame.frustum)), u32(frame.canvasWidth),
+                                     u32(frame.canvasHeight), nearLights ? 1u : 0u});
     // Two rows per invocation: a 32-bit word holds two rows of binary16 cones (hrc_layout.h).
     d.setThreads((u32(rows) + 1) / 2, pow2(n), u32(planes));
     return d;
@@ -176,9 +181,10 @@ Result<double> extendLevelOnGpu(gpu::Context& context, RayTables& tables, int n)
 }
 
 Result<double> mergeCascadeOnGpu(gpu::Context& context, const RayTables& tables, int n,
-                                 const ConeBuffer* upper, Rgb sky, ConeBuffer& out) {
+                                 const ConeBuffer* upper, Rgb sky, ConeBuffer& out,
+                                 const MergeNearLights& nearLights) {
     LUXEL_CHECK(n >= 0 && n + 1 < tables.levels() + 1);
-    auto program = context.program("hrc_merge", 4, sizeof(shared::HrcMergeParams));
+    auto program = context.program("hrc_merge", 5, sizeof(shared::HrcMergeParams));
     if (!program) return program.error();
     Scratch scratch{context, {}};
     auto table = scratch.upload(bytesOf(tables.levelHalves(n)));
@@ -189,12 +195,19 @@ Result<double> mergeCascadeOnGpu(gpu::Context& context, const RayTables& tables,
     Result<gpu::Buffer*> upperBuffer = static_cast<gpu::Buffer*>(nullptr);
     if (upper) upperBuffer = scratch.upload(coneBytes(*upper));
     if (!upperBuffer) return upperBuffer.error();
+    Result<gpu::Buffer*> maskBuffer = static_cast<gpu::Buffer*>(nullptr);
+    if (nearLights.mask) maskBuffer = scratch.upload(std::as_bytes(nearLights.mask->bytes()));
+    if (!maskBuffer) return maskBuffer.error();
     out.reset(tables.planes(n), pow2(n), tables.rows());
     auto outBuffer = scratch.create(out.halves().size_bytes());
     if (!outBuffer) return outBuffer.error();
-    auto ms = runOne(context, makeMergeDispatch(*program, *table, *upperBuffer, *outBuffer,
-                                                *weightBuffer, n, tables.rows(), tables.planes(n),
-                                                upper ? upper->planes() : 0, sky));
+    // Without a mask only the frame's rows matter.
+    FrustumFrame frame = nearLights.frame;
+    frame.rows = tables.rows();
+    auto ms =
+        runOne(context, makeMergeDispatch(*program, *table, *upperBuffer, *outBuffer, *weightBuffer,
+                                          *maskBuffer, n, frame, tables.planes(n),
+                                          upper ? upper->planes() : 0, sky));
     if (!ms) return ms;
     if (Status s = context.download(**outBuffer, std::as_writable_bytes(out.halves())); !s) {
         return s.error();

@@ -30,10 +30,12 @@ gpu::Dispatch makeTraceDispatch(gpu::Program* program, gpu::Buffer* medium, gpu:
 bool traceReadsTransposed(const FrustumFrame& frame);
 gpu::Dispatch makeExtendDispatch(gpu::Program* program, gpu::Buffer* below, gpu::Buffer* table,
                                  int n, int rows, int planesBelow, int planes);
-// `upper` null at the top cascade.
+// `upper` null at the top cascade; `nearLights` (the NearLightMask's bytes, read at cascade 0 in
+// `frame`) null for none.
 gpu::Dispatch makeMergeDispatch(gpu::Program* program, gpu::Buffer* table, gpu::Buffer* upper,
-                                gpu::Buffer* out, gpu::Buffer* weights, int n, int rows, int planes,
-                                int upperPlanes, Rgb sky);
+                                gpu::Buffer* out, gpu::Buffer* weights, gpu::Buffer* nearLights,
+                                int n, const FrustumFrame& frame, int planes, int upperPlanes,
+                                Rgb sky);
 gpu::Dispatch makeReadoutDispatch(gpu::Program* program, gpu::Buffer* cones, gpu::Buffer* beyond,
                                   const FrustumFrame& frame, Rgb sky);
 // The medium's column-major copy from its row-major one (medium_transpose.comp.glsl).
@@ -50,9 +52,11 @@ Result<double> traceLevelOnGpu(gpu::Context& context, const Medium2D& medium,
                                float depthScale = 1.0f);
 // T_n from T_{n-1}.
 Result<double> extendLevelOnGpu(gpu::Context& context, RayTables& tables, int n);
-// R_n into `out` from T_n, T_{n+1} weights and `upper` (null at the top).
+// R_n into `out` from T_n, T_{n+1} weights and `upper` (null at the top), cascade 0 weighed by
+// `nearLights` where it has a mask.
 Result<double> mergeCascadeOnGpu(gpu::Context& context, const RayTables& tables, int n,
-                                 const ConeBuffer* upper, Rgb sky, ConeBuffer& out);
+                                 const ConeBuffer* upper, Rgb sky, ConeBuffer& out,
+                                 const MergeNearLights& nearLights = {});
 // Adds R_0 (`cones`) at each pixel's read-out plane into `beyondSum`.
 Result<double> readOutOnGpu(gpu::Context& context, const FrustumFrame& frame,
                             const ConeBuffer& cones, Rgb sky, Image& beyondSum);

@@ -7,6 +7,7 @@
 #include "gi2d/hrc/frustum_frame.h"
 #include "gi2d/hrc/gpu_passes.h"
 #include "gi2d/hrc/hrc_geometry.h"
+#include "gi2d/hrc/near_lights.h"
 #include "gi2d/hrc/ray_tables.h"
 #include "gi2d/medium_gpu.h"
 #include "gpu/shaders/shared/hrc_kernels.h"
@@ -56,9 +57,10 @@ std::uint64_t estimateHrcGpuMemory(int width, int height) {
         bytes += tableEntries(width, height, n) * LUXEL_HRC_ENTRY_WORDS * 4;
     }
     const std::uint64_t pixels = static_cast<std::uint64_t>(width) * height;
-    bytes += 2 * coneBytes(width, height);  // two R buffers
-    bytes += 2 * pixels * 24;               // the canvas medium, row- and column-major
-    bytes += 2 * pixels * 12;               // accumulator and fluence
+    bytes += 2 * coneBytes(width, height);            // two R buffers
+    bytes += 2 * pixels * 24;                         // the canvas medium, row- and column-major
+    bytes += 2 * pixels * 12;                         // accumulator and fluence
+    bytes += NearLightMask::bytesFor(width, height);  // §12.3
     return bytes;
 }
 
@@ -86,7 +88,7 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
         shared::HrcReadoutParams, shared::HrcTraceParams;
     auto trace = context.program("hrc_trace", 2, sizeof(HrcTraceParams));
     auto extend = context.program("hrc_extend", 2, sizeof(HrcExtendParams));
-    auto merge = context.program("hrc_merge", 4, sizeof(HrcMergeParams));
+    auto merge = context.program("hrc_merge", 5, sizeof(HrcMergeParams));
     auto readout = context.program("hrc_readout", 2, sizeof(HrcReadoutParams));
     auto finish = context.program("hrc_finish", 3, sizeof(HrcFinishParams));
     auto transpose = context.program("medium_transpose", 2, sizeof(shared::MediumTransposeParams));
@@ -118,8 +120,14 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
     auto transposedMedium = context.createBuffer(pixels * 24);
     auto beyond = context.createBuffer(pixels * 12);
     auto fluence = context.createBuffer(pixels * 12);
-    for (auto* b : {&canvasMedium, &transposedMedium, &beyond, &fluence}) {
+    // Where the lights are (§12.3), told once on the CPU and read by cascade 0's merge.
+    const NearLightMask mask = NearLightMask::fromMedium(medium);
+    auto nearLights = context.createBuffer(mask.bytes().size());
+    for (auto* b : {&canvasMedium, &transposedMedium, &beyond, &fluence, &nearLights}) {
         if (!*b) return b->error();
+    }
+    if (Status s = context.upload(**nearLights, std::as_bytes(mask.bytes())); !s) {
+        return s.error();
     }
     {
         // The rows are packed straight into the staging memory (in parallel) and the columns
@@ -172,8 +180,8 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
             const bool top = n == levels - 1;
             passes.push_back(makeMergeDispatch(
                 *merge, tables[n].get(), top ? nullptr : cones[current ^ 1].get(),
-                cones[current].get(), weights[n].get(), n, frame.rows, planeCount(frame.length, n),
-                top ? 0 : planeCount(frame.length, n + 1), sky));
+                cones[current].get(), weights[n].get(), nearLights->get(), n, frame,
+                planeCount(frame.length, n), top ? 0 : planeCount(frame.length, n + 1), sky));
             passes.back().name += tag;
             current ^= 1;
         }

@@ -32,6 +32,7 @@ HrcMemory estimateHrcMemory(int width, int height) {
     m.rayIntervals = sweep.intervals;
     m.cones = sweep.cones;
     m.mediumColumns = sweep.columns;
+    m.nearLights = sweep.nearLights;
     m.output = static_cast<std::uint64_t>(width) * height * 3 * sizeof(float);
     return m;
 }

@@ -6,6 +6,7 @@
 #include "gi2d/hrc/cone_merge.h"
 #include "gi2d/hrc/frustum_frame.h"
 #include "gi2d/hrc/hrc_geometry.h"
+#include "gi2d/hrc/near_lights.h"
 #include "gi2d/hrc/ray_tables.h"
 #include "gi2d/hrc/readout.h"
 #include "luxel/gi2d/ray_march.h"
@@ -27,7 +28,8 @@ std::uint64_t levelByLevelBytes(int width, int height) {
     // The rotated medium lives while its marcher is built; the marcher lives for the frustum.
     const std::uint64_t frame = mediumBytes(width, height) + RayMarcher::bytesFor(width, height);
     const std::uint64_t pixels = static_cast<std::uint64_t>(width) * height;
-    return tables + cones + frame + pixels * 3 * sizeof(float);
+    return tables + cones + frame + pixels * 3 * sizeof(float) +
+           NearLightMask::hostBytesFor(width, height);
 }
 
 Image levelByLevelBeyond(const Medium2D& medium, const HrcOptions& options) {
@@ -37,6 +39,7 @@ Image levelByLevelBeyond(const Medium2D& medium, const HrcOptions& options) {
     ConeBuffer buffers[2];
     const int frustums = std::popcount(options.frustumMask & 0xFu);
     int done = 0;
+    const NearLightMask nearLights = NearLightMask::fromMedium(medium);
     for (int r = 0; r < 4; ++r) {
         if (!(options.frustumMask & (1u << r))) continue;
         const FrustumFrame frame = makeFrame(static_cast<Frustum>(r), w, h);
@@ -52,7 +55,8 @@ Image levelByLevelBeyond(const Medium2D& medium, const HrcOptions& options) {
         const ConeBuffer* upper = nullptr;
         int current = 0;
         for (int n = levels - 1; n >= lowest; --n) {
-            mergeCascade(tables, n, upper, medium.boundaryRadiance, buffers[current]);
+            mergeCascade(tables, n, upper, medium.boundaryRadiance, buffers[current],
+                         {&nearLights, frame});
             upper = &buffers[current];
             current ^= 1;
         }

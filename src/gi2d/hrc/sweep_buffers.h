@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "gi2d/hrc/frustum_frame.h"
+#include "gi2d/hrc/near_lights.h"
 #include "gi2d/hrc/sweep_kernels.h"
 #include "luxel/gi2d/medium2d.h"
 
@@ -121,6 +122,7 @@ struct SweepBuffers {
     std::vector<ColumnWindow> columns;
     IntervalRing tables;
     ConeRing cones;
+    NearLightMask nearLights;  // §12.3, told once per solve
 };
 
 }  // namespace luxel::gi2d::hrc

@@ -166,6 +166,13 @@ HWY_INLINE VF TwoRows(const ConeRows& a, const ConeRows& b, int c, int y, float 
                    hn::Mul(LoadCone(b, c, y), hn::Set(df, second)));
 }
 
+// The same with a weight per lane (the near probe next to a light, hrcNearRowWeightAt).
+HWY_INLINE VF TwoRowsPerLane(const ConeRows& a, const ConeRows& b, int c, int y, VF second) {
+    const DF df;
+    return hn::Add(hn::Mul(LoadCone(a, c, y), hn::Sub(hn::Set(df, 1.0f), second)),
+                   hn::Mul(LoadCone(b, c, y), second));
+}
+
 // (1 - 3s/2) a + s b + (s/2) d (hrcBlendThreeRows, §5.1).
 HWY_INLINE VF ThreeRows(const ConeRows& a, const ConeRows& b, const ConeRows& d, int c, int y,
                         float second) {
@@ -176,7 +183,8 @@ HWY_INLINE VF ThreeRows(const ConeRows& a, const ConeRows& b, const ConeRows& d,
 }
 
 void MergeRowsImpl(bool odd, const MergeSide& side0Ref, const MergeSide& side1Ref, float second,
-                   float nearSecond, std::uint16_t* const outRef[3], int y0, int y1) {
+                   float nearSecond, const float* nearRows, std::uint16_t* const outRef[3], int y0,
+                   int y1) {
     // Local copies: stores through `out` cannot alias them, so their pointers stay in registers.
     const MergeSide side0 = side0Ref, side1 = side1Ref;
     std::uint16_t* const out[3] = {outRef[0], outRef[1], outRef[2]};
@@ -186,6 +194,7 @@ void MergeRowsImpl(bool odd, const MergeSide& side0Ref, const MergeSide& side1Re
     const MergeSide* sides[2] = {&side0, &side1};
     for (int y = y0; y < y1; y += lanes) {
         VF sum[3] = {hn::Zero(df), hn::Zero(df), hn::Zero(df)};
+        const VF nearHere = nearRows != nullptr ? hn::LoadU(df, nearRows + y) : hn::Zero(df);
         for (const MergeSide* side : sides) {
             const VF w = hn::Set(df, side->weight);
             const Lanes6 here = LoadInterval(side->here, y);
@@ -203,7 +212,10 @@ void MergeRowsImpl(bool odd, const MergeSide& side0Ref, const MergeSide& side1Re
                 const VF upperFar =
                     ThreeRows(side->upperB, side->upperB2, side->upperB3, c, y, second);
                 const VF far = hn::Add(hn::Mul(ray.l[c], w), hn::Mul(ray.t[c], upperFar));
-                const VF upperNear = TwoRows(side->upperA, side->upperA2, c, y, nearSecond);
+                const VF upperNear =
+                    nearRows != nullptr
+                        ? TwoRowsPerLane(side->upperA, side->upperA2, c, y, nearHere)
+                        : TwoRows(side->upperA, side->upperA2, c, y, nearSecond);
                 sum[c] = hn::Add(sum[c], hn::Mul(hn::Add(upperNear, far), half));
             }
         }
@@ -240,8 +252,10 @@ void extendRows(const IntervalRows& nearA, const IntervalRows& farA, const Inter
 }
 
 void mergeRows(bool odd, const MergeSide& side0, const MergeSide& side1, float second,
-               float nearSecond, std::uint16_t* const out[3], int y0, int y1) {
-    HWY_DYNAMIC_DISPATCH(MergeRowsImpl)(odd, side0, side1, second, nearSecond, out, y0, y1);
+               float nearSecond, const float* nearRows, std::uint16_t* const out[3], int y0,
+               int y1) {
+    HWY_DYNAMIC_DISPATCH(MergeRowsImpl)
+    (odd, side0, side1, second, nearSecond, nearRows, out, y0, y1);
 }
 
 }  // namespace luxel::gi2d::hrc

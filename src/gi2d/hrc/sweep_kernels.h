@@ -79,8 +79,10 @@ struct MergeSide {
 // Rows [y0, y1) of R_n(p, i): the sum over the cone's two rays of Eq 14 (odd planes) or Eq 15-17
 // (even planes), summed in float and written to out[c][y] as binary16.
 // `second` weighs the rows towards the bisector, `nearSecond` the near probe's second row
-// (hrcSecondRowWeight, hrcNearRowWeight).
+// (hrcSecondRowWeight, hrcNearRowWeight), or `nearRows[y]` per row where given (cascade 0 near a
+// light, hrcNearRowWeightAt; readable for kSweepRowPad values past y1).
 void mergeRows(bool odd, const MergeSide& side0, const MergeSide& side1, float second,
-               float nearSecond, std::uint16_t* const out[3], int y0, int y1);
+               float nearSecond, const float* nearRows, std::uint16_t* const out[3], int y0,
+               int y1);
 
 }  // namespace luxel::gi2d::hrc

@@ -6,6 +6,7 @@
 
 #include "gi2d/hrc/cone_merge.h"
 #include "gi2d/hrc/hrc_geometry.h"
+#include "gi2d/hrc/near_lights.h"
 #include "gi2d/hrc/sweep_buffers.h"
 #include "gi2d/hrc/trace_stencil.h"
 #include "gpu/shaders/shared/hrc_kernels.h"
@@ -129,9 +130,10 @@ class Laps {
 
 class FrustumSweep {
   public:
-    FrustumSweep(const Medium2D& medium, const FrustumFrame& frame, int tracedLevels,
-                 SweepBuffers& buffers, Image& beyondSum)
+    FrustumSweep(const Medium2D& medium, const NearLightMask& nearLights, const FrustumFrame& frame,
+                 int tracedLevels, SweepBuffers& buffers, Image& beyondSum)
         : medium_(medium),
+          nearLights_(nearLights),
           frame_(frame),
           rows_(frame.rows),
           levels_(cascadeCount(frame.length)),
@@ -146,6 +148,10 @@ class FrustumSweep {
         for (int n = 0; n < levels_; ++n) {
             planes_.push_back(planeCount(frame.length, n));
             weights_.push_back(coneWeights(n));
+        }
+        for (int kept = 0; kept <= 64; ++kept) {
+            weightOf_[static_cast<std::size_t>(kept)] =
+                shared::hrcNearRowWeightAt(0, static_cast<unsigned>(kept));
         }
         for (ColumnWindow& window : columns_) {
             window.reshape(pow2(traced_ - 1), rays_.lengths, rows_);
@@ -177,9 +183,12 @@ class FrustumSweep {
     std::uint64_t trace(const ColumnWindow& columns, int x, int y0, int y1);
     std::uint64_t extend(int n, int p, int y0, int y1);
     std::uint64_t merge(int n, int p, int y0, int y1);
+    const float* nearRows(int p, int y0, int y1) const;
     std::uint64_t readOut(int u, int plane, int y0, int y1);
 
     const Medium2D& medium_;
+    const NearLightMask& nearLights_;
+    std::array<float, 65> weightOf_{};  // hrcNearRowWeightAt(0, kept) for every mask value
     FrustumFrame frame_;
     int rows_, levels_, traced_;
     const TracedRays& rays_;
@@ -226,6 +235,29 @@ std::uint64_t FrustumSweep::extend(int n, int p, int y0, int y1) {
     return static_cast<std::uint64_t>(pow2(n) + 1) * rows_ * 12 * 5;
 }
 
+const float* FrustumSweep::nearRows(int p, int y0, int y1) const {
+    // Cascade 0's plane p is read out for pixel p - 1 (§6.2): its near-light mask byte weighs
+    // the near probe's row blend (§12.3). Frame column p - 1 is a canvas column in the +-x
+    // frames and a canvas row in the +-y frames; one without a light nearby keeps the whole
+    // blend, the constant weight. Padded for whole-vector loads.
+    int cx = 0, cy = 0;
+    frame_.toCanvas(p - 1, 0, cx, cy);
+    const bool alongColumn = frame_.frustum == Frustum::PlusX || frame_.frustum == Frustum::MinusX;
+    if (alongColumn ? !nearLights_.columnNear(cx) : !nearLights_.rowNear(cy)) return nullptr;
+    thread_local std::vector<float> weights;
+    weights.resize(static_cast<std::size_t>(rows_ + kSweepRowPad));
+    // The frame's rows step through the canvas by a fixed stride (one pixel, or one row).
+    int nx = 0, ny = 0;
+    frame_.toCanvas(p - 1, 1, nx, ny);
+    const std::ptrdiff_t width = nearLights_.width();
+    const std::ptrdiff_t stride = (ny - cy) * width + (nx - cx);
+    const std::uint8_t* mask = nearLights_.bytes().data() + cy * width + cx;
+    for (int y = y0; y < y1; ++y) {
+        weights[static_cast<std::size_t>(y)] = weightOf_[mask[y * stride]];
+    }
+    return weights.data();
+}
+
 std::uint64_t FrustumSweep::merge(int n, int p, int y0, int y1) {
     const bool odd = (p & 1) != 0;
     const float second = shared::hrcSecondRowWeight(n);
@@ -261,6 +293,7 @@ std::uint64_t FrustumSweep::merge(int n, int p, int y0, int y1) {
         }
         std::uint16_t* const out[3] = {cones_.plane(n, p, i, 0), cones_.plane(n, p, i, 1),
                                        cones_.plane(n, p, i, 2)};
+        const float* nearRowsHere = n == 0 && !odd ? nearRows(p, y0, y1) : nullptr;
         forUniformRows(y0, y1, rows_, offsets, count, [&](int a, int b) {
             MergeSide clipped[2] = {sides[0], sides[1]};
             for (MergeSide& side : clipped) {
@@ -271,15 +304,17 @@ std::uint64_t FrustumSweep::merge(int n, int p, int y0, int y1) {
                 side.upperB2 = clip(side.upperB2, a);
                 side.upperB3 = clip(side.upperB3, a);
             }
-            mergeRows(odd, clipped[0], clipped[1], second, nearSecond, out, a, b);
+            mergeRows(odd, clipped[0], clipped[1], second, nearSecond, nearRowsHere, out, a, b);
         });
     }
     // Per cone: its two rays here (and on the next plane), 2 or 5 upper rows each (one fewer
     // from cascade 2 up, where the near probe is one row), the output (intervals 12 bytes,
     // cones 6).
+    // Cascade 0's even planes also read the near-light mask, a byte per row.
     const int evenUpperRows = nearSecond == 0.0f ? 4 : 5;
     return static_cast<std::uint64_t>(pow2(n)) * rows_ *
-           (odd ? 2 * 12 + 4 * 6 + 6 : 4 * 12 + 2 * evenUpperRows * 6 + 6);
+               (odd ? 2 * 12 + 4 * 6 + 6 : 4 * 12 + 2 * evenUpperRows * 6 + 6) +
+           (n == 0 && !odd ? static_cast<std::uint64_t>(rows_) : 0);
 }
 
 std::uint64_t FrustumSweep::readOut(int u, int plane, int y0, int y1) {
@@ -403,13 +438,15 @@ void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int thread
     thread_local SweepBuffers kept;
     SweepBuffers buffers = std::move(kept);
     kept = {};
+    buffers.nearLights.build(medium);
+    const NearLightMask& nearLights = buffers.nearLights;
     for (int r = 0; r < 4; ++r) {
         if (!(options.frustumMask & (1u << r))) continue;
         const FrustumFrame frame =
             makeFrame(static_cast<Frustum>(r), medium.width(), medium.height());
         const int members = std::min(threads, frame.rows);
         buffers.columns.resize(static_cast<std::size_t>(members));
-        FrustumSweep sweep(medium, frame, options.tracedLevels, buffers, beyondSum);
+        FrustumSweep sweep(medium, nearLights, frame, options.tracedLevels, buffers, beyondSum);
         ThreadTeam::run(members, [&](int member, ThreadTeam& team) {
             sweep.run(team, member, member == 0 ? times : nullptr);
         });
@@ -457,6 +494,7 @@ SweepMemory sweepMemory(int width, int height, int tracedLevels, int threads) {
         most.cones = std::max(most.cones, m.cones);
         most.columns = std::max(most.columns, m.columns);
     }
+    most.nearLights = NearLightMask::hostBytesFor(width, height);
     return most;
 }
 

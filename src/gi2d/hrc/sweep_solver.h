@@ -37,10 +37,11 @@ void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int thread
 // Bytes of sweepFrustums' buffers for a canvas of this size on `threads` threads: each the larger
 // of the ±x and ±y frames', since the buffers keep their allocations from frame to frame.
 struct SweepMemory {
-    std::uint64_t intervals = 0;  // the ring of ray intervals
-    std::uint64_t cones = 0;      // the ring of merged cones
-    std::uint64_t columns = 0;    // per thread: the medium window and the read-out's block
-    std::uint64_t total() const { return intervals + cones + columns; }
+    std::uint64_t intervals = 0;   // the ring of ray intervals
+    std::uint64_t cones = 0;       // the ring of merged cones
+    std::uint64_t columns = 0;     // per thread: the medium window and the read-out's block
+    std::uint64_t nearLights = 0;  // the near-light mask, a byte per pixel (§12.3)
+    std::uint64_t total() const { return intervals + cones + columns + nearLights; }
 };
 SweepMemory sweepMemory(int width, int height, int tracedLevels, int threads);
 

@@ -152,18 +152,20 @@ TEST(HrcSolver, SolveFitsSixCanvasImages) {
     // planes per cascade would be 4 RGB float images of the canvas (24 + 12 + 12 bytes per pixel),
     // 6 with the medium's 2 (absorption and emission); the top cascade keeps one plane, which
     // leaves 3.25 (18 + 9 + 12), 5.25 with the medium. The extra ring planes of the lowest
-    // cascades, the `+1` ray of every plane and each thread's window and read-out block come on
-    // top: 6 images hold from 8192^2 on up to 243 threads (at 1024^2 on up to 21).
+    // cascades, the `+1` ray of every plane, the near-light mask (a byte per pixel, 1/12 image,
+    // §12.3) and each thread's window and read-out block come on top: 6 images hold from 8192^2
+    // on up to 162 threads (at 1024^2 on up to 14).
     const std::uint64_t gib = 1ull << 30;
     for (const int size : {1024, 8192, 16384}) {
         const std::uint64_t image = imageBytes(size, size, 3);
         const HrcMemory m = estimateHrcMemory(size, size);
         const std::uint64_t withMedium = m.total() + mediumBytes(size, size);
         std::printf(
-            "%d^2: intervals %.4f, cones %.4f, medium columns %.4f, output %.4f images; "
-            "%.4f with the medium\n",
+            "%d^2: intervals %.4f, cones %.4f, medium columns %.4f, near-light mask %.4f, output "
+            "%.4f images; %.4f with the medium\n",
             size, double(m.rayIntervals) / image, double(m.cones) / image,
-            double(m.mediumColumns) / image, double(m.output) / image, double(withMedium) / image);
+            double(m.mediumColumns) / image, double(m.nearLights) / image, double(m.output) / image,
+            double(withMedium) / image);
         // The solve and the medium on `threads` threads, in canvas images.
         const auto onThreads = [&](int threads) {
             return hrc::sweepMemory(size, size, HrcOptions{}.tracedLevels, threads).total() +
@@ -175,10 +177,11 @@ TEST(HrcSolver, SolveFitsSixCanvasImages) {
         if (size < 8192) continue;
         EXPECT_LE(m.cones, image * 3 / 4 + gib / 64) << size;  // 9 bytes per pixel
         EXPECT_LE(withMedium, 6 * image) << size;
-        // Without the per-thread buffers: 5.25 images and the lowest cascades' extra planes
-        // (6.016 at 8192^2 when the top cascade kept two planes).
-        const std::uint64_t rings = withMedium - m.mediumColumns;
+        // Without the per-thread buffers and the mask: 5.25 images and the lowest cascades' extra
+        // planes (6.016 at 8192^2 when the top cascade kept two planes).
+        const std::uint64_t rings = withMedium - m.mediumColumns - m.nearLights;
         EXPECT_LE(static_cast<double>(rings) / image, 5.27) << size;
+        EXPECT_LE(m.nearLights, image / 12 + 2 * size + 4) << size;
         for (const int threads : {1, 2, 4, 16, 64, 128}) {
             EXPECT_LE(onThreads(threads), 6 * image) << size << "^2 on " << threads << " threads";
         }
@@ -197,7 +200,7 @@ TEST(HrcSolver, MemoryEstimatesAndRefusal) {
     const std::uint64_t image8k = imageBytes(8192, 8192, 3);
     const std::uint64_t at8k = estimateHrcMemory(8192, 8192).total();
     EXPECT_LT(at8k + mediumBytes(8192, 8192), 4.5 * gib);
-    EXPECT_LT(at8k, 3.5 * image8k);  // the solver's own share: 3.28 RGB float images on 2 threads
+    EXPECT_LT(at8k, 3.5 * image8k);  // the solver's own share: 3.36 RGB float images on 2 threads
     const std::uint64_t huge = estimateHrcMemory(16384, 16384).total();
     EXPECT_LT(huge + mediumBytes(16384, 16384), 17 * gib);
     if (availableMemoryBytes() > huge) GTEST_SKIP() << "this machine has the memory";

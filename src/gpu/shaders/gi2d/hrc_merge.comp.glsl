@@ -11,6 +11,7 @@ layout(std430, set = 0, binding = 0) readonly buffer Table { HrcTableEntry table
 layout(std430, set = 0, binding = 1) readonly buffer Upper { HrcConePair upper[]; };
 layout(std430, set = 0, binding = 2) writeonly buffer Cones { HrcConePair cones[]; };
 layout(std430, set = 0, binding = 3) readonly buffer Weights { float weight[]; };
+layout(std430, set = 0, binding = 4) readonly buffer NearLights { uint nearLightWords[]; };
 layout(push_constant) uniform Push { HrcMergeParams params; };
 
 HrcInterval tableAt(int p, int y, int k) {
@@ -34,11 +35,23 @@ vec3 upperAt(int p, int y, int j) {
                 halfOfWord(upper[(r + 2u * stride) >> 1].evenOddRows, r));
 }
 
+// The near probe's row weight (§5.1) at plane p, row y: at cascade 0 weighed by the near-light
+// mask at the pixel the plane is read out for, p - 1 (§6.2, §12.3; plane 0 reaches no pixel).
+float nearRowWeight(int p, int y) {
+    if (params.level != 0u || params.nearLights == 0u || p < 1) {
+        return hrcNearRowWeight(int(params.level));
+    }
+    const ivec2 c = hrcFrameToCanvas(params.frustum, ivec2(p - 1, y), int(params.canvasWidth),
+                                     int(params.canvasHeight));
+    const uint b = uint(c.y) * params.canvasWidth + uint(c.x);
+    return hrcNearRowWeightAt(0, (nearLightWords[b >> 2] >> (8u * (b & 3u))) & 0xffu);
+}
+
 // R_level(p, y, i): the sum over the cone's two rays.
 vec3 mergeAt(int ip, int iy, uint i) {
     // The rows each upper read blends (§5.1).
     const float second = hrcSecondRowWeight(int(params.level));
-    const float nearSecond = hrcNearRowWeight(int(params.level));
+    const float nearSecond = (ip & 1) == 1 ? 0.0 : nearRowWeight(ip, iy);
     vec3 sum = vec3(0.0);
     for (int s = 0; s < 2; ++s) {
         const int k = int(i) + s, j = 2 * int(i) + s;

@@ -103,6 +103,15 @@ LUXEL_FUNC float hrcNearRowWeight(int level) {
     return level <= 1 ? 0.25f : 0.0f;
 }
 
+// The near probe's row weight where the pixel read out from this plane keeps `kept64` 64ths of
+// it (NearLightMask, §12.3): next to a light cascade 0's near-probe blend reads a neighbouring
+// row's light, parallax rather than the angular correction of §5.1, so there it is turned off.
+// Exact in float on both backends (a power of two times a small integer).
+LUXEL_FUNC float hrcNearRowWeightAt(int level, uint kept64) {
+    return level == 0 ? hrcNearRowWeight(level) * (float(kept64) * 0.015625f)
+                      : hrcNearRowWeight(level);
+}
+
 // Odd planes and the near probe: (1 - a) row + a second.
 LUXEL_FUNC vec3 hrcBlendTwoRows(vec3 row, vec3 second, float a) {
     return row * (1.0f - a) + second * a;

@@ -64,7 +64,9 @@ struct HrcTraceParams {
 };
 
 // Push constants of hrc_merge: R_level from R_{level+1} (hasUpper = 0 at the top cascade).
-// R buffers: binary16 channel planes, the cone layout above.
+// R buffers: binary16 channel planes, the cone layout above. Near-light mask (nearLights = 1, read
+// at cascade 0 only): a byte per canvas pixel at y * canvasWidth + x, four to a 32-bit word (low
+// byte first); frame pixel (u, v) reads canvas pixel hrcFrameToCanvas.
 struct HrcMergeParams {
     uint level;
     uint rows;
@@ -72,6 +74,10 @@ struct HrcMergeParams {
     uint upperPlanes;
     uint hasUpper;
     float skyR, skyG, skyB;  // boundary radiance
+    uint frustum;            // 0 +x, 1 +y, 2 -x, 3 -y (FrustumFrame)
+    uint canvasWidth;
+    uint canvasHeight;
+    uint nearLights;  // 1: weigh cascade 0's near-probe blend by the mask (hrcNearRowWeightAt)
 };
 
 // Push constants of hrc_readout: adds R_0 (the cone layout above) at the plane beyond each pixel
@@ -99,7 +105,8 @@ static_assert(sizeof(HrcTableEntry) == LUXEL_HRC_ENTRY_WORDS * 4);
 static_assert(sizeof(HrcConePair) == 4);
 static_assert(sizeof(HrcTraceParams) == 36);
 static_assert(offsetof(HrcTraceParams, frustum) == 16);
-static_assert(sizeof(HrcMergeParams) == 32);
+static_assert(sizeof(HrcMergeParams) == 48);
+static_assert(offsetof(HrcMergeParams, nearLights) == 44);
 static_assert(offsetof(HrcMergeParams, skyR) == 20);
 static_assert(sizeof(HrcReadoutParams) == 32);
 static_assert(offsetof(HrcReadoutParams, skyR) == 20);

@@ -1,0 +1,132 @@
+// The near-light mask of §12.3: lights found by their emitted power, then a distance transform
+// of radius 3 px, separable in squared distances (rows first, then the five rows around).
+#include "gi2d/hrc/near_lights.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "gpu/shaders/shared/hrc_kernels.h"
+#include "luxel/core/parallel.h"
+
+namespace luxel::gi2d::hrc {
+namespace {
+
+// Rows per task; each task also scans the two rows on either side of its own.
+constexpr int kGrain = 32;
+// Squared distances from 9 (3 px) on keep the whole blend.
+constexpr int kFar = 9;
+
+// What a pixel emits towards a ray crossing it, per channel at most E min(sigma, 1).
+float lightScore(const float* e, const float* s) {
+    const float r = e[0] * std::min(s[0], 1.0f), g = e[1] * std::min(s[1], 1.0f),
+                b = e[2] * std::min(s[2], 1.0f);
+    return std::max(r, std::max(g, b));
+}
+
+// The kept fraction in 64ths for a squared pixel-centre distance below 9: none within 1 px, the
+// whole from 3 px, linear in the distance between (§12.3's best trial).
+constexpr std::array<std::uint8_t, kFar + 1> keptTable() {
+    // round(64 clamp((sqrt(d2) - 1) / 2, 0, 1)) for d2 = 0 .. 9 (3, 6 and 7 are no sums of
+    // two squares; they are never looked up).
+    return {0, 0, 13, 32, 32, 40, 40, 40, 59, 64};
+}
+
+}  // namespace
+
+std::uint64_t NearLightMask::bytesFor(int width, int height) {
+    return (static_cast<std::uint64_t>(width) * height + 3) / 4 * 4;
+}
+
+std::uint64_t NearLightMask::hostBytesFor(int width, int height) {
+    return bytesFor(width, height) + static_cast<std::uint64_t>(width) + height;
+}
+
+NearLightMask NearLightMask::fromMedium(const Medium2D& medium) {
+    NearLightMask mask;
+    mask.build(medium);
+    return mask;
+}
+
+void NearLightMask::build(const Medium2D& medium) {
+    NearLightMask& mask = *this;
+    const int w = medium.width(), h = medium.height();
+    mask.width_ = w;
+    mask.height_ = h;
+    mask.bytes_.assign(bytesFor(w, h), 64);
+    mask.columnNear_.assign(static_cast<std::size_t>(w), 0);
+    mask.rowNear_.assign(static_cast<std::size_t>(h), 0);
+    const float* emission = medium.emission.data();
+    const float* sigma = medium.absorption.data();
+    std::vector<float> rowMost(static_cast<std::size_t>(h), 0.0f);
+    parallelForRange(h, kGrain, [&](int y0, int y1) {
+        for (int y = y0; y < y1; ++y) {
+            float most = 0.0f;
+            for (std::size_t i = static_cast<std::size_t>(y) * w * 3, end = i + 3 * w; i < end;
+                 i += 3) {
+                most = std::max(most, lightScore(emission + i, sigma + i));
+            }
+            rowMost[static_cast<std::size_t>(y)] = most;
+        }
+    });
+    const float brightest = *std::max_element(rowMost.begin(), rowMost.end());
+    if (!(brightest > 0.0f)) return;
+    const float threshold = brightest / 64.0f;
+    static constexpr std::array<std::uint8_t, kFar + 1> kept = keptTable();
+    parallelForRange(h, kGrain, [&](int y0, int y1) {
+        // Per row of [y0 - 2, y1 + 2): the squared distance along the row to the nearest light,
+        // capped at 9 (forward and backward scans).
+        auto lit = [&](int y) { return rowMost[static_cast<std::size_t>(y)] >= threshold; };
+        const int r0 = std::max(0, y0 - 2), r1 = std::min(h, y1 + 2);
+        std::vector<std::uint8_t> along(static_cast<std::size_t>(r1 - r0) * w, kFar);
+        for (int y = r0; y < r1; ++y) {
+            if (!lit(y)) continue;
+            std::uint8_t* row = along.data() + static_cast<std::size_t>(y - r0) * w;
+            const std::size_t base = static_cast<std::size_t>(y) * w * 3;
+            int run = 3;
+            for (int x = 0; x < w; ++x) {
+                const std::size_t i = base + 3 * static_cast<std::size_t>(x);
+                run = lightScore(emission + i, sigma + i) >= threshold ? 0 : std::min(run + 1, 3);
+                row[x] = static_cast<std::uint8_t>(run);
+            }
+            run = 3;
+            for (int x = w - 1; x >= 0; --x) {
+                run = row[x] == 0 ? 0 : std::min(run + 1, 3);
+                const int d = std::min(static_cast<int>(row[x]), run);
+                row[x] = static_cast<std::uint8_t>(d * d);
+            }
+        }
+        // Then the least over the five rows around of along^2 + dy^2 (a loop over bytes the
+        // compiler vectorises), and the kept fraction from it.
+        std::vector<std::uint8_t> d2(static_cast<std::size_t>(w));
+        for (int y = y0; y < y1; ++y) {
+            bool near = false;  // rows with no light within 2 rows keep the whole blend
+            for (int r = std::max(0, y - 2); r <= std::min(h - 1, y + 2); ++r)
+                near = near || lit(r);
+            if (!near) continue;
+            std::fill(d2.begin(), d2.end(), static_cast<std::uint8_t>(kFar));
+            for (int r = std::max(r0, y - 2); r <= std::min(r1 - 1, y + 2); ++r) {
+                const std::uint8_t* a = along.data() + static_cast<std::size_t>(r - r0) * w;
+                const auto dy2 = static_cast<std::uint8_t>((r - y) * (r - y));
+                for (int x = 0; x < w; ++x) {
+                    d2[x] = std::min(d2[x], static_cast<std::uint8_t>(a[x] + dy2));
+                }
+            }
+            std::uint8_t* out = mask.bytes_.data() + static_cast<std::size_t>(y) * w;
+            std::uint8_t any = 0;
+            for (int x = 0; x < w; ++x) {
+                out[x] = kept[d2[x]];
+                any |= out[x] < 64 ? 1 : 0;
+            }
+            mask.rowNear_[static_cast<std::size_t>(y)] = any;
+        }
+    });
+    // A column is near where some row's pixel in it is (the rows that are, usually few).
+    for (int y = 0; y < h; ++y) {
+        if (!mask.rowNear(y)) continue;
+        const std::uint8_t* row = mask.bytes_.data() + static_cast<std::size_t>(y) * w;
+        for (int x = 0; x < w; ++x) mask.columnNear_[static_cast<std::size_t>(x)] |= row[x] < 64;
+    }
+}
+
+}  // namespace luxel::gi2d::hrc

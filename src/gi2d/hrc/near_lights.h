@@ -1,0 +1,45 @@
+// Where the lights are, told once per solve (docs/algorithms/holographic-radiance-cascades.md
+// §12.3): per canvas pixel, how much of cascade 0's near-probe row blend (§5.1) it keeps. Next
+// to a light that blend reads the neighbouring row's fluence, which there is parallax rather than
+// the angular correction §5.1 wants; the merge of cascade 0 reads this mask at the pixel its
+// plane is read out for (§6.2: plane p feeds pixel p - 1).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "luxel/gi2d/medium2d.h"
+
+namespace luxel::gi2d::hrc {
+
+class NearLightMask {
+  public:
+    // Lights are the pixels whose max_c E_c min(sigma_c, 1) is at least 1/64 of the brightest
+    // pixel's; each pixel keeps hrcNearLightKept (shared/hrc_kernels.h) of its distance to the
+    // nearest one. A canvas without emission keeps the whole blend everywhere.
+    static NearLightMask fromMedium(const Medium2D& medium);
+    // The same in place, keeping the allocations of a mask of the same size.
+    void build(const Medium2D& medium);
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // The kept fraction of pixel (x, y) in 64ths, 0 .. 64 (hrcNearBlendKept).
+    std::uint8_t at(int x, int y) const { return bytes_[static_cast<std::size_t>(y) * width_ + x]; }
+    // Whether any pixel of canvas column x / row y keeps less than the whole blend: the CPU sweep
+    // reads the mask only along the columns and rows that do.
+    bool columnNear(int x) const { return columnNear_[static_cast<std::size_t>(x)] != 0; }
+    bool rowNear(int y) const { return rowNear_[static_cast<std::size_t>(y)] != 0; }
+    // The bytes row by row, padded to whole 32-bit words (the GPU's hrc_merge reads words).
+    std::span<const std::uint8_t> bytes() const { return bytes_; }
+
+    // Bytes of the mask (what the GPU holds) and with the column and row flags.
+    static std::uint64_t bytesFor(int width, int height);
+    static std::uint64_t hostBytesFor(int width, int height);
+
+  private:
+    int width_ = 0, height_ = 0;
+    std::vector<std::uint8_t> bytes_, columnNear_, rowNear_;
+};
+
+}  // namespace luxel::gi2d::hrc
