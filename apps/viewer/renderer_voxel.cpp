@@ -69,8 +69,8 @@ void RendererVoxel::setState(VoxelState&& state) {
           now.skyHorizon == before.skyHorizon && now.skyModel == before.skyModel &&
           now.skyTurbidity == before.skyTurbidity &&
           now.skyZenithLuminance == before.skyZenithLuminance &&
-          now.sunAngularRadius == before.sunAngularRadius &&
-          now.refraction == before.refraction && now.fresnel == before.fresnel)) {
+          now.sunAngularRadius == before.sunAngularRadius && now.refraction == before.refraction &&
+          now.fresnel == before.fresnel)) {
         cascadesLight_ = true;
     }
     if (edited || state.restart || state.solver.kind != state_.solver.kind) {

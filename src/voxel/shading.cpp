@@ -8,8 +8,8 @@
 
 #include "gpu/shaders/shared/sky_preetham.h"
 #include "gpu/shaders/shared/voxel_shading.h"
-#include "luxel/voxel/sky_model.h"
 #include "luxel/core/tonemap.h"
+#include "luxel/voxel/sky_model.h"
 #include "luxel/voxel/surface_cast.h"
 #include "luxel/voxel/texel_footprint.h"
 #include "voxel/shading_physical.h"
@@ -51,12 +51,12 @@ const shared::PreethamSky& preethamSkyOf(const ShadeOptions& o) {
     thread_local Made made;
     if (made.turbidity != o.skyTurbidity || made.zenith != o.skyZenithLuminance ||
         !(made.sun == o.sunDirection)) {
-        const PreethamCoefficients c = preethamSky(o.skyTurbidity, o.sunDirection,
-                                                   o.skyZenithLuminance);
+        const PreethamCoefficients c =
+            preethamSky(o.skyTurbidity, o.sunDirection, o.skyZenithLuminance);
         made = {o.skyTurbidity, o.skyZenithLuminance, o.sunDirection,
-                shared::PreethamSky(perezOf(c.luminance), perezOf(c.x), perezOf(c.y),
-                                    shared::vec3(c.zenithOverF0[0], c.zenithOverF0[1],
-                                                 c.zenithOverF0[2]))};
+                shared::PreethamSky(
+                    perezOf(c.luminance), perezOf(c.x), perezOf(c.y),
+                    shared::vec3(c.zenithOverF0[0], c.zenithOverF0[1], c.zenithOverF0[2]))};
     }
     return made.sky;
 }

@@ -55,8 +55,8 @@ void readSkyJson(const Json& sky, ShadeOptions& options) {
                "come from the sun and the turbidity), not \"top\" or \"horizon\"");
         options.skyModel = ShadeOptions::SkyModel::Preetham;
         if (const Json* v = find(sky, "turbidity")) {
-            options.skyTurbidity = static_cast<float>(readNumberIn(
-                *v, "sky.turbidity", kPreethamMinTurbidity, kPreethamMaxTurbidity));
+            options.skyTurbidity = static_cast<float>(
+                readNumberIn(*v, "sky.turbidity", kPreethamMinTurbidity, kPreethamMaxTurbidity));
         }
         if (const Json* v = find(sky, "zenith")) {
             if (!v->is_number()) {
@@ -65,8 +65,7 @@ void readSkyJson(const Json& sky, ShadeOptions& options) {
                      "colour comes from the model)",
                      true);
             }
-            options.skyZenithLuminance =
-                static_cast<float>(readNumberIn(*v, "sky.zenith", 0, 1e4));
+            options.skyZenithLuminance = static_cast<float>(readNumberIn(*v, "sky.zenith", 0, 1e4));
         }
     } else {
         fail("sky.model",

@@ -38,8 +38,8 @@ TEST_F(CliSky, InfoNamesTheModel) {
 // sun 16° up the Preetham sky is blue there (blue / red 1.92) and warm near the horizon (0.71);
 // the shipped terrain's gradient sky would read about 2.0 and 1.4.
 TEST_F(CliSky, ThePreethamSkyIsBlueAboveAndWhiterBelow) {
-    const RunResult r = runLuxel("render " + kEvening + " --backend cpu --size 64x36 --out " +
-                                 path("evening.exr"));
+    const RunResult r =
+        runLuxel("render " + kEvening + " --backend cpu --size 64x36 --out " + path("evening.exr"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     auto image = luxel::readExr(path("evening.exr"));
     ASSERT_TRUE(image.ok()) << image.error().message();

@@ -82,7 +82,8 @@ ShadeOptions preetham(float turbidity, Vec3 sun, float zenith) {
 }
 
 Vec3d direction(double elevationDegrees, double azimuthDegrees) {
-    const double e = elevationDegrees * std::numbers::pi / 180.0, a = azimuthDegrees * std::numbers::pi / 180.0;
+    const double e = elevationDegrees * std::numbers::pi / 180.0,
+                 a = azimuthDegrees * std::numbers::pi / 180.0;
     return {std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a)};
 }
 
@@ -94,14 +95,15 @@ TEST(SkyModel, PreethamMatchesThePapersFormulas) {
     EXPECT_NEAR(up.x, 0.26674, 2e-5);
     EXPECT_NEAR(up.y, 0.27720, 2e-5);
     // T = 5, sun 30° above the horizon (θs = 60°), given unnormalised.
-    const XyY zenith = xyYOf(skyColor({0.0, 1.0, 0.0}, preetham(5.0f, {1.7320508f, 1.0f, 0.0f}, 1.0f)));
+    const XyY zenith =
+        xyYOf(skyColor({0.0, 1.0, 0.0}, preetham(5.0f, {1.7320508f, 1.0f, 0.0f}, 1.0f)));
     EXPECT_NEAR(zenith.luminance, 1.0, 1e-5);
     EXPECT_NEAR(zenith.x, 0.258656, 2e-5);
     EXPECT_NEAR(zenith.y, 0.272474, 2e-5);
     // T = 3, sun 30° up towards +x, the direction 45° up and 60° round from it: Perez's
     // F(θ, γ) / F(0, θs) times the zenith's values.
-    const XyY sample = xyYOf(skyColor(direction(45.0, 60.0),
-                                      preetham(3.0f, {0.8660254f, 0.5f, 0.0f}, 0.5f)));
+    const XyY sample =
+        xyYOf(skyColor(direction(45.0, 60.0), preetham(3.0f, {0.8660254f, 0.5f, 0.0f}, 0.5f)));
     EXPECT_NEAR(sample.luminance, 0.734476, 2e-5);
     EXPECT_NEAR(sample.x, 0.257034, 2e-5);
     EXPECT_NEAR(sample.y, 0.264996, 2e-5);
@@ -180,7 +182,8 @@ TEST(SkyModel, BadSkiesAreRefusedNamingTheField) {
          "sky.top: the \"cie-overcast\" model takes \"zenith\" alone"},
         {R"({"model": "cie-overcast", "horizon": [1, 1, 1], "zenith": [1, 1, 1]})",
          "sky.horizon: the \"cie-overcast\" model takes \"zenith\" alone"},
-        {R"({"zenith": [1, 1, 1]})", "sky.zenith: only the \"cie-overcast\" and \"preetham\" models take"},
+        {R"({"zenith": [1, 1, 1]})",
+         "sky.zenith: only the \"cie-overcast\" and \"preetham\" models take"},
         {R"({"model": "gradient", "top": [1, 1, 1], "zenith": [1, 1, 1]})",
          "sky.zenith: only the \"cie-overcast\" and \"preetham\" models take"},
         {R"({"modell": "cie-overcast"})", "unknown field 'modell'"},

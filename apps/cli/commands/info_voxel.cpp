@@ -40,8 +40,8 @@ int infoVoxelScene(const voxel::VoxelScene& loaded) {
                     shading.skyTurbidity, shading.skyZenithLuminance);
     } else {
         const Rgb top = shading.skyTop, horizon = shading.skyHorizon;
-        std::printf("  sky                gradient, top (%g, %g, %g), horizon (%g, %g, %g)\n", top.r,
-                    top.g, top.b, horizon.r, horizon.g, horizon.b);
+        std::printf("  sky                gradient, top (%g, %g, %g), horizon (%g, %g, %g)\n",
+                    top.r, top.g, top.b, horizon.r, horizon.g, horizon.b);
     }
     std::printf("  reflections        %d (%s)\n", shading.maxReflections,
                 shading.reflectionMode == voxel::ShadeOptions::ReflectionMode::EnergyConserving

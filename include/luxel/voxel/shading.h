@@ -45,7 +45,7 @@ struct ShadeOptions {
     SkyModel skyModel = SkyModel::Gradient;
     float skyTurbidity = 3.0f;
     float skyZenithLuminance = 0.4f;
-    int maxReflections = 2;               // 0: no reflection rays
+    int maxReflections = 2;  // 0: no reflection rays
     ReflectionMode reflectionMode = ReflectionMode::RunningAverage;
     float reflectivity = 0.3f;  // EnergyConserving, for every voxel unless overridden below
     // EnergyConserving: per-voxel reflectivity in [0, 1] (empty: `reflectivity` everywhere). A
