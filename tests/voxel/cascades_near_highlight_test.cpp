@@ -61,6 +61,8 @@ Image picture(const GlossyLampRoom& room, bool nearEmitters, int samples) {
     o.samplesPerPixel = samples;
     CascadeOptions options;
     options.nearEmitters = nearEmitters;
+    // Off: the GGX rays alone, the far lamps' light samples (§4.2) off too.
+    options.glossyEmitters = nearEmitters;
     auto cascades = RadianceCascades::create(room.world, nullptr, o, options);
     EXPECT_TRUE(cascades.ok()) << cascades.error().message();
     cascades->solve();
