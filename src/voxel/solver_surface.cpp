@@ -129,9 +129,9 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
                 // weight w being f cos / (S p_b) (§4.2, "Far lamps in the glossy lobe").
                 const float lobePdf = float(ggxDensity(specular, sample.direction));
                 lamps += g.lamp * float(w) *
-                         (lobePdf * gpu::shared::glossyBalance(
-                                        float(g.lightDensity), lobePdf,
-                                        float(LUXEL_GLOSSY_LIGHT_SAMPLES), float(light.specularRays)));
+                         (lobePdf * gpu::shared::glossyBalance(float(g.lightDensity), lobePdf,
+                                                               float(LUXEL_GLOSSY_LIGHT_SAMPLES),
+                                                               float(light.specularRays)));
             }
         }
         weights += w;

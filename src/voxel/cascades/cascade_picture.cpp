@@ -14,8 +14,8 @@
 #include "../solver_surface.h"
 #include "adaptive_samples.h"
 #include "cascade_near_rays.h"
-#include "glossy_emitters.h"
 #include "cascade_state.h"
+#include "glossy_emitters.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/render_image.h"
@@ -62,8 +62,8 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
     const Rgb sun = face >= 0 ? cascades::faceDirectSun(*state_, face) : Rgb{};
     Rgb emission = surface.emission;
     if (glossy && emission.maxComponent() > 0.0f) {
-        emission = emission * (1.0f - cascades::nearEmitterShare(*state_, *glossy->at,
-                                                                 s.hit.voxel, s.hit.normal));
+        emission = emission * (1.0f - cascades::nearEmitterShare(*state_, *glossy->at, s.hit.voxel,
+                                                                 s.hit.normal));
         // A lamp the surface's light samples could have found: handed back for the balance
         // heuristic, out of the split sum.
         const double density =

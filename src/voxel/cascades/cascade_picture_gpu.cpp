@@ -235,10 +235,9 @@ Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilli
     d.name = "cascades picture " + sizeText(camera);
     d.program = p.program;
     d.buffers = *bound;
-    for (gpu::Buffer* b :
-         {g.light.get(), p.slots.get(), p.albedo.get(), p.image.get(), p.emitterFar.get(),
-          p.nearOffset.get(), p.nearEmitters.get(), p.refine.get(), p.glossyPicks.get(),
-          p.glossyLamps.get()}) {
+    for (gpu::Buffer* b : {g.light.get(), p.slots.get(), p.albedo.get(), p.image.get(),
+                           p.emitterFar.get(), p.nearOffset.get(), p.nearEmitters.get(),
+                           p.refine.get(), p.glossyPicks.get(), p.glossyLamps.get()}) {
         d.buffers.push_back(b);
     }
     shared::CascadePicturePush push =

@@ -111,9 +111,8 @@ double GlossyLampChoice::density(Int3 voxel, Int3 normal, Vec3d y) {
     const shared::vec3 at(float(y.x), float(y.y), float(y.z));
     for (int k = 0; k < count_; ++k) {
         const shared::CascadeNearEmitter& e = state_.faces.glossy.lamps[index_[k]];
-        if (e.normal != met ||
-            !shared::emitterRectHolds({e.x, e.y, e.z}, int(met / 2u), e.extent,
-                                      {voxel.x, voxel.y, voxel.z})) {
+        if (e.normal != met || !shared::emitterRectHolds({e.x, e.y, e.z}, int(met / 2u), e.extent,
+                                                         {voxel.x, voxel.y, voxel.z})) {
             continue;
         }
         const shared::EmitterSpan span = shared::emitterSpanInFront(point_, normal_, e);
@@ -142,17 +141,16 @@ Rgb GlossyLampChoice::sample(const PathBsdf& specular, int lobeRays, PathRng& rn
         const shared::CascadeNearEmitter& e = state_.faces.glossy.lamps[index_[k]];
         const shared::EmitterSpan span = shared::emitterSpanInFront(point_, normal_, e);
         const shared::vec3 y = shared::emitterSpanPoint(e, span, u1, u2);
-        const float lightPdf =
-            weight_[k] / total_ * shared::emitterSpanDensity(e, span, point_, y);
+        const float lightPdf = weight_[k] / total_ * shared::emitterSpanDensity(e, span, point_, y);
         if (!(lightPdf > 0.0f)) continue;
         const shared::vec3 l = normalize(y - point_);
         const Vec3d dir{double(l.x), double(l.y), double(l.z)};
         // Seen when the shadow ray first meets this rectangle through its face (glass and
         // cutouts in between stop it, as they turn the GGX rays that count the lamp in full).
         const Int3 outward = normalFromIndex(int(e.normal));
-        const Hit seen = castToSurface(*state_.world, state_.textures, {hit_.point, dir},
-                                       state_.shading.stepCap)
-                             .hit;
+        const Hit seen =
+            castToSurface(*state_.world, state_.textures, {hit_.point, dir}, state_.shading.stepCap)
+                .hit;
         if (!seen.hit || seen.normal != outward ||
             !shared::emitterRectHolds({e.x, e.y, e.z}, int(e.normal / 2u), e.extent,
                                       {seen.voxel.x, seen.voxel.y, seen.voxel.z})) {
@@ -161,9 +159,8 @@ Rgb GlossyLampChoice::sample(const PathBsdf& specular, int lobeRays, PathRng& rn
         const float share = 1.0f - nearEmitterShare(state_, hit_, seen.voxel, seen.normal);
         if (!(share > 0.0f)) continue;
         const float lobePdf = float(ggxDensity(specular, dir));
-        const float balance =
-            shared::glossyBalance(lightPdf, lobePdf, float(LUXEL_GLOSSY_LIGHT_SAMPLES),
-                                  float(lobeRays));
+        const float balance = shared::glossyBalance(
+            lightPdf, lobePdf, float(LUXEL_GLOSSY_LIGHT_SAMPLES), float(lobeRays));
         sum += bsdfLight(specular, dir, Rgb(e.r, e.g, e.b) * (share * balance), 0.0);
     }
     return sum;

@@ -27,8 +27,8 @@ namespace luxel::voxel::cascades {
 // The lamps and each grid cell's picks (the GPU's buffers 23 and 24). Empty: no lamp, or
 // CascadeOptions::glossyEmitters off; the picture is then what the GGX rays alone draw.
 struct GlossyLamps {
-    Int3 cells;                                           // the grid's cells per axis
-    std::vector<std::uint32_t> picks;                     // LUXEL_GLOSSY_PICKS per cell
+    Int3 cells;                                          // the grid's cells per axis
+    std::vector<std::uint32_t> picks;                    // LUXEL_GLOSSY_PICKS per cell
     std::vector<gpu::shared::CascadeNearEmitter> lamps;  // the rectangles
     bool empty() const { return lamps.empty(); }
 };

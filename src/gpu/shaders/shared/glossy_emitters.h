@@ -3,8 +3,9 @@
 // §4.2, "Far lamps in the glossy lobe"). The lamps are the ray caster's rectangles of coplanar
 // emissive faces (shared/emitter_light.h); each cell of its grid keeps the few that light it most
 // (the picks), and a point picks one of its cell's in proportion to an estimate of its light
-// there (glossyPickWeight), then a uniform point on the part of it in front of the point. Shared by the CPU picture
-// (src/voxel/cascades/glossy_emitters.cpp) and the GPU's (voxel/glossy_emitters.glsl), in float.
+// there (glossyPickWeight), then a uniform point on the part of it in front of the point. Shared by
+// the CPU picture (src/voxel/cascades/glossy_emitters.cpp) and the GPU's
+// (voxel/glossy_emitters.glsl), in float.
 //
 // Buffers of cascades_picture after shared/cascade_picture_layout.h's 0..22:
 //   23 uint per grid cell x LUXEL_GLOSSY_PICKS: the cell's picks, indices into 24, the unused
