@@ -220,6 +220,10 @@ Rgb bsdfLight(const PathBsdf& b, Vec3d l, Rgb radiance, double lightPdf) {
     return out;
 }
 
+double ggxDensity(const PathBsdf& b, Vec3d l) {
+    return ggxPdf(b, l);
+}
+
 GgxSampler::GgxSampler(const PathBsdf& b)
     : b_(b),
       ggx_(b.pSpecular == 1.0 && b.pTransmission == 0.0 && b.pDiffuse == 0.0 && !b.mirror()) {

@@ -99,4 +99,8 @@ Rgb bsdfLight(const PathBsdf& b, Vec3d l, Rgb radiance, double lightPdf);
 // The power heuristic's weight of a strategy of density `mine` against one of density `other`.
 double powerHeuristic(double mine, double other);
 
+// The density in solid angle with which GGX's visible normals (the specular lobe of `b`, not
+// scaled by pSpecular) find the reflection direction l: G1(v) D(h) / (4 cos_v).
+double ggxDensity(const PathBsdf& b, Vec3d l);
+
 }  // namespace luxel::voxel

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gpu/shaders/shared/glossy_emitters.h"
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "path_trace_surface.h"
 #include "voxel/path_trace_bsdf.h"
@@ -106,10 +107,11 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
         return out + b.specular * light.radianceAlong({s.hit.point, r}, true);
     }
     if (light.nearHighlight) out += light.nearHighlight(specular);
+    const PathBsdf lobe = specular;  // with its S, for the lamps' light samples
     // Split sum: S A(cos_v, alpha) times the weighted mean radiance of GGX-sampled directions.
     specular.specular = Rgb(1.0f);
     specular.pSpecular = 1.0;
-    Rgb weighted;
+    Rgb weighted, lamps;
     double weights = 0.0;
     const GgxSampler ggx(specular);
     for (int k = 0; k < light.specularRays; ++k) {
@@ -117,10 +119,25 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
         if (sample.lobe != BsdfSample::Lobe::Specular) continue;
         const double w = sample.weight.r;
         const Ray r{s.hit.point, sample.direction};
-        weighted +=
-            (light.glossyAlong ? light.glossyAlong(r) : light.radianceAlong(r, false)) * float(w);
+        if (!light.glossyAlong) {
+            weighted += light.radianceAlong(r, false) * float(w);
+        } else {
+            const GlossyAlong g = light.glossyAlong(r);
+            weighted += g.rest * float(w);
+            if (g.lightDensity > 0.0) {
+                // A lamp the light samples could have found: f cos L / (n_l p_l + n_b p_b), the
+                // weight w being f cos / (S p_b) (§4.2, "Far lamps in the glossy lobe").
+                const float lobePdf = float(ggxDensity(specular, sample.direction));
+                lamps += g.lamp * float(w) *
+                         (lobePdf * gpu::shared::glossyBalance(float(g.lightDensity), lobePdf,
+                                                               float(LUXEL_GLOSSY_LIGHT_SAMPLES),
+                                                               float(light.specularRays)));
+            }
+        }
         weights += w;
     }
+    if (light.glossyLamps) out += light.glossyLamps(lobe, light.specularRays, rng);
+    out += b.specular * lamps;
     if (!(weights > 0.0)) return out;
     const double albedo = directionalAlbedoGgx(b.cosView, b.alpha);
     return out + b.specular * weighted * float(albedo / weights);

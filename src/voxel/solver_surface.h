@@ -49,6 +49,15 @@ bool solverFollows(const VoxelWorld& world, const SurfaceHit& s, const ShadeOpti
 // Whether any material of shading.materials is followed.
 bool solverFollowsAny(const ShadeOptions& shading);
 
+// What a GGX direction of the radiance cascades' camera surface brings (SolverLight::glossyAlong):
+// `rest` for the split sum; and a lamp's emission that the surface's light samples could have
+// found as well, with their density in that direction (`lightDensity` > 0), which the GGX ray
+// counts by the balance heuristic against them, outside the split sum.
+struct GlossyAlong {
+    Rgb rest, lamp;
+    double lightDensity = 0.0;
+};
+
 struct SolverLight {
     // Mean cosine-weighted radiance arriving at the face apart from the sun (E / pi).
     Rgb diffuseRadiance;
@@ -63,13 +72,16 @@ struct SolverLight {
     int sunRays = kSunDiskRays;
     // GGX directions for the specular reflection of the surroundings.
     int specularRays = kSolverSpecularRays;
-    // Set only for the radiance cascades' camera surface (their near term, §4.2 of
+    // Set only for the radiance cascades' camera surface (their near term and far lamps, §4.2 of
     // docs/algorithms/voxel-radiance-cascades.md): the light-sampled highlight of the emitters
-    // near the surface through its specular-only lobe (glossy, not a mirror), and the radiance
+    // near the surface through its specular-only lobe (glossy, not a mirror); the radiance
     // along its GGX directions in place of radianceAlong(ray, false), which counts those
-    // emitters' emission only by the share the highlight leaves.
+    // emitters' emission only by the share the highlight leaves and hands back the lamps the
+    // light samples could find; and those light samples (`lobeRays`: the GGX directions they
+    // are weighed against), drawn after the GGX directions.
     std::function<Rgb(const PathBsdf& specular)> nearHighlight = nullptr;
-    std::function<Rgb(const Ray&)> glossyAlong = nullptr;
+    std::function<GlossyAlong(const Ray&)> glossyAlong = nullptr;
+    std::function<Rgb(const PathBsdf& specular, int lobeRays, PathRng& rng)> glossyLamps = nullptr;
 };
 
 // The radiance leaving the surface `s` towards the camera ray `ray` (s.hit.normal non-zero).

@@ -207,7 +207,10 @@ TEST(GpuSharedLayout, CascadesPicturePushConstantsAndFaceSlots) {
                                               LUXEL_MEMBER(P, sunBitangentY),
                                               LUXEL_MEMBER(P, sunBitangentZ),
                                               LUXEL_MEMBER(P, refineCount),
-                                              LUXEL_MEMBER(P, refineSamples)}});
+                                              LUXEL_MEMBER(P, refineSamples),
+                                              LUXEL_MEMBER(P, lampCellsX),
+                                              LUXEL_MEMBER(P, lampCellsY),
+                                              LUXEL_MEMBER(P, lampCellsZ)}});
     using S = CascadeFaceSlot;
     expectBuffer("cascades_picture", 16,
                  {sizeof(S),
@@ -225,7 +228,13 @@ TEST(GpuSharedLayout, CascadesPicturePushConstantsAndFaceSlots) {
         {sizeof(E),
          {LUXEL_MEMBER(E, x), LUXEL_MEMBER(E, y), LUXEL_MEMBER(E, z), LUXEL_MEMBER(E, normal),
           LUXEL_MEMBER(E, r), LUXEL_MEMBER(E, g), LUXEL_MEMBER(E, b), LUXEL_MEMBER(E, extent)}});
-    // The ray caster's emitters (shared/emitter_light.h) are the same struct.
+    // The glossy surfaces' lamps (shared/glossy_emitters.h) and the ray caster's emitters
+    // (shared/emitter_light.h) are the same struct.
+    expectBuffer(
+        "cascades_picture", 24,
+        {sizeof(E),
+         {LUXEL_MEMBER(E, x), LUXEL_MEMBER(E, y), LUXEL_MEMBER(E, z), LUXEL_MEMBER(E, normal),
+          LUXEL_MEMBER(E, r), LUXEL_MEMBER(E, g), LUXEL_MEMBER(E, b), LUXEL_MEMBER(E, extent)}});
     expectBuffer(
         "voxel_render", 17,
         {sizeof(E),

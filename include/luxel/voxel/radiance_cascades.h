@@ -31,6 +31,10 @@
 
 namespace luxel::voxel {
 
+namespace cascades {
+struct GlossyRay;
+}
+
 inline constexpr int kMaxCascadeBounces = 1024;
 inline constexpr int kMaxCascadeSpacing = 64;
 
@@ -48,6 +52,10 @@ struct CascadeOptions {
     // at the pixel (docs/algorithms/voxel-radiance-cascades.md §4.1); false: between face centres
     // as for the rest of the light.
     bool nearEmitters = true;
+    // The picture's glossy surfaces light-sample the lamps in their specular lobe and weigh
+    // those samples against their GGX rays by multiple importance sampling (§4.2, "Far lamps in
+    // the glossy lobe"); false: the GGX rays alone draw what the near term leaves.
+    bool glossyEmitters = true;
 };
 
 // Options checked: spacing, bounces, tolerance finite and in range; the error names the field.
@@ -132,11 +140,12 @@ class RadianceCascades {
     // lobe since the camera's surface was a delta lobe), glass or polished metal shaded with its
     // material and followed while `depth` < kSolverFollowDepth (src/voxel/solver_surface.h), or the
     // face met shaded Lambertian with its sun and indirectIrradiance. `rng` draws the followed
-    // faces' GGX directions. `nearOf`: the ray is a GGX direction of the camera's surface at that
-    // hit, so an emitter of its near list counts 1 - its near weight of its emission (the rest
-    // is the surface's light-sampled highlight).
+    // faces' GGX directions. `glossy`: the ray is a GGX direction of the camera's surface, so an
+    // emitter of its near list counts 1 - its near weight of its emission (the rest is the
+    // surface's light-sampled highlight), and a lamp its light samples could pick is handed
+    // back in glossy->lamp instead, for multiple importance sampling (cascade_picture.cpp).
     Rgb reflectedLight(const Ray& r, bool delta, int depth, PathRng& rng,
-                       const Hit* nearOf = nullptr) const;
+                       cascades::GlossyRay* glossy = nullptr) const;
     // The picture's radiance along one camera ray.
     Rgb pixelRadiance(const Ray& ray, PathRng& rng) const;
     std::unique_ptr<State> state_;

@@ -138,6 +138,10 @@ bool computeEmitterIrradiance(RadianceCascades::State& state) {
     faces.emitterFar.assign(faces.table.size(), Rgb{});
     faces.nearOffset.assign(std::size_t(faces.table.size()) + 1, 0);
     faces.nearEmitters.clear();
+    // The lamps the glossy surfaces light-sample (§4.2), whether or not the pairs below fit.
+    faces.glossy = state.options.glossyEmitters
+                       ? buildGlossyLamps(*state.world, state.shading.materials)
+                       : GlossyLamps{};
     if (emitters.empty()) return true;
     if (double(emitters.size()) * faces.table.size() > kMaxEmitterPairs) return false;
     parallelForRange(faces.table.size(), 16, [&](int begin, int end) {

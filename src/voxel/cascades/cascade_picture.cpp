@@ -15,6 +15,7 @@
 #include "adaptive_samples.h"
 #include "cascade_near_rays.h"
 #include "cascade_state.h"
+#include "glossy_emitters.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/render_image.h"
@@ -31,7 +32,7 @@ using cascades::kPictureSunRays;
 using cascades::kReflectionSeed;
 
 Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRng& rng,
-                                     const Hit* nearOf) const {
+                                     cascades::GlossyRay* glossy) const {
     const VoxelWorld& world = *state_->world;
     const ShadeOptions& shading = state_->shading;
     const SurfaceHit s = castToSurface(world, state_->textures, r, shading.stepCap);
@@ -60,9 +61,17 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
     const PathSurface surface = pathSurfaceAt(world, s, shading);
     const Rgb sun = face >= 0 ? cascades::faceDirectSun(*state_, face) : Rgb{};
     Rgb emission = surface.emission;
-    if (nearOf && emission.maxComponent() > 0.0f) {
-        emission = emission *
-                   (1.0f - cascades::nearEmitterShare(*state_, *nearOf, s.hit.voxel, s.hit.normal));
+    if (glossy && emission.maxComponent() > 0.0f) {
+        emission = emission * (1.0f - cascades::nearEmitterShare(*state_, *glossy->at, s.hit.voxel,
+                                                                 s.hit.normal));
+        // A lamp the surface's light samples could have found: handed back for the balance
+        // heuristic, out of the split sum.
+        const double density =
+            glossy->lamps ? glossy->lamps->density(s.hit.voxel, s.hit.normal, s.hit.point) : 0.0;
+        if (density > 0.0) {
+            glossy->met = {emission, density};
+            emission = Rgb{};
+        }
     }
     return emission + surface.albedo * (sun + irradiance) * kInvPi;
 }
@@ -96,18 +105,30 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
         irradiance * kInvPi,
         [this, &rng](const Ray& r, bool delta) { return reflectedLight(r, delta, 0, rng); },
         kPictureSunRays, kPictureSpecularRays};
-    // The near emitters' glossy highlight light-sampled, their GGX rays keeping the rest.
+    // The near emitters' glossy highlight light-sampled, their GGX rays keeping the rest; the
+    // lamps beyond, light-sampled and met by the GGX rays, weighed by the balance heuristic.
+    cascades::GlossyLampChoice lamps(*state_, s.hit);
     struct Glossy {
         const RadianceCascades* cascades;
         PathRng* rng;
         const Hit* at;
-    } glossy{this, &rng, &s.hit};
-    if (!faces.nearOffset.empty()) {
-        light.nearHighlight = [this, &nearRays](const PathBsdf& specular) {
-            return cascades::nearEmitterHighlight(*state_, nearRays, specular);
-        };
+        cascades::GlossyLampChoice* lamps;
+    } glossy{this, &rng, &s.hit, faces.glossy.empty() ? nullptr : &lamps};
+    if (!faces.nearOffset.empty() || glossy.lamps) {
+        if (!faces.nearOffset.empty()) {
+            light.nearHighlight = [this, &nearRays](const PathBsdf& specular) {
+                return cascades::nearEmitterHighlight(*state_, nearRays, specular);
+            };
+        }
         light.glossyAlong = [&glossy](const Ray& r) {
-            return glossy.cascades->reflectedLight(r, false, 0, *glossy.rng, glossy.at);
+            cascades::GlossyRay g{glossy.at, glossy.lamps, {}};
+            const Rgb rest = glossy.cascades->reflectedLight(r, false, 0, *glossy.rng, &g);
+            return GlossyAlong{rest, g.met.emission, g.met.lightDensity};
+        };
+    }
+    if (glossy.lamps) {
+        light.glossyLamps = [&glossy](const PathBsdf& specular, int lobeRays, PathRng& r) {
+            return glossy.lamps->sample(specular, lobeRays, r);
         };
     }
     return shadeSolverSurface(world, state_->textures, s, ray, shading, light, rng);

@@ -51,6 +51,9 @@ std::vector<shared::CascadeFaceSlot> cascades::faceSlots(const FaceTable& table)
 
 namespace {
 
+// The adaptive pass's pixel list (shared/cascade_picture_layout.h).
+constexpr std::size_t kRefineBinding = 22;
+
 std::string sizeText(const Camera& camera) {
     return std::to_string(camera.width()) + "x" + std::to_string(camera.height());
 }
@@ -153,8 +156,8 @@ Result<std::unique_ptr<PictureGpu>> makePicture(gpu::Context& context,
     return picture;
 }
 
-// The faces' far emitter share and near lists on the device, when the CPU object has computed
-// them since the last upload.
+// The faces' far emitter share and near lists, and the lamps the glossy surfaces light-sample,
+// on the device, when the CPU object has computed them since the last upload.
 Status uploadNearEmitters(gpu::Context& context, const FaceData& faces, PictureGpu& picture) {
     if (picture.nearUploaded && picture.emitterVersion == faces.emitterVersion) return Ok{};
     const std::size_t count = std::size_t(faces.table.size());
@@ -166,10 +169,14 @@ Status uploadNearEmitters(gpu::Context& context, const FaceData& faces, PictureG
     std::vector<std::uint32_t> offsets = faces.nearOffset;
     offsets.resize(count + 1, offsets.empty() ? 0 : offsets.back());
     const std::vector<shared::CascadeNearEmitter>& list = faces.nearEmitters;
+    const GlossyLamps& glossy = faces.glossy;
     picture.nearBytes = 0;
-    for (auto [target, data] : {std::pair{&picture.emitterFar, std::as_bytes(std::span(far))},
-                                std::pair{&picture.nearOffset, std::as_bytes(std::span(offsets))},
-                                std::pair{&picture.nearEmitters, std::as_bytes(std::span(list))}}) {
+    for (auto [target, data] :
+         {std::pair{&picture.emitterFar, std::as_bytes(std::span(far))},
+          std::pair{&picture.nearOffset, std::as_bytes(std::span(offsets))},
+          std::pair{&picture.nearEmitters, std::as_bytes(std::span(list))},
+          std::pair{&picture.glossyPicks, std::as_bytes(std::span(glossy.picks))},
+          std::pair{&picture.glossyLamps, std::as_bytes(std::span(glossy.lamps))}}) {
         auto buffer = context.createBuffer(std::max<std::uint64_t>(data.size(), 16));
         if (!buffer) return buffer.error();
         if (!data.empty()) {
@@ -178,6 +185,7 @@ Status uploadNearEmitters(gpu::Context& context, const FaceData& faces, PictureG
         *target = std::move(*buffer);
         picture.nearBytes += data.size();
     }
+    picture.lampCells = glossy.empty() ? Int3{} : glossy.cells;
     picture.emitterVersion = faces.emitterVersion;
     picture.nearUploaded = true;
     return Ok{};
@@ -227,13 +235,16 @@ Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilli
     d.name = "cascades picture " + sizeText(camera);
     d.program = p.program;
     d.buffers = *bound;
-    for (gpu::Buffer* b :
-         {g.light.get(), p.slots.get(), p.albedo.get(), p.image.get(), p.emitterFar.get(),
-          p.nearOffset.get(), p.nearEmitters.get(), p.refine.get()}) {
+    for (gpu::Buffer* b : {g.light.get(), p.slots.get(), p.albedo.get(), p.image.get(),
+                           p.emitterFar.get(), p.nearOffset.get(), p.nearEmitters.get(),
+                           p.refine.get(), p.glossyPicks.get(), p.glossyLamps.get()}) {
         d.buffers.push_back(b);
     }
     shared::CascadePicturePush push =
         picturePush(state.shading, std::uint32_t(state.faces.table.size()), p.slotMask);
+    push.lampCellsX = std::uint32_t(p.lampCells.x);
+    push.lampCellsY = std::uint32_t(p.lampCells.y);
+    push.lampCellsZ = std::uint32_t(p.lampCells.z);
     d.setPush(push);
     d.setThreads(std::uint64_t(width), std::uint64_t(height));
     Image out(width, height, 3);
@@ -259,7 +270,7 @@ Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilli
         return s.error();
     }
     if (Status s = g.context->upload(*p.refine, list); !s) return s.error();
-    d.buffers.back() = p.refine.get();
+    d.buffers[kRefineBinding] = p.refine.get();
     push.refineCount = std::uint32_t(pixels.size());
     push.refineSamples = std::uint32_t(refine);
     d.setPush(push);

@@ -28,6 +28,10 @@ struct PictureGpu {
     // The emitters near each face (shared/near_emitters.h), uploaded again when the CPU object
     // computed them again (FaceData::emitterVersion).
     std::shared_ptr<gpu::Buffer> emitterFar, nearOffset, nearEmitters;
+    // The lamps the glossy surfaces light-sample (GlossyLamps), uploaded with them; their grid's
+    // cells (0: none).
+    std::shared_ptr<gpu::Buffer> glossyPicks, glossyLamps;
+    Int3 lampCells;
     std::uint64_t emitterVersion = 0, nearBytes = 0;
     bool nearUploaded = false;
     std::uint64_t worldBytes = 0, tableBytes = 0;  // the estimates the memory check counts

@@ -9,6 +9,7 @@
 
 #include "../../gpu/shaders/shared/near_emitters.h"
 #include "cascade_layout.h"
+#include "glossy_emitters.h"
 #include "luxel/voxel/radiance_cascades.h"
 #include "octahedral_bins.h"
 #include "surface_faces.h"
@@ -78,12 +79,16 @@ struct FaceData {
     std::vector<std::uint32_t> nearOffset;
     std::vector<gpu::shared::CascadeNearEmitter> nearEmitters;
     std::uint64_t emitterVersion = 0;
+    // The lamps the picture's glossy surfaces light-sample (glossy_emitters.h), found with the
+    // emitters' light.
+    GlossyLamps glossy;
     // Drops the emitters' light, so updateFaceLight computes it again.
     void clearEmitterLight() {
         emitterIrradiance.clear();
         emitterFar.clear();
         nearOffset.clear();
         nearEmitters.clear();
+        glossy = GlossyLamps{};
     }
 };
 

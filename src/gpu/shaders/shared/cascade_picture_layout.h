@@ -14,6 +14,7 @@
 //   19..21 the emitters near each face (shared/near_emitters.h)
 //   22 uint: the pixels (y * width + x) the adaptive pass draws again (src/voxel/cascades/
 //      adaptive_samples.h), read when refineCount > 0
+//   23..24 the lamps the glossy surfaces light-sample (shared/glossy_emitters.h)
 #ifndef LUXEL_GPU_SHARED_CASCADE_PICTURE_LAYOUT_H
 #define LUXEL_GPU_SHARED_CASCADE_PICTURE_LAYOUT_H
 
@@ -23,7 +24,7 @@ LUXEL_SHARED_BEGIN
 
 #define LUXEL_PICTURE_GROUP_X 8
 #define LUXEL_PICTURE_GROUP_Y 8
-#define LUXEL_PICTURE_BUFFERS 23
+#define LUXEL_PICTURE_BUFFERS 25
 // Glass and polished metal followed one inside another (kSolverFollowDepth, solver_surface.h):
 // the shader unrolls the CPU's recursion into this many levels.
 #define LUXEL_PICTURE_FOLLOW_DEPTH 2
@@ -57,6 +58,8 @@ struct CascadePicturePush {
     // draws the n pixels of binding 22 (invocation y * width + x takes entry y * width + x) with
     // refineSamples rays each.
     uint refineCount, refineSamples;
+    // The lamps' grid (shared/glossy_emitters.h): its cells per axis; 0: no lamps to sample.
+    uint lampCellsX, lampCellsY, lampCellsZ;
 };
 
 // One slot of the faces' table: the key of (voxel, normal) and the face's id (EMPTY: free).
@@ -83,11 +86,12 @@ LUXEL_FUNC uint cascadeFaceHash(uint keyLow, uint keyHigh) {
 LUXEL_SHARED_END
 
 #ifdef __cplusplus
-static_assert(sizeof(luxel::gpu::shared::CascadePicturePush) == 96);
+static_assert(sizeof(luxel::gpu::shared::CascadePicturePush) == 108);
 static_assert(offsetof(luxel::gpu::shared::CascadePicturePush, sunX) == 28);
 static_assert(offsetof(luxel::gpu::shared::CascadePicturePush, sunOneMinusCos) == 52);
 static_assert(offsetof(luxel::gpu::shared::CascadePicturePush, sunBitangentZ) == 84);
 static_assert(offsetof(luxel::gpu::shared::CascadePicturePush, refineSamples) == 92);
+static_assert(offsetof(luxel::gpu::shared::CascadePicturePush, lampCellsZ) == 104);
 static_assert(sizeof(luxel::gpu::shared::CascadeFaceSlot) == 16);
 #endif
 

@@ -5,9 +5,10 @@
 // irradiance the lighting passes left in the light buffer, the sun by shadow rays over its disk,
 // and reflections and refraction followed through glass and polished metal
 // (solver_reflected.glsl), drawing the same random numbers as the CPU (shared/path_rng.h); the emitters near the pixel are taken exactly at it
-// (near_emitters.glsl). A second dispatch draws the pixels of strong contrast again with more
-// rays (adaptive_samples.h). Buffers and push constants: shared/cascade_picture_layout.h and
-// shared/near_emitters.h.
+// (near_emitters.glsl) and the lamps beyond light-sampled in its glossy lobe
+// (glossy_emitters.glsl). A second dispatch draws the pixels of strong contrast again with more
+// rays (adaptive_samples.h). Buffers and push constants: shared/cascade_picture_layout.h,
+// shared/near_emitters.h and shared/glossy_emitters.h.
 #version 450
 #extension GL_GOOGLE_include_directive : require
 #include "shared/voxel_layout.h"
@@ -16,6 +17,7 @@
 #include "shared/voxel_cascades_layout.h"
 #include "shared/cascade_picture_layout.h"
 #include "shared/near_emitters.h"
+#include "shared/glossy_emitters.h"
 
 layout(local_size_x = LUXEL_PICTURE_GROUP_X, local_size_y = LUXEL_PICTURE_GROUP_Y) in;
 // Bindings 0-14 as voxel_render's (6, its image, and 10 are not read here).
@@ -32,6 +34,11 @@ layout(std430, set = 0, binding = 21) readonly buffer NearEmitters {
 };
 // The adaptive pass's pixels (src/voxel/cascades/adaptive_samples.h).
 layout(std430, set = 0, binding = 22) readonly buffer RefinePixels { uint refinePixels[]; };
+// The lamps the glossy surfaces light-sample (shared/glossy_emitters.h).
+layout(std430, set = 0, binding = 23) readonly buffer GlossyPicks { uint glossyPicks[]; };
+layout(std430, set = 0, binding = 24) readonly buffer GlossyLamps {
+    CascadeNearEmitter glossyLamps[];
+};
 // Named `path` so the path tracer's surface code (path_surface.glsl) reads its materialFlags.
 layout(push_constant) uniform Push { CascadePicturePush path; };
 // Bindings 11-14: the sun visibility arrays, declared by the include (the ray caster's shading
@@ -77,6 +84,8 @@ layout(push_constant) uniform Push { CascadePicturePush path; };
 int pictureNearFace;
 vec3 pictureNearPoint;
 bool pictureGlossyRay;
+// The lamps beyond, light-sampled and weighed against the GGX rays (glossy_emitters.glsl).
+#include "voxel/glossy_emitters.glsl"
 #define LUXEL_SOLVER_NEAR
 #define LUXEL_SOLVER_REFLECTED reflectedLight0
 #define LUXEL_SOLVER_FOLLOW shadeSurface1
@@ -100,6 +109,7 @@ vec3 pixelRadiance(vec3 origin, vec3 direction, inout uvec2 rng) {
     pictureNearFace = findFace(s.hit.voxel, normalIndex(s.hit.normal));
     pictureNearPoint = s.hit.point;
     pictureGlossyRay = false;
+    pictureLampCount = 0;
     return shadeSurface0(s, direction, irradiance * LUXEL_SOLVER_INV_PI, int(path.sunRays),
                          int(path.specularRays), true, rng);
 }

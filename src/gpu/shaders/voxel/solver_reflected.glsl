@@ -6,7 +6,9 @@
 //                           (solver_shade.glsl) for glass and polished metal met by the ray
 //   LUXEL_SOLVER_NEAR       (the camera surface's level) while pictureGlossyRay, an emitter of
 //                           pictureNearFace's near list counts its emission times 1 - its near
-//                           weight at pictureNearPoint (nearEmitterShare)
+//                           weight at pictureNearPoint (nearEmitterShare), and a lamp the
+//                           surface's light samples could pick is handed back in
+//                           pictureLampEmission and pictureLampDensity instead
 // Needs solver_light.glsl.
 
 vec3 LUXEL_SOLVER_REFLECTED(vec3 origin, vec3 direction, bool delta, inout uvec2 rng) {
@@ -34,6 +36,14 @@ vec3 LUXEL_SOLVER_REFLECTED(vec3 origin, vec3 direction, bool delta, inout uvec2
     if (pictureGlossyRay && maxComponent(emission) > 0.0) {
         emission = emission * (1.0 - nearEmitterShare(pictureNearFace, pictureNearPoint,
                                                        s.hit.voxel, s.hit.normal));
+        // A lamp the surface's light samples could have found: handed back for the balance
+        // heuristic (glossy_emitters.glsl), out of the split sum.
+        const float density = glossyLampDensity(s.hit.voxel, s.hit.normal, s.hit.point);
+        if (density > 0.0) {
+            pictureLampEmission = emission;
+            pictureLampDensity = density;
+            emission = vec3(0.0);
+        }
     }
 #endif
     return emission + surface.albedo * (sun + irradiance) * LUXEL_SOLVER_INV_PI;

@@ -12,7 +12,9 @@
 //   LUXEL_SOLVER_NEAR      (the camera's surface only) its near emitters' highlight
 //                          light-sampled (nearEmitterHighlight), and pictureGlossyRay set while
 //                          a GGX direction's radiance is taken, so that LUXEL_SOLVER_RADIANCE
-//                          counts those emitters by the share the highlight leaves
+//                          counts those emitters by the share the highlight leaves; and the
+//                          lamps beyond light-sampled and weighed against the GGX rays that
+//                          meet them (glossy_emitters.glsl)
 // The rays leave in the CPU's order (the medium's exits, then the mirror or GGX directions) from
 // one call site, so the level below is inlined once, and the random numbers are drawn in the
 // same order as on the CPU.
@@ -55,6 +57,11 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
 #ifdef LUXEL_SOLVER_NEAR
     const vec3 nearHighlight = glossy && !mirror ? nearEmitterHighlight(s.hit, specular)
                                                  : vec3(0.0);
+    // The lamps beyond: the surface's choice among its cell's, and the lobe with its S for
+    // their light samples; what the GGX rays meet of them (glossy_emitters.glsl).
+    const PathBsdf lobe = specular;
+    if (glossy && !mirror) glossyLampsChoose(s.hit);
+    vec3 lamps = vec3(0.0);
 #endif
     // Then the reflection: one mirror ray, or GGX directions weighted by their sampling weights.
     specular.specular = vec3(1.0);
@@ -120,6 +127,7 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
         }
 #ifdef LUXEL_SOLVER_NEAR
         pictureGlossyRay = !delta;
+        pictureLampDensity = 0.0;
 #endif
         const vec3 arriving = LUXEL_SOLVER_RADIANCE(rayOrigin, ray, delta && arrivedDelta, rng);
         if (delta) {
@@ -127,10 +135,24 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
         } else {
             weighted += arriving * ggxWeight;
             weights += ggxWeight;
+#ifdef LUXEL_SOLVER_NEAR
+            if (pictureLampDensity > 0.0) {
+                // f cos L / (n_l p_l + n_b p_b), the weight being f cos / (S p_b).
+                const float lobePdf = pathGgxPdf(specular, ray);
+                lamps += pictureLampEmission * ggxWeight *
+                         (lobePdf * glossyBalance(pictureLampDensity, lobePdf,
+                                                  float(LUXEL_GLOSSY_LIGHT_SAMPLES),
+                                                  float(specularRays)));
+            }
+#endif
         }
     }
 #ifdef LUXEL_SOLVER_NEAR
-    if (glossy && !mirror) result += nearHighlight;
+    if (glossy && !mirror) {
+        result += nearHighlight;
+        result += glossyLampLight(s.hit, lobe, specularRays, rng);
+        result += b.specular * lamps;
+    }
 #endif
     if (!(weights > 0.0)) return result;
     // Split sum: S A(cos_v, alpha) times the weighted mean radiance of the GGX directions.

@@ -1,0 +1,169 @@
+// The lamps in the camera surface's glossy lobe, light-sampled (glossy_emitters.h;
+// docs/algorithms/voxel-radiance-cascades.md §4.2, "Far lamps in the glossy lobe").
+#include "glossy_emitters.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "../path_trace_bsdf.h"
+#include "cascade_state.h"
+#include "luxel/core/parallel.h"
+#include "luxel/voxel/emitter_light.h"
+#include "luxel/voxel/surface_cast.h"
+
+namespace luxel::voxel::cascades {
+
+namespace shared = gpu::shared;
+
+namespace {
+
+shared::CascadeNearEmitter lampOf(const EmitterFace& f) {
+    return {f.x, f.y, f.z, f.normal, f.r, f.g, f.b, f.extent};
+}
+
+// The estimate a cell keeps its picks by: radiance x area / (d^2 + area), d from the
+// rectangle's centre to the cell's box (its light at the nearest point of the cell, bounded
+// where the cell touches it); 0 when the whole cell lies behind the rectangle's plane.
+double cellScore(const shared::CascadeNearEmitter& e, Vec3d lo, Vec3d hi) {
+    const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
+    const double sizeA = shared::emitterSizeA(e.extent), sizeB = shared::emitterSizeB(e.extent);
+    Vec3d c{double(e.x), double(e.y), double(e.z)};
+    const bool positive = (e.normal & 1u) == 0u;
+    if (positive) c[axis] += 1.0;
+    if (positive ? !(hi[axis] > c[axis]) : !(lo[axis] < c[axis])) return 0.0;
+    c[a] += 0.5 * sizeA;
+    c[b] += 0.5 * sizeB;
+    double d2 = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const double d = std::max({lo[k] - c[k], 0.0, c[k] - hi[k]});
+        d2 += d * d;
+    }
+    const double area = sizeA * sizeB;
+    return double(std::max(e.r, std::max(e.g, e.b))) * area / (d2 + area);
+}
+
+}  // namespace
+
+GlossyLamps buildGlossyLamps(const VoxelWorld& world, const MaterialTable& materials) {
+    const EmitterLights lights = EmitterLights::build(world, materials);
+    GlossyLamps out;
+    if (lights.empty()) return out;
+    out.cells = lights.cells();
+    for (const EmitterFace& f : lights.faces()) out.lamps.push_back(lampOf(f));
+    const int cellCount = out.cells.x * out.cells.y * out.cells.z;
+    out.picks.assign(std::size_t(cellCount) * LUXEL_GLOSSY_PICKS, LUXEL_GLOSSY_NO_PICK);
+    const std::vector<std::uint32_t>& offsets = lights.cellOffsets();
+    const std::vector<std::uint32_t>& list = lights.cellFaces();
+    parallelForRange(cellCount, 64, [&](int begin, int end) {
+        for (int cell = begin; cell < end; ++cell) {
+            const int x = cell % out.cells.x, y = cell / out.cells.x % out.cells.y,
+                      z = cell / (out.cells.x * out.cells.y);
+            const double side = LUXEL_EMITTER_CELL;
+            const Vec3d lo{x * side, y * side, z * side}, hi = lo + Vec3d{side, side, side};
+            // The strongest LUXEL_GLOSSY_PICKS, strongest first (ties: the earlier lamp).
+            int kept = 0;
+            double score[LUXEL_GLOSSY_PICKS];
+            std::uint32_t* picks = &out.picks[std::size_t(cell) * LUXEL_GLOSSY_PICKS];
+            for (std::uint32_t i = offsets[cell]; i < offsets[cell + 1]; ++i) {
+                const double s = cellScore(out.lamps[list[i]], lo, hi);
+                if (!(s > 0.0) || (kept == LUXEL_GLOSSY_PICKS && !(s > score[kept - 1]))) continue;
+                int j = std::min(kept, LUXEL_GLOSSY_PICKS - 1);
+                for (; j > 0 && s > score[j - 1]; --j) {
+                    score[j] = score[j - 1];
+                    picks[j] = picks[j - 1];
+                }
+                score[j] = s;
+                picks[j] = list[i];
+                kept = std::min(kept + 1, LUXEL_GLOSSY_PICKS);
+            }
+        }
+    });
+    return out;
+}
+
+GlossyLampChoice::GlossyLampChoice(const RadianceCascades::State& state, const Hit& hit)
+    : state_(state),
+      hit_(hit),
+      point_(float(hit.point.x), float(hit.point.y), float(hit.point.z)),
+      normal_(float(hit.normal.x), float(hit.normal.y), float(hit.normal.z)) {}
+
+void GlossyLampChoice::choose() {
+    if (chosen_) return;
+    chosen_ = true;
+    const GlossyLamps& g = state_.faces.glossy;
+    if (g.empty()) return;
+    const int cell = shared::emitterCellIndex(point_, {g.cells.x, g.cells.y, g.cells.z});
+    for (int k = 0; k < LUXEL_GLOSSY_PICKS; ++k) {
+        const std::uint32_t i = g.picks[std::size_t(cell) * LUXEL_GLOSSY_PICKS + k];
+        if (i == LUXEL_GLOSSY_NO_PICK) break;
+        const float w = shared::glossyPickWeight(point_, normal_, g.lamps[i]);
+        if (!(w > 0.0f)) continue;
+        index_[count_] = i;
+        weight_[count_] = w;
+        total_ += w;
+        ++count_;
+    }
+}
+
+double GlossyLampChoice::density(Int3 voxel, Int3 normal, Vec3d y) {
+    choose();
+    const std::uint32_t met = std::uint32_t(normalIndex(normal));
+    const shared::vec3 at(float(y.x), float(y.y), float(y.z));
+    for (int k = 0; k < count_; ++k) {
+        const shared::CascadeNearEmitter& e = state_.faces.glossy.lamps[index_[k]];
+        if (e.normal != met || !shared::emitterRectHolds({e.x, e.y, e.z}, int(met / 2u), e.extent,
+                                                         {voxel.x, voxel.y, voxel.z})) {
+            continue;
+        }
+        const shared::EmitterSpan span = shared::emitterSpanInFront(point_, normal_, e);
+        return double(weight_[k] / total_ * shared::emitterSpanDensity(e, span, point_, at));
+    }
+    return 0.0;
+}
+
+Rgb GlossyLampChoice::sample(const PathBsdf& specular, int lobeRays, PathRng& rng) {
+    choose();
+    if (count_ == 0) return {};
+    Rgb sum;
+    for (int n = 0; n < LUXEL_GLOSSY_LIGHT_SAMPLES; ++n) {
+        const float u0 = rng.next(), u1 = rng.next(), u2 = rng.next();
+        // A lamp in proportion to its weight, then a uniform point of its part in front.
+        const float target = u0 * total_;
+        float below = 0.0f;
+        int k = count_ - 1;
+        for (int j = 0; j < count_; ++j) {
+            below += weight_[j];
+            if (target < below) {
+                k = j;
+                break;
+            }
+        }
+        const shared::CascadeNearEmitter& e = state_.faces.glossy.lamps[index_[k]];
+        const shared::EmitterSpan span = shared::emitterSpanInFront(point_, normal_, e);
+        const shared::vec3 y = shared::emitterSpanPoint(e, span, u1, u2);
+        const float lightPdf = weight_[k] / total_ * shared::emitterSpanDensity(e, span, point_, y);
+        if (!(lightPdf > 0.0f)) continue;
+        const shared::vec3 l = normalize(y - point_);
+        const Vec3d dir{double(l.x), double(l.y), double(l.z)};
+        // Seen when the shadow ray first meets this rectangle through its face (glass and
+        // cutouts in between stop it, as they turn the GGX rays that count the lamp in full).
+        const Int3 outward = normalFromIndex(int(e.normal));
+        const Hit seen =
+            castToSurface(*state_.world, state_.textures, {hit_.point, dir}, state_.shading.stepCap)
+                .hit;
+        if (!seen.hit || seen.normal != outward ||
+            !shared::emitterRectHolds({e.x, e.y, e.z}, int(e.normal / 2u), e.extent,
+                                      {seen.voxel.x, seen.voxel.y, seen.voxel.z})) {
+            continue;
+        }
+        const float share = 1.0f - nearEmitterShare(state_, hit_, seen.voxel, seen.normal);
+        if (!(share > 0.0f)) continue;
+        const float lobePdf = float(ggxDensity(specular, dir));
+        const float balance = shared::glossyBalance(
+            lightPdf, lobePdf, float(LUXEL_GLOSSY_LIGHT_SAMPLES), float(lobeRays));
+        sum += bsdfLight(specular, dir, Rgb(e.r, e.g, e.b) * (share * balance), 0.0);
+    }
+    return sum;
+}
+
+}  // namespace luxel::voxel::cascades
