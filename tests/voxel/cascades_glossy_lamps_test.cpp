@@ -38,34 +38,6 @@ Image picture(const VoxelWorld& world, const ShadeOptions& shading, bool lamps, 
     return std::move(*image);
 }
 
-double regionMean(const Image& image, const std::vector<std::pair<int, int>>& pixels) {
-    double sum = 0.0;
-    for (auto [x, y] : pixels) sum += pixelSum(image, x, y);
-    return sum / double(pixels.size());
-}
-
-// Pixels over k times the median of their eight neighbours (a sparkle: one pixel far brighter
-// than those around it, where the lamp's reflection itself changes smoothly), and the largest
-// such ratio.
-struct Sparkles {
-    int count = 0;
-    double largest = 0.0;
-};
-Sparkles sparkles(const Image& image, const std::vector<std::pair<int, int>>& pixels, double k) {
-    Sparkles out;
-    for (auto [x, y] : pixels) {
-        std::vector<double> around;
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx)
-                if (dx != 0 || dy != 0) around.push_back(pixelSum(image, x + dx, y + dy));
-        std::nth_element(around.begin(), around.begin() + 4, around.end());
-        const double ratio = pixelSum(image, x, y) / around[4];
-        out.count += ratio > k;
-        out.largest = std::max(out.largest, ratio);
-    }
-    return out;
-}
-
 TEST(CascadesGlossyLamps, AFarLampLeavesNoSparklesOnAGlossyWall) {
     const GlossyWallsRoom room;
     const Camera camera = farWallView();

@@ -94,33 +94,12 @@ std::vector<std::pair<int, int>> floorBeforeTheLamp(const GlossyLampRoom& room) 
     return pixels;
 }
 
-double regionMean(const Image& image, const std::vector<std::pair<int, int>>& pixels) {
-    double sum = 0.0;
-    for (auto [x, y] : pixels) sum += pixelSum(image, x, y);
-    return sum / double(pixels.size());
-}
-
-// The largest ratio of a pixel to the median of its eight neighbours: a sparkle is one pixel many
-// times those around it, while the lamp's reflection, however bright, changes smoothly.
-double largestSparkle(const Image& image, const std::vector<std::pair<int, int>>& pixels) {
-    double largest = 0.0;
-    for (auto [x, y] : pixels) {
-        std::vector<double> around;
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx)
-                if (dx != 0 || dy != 0) around.push_back(pixelSum(image, x + dx, y + dy));
-        std::nth_element(around.begin(), around.begin() + 4, around.end());
-        largest = std::max(largest, pixelSum(image, x, y) / around[4]);
-    }
-    return largest;
-}
-
 TEST(CascadesNearHighlight, NoSparklesOnAGlossyFloorBesideALamp) {
     const GlossyLampRoom room;
     const auto pixels = floorBeforeTheLamp(room);
     ASSERT_GT(pixels.size(), 100u);
-    const double now = largestSparkle(picture(room, true, 1), pixels);
-    const double before = largestSparkle(picture(room, false, 1), pixels);
+    const double now = sparkles(picture(room, true, 1), pixels, 0.0).largest;
+    const double before = sparkles(picture(room, false, 1), pixels, 0.0).largest;
     std::printf(
         "%zu floor pixels: largest pixel / median of its neighbours %.2f (GGX rays "
         "alone %.2f)\n",
