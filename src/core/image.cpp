@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "luxel/core/memory.h"
+
 namespace luxel {
 
 Image::Image(int width, int height, int channels)
@@ -9,7 +11,12 @@ Image::Image(int width, int height, int channels)
     LUXEL_CHECK_GT(width, 0);
     LUXEL_CHECK_GT(height, 0);
     LUXEL_CHECK(channels >= 1 && channels <= 4);
-    data_.assign(static_cast<std::size_t>(width) * height * channels, 0.0f);
+    const std::size_t count = static_cast<std::size_t>(width) * height * channels;
+    // Large images (a medium walked down its columns, an image written down them) on huge pages,
+    // advised before the zeros first touch them.
+    data_.reserve(count);
+    adviseHugePages(data_.data(), count * sizeof(float));
+    data_.assign(count, 0.0f);
 }
 
 Rgb Image::rgb(int x, int y) const {

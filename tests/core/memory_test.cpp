@@ -7,6 +7,9 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
+
+#include "luxel/core/image.h"
 
 #include "support/memory_limit.h"
 
@@ -49,6 +52,33 @@ TEST(Memory, FormatBytes) {
     EXPECT_EQ(luxel::formatBytes(12), "12 B");
     EXPECT_EQ(luxel::formatBytes(1536), "1.5 KiB");
     EXPECT_EQ(luxel::formatBytes(48ull << 30), "48.0 GiB");
+}
+
+}  // namespace
+
+namespace {
+
+// Huge-page advice is only advice: null, small, unaligned and odd-sized ranges are taken without
+// complaint, and the memory reads back what was written whatever the kernel decided.
+TEST(Memory, HugePageAdviceKeepsTheMemoryAsItIs) {
+    luxel::adviseHugePages(nullptr, 64 * kMiB);
+    std::vector<float> small(100, 1.0f);
+    luxel::adviseHugePages(small.data(), small.size() * sizeof(float));
+    EXPECT_EQ(small[99], 1.0f);
+    // An unaligned start and an odd length, advised before the first write (as Image does).
+    std::vector<std::uint8_t> big;
+    big.reserve(9 * kMiB + 3);
+    luxel::adviseHugePages(big.data() + 1, 9 * kMiB + 1);
+    big.assign(9 * kMiB + 3, 0);
+    for (std::size_t i = 0; i < big.size(); i += 4093) big[i] = static_cast<std::uint8_t>(i % 251);
+    for (std::size_t i = 0; i < big.size(); i += 4093) {
+        ASSERT_EQ(big[i], static_cast<std::uint8_t>(i % 251)) << i;
+    }
+    // An image big enough to be advised is zeros, as every image starts.
+    const luxel::Image image(1024, 1024, 3);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < image.size(); ++i) sum += image.data()[i];
+    EXPECT_EQ(sum, 0.0);
 }
 
 }  // namespace

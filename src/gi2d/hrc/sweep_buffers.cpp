@@ -3,7 +3,26 @@
 #include <algorithm>
 #include <utility>
 
+#include "luxel/core/memory.h"
+
 namespace luxel::gi2d::hrc {
+
+namespace {
+
+// v.resize(n), a new allocation (when it must grow) advised onto huge pages before its first
+// write: the merge and extend read many planes of the rings at once.
+template <typename T>
+void resizeOnHugePages(std::vector<T>& v, std::size_t n) {
+    if (v.capacity() < n) {
+        std::vector<T> fresh;
+        fresh.reserve(n);
+        adviseHugePages(fresh.data(), n * sizeof(T));
+        v.swap(fresh);
+    }
+    v.resize(n);
+}
+
+}  // namespace
 
 void ColumnWindow::reshape(int span, std::vector<float> lengths, int rows) {
     span_ = span;
@@ -155,7 +174,7 @@ void IntervalRing::reshape(int levels, int rows, int chunk) {
     rows_ = rows;
     const std::size_t total = layOut(
         levels, chunk, [&](int n) { return intervalsPerPlane(n, rows); }, slots_, levelStart_);
-    data_.resize(total + kSweepRowPad);
+    resizeOnHugePages(data_, total + kSweepRowPad);
 }
 
 std::uint64_t IntervalRing::bytesFor(int levels, int rows, int chunk) {
@@ -185,7 +204,7 @@ void ConeRing::reshape(int levels, int rows, int chunk) {
     rows_ = rows;
     const std::size_t total = layOut(
         levels, chunk, [&](int n) { return conesPerPlane(n, rows); }, slots_, levelStart_);
-    data_.resize(total + kSweepRowPad);
+    resizeOnHugePages(data_, total + kSweepRowPad);
 }
 
 std::uint64_t ConeRing::bytesFor(int levels, int rows, int chunk) {
