@@ -1,6 +1,6 @@
 // availableMemoryBytes honours the soft RLIMIT_AS and RLIMIT_DATA (less what the process already
-// maps), and checkMemory refuses in one line what does not fit. Limits are lowered in a forked
-// child (support/memory_limit.h), so the test process keeps its own.
+// maps), checkMemory refuses in one line what does not fit, and huge-page advice changes no byte.
+// Limits are lowered in a forked child (support/memory_limit.h), so the test process keeps its own.
 #include "luxel/core/memory.h"
 
 #include <gtest/gtest.h>
@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "luxel/core/image.h"
-
 #include "support/memory_limit.h"
 
 namespace {
