@@ -14,9 +14,7 @@ Image::Image(int width, int height, int channels)
     const std::size_t count = static_cast<std::size_t>(width) * height * channels;
     // Large images (a medium walked down its columns, an image written down them) on huge pages,
     // advised before the zeros first touch them.
-    data_.reserve(count);
-    adviseHugePages(data_.data(), count * sizeof(float));
-    data_.assign(count, 0.0f);
+    resizeOnHugePages(data_, count);
 }
 
 Rgb Image::rgb(int x, int y) const {

@@ -14,6 +14,7 @@
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/voxel/path_trace_emitters.h"
 #include "luxel/voxel/shading.h"
+#include "voxel/emitter_rect.h"
 #include "voxel/solver_sun.h"
 
 namespace luxel::voxel {
@@ -23,16 +24,6 @@ namespace shared = gpu::shared;
 
 static_assert(kMaxEmitterRays == LUXEL_EMITTER_MAX_RAYS && kEmitterFloor == LUXEL_EMITTER_FLOOR &&
               kEmitterPathRays == LUXEL_EMITTER_PATH_RAYS);
-// EmitterFace is the shader's CascadeNearEmitter, byte for byte.
-static_assert(sizeof(EmitterFace) == sizeof(shared::CascadeNearEmitter) &&
-              offsetof(EmitterFace, normal) == offsetof(shared::CascadeNearEmitter, normal) &&
-              offsetof(EmitterFace, r) == offsetof(shared::CascadeNearEmitter, r) &&
-              offsetof(EmitterFace, extent) == offsetof(shared::CascadeNearEmitter, extent));
-
-shared::CascadeNearEmitter shaderFace(const EmitterFace& f) {
-    return {f.x, f.y, f.z, f.normal, f.r, f.g, f.b, f.extent};
-}
-
 constexpr Int3 kNormals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
 
 float largest(const EmitterFace& e) {
@@ -44,16 +35,6 @@ int sizeA(const EmitterFace& e) {
 }
 int sizeB(const EmitterFace& e) {
     return int(shared::emitterSizeB(e.extent));
-}
-
-// The centre of the emitter's rectangle.
-Vec3d centreOf(const EmitterFace& e) {
-    const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
-    Vec3d c{double(e.x), double(e.y), double(e.z)};
-    if ((e.normal & 1u) == 0u) c[axis] += 1.0;
-    c[a] += 0.5 * sizeA(e);
-    c[b] += 0.5 * sizeB(e);
-    return c;
 }
 
 // The reach of an emitter: past this distance from its centre its irradiance is below `floor`
@@ -127,16 +108,6 @@ std::vector<EmitterFace> mergedRectangles(std::vector<EmitterFace> faces) {
     return out;
 }
 
-// Distance from p to the axis-aligned box [lo, hi].
-double boxDistance(Vec3d p, Vec3d lo, Vec3d hi) {
-    double d2 = 0;
-    for (int a = 0; a < 3; ++a) {
-        const double d = std::max({lo[a] - p[a], 0.0, p[a] - hi[a]});
-        d2 += d * d;
-    }
-    return std::sqrt(d2);
-}
-
 // Visits the cells within `reach` of `centre` (cell side LUXEL_EMITTER_CELL).
 template <typename F>
 void forCellsInReach(Int3 cells, Vec3d centre, double reach, F&& visit) {
@@ -150,7 +121,8 @@ void forCellsInReach(Int3 cells, Vec3d centre, double reach, F&& visit) {
         for (int y = lo.y; y <= hi.y; ++y)
             for (int x = lo.x; x <= hi.x; ++x) {
                 const Vec3d boxLo{x * side, y * side, z * side};
-                if (boxDistance(centre, boxLo, boxLo + Vec3d{side, side, side}) <= reach) {
+                if (std::sqrt(boxDistanceSquared(centre, boxLo, boxLo + Vec3d{side, side, side})) <=
+                    reach) {
                     visit((z * cells.y + y) * cells.x + x);
                 }
             }
@@ -190,7 +162,7 @@ EmitterLights EmitterLights::build(const VoxelWorld& world, const MaterialTable&
         std::int64_t total = 0;
         for (const EmitterFace& e : out.faces_) {
             if (total > kMaxEmitterListEntries) break;
-            forCellsInReach(out.cells_, centreOf(e), reachOf(e, out.floor_), [&](int cell) {
+            forCellsInReach(out.cells_, rectCentre(e), reachOf(e, out.floor_), [&](int cell) {
                 ++counts[std::size_t(cell)];
                 ++total;
             });
@@ -206,7 +178,7 @@ EmitterLights EmitterLights::build(const VoxelWorld& world, const MaterialTable&
     std::vector<std::uint32_t> filled(out.cellOffsets_.begin(), out.cellOffsets_.end() - 1);
     for (std::size_t f = 0; f < out.faces_.size(); ++f) {
         const EmitterFace& e = out.faces_[f];
-        forCellsInReach(out.cells_, centreOf(e), reachOf(e, out.floor_), [&](int cell) {
+        forCellsInReach(out.cells_, rectCentre(e), reachOf(e, out.floor_), [&](int cell) {
             out.cellFaces_[filled[std::size_t(cell)]++] = std::uint32_t(f);
         });
     }

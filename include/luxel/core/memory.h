@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "luxel/core/error.h"
 
@@ -27,5 +28,18 @@ Status checkMemory(std::uint64_t needed, const std::string& what);
 // memory is first written: pages already touched stay small. Only for buffers of 4 MiB and more,
 // where strided reads (a canvas walked down its columns) miss the TLB on every row.
 void adviseHugePages(void* data, std::size_t bytes);
+
+// v.resize(n), where growing makes a new allocation advised onto huge pages before its first
+// write (then value-initialised: zeros for numbers). Old elements are not kept when it grows.
+template <typename T>
+void resizeOnHugePages(std::vector<T>& v, std::size_t n) {
+    if (v.capacity() < n) {
+        std::vector<T> fresh;
+        fresh.reserve(n);
+        adviseHugePages(fresh.data(), n * sizeof(T));
+        v.swap(fresh);
+    }
+    v.resize(n);
+}
 
 }  // namespace luxel

@@ -7,23 +7,6 @@
 
 namespace luxel::gi2d::hrc {
 
-namespace {
-
-// v.resize(n), a new allocation (when it must grow) advised onto huge pages before its first
-// write: the merge and extend read many planes of the rings at once.
-template <typename T>
-void resizeOnHugePages(std::vector<T>& v, std::size_t n) {
-    if (v.capacity() < n) {
-        std::vector<T> fresh;
-        fresh.reserve(n);
-        adviseHugePages(fresh.data(), n * sizeof(T));
-        v.swap(fresh);
-    }
-    v.resize(n);
-}
-
-}  // namespace
-
 void ColumnWindow::reshape(int span, std::vector<float> lengths, int rows) {
     span_ = span;
     rows_ = rows;
@@ -80,16 +63,14 @@ void ColumnWindow::load(const Medium2D& medium, const FrustumFrame& frame, int x
         if (alongX) {
             // Each frame row is another canvas row: the prefetcher does not follow strides of a
             // canvas row, so the block's rows a few ahead are fetched by hand.
-            const std::ptrdiff_t lineFloats = 16, blockFloats = std::ptrdiff_t(columns) * 3;
+            const std::ptrdiff_t blockFloats = std::ptrdiff_t(columns) * 3;
             for (int i = 0; i < count; ++i) {
                 const std::ptrdiff_t row = origin + i * stepV;
                 if (i + kPrefetchRows < count) {
                     const std::ptrdiff_t ahead = row + kPrefetchRows * stepV;
                     const std::ptrdiff_t lo = std::min(ahead, ahead + (columns - 1) * stepU);
-                    for (std::ptrdiff_t f = 0; f < blockFloats + lineFloats; f += lineFloats) {
-                        __builtin_prefetch(sigma + lo + f);
-                        __builtin_prefetch(emission + lo + f);
-                    }
+                    prefetchFloats(sigma + lo, blockFloats, false);
+                    prefetchFloats(emission + lo, blockFloats, false);
                 }
                 for (int j = 0; j < columns; ++j) {
                     const std::ptrdiff_t k = row + j * stepU;

@@ -6,6 +6,7 @@
 // planes of every cascade.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -20,6 +21,18 @@ namespace luxel::gi2d::hrc {
 // columns row by row: each row is another canvas row, a stride the hardware prefetcher does not
 // follow (1024^2, one thread: the medium's load from 11.4% of the solve to 8.0%).
 inline constexpr int kPrefetchRows = 8;
+
+// Prefetches the cache lines of floats [from, from + count), for reading or (`write`) updating.
+inline void prefetchFloats(const float* from, std::ptrdiff_t count, bool write) {
+    constexpr std::ptrdiff_t kLineFloats = 16;
+    for (std::ptrdiff_t f = 0; f < count + kLineFloats; f += kLineFloats) {
+        if (write) {
+            __builtin_prefetch(from + f, 1);
+        } else {
+            __builtin_prefetch(from + f);
+        }
+    }
+}
 
 // The frame's medium columns x .. x + span - 1 as cell transfers (sweep_kernels.h) for each ray
 // length the traced cascades use, padded with vacuum rows above and below; columns beyond the

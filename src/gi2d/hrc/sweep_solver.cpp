@@ -351,10 +351,7 @@ std::uint64_t FrustumSweep::readOut(int u, int plane, int y0, int y1) {
                 // (the prefetcher does not follow strides of a canvas row; ColumnWindow::load).
                 if (v + kPrefetchRows < y1) {
                     const int lo = frame_.frustum == Frustum::PlusX ? u : width - 1 - last;
-                    const float* ahead = pixel(lo, v + kPrefetchRows);
-                    for (int f = 0; f < (last - u + 1) * 3 + 16; f += 16) {
-                        __builtin_prefetch(ahead + f, 1);
-                    }
+                    prefetchFloats(pixel(lo, v + kPrefetchRows), (last - u + 1) * 3, true);
                 }
                 for (int w = u; w <= last; ++w) {
                     float* p = pixel(frame_.frustum == Frustum::PlusX ? w : width - 1 - w, v);

@@ -10,6 +10,7 @@
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/emitter_light.h"
 #include "luxel/voxel/surface_cast.h"
+#include "voxel/emitter_rect.h"
 
 namespace luxel::voxel::cascades {
 
@@ -17,29 +18,17 @@ namespace shared = gpu::shared;
 
 namespace {
 
-shared::CascadeNearEmitter lampOf(const EmitterFace& f) {
-    return {f.x, f.y, f.z, f.normal, f.r, f.g, f.b, f.extent};
-}
-
 // The estimate a cell keeps its picks by: radiance x area / (d^2 + area), d from the
 // rectangle's centre to the cell's box (its light at the nearest point of the cell, bounded
 // where the cell touches it); 0 when the whole cell lies behind the rectangle's plane.
-double cellScore(const shared::CascadeNearEmitter& e, Vec3d lo, Vec3d hi) {
-    const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
-    const double sizeA = shared::emitterSizeA(e.extent), sizeB = shared::emitterSizeB(e.extent);
-    Vec3d c{double(e.x), double(e.y), double(e.z)};
-    const bool positive = (e.normal & 1u) == 0u;
-    if (positive) c[axis] += 1.0;
-    if (positive ? !(hi[axis] > c[axis]) : !(lo[axis] < c[axis])) return 0.0;
-    c[a] += 0.5 * sizeA;
-    c[b] += 0.5 * sizeB;
-    double d2 = 0.0;
-    for (int k = 0; k < 3; ++k) {
-        const double d = std::max({lo[k] - c[k], 0.0, c[k] - hi[k]});
-        d2 += d * d;
-    }
-    const double area = sizeA * sizeB;
-    return double(std::max(e.r, std::max(e.g, e.b))) * area / (d2 + area);
+double cellScore(const EmitterFace& e, Vec3d lo, Vec3d hi) {
+    const int axis = int(e.normal / 2u);
+    const Vec3d c = rectCentre(e);
+    if ((e.normal & 1u) == 0u ? !(hi[axis] > c[axis]) : !(lo[axis] < c[axis])) return 0.0;
+    const double area =
+        double(shared::emitterSizeA(e.extent)) * double(shared::emitterSizeB(e.extent));
+    return double(std::max(e.r, std::max(e.g, e.b))) * area /
+           (boxDistanceSquared(c, lo, hi) + area);
 }
 
 }  // namespace
@@ -49,7 +38,7 @@ GlossyLamps buildGlossyLamps(const VoxelWorld& world, const MaterialTable& mater
     GlossyLamps out;
     if (lights.empty()) return out;
     out.cells = lights.cells();
-    for (const EmitterFace& f : lights.faces()) out.lamps.push_back(lampOf(f));
+    for (const EmitterFace& f : lights.faces()) out.lamps.push_back(shaderFace(f));
     const int cellCount = out.cells.x * out.cells.y * out.cells.z;
     out.picks.assign(std::size_t(cellCount) * LUXEL_GLOSSY_PICKS, LUXEL_GLOSSY_NO_PICK);
     const std::vector<std::uint32_t>& offsets = lights.cellOffsets();
@@ -65,7 +54,7 @@ GlossyLamps buildGlossyLamps(const VoxelWorld& world, const MaterialTable& mater
             double score[LUXEL_GLOSSY_PICKS];
             std::uint32_t* picks = &out.picks[std::size_t(cell) * LUXEL_GLOSSY_PICKS];
             for (std::uint32_t i = offsets[cell]; i < offsets[cell + 1]; ++i) {
-                const double s = cellScore(out.lamps[list[i]], lo, hi);
+                const double s = cellScore(lights.faces()[list[i]], lo, hi);
                 if (!(s > 0.0) || (kept == LUXEL_GLOSSY_PICKS && !(s > score[kept - 1]))) continue;
                 int j = std::min(kept, LUXEL_GLOSSY_PICKS - 1);
                 for (; j > 0 && s > score[j - 1]; --j) {

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "../../gpu/shaders/shared/glossy_emitters.h"
+#include "gpu/shaders/shared/glossy_emitters.h"
 #include "luxel/core/vec.h"
 #include "luxel/voxel/dda.h"
 #include "luxel/voxel/material.h"
