@@ -5,6 +5,7 @@
 
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "luxel/core/image_io.h"
 #include "support/cli_fixture.h"
@@ -20,18 +21,14 @@ const std::string kTerrain = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/terr
 class CliSky : public luxel::test::CliFixture {};
 
 TEST_F(CliSky, InfoNamesTheModel) {
-    const RunResult evening = runLuxel("info " + kEvening);
-    ASSERT_EQ(evening.exitCode, 0) << evening.output;
-    EXPECT_NE(evening.output.find(
-                  "sky                Preetham clear sky, turbidity 3, zenith luminance 0.5"),
-              std::string::npos)
-        << evening.output;
-    const RunResult terrain = runLuxel("info " + kTerrain);
-    ASSERT_EQ(terrain.exitCode, 0) << terrain.output;
-    EXPECT_NE(terrain.output.find(
-                  "sky                gradient, top (0.18, 0.36, 0.8), horizon (0.75, 0.85, 1)"),
-              std::string::npos)
-        << terrain.output;
+    const std::pair<std::string, std::string> cases[] = {
+        {kEvening, "sky                Preetham clear sky, turbidity 3, zenith luminance 0.5"},
+        {kTerrain, "sky                gradient, top (0.18, 0.36, 0.8), horizon (0.75, 0.85, 1)"}};
+    for (const auto& [scene, line] : cases) {
+        const RunResult r = runLuxel("info " + scene);
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        EXPECT_NE(r.output.find(line), std::string::npos) << r.output;
+    }
 }
 
 // The top row of the picture looks about 30° up, the row at 40% of the height about 4°: under a
