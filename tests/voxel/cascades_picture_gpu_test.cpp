@@ -405,7 +405,7 @@ TEST(CascadesPictureGpu, CameraInsideASolidVoxelSeesBlackAndWhatDoesNotFitIsRefu
     // one is drawn.
     auto tight = gpu->render(outside, nullptr, 4096);
     ASSERT_FALSE(tight.ok());
-    for (const char* part : {"40x30 on the GPU needs", "faces' table", "adaptive pixel list 148 B",
+    for (const char* part : {"40x30 on the GPU needs", "faces' table", "adaptive pixel list 592 B",
                              "the budget is 4.0 KiB"}) {
         EXPECT_NE(tight.error().message().find(part), std::string::npos) << tight.error().message();
     }

@@ -51,7 +51,7 @@ std::vector<shared::CascadeFaceSlot> cascades::faceSlots(const FaceTable& table)
 
 namespace {
 
-// The adaptive pass's pixel list (shared/cascade_picture_layout.h).
+// The adaptive pass's pixel list and results (shared/cascade_picture_layout.h).
 constexpr std::size_t kRefineBinding = 22;
 
 std::string sizeText(const Camera& camera) {
@@ -96,14 +96,14 @@ shared::CascadePicturePush picturePush(const ShadeOptions& shading, std::uint32_
 }
 
 // Refuses, with the bytes, a picture whose world, faces' table, image and adaptive pass's pixel
-// list (at most kAdaptiveMaxShare of the pixels, 4 bytes each) exceed `budget` (0: the device's
-// memory).
+// list with its results (at most kAdaptiveMaxShare of the pixels, 16 bytes each) exceed `budget`
+// (0: the device's memory).
 Status checkRoom(const gpu::Context& context, const Camera& camera, std::uint64_t world,
                  std::uint64_t table, std::uint64_t budget) {
     const std::uint64_t pixels = std::uint64_t(camera.width()) * camera.height();
     const std::uint64_t image = pixels * 3 * sizeof(float);
     const std::uint64_t list =
-        std::max<std::uint64_t>(16, std::uint64_t(kAdaptiveMaxShare * double(pixels)) * 4);
+        std::max<std::uint64_t>(16, std::uint64_t(kAdaptiveMaxShare * double(pixels)) * 16);
     const std::uint64_t need = world + table + image + list;
     const std::uint64_t room = budget > 0 ? budget : context.device().deviceLocalBytes;
     if (room > 0 && need > room) {
@@ -248,15 +248,19 @@ Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilli
     d.setPush(push);
     d.setThreads(std::uint64_t(width), std::uint64_t(height));
     Image out(width, height, 3);
-    const auto drawAndDownload = [&]() -> Status {
+    const auto draw = [&]() -> Status {
         auto timings = g.context->run(std::span(&d, 1));
         if (!timings) return timings.error();
         if (gpuMilliseconds && !timings->empty()) *gpuMilliseconds += timings->front().milliseconds;
-        return g.context->download(*p.image,
-                                   std::as_writable_bytes(std::span(out.data(), out.size())));
+        return Ok{};
     };
     if (gpuMilliseconds) *gpuMilliseconds = 0.0;
-    if (Status s = drawAndDownload(); !s) return s.error();
+    if (Status s = draw(); !s) return s.error();
+    if (Status s = g.context->download(*p.image,
+                                       std::as_writable_bytes(std::span(out.data(), out.size())));
+        !s) {
+        return s.error();
+    }
     // The adaptive pass: the CPU's rule on the first pass's image, then the same shader over the
     // list with more rays, writing those pixels over the first pass's (§4.2).
     const int refine = adaptiveSamples(state.shading);
@@ -265,17 +269,28 @@ Result<Image> RadianceCascadesGpu::render(const Camera& camera, double* gpuMilli
                    : std::vector<std::uint32_t>{};
     if (refinedPixels) *refinedPixels = int(pixels.size());
     if (pixels.empty()) return out;
+    // The pass writes each listed pixel's RGB ahead of the list, and only those come back: the
+    // image stays as the first download left it elsewhere.
     const std::span<const std::byte> list = std::as_bytes(std::span(pixels));
-    if (Status s = g.context->ensureBuffer(p.refine, p.refineBytes, list.size()); !s) {
+    std::vector<float> refined(pixels.size() * 3);
+    const std::span<std::byte> results = std::as_writable_bytes(std::span(refined));
+    if (Status s = g.context->ensureBuffer(p.refine, p.refineBytes, results.size() + list.size());
+        !s) {
         return s.error();
     }
-    if (Status s = g.context->upload(*p.refine, list); !s) return s.error();
+    if (Status s = g.context->upload(*p.refine, list, results.size()); !s) return s.error();
     d.buffers[kRefineBinding] = p.refine.get();
     push.refineCount = std::uint32_t(pixels.size());
     push.refineSamples = std::uint32_t(refine);
     d.setPush(push);
     d.setThreads(std::uint64_t(width), (pixels.size() + width - 1) / std::uint64_t(width));
-    if (Status s = drawAndDownload(); !s) return s.error();
+    if (Status s = draw(); !s) return s.error();
+    if (Status s = g.context->download(*p.refine, results); !s) return s.error();
+    for (std::size_t i = 0; i < pixels.size(); ++i) {
+        const int x = int(pixels[i] % std::uint32_t(width)),
+                  y = int(pixels[i] / std::uint32_t(width));
+        for (int c = 0; c < 3; ++c) out.at(x, y, c) = refined[3 * i + std::size_t(c)];
+    }
     return out;
 }
 

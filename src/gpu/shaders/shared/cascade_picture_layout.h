@@ -12,8 +12,9 @@
 //   17 float: the GGX lobe's directional albedo table (src/voxel/ggx_albedo.h)
 //   18 float: the picture, RGB per pixel, rows top to bottom
 //   19..21 the emitters near each face (shared/near_emitters.h)
-//   22 uint: the pixels (y * width + x) the adaptive pass draws again (src/voxel/cascades/
-//      adaptive_samples.h), read when refineCount > 0
+//   22 uint: the adaptive pass (src/voxel/cascades/adaptive_samples.h), used when refineCount
+//      > 0: the RGB (float bits) of each pixel it draws again, 3 x refineCount words written by
+//      the pass, then the pixels (y * width + x) to draw, refineCount words
 //   23..24 the lamps the glossy surfaces light-sample (shared/glossy_emitters.h)
 #ifndef LUXEL_GPU_SHARED_CASCADE_PICTURE_LAYOUT_H
 #define LUXEL_GPU_SHARED_CASCADE_PICTURE_LAYOUT_H

@@ -32,8 +32,9 @@ layout(std430, set = 0, binding = 20) readonly buffer NearOffsets { uint nearOff
 layout(std430, set = 0, binding = 21) readonly buffer NearEmitters {
     CascadeNearEmitter nearEmitters[];
 };
-// The adaptive pass's pixels (src/voxel/cascades/adaptive_samples.h).
-layout(std430, set = 0, binding = 22) readonly buffer RefinePixels { uint refinePixels[]; };
+// The adaptive pass (src/voxel/cascades/adaptive_samples.h): its pixels' RGB first (written
+// here, downloaded alone), then the list of the pixels, from word 3 x refineCount.
+layout(std430, set = 0, binding = 22) buffer RefinePixels { uint refinePixels[]; };
 // The lamps the glossy surfaces light-sample (shared/glossy_emitters.h).
 layout(std430, set = 0, binding = 23) readonly buffer GlossyPicks { uint glossyPicks[]; };
 layout(std430, set = 0, binding = 24) readonly buffer GlossyLamps {
@@ -118,11 +119,12 @@ void main() {
     uint x = gl_GlobalInvocationID.x, y = gl_GlobalInvocationID.y;
     if (x >= params.width) return;
     uint pixel = y * params.width + x;
+    const uint entry = pixel;
     int n = int(clamp(params.samplesPerPixel, 1u, uint(LUXEL_MAX_SAMPLES_PER_PIXEL)));
     if (path.refineCount > 0u) {
         // The adaptive pass: this invocation's entry of the list, with more rays.
-        if (pixel >= path.refineCount) return;
-        pixel = refinePixels[pixel];
+        if (entry >= path.refineCount) return;
+        pixel = refinePixels[3u * path.refineCount + entry];
         x = pixel % params.width;
         y = pixel / params.width;
         n = int(clamp(path.refineSamples, 1u, uint(LUXEL_MAX_SAMPLES_PER_PIXEL)));
@@ -145,6 +147,13 @@ void main() {
         sum += pixelRadiance(origin, normalize(forward + right * sx + up * sy), rng);
     }
     const vec3 radiance = n == 1 ? sum : sum * (1.0 / float(n));
+    if (path.refineCount > 0u) {
+        // Beside the list, so that only the refined pixels come back to the CPU.
+        refinePixels[3u * entry] = floatBitsToUint(radiance.x);
+        refinePixels[3u * entry + 1u] = floatBitsToUint(radiance.y);
+        refinePixels[3u * entry + 2u] = floatBitsToUint(radiance.z);
+        return;
+    }
     picture[3u * pixel] = radiance.x;
     picture[3u * pixel + 1u] = radiance.y;
     picture[3u * pixel + 2u] = radiance.z;
