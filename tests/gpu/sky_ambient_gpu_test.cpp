@@ -30,7 +30,7 @@ TEST(SkyAmbientGpu, MatchesTheCpuOnShippedScenes) {
     };
     for (const Case& c : {Case{"thin-walls.json", 8, 1}, Case{"garden.json", 4, 2}}) {
         auto loaded =
-            loadVoxelScene(std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/" + c.name, 96, 54);
+            loadVoxelScene(std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/" + c.name, 64, 36);
         ASSERT_TRUE(loaded.ok()) << loaded.error().message();
         VoxelScene& scene = *loaded;
         scene.shading.lighting = ShadeOptions::Lighting::Physical;
