@@ -1,7 +1,8 @@
-// The ray caster's sky ambient with occlusion (ShadeOptions::skyAmbientRays; docs/algorithms/
-// voxel-surfaces.md, "Sky ambient with occlusion"): from a point on a face, cosine-distributed
-// rays find which of the sky the face sees. The GPU twin is voxel/sky_ambient.glsl; both draw
-// their directions with shared/sky_ambient.h from the same PathRng stream.
+// The ray caster's sky ambient with occlusion (ShadeOptions::skyAmbientRays;
+// docs/algorithms/voxel-surfaces.md, "Sky ambient with occlusion"): from a point on a face,
+// cosine-distributed rays find which of the sky the face sees. The GPU twin is
+// voxel/sky_ambient.glsl; both draw their directions with shared/sky_ambient.h from the same
+// PathRng stream.
 #pragma once
 
 #include "luxel/core/vec.h"

@@ -1,8 +1,8 @@
-// The ray caster's sky ambient with occlusion (render.sky_ambient_rays; docs/algorithms/
-// voxel-surfaces.md, "Sky ambient with occlusion"), the part both backends share: the limit on
-// the rays, the seed of their random numbers (shared/path_rng.h, keyed by pixel and sample) and
-// the cosine-distributed direction of one ray. src/voxel/sky_ambient.cpp traces the rays on the
-// CPU, voxel/sky_ambient.glsl on the GPU.
+// The ray caster's sky ambient with occlusion (render.sky_ambient_rays;
+// docs/algorithms/voxel-surfaces.md, "Sky ambient with occlusion"), the part both backends share:
+// the limit on the rays, the key of their random numbers (shared/path_rng.h, with the pixel and
+// sample) and the cosine-distributed direction of one ray. src/voxel/sky_ambient.cpp traces the
+// rays on the CPU, voxel/sky_ambient.glsl on the GPU.
 #ifndef LUXEL_GPU_SHARED_SKY_AMBIENT_H
 #define LUXEL_GPU_SHARED_SKY_AMBIENT_H
 
@@ -11,8 +11,8 @@
 
 // Most rays per shaded point (ShadeOptions::skyAmbientRays, kMaxSkyAmbientRays).
 #define LUXEL_SKY_AMBIENT_MAX_RAYS 256
-// The seed of the rays' numbers (its low word; the high word is 0), so a pixel's rays are
-// PathRng(LUXEL_SKY_AMBIENT_SEED, y * width + x, sample) on both backends.
+// The rays' numbers are PathRng(LUXEL_SKY_AMBIENT_SEED, y * width + x, sample) on both backends
+// (the GPU passes it as the low word, the high word 0).
 #define LUXEL_SKY_AMBIENT_SEED 0x5ca1ab1eu
 
 LUXEL_SHARED_BEGIN
