@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "gpu/shaders/shared/pixel_samples.h"
 #include "luxel/core/parallel.h"
@@ -32,8 +33,12 @@ Rgb shadePixel(const VoxelWorld& world, const Camera& camera, int px, int py,
     RayCone cone = primaryCone(camera);
     cone.spread /= std::sqrt(double(n));
     Rgb sum;
+    // The pixel's index keys its sky ambient rays' numbers, as voxel_render.comp.glsl's.
+    const auto pixel = static_cast<std::uint32_t>(py) * static_cast<std::uint32_t>(camera.width()) +
+                       static_cast<std::uint32_t>(px);
     for (int k = 0; k < n; ++k) {
-        sum += shadeRay(world, pixelSampleRay(camera, px, py, k, n), cone, options, textures);
+        sum += shadeRay(world, pixelSampleRay(camera, px, py, k, n), cone, options, textures,
+                        {pixel, static_cast<std::uint32_t>(k)});
     }
     return n == 1 ? sum : sum * (1.0f / float(n));
 }

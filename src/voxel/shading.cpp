@@ -170,8 +170,13 @@ Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& option
 
 Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const RayCone& rayCone,
              const ShadeOptions& options, const TextureSet* textures) {
+    return shadeRay(world, ray, rayCone, options, textures, RaySample{});
+}
+
+Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const RayCone& rayCone,
+             const ShadeOptions& options, const TextureSet* textures, RaySample raySample) {
     if (options.lighting == ShadeOptions::Lighting::Physical) {
-        return shadePhysical(world, ray, rayCone, options, textures);
+        return shadePhysical(world, ray, rayCone, options, textures, raySample);
     }
     RayCone cone = rayCone;
     const int bounces = std::max(options.maxReflections, 0);

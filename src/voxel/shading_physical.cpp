@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gpu/shaders/shared/sky_ambient.h"
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/core/tonemap.h"
 #include "luxel/voxel/emitter_light.h"
 #include "luxel/voxel/surface_cast.h"
 #include "luxel/voxel/texel_footprint.h"
+#include "voxel/sky_ambient.h"
 
 namespace luxel::voxel {
 namespace {
@@ -174,7 +176,7 @@ MediumExit walkMedium(const VoxelWorld& world, Int3 cell, Vec3d origin, Vec3d di
 }
 
 Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
-                  const ShadeOptions& o, const TextureSet* textures) {
+                  const ShadeOptions& o, const TextureSet* textures, RaySample raySample) {
     const double len = length(ray.direction);
     if (!(len > 0.0) || !std::isfinite(len)) return skyColor(ray.direction, o);
     const Vec3d sun = normalize(Vec3d{o.sunDirection.x, o.sunDirection.y, o.sunDirection.z});
@@ -197,6 +199,10 @@ Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
     stack.push(first);
     Rgb sum;
     int emitterBudget = kEmitterPathRays;  // shadow rays the path's hits may cast in all
+    // The sky ambient rays of all the path's hits draw from one stream, in the order the stack
+    // pops them (voxel_physical.glsl draws the same).
+    PathRng rng(LUXEL_SKY_AMBIENT_SEED, raySample.pixel, raySample.sample);
+    const bool traceAmbient = o.skyAmbientRays > 0;
     while (stack.size > 0) {
         const PathRay r = stack.rays[--stack.size];
         if (r.inside) {
@@ -259,7 +265,17 @@ Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
             shared::mix(shared::vec3(shared::fresnelF0(1.0f, m.ior)), base, m.metallic);
         const float alpha = std::max(m.roughness * m.roughness, alphaMin);
         const float vis = sunVisibility(world, textures, o, hit, sun, footprint);
-        const shared::vec3 ambient = v3(skyColor(toDouble(nShade), o)) * (kPi * o.skyAmbient);
+        // Sky ambient: the assumed share of the sky along the shading normal, or the sky that
+        // rays about the face normal find (the visible share then weighs the rough reflection).
+        shared::vec3 ambient;
+        float skyShare = o.skyAmbient;
+        if (traceAmbient) {
+            const SkyAmbient a = traceSkyAmbient(world, textures, hit.point, hit.normal, o, rng);
+            ambient = v3(a.sky) * kPi;
+            skyShare = a.visible;
+        } else {
+            ambient = v3(skyColor(toDouble(nShade), o)) * (kPi * o.skyAmbient);
+        }
         sum += r.weight * m.emission +
                r.weight * rgb(shared::voxelSurfaceLight(base * kd, f0, alpha, model, nShade, view,
                                                         l, v3(o.sunIrradiance), vis, ambient));
@@ -291,8 +307,8 @@ Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
         }
         if (g < 1.0f) {
             const shared::vec3 fRough = shared::voxelRoughFresnel(f0, cosV, m.roughness);
-            sum += r.weight * rgb(fRough * (1.0f - g) * o.skyAmbient) *
-                   skyColor(toDouble(reflected), o);
+            sum +=
+                r.weight * rgb(fRough * (1.0f - g) * skyShare) * skyColor(toDouble(reflected), o);
         }
         if (r.depth <= 0) continue;
         PathRay child;

@@ -34,7 +34,8 @@ struct ExitSplit {
 };
 ExitSplit splitAtExit(Vec3d direction, Int3 outward, float ior, ShadeOptions::FresnelModel fresnel);
 
+// `sample` keys the random numbers of the sky ambient rays (ShadeOptions::skyAmbientRays).
 Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
-                  const ShadeOptions& options, const TextureSet* textures);
+                  const ShadeOptions& options, const TextureSet* textures, RaySample sample);
 
 }  // namespace luxel::voxel

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <string>
 
+#include "gpu/shaders/shared/sky_ambient.h"
 #include "gpu/shaders/shared/sky_preetham.h"
 #include "gpu/shaders/shared/texture_filter.h"
 #include "gpu/shaders/shared/voxel_shading.h"
@@ -120,6 +121,8 @@ Status VoxelGpuRenderer::prepareRender(const Camera& camera, const ShadeOptions&
         p.sunIrradianceR = options.sunIrradiance.r, p.sunIrradianceG = options.sunIrradiance.g,
         p.sunIrradianceB = options.sunIrradiance.b;
         p.skyAmbient = options.skyAmbient;
+        p.skyAmbientRays = static_cast<std::uint32_t>(
+            std::clamp(options.skyAmbientRays, 0, LUXEL_SKY_AMBIENT_MAX_RAYS));
         // As shading_physical.cpp: the sun's image in a mirror bounds the GGX alpha.
         p.alphaMin = std::max(0.5f * static_cast<float>(options.sunAngularRadius), 1e-3f);
         p.maxReflections = static_cast<std::uint32_t>(

@@ -356,6 +356,9 @@ void readSurfaceOptions(const Json& render, const std::vector<Material>& materia
     if (const Json* v = find(render, "sky_ambient")) {
         o.skyAmbient = static_cast<float>(readNumberIn(*v, "render.sky_ambient", 0, 1));
     }
+    if (const Json* v = find(render, "sky_ambient_rays")) {
+        o.skyAmbientRays = wholeNumber(*v, "render.sky_ambient_rays", 0, kMaxSkyAmbientRays);
+    }
     if (const Json* v = find(render, "emitter_light")) {
         o.emitterLight = readBool(*v, "render.emitter_light");
     }
@@ -383,11 +386,11 @@ ShadeOptions buildShading(const Json& root, const std::vector<Material>& materia
     }
     if (const Json* sky = find(root, "sky")) readSkyJson(*sky, o);
     if (const Json* render = find(root, "render")) {
-        checkObject(
-            *render, "render",
-            {"reflections", "reflection_mode", "reflectivity", "shadows", "textures", "lighting",
-             "specular", "fresnel", "refraction", "sun_irradiance", "sky_ambient", "material",
-             "sun_radius", "emitter_light", "emitter_rays", LUXEL_VOXEL_FILTER_RENDER_KEYS});
+        checkObject(*render, "render",
+                    {"reflections", "reflection_mode", "reflectivity", "shadows", "textures",
+                     "lighting", "specular", "fresnel", "refraction", "sun_irradiance",
+                     "sky_ambient", "sky_ambient_rays", "material", "sun_radius", "emitter_light",
+                     "emitter_rays", LUXEL_VOXEL_FILTER_RENDER_KEYS});
         readSurfaceOptions(*render, materials, o);
         readFilterFields(*render, o);
         if (auto* v = find(*render, "reflections")) {

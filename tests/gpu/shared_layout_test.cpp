@@ -303,7 +303,8 @@ TEST(GpuSharedLayout, VoxelBuffersAndPushConstants) {
                             LUXEL_MEMBER(P, emitterFloor),
                             LUXEL_MEMBER(P, skyModel),
                             LUXEL_MEMBER(P, skyPerez),
-                            LUXEL_MEMBER(P, skyZenithOverF0)}};
+                            LUXEL_MEMBER(P, skyZenithOverF0),
+                            LUXEL_MEMBER(P, skyAmbientRays)}};
     for (const char* shader : {"voxel_render", "voxel_cast", "path_trace"}) {
         expectBuffer(shader, 0, params, /* element= */ false);
     }

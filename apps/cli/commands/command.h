@@ -116,6 +116,7 @@ struct VoxelSurfaceFlags {
     std::string shadows;          // --shadows: render.shadows' method (empty: the scene's)
     bool noEmitterLight = false;  // --no-emitter-light: render.emitter_light false
     int emitterRays = 0;          // --emitter-rays: render.emitter_rays (0: the scene's)
+    int skyAmbientRays = -1;      // --sky-ambient-rays: render.sky_ambient_rays (-1: the scene's)
 };
 void addVoxelSurfaceFlags(CLI::App& app, VoxelSurfaceFlags& flags);
 // Applies them to the scene's shading options; errors name the flag.

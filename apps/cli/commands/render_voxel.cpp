@@ -120,6 +120,11 @@ void addVoxelSurfaceFlags(CLI::App& app, VoxelSurfaceFlags& flags) {
                    "voxel, physical: shadow rays per emissive face, 1.." +
                        std::to_string(voxel::kMaxEmitterRays) + " (default: the scene's, else 4)")
         ->check(wholeIn(1, voxel::kMaxEmitterRays));
+    app.add_option("--sky-ambient-rays", flags.skyAmbientRays,
+                   "voxel, physical: rays per shaded point that find the sky a face sees, 0.." +
+                       std::to_string(voxel::kMaxSkyAmbientRays) +
+                       " (0: the constant share render.sky_ambient; default: the scene's, else 0)")
+        ->check(wholeIn(0, voxel::kMaxSkyAmbientRays));
 }
 
 Status applyVoxelSurfaceFlags(const VoxelSurfaceFlags& flags, voxel::ShadeOptions& o) {
@@ -150,6 +155,7 @@ Status applyVoxelSurfaceFlags(const VoxelSurfaceFlags& flags, voxel::ShadeOption
     if (flags.noRefraction) o.refraction = false;
     if (flags.noEmitterLight) o.emitterLight = false;
     if (flags.emitterRays != 0) o.emitterRays = flags.emitterRays;
+    if (flags.skyAmbientRays >= 0) o.skyAmbientRays = flags.skyAmbientRays;
     if (!flags.shadows.empty()) {
         voxel::ShadowMethod method;
         if (!voxel::parseShadowMethod(flags.shadows, method)) {
@@ -209,12 +215,14 @@ int renderVoxelScene(const VoxelRenderRequest& request, voxel::VoxelScene loaded
     // jitters its own.
     const bool surfaceFlags = !request.filter.empty() || !f.lighting.empty() ||
                               !f.specular.empty() || !f.fresnel.empty() || f.noRefraction ||
-                              !f.shadows.empty() || f.noEmitterLight || f.emitterRays != 0;
+                              !f.shadows.empty() || f.noEmitterLight || f.emitterRays != 0 ||
+                              f.skyAmbientRays >= 0;
     // The flags the other solvers refuse, named once, with what the solver takes instead.
     const auto rayCasterOnly = [](const char* flags, const char* solverTakes) {
         return Error(std::string(flags) +
                      " and the surface flags (--lighting, --specular, --fresnel, "
-                     "--no-refraction, --shadows, --no-emitter-light, --emitter-rays) apply to "
+                     "--no-refraction, --shadows, --no-emitter-light, --emitter-rays, "
+                     "--sky-ambient-rays) apply to "
                      "the ray caster; --solver " +
                      solverTakes);
     };

@@ -6,6 +6,7 @@
 // tonemaps. Every pixel is computed independently, so images do not depend on the thread count.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 
 #include "luxel/core/vec.h"
@@ -20,6 +21,10 @@
 namespace luxel::voxel {
 
 class EmitterLights;
+
+// Most sky ambient rays per shaded point (ShadeOptions::skyAmbientRays; LUXEL_SKY_AMBIENT_MAX_RAYS
+// in shared/sky_ambient.h).
+inline constexpr int kMaxSkyAmbientRays = 256;
 
 struct ShadeOptions {
     // How reflected colours are combined.
@@ -88,9 +93,15 @@ struct ShadeOptions {
     int adaptiveSamples = 16;
     double adaptiveContrast = 12.0;
     // Physical: materials by texture slot (material.h; plain blocks use materials.plain()), and
-    // the share of the sky a face is assumed to see for ambient light (no occlusion is traced).
+    // the share of the sky a face is assumed to see for ambient light when no rays trace it.
     MaterialTable materials;
     float skyAmbient = 0.5f;
+    // Physical: sky ambient with occlusion (docs/algorithms/voxel-surfaces.md, "Sky ambient with
+    // occlusion"). 0: the constant share skyAmbient above, walls or no walls. 1..
+    // kMaxSkyAmbientRays: each shaded point casts that many cosine-distributed rays; the ambient
+    // irradiance is π x the mean of the sky along the rays that reach it (0 for the others), the
+    // rough reflection's sky is weighted by the share that reaches it, and skyAmbient is unused.
+    int skyAmbientRays = 0;
     // Physical: light from emissive voxels onto other surfaces (emitter_light.h), with
     // `emitterRays` shadow rays per face (1..kMaxEmitterRays). render() builds the faces'
     // lists when `emitterLights` is null; shadeRay without them draws no such light.
@@ -111,15 +122,26 @@ Rgb skyColor(Vec3d direction, const ShadeOptions& options);
 // Deterministic texel brightness in [1 - strength, 1] for a hit on a voxel face.
 float textureFactor(const Hit& hit, const ShadeOptions& options);
 
+// The camera sample a ray stands for: its pixel (y * width + x) and sample index key the random
+// numbers of its sky ambient rays (ShadeOptions::skyAmbientRays), as the GPU renderer keys them.
+struct RaySample {
+    std::uint32_t pixel = 0;
+    std::uint32_t sample = 0;
+};
+
 // Radiance along a ray (primary or not), with reflections per the options. `textures` gives the
 // face textures that voxel alpha 1..254 selects (texture_set.h); without it every solid voxel is
-// a plain block.
+// a plain block. Sky ambient rays draw the numbers of RaySample{} (pixel 0, sample 0).
 Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const ShadeOptions& options,
              const TextureSet* textures = nullptr);
 
 // The same, for a ray carrying a cone (texture filtering and the MRMA blend of secondary rays).
 Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
              const ShadeOptions& options, const TextureSet* textures = nullptr);
+
+// The same for camera sample `sample`, whose numbers its sky ambient rays draw.
+Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
+             const ShadeOptions& options, const TextureSet* textures, RaySample sample);
 
 // Pixel and image rendering (anti-aliasing, primary ray cones): render_image.h.
 

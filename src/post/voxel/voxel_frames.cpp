@@ -2,6 +2,7 @@
 #include "luxel/post/voxel_frames.h"
 
 #include <cmath>
+#include <cstdint>
 
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/dda.h"
@@ -40,7 +41,8 @@ Image renderJittered(const voxel::VoxelWorld& world, const voxel::Camera& camera
         for (int y = begin; y < end; ++y) {
             for (int x = 0; x < camera.width(); ++x) {
                 const voxel::Ray ray = camera.rayAt(x + 0.5 + jitter.x, y + 0.5 + jitter.y);
-                image.setRgb(x, y, voxel::shadeRay(world, ray, cone, resolved, textures));
+                const auto pixel = static_cast<std::uint32_t>(y * camera.width() + x);
+                image.setRgb(x, y, voxel::shadeRay(world, ray, cone, resolved, textures, {pixel}));
             }
         }
     });

@@ -126,6 +126,9 @@ struct VoxelRenderParams {
     uint skyModel;
     float skyPerez[15];
     float skyZenithOverF0[3];
+    // Physical: sky ambient rays per shaded point (ShadeOptions::skyAmbientRays, 0: the constant
+    // share skyAmbient; shared/sky_ambient.h).
+    uint skyAmbientRays;
 };
 
 // Push constants: the band of rows one dispatch renders (images are split into bands so no
@@ -189,7 +192,8 @@ struct VoxelTextureInfo {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(VoxelRenderParams) == 296);
+static_assert(sizeof(VoxelRenderParams) == 300);
+static_assert(offsetof(VoxelRenderParams, skyAmbientRays) == 296);
 static_assert(offsetof(VoxelRenderParams, skyModel) == 220);
 static_assert(offsetof(VoxelRenderParams, skyPerez) == 224);
 static_assert(offsetof(VoxelRenderParams, skyZenithOverF0) == 284);

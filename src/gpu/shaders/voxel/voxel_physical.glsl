@@ -4,8 +4,9 @@
 // is sunVisibility (sun_visibility.glsl) for the map and field methods, else one hard shadow ray;
 // textures are filtered over the cone's footprint and normal maps bend the shading normal
 // (texture_sample.glsl). Light from emissive voxels is emitter_light.glsl's, in the ray caster
-// alone (LUXEL_VOXEL_EMITTER_BINDINGS). Included by voxel_shading.glsl after castToSurface,
-// skyColor and textureFactor.
+// alone (LUXEL_VOXEL_EMITTER_BINDINGS). Sky ambient with occlusion (params.skyAmbientRays) is
+// sky_ambient.glsl's, its numbers keyed by the camera sample. Included by voxel_shading.glsl
+// after castToSurface, skyColor and textureFactor.
 
 struct PathRay {
     vec3 origin;
@@ -111,6 +112,7 @@ MediumExit walkMedium(ivec3 cell, vec3 origin, vec3 dir) {
 #ifdef LUXEL_VOXEL_EMITTER_BINDINGS
 #include "voxel/emitter_light.glsl"
 #endif
+#include "voxel/sky_ambient.glsl"
 
 #define LUXEL_PUSH_PATH(ray)                                                                   \
     {                                                                                          \
@@ -121,7 +123,9 @@ MediumExit walkMedium(ivec3 cell, vec3 origin, vec3 dir) {
         }                                                                                      \
     }
 
-vec3 shadePhysical(vec3 o, vec3 d) {
+// pixel (y * width + x) and sampleIndex key the sky ambient rays' numbers (shadePhysical in
+// shading_physical.cpp).
+vec3 shadePhysical(vec3 o, vec3 d, uint pixel, uint sampleIndex) {
     const float len = length(d);
     if (!(len > 0.0) || isinf(len)) return skyColor(d);
     const vec3 sun = normalize(vec3(params.sunX, params.sunY, params.sunZ));
@@ -138,6 +142,8 @@ vec3 shadePhysical(vec3 o, vec3 d) {
 #ifdef LUXEL_VOXEL_EMITTER_BINDINGS
     int emitterBudget = LUXEL_EMITTER_PATH_RAYS;
 #endif
+    // One stream for the sky ambient rays of all the path's hits, in the order the stack pops them.
+    uvec2 rng = pathRngKey(uvec2(LUXEL_SKY_AMBIENT_SEED, 0u), pixel, sampleIndex);
     while (size > 0) {
         const PathRay r = stack[--size];
         if (r.inside) {
@@ -212,7 +218,17 @@ vec3 shadePhysical(vec3 o, vec3 d) {
         const vec3 f0 = mix(vec3(fresnelF0(1.0, m.ior)), colour, m.metallic);
         const float alpha = max(m.roughness * m.roughness, params.alphaMin);
         const float vis = physicalSunVisibility(h, sun, footprint);
-        const vec3 ambient = skyColor(n) * (LUXEL_OPTICS_PI * params.skyAmbient);
+        // Sky ambient: the assumed share along the shading normal, or what rays about the face
+        // normal find (the visible share then weighs the rough reflection).
+        vec3 ambient;
+        float skyShare = params.skyAmbient;
+        if (params.skyAmbientRays > 0u) {
+            const SkyAmbient a = traceSkyAmbient(h.point, h.normal, rng);
+            ambient = a.sky * LUXEL_OPTICS_PI;
+            skyShare = a.visible;
+        } else {
+            ambient = skyColor(n) * (LUXEL_OPTICS_PI * params.skyAmbient);
+        }
         sum += r.weight * vec3(m.emissionR, m.emissionG, m.emissionB) +
                r.weight * voxelSurfaceLight(colour * kd, f0, alpha, model, n, view, sun, sunE, vis,
                                             ambient);
@@ -231,7 +247,7 @@ vec3 shadePhysical(vec3 o, vec3 d) {
 #endif
         if (g < 1.0) {
             sum += r.weight * voxelRoughFresnel(f0, cosV, m.roughness) *
-                   ((1.0 - g) * params.skyAmbient) * skyColor(reflected);
+                   ((1.0 - g) * skyShare) * skyColor(reflected);
         }
         if (r.depth <= 0) continue;
         if (g > 0.0) {

@@ -36,7 +36,8 @@ void main() {
         const vec2 o = pixelSampleOffset(x, y, k, n);
         const float sx = (2.0 * (float(x) + o.x) / w - 1.0) * params.tanHalf * params.aspect;
         const float sy = (1.0 - 2.0 * (float(y) + o.y) / h) * params.tanHalf;
-        sum += shadeRay(origin, normalize(forward + right * sx + up * sy));
+        sum += shadeRay(origin, normalize(forward + right * sx + up * sy), y * params.width + x,
+                        uint(k));
     }
     const vec3 rgb = n == 1 ? sum : sum * (1.0 / float(n));
     pixels[y * params.width + x] = VoxelPixel(rgb.x, rgb.y, rgb.z, 1.0);

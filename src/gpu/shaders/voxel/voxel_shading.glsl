@@ -140,9 +140,9 @@ float reflectivityOf(SurfaceHit s) {
 
 #include "voxel/voxel_physical.glsl"
 
-// shadeRay (shading.cpp).
-vec3 shadeRay(vec3 o, vec3 d) {
-    if ((params.flags & LUXEL_VOXEL_PHYSICAL) != 0u) return shadePhysical(o, d);
+// shadeRay (shading.cpp) for camera sample sampleIndex of pixel y * width + x.
+vec3 shadeRay(vec3 o, vec3 d, uint pixel, uint sampleIndex) {
+    if ((params.flags & LUXEL_VOXEL_PHYSICAL) != 0u) return shadePhysical(o, d, pixel, sampleIndex);
     const int bounces = int(params.maxReflections);
     vec3 sum = vec3(0.0);
     float coneWidth = 0.0;  // RayCone::after at each bounce
