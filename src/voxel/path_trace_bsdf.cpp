@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "gpu/shaders/shared/optics.h"
+#include "gpu/shaders/shared/path_bsdf.h"
 #include "path_trace_surface.h"
 
 namespace luxel::voxel {
@@ -21,6 +22,9 @@ Vec3d toDouble(Int3 v) {
     return {double(v.x), double(v.y), double(v.z)};
 }
 shared::vec3 v3(Vec3d v) {
+    return {float(v.x), float(v.y), float(v.z)};
+}
+Vec3 toFloat(Vec3d v) {
     return {float(v.x), float(v.y), float(v.z)};
 }
 double mean(Rgb c) {
@@ -71,11 +75,13 @@ double ggxReflectance(const PathBsdf& b, Vec3d l, double cosL) {
            shared::ggxSmithVisibility(float(b.cosView), float(cosL), b.alpha);
 }
 
-}  // namespace
-
 // What sampleGgx needs of the lobe alone, whatever numbers are drawn.
-GgxSampler::Frame GgxSampler::frameOf(const PathBsdf& b) {
-    Frame f;
+struct DoubleFrame {
+    Vec3d tu, tv, n, vh, t1, t2;
+};
+
+DoubleFrame doubleFrameOf(const PathBsdf& b) {
+    DoubleFrame f;
     faceFrame(b.normal, f.tu, f.tv);
     f.n = toDouble(b.normal);
     const double a = b.alpha;
@@ -88,11 +94,33 @@ GgxSampler::Frame GgxSampler::frameOf(const PathBsdf& b) {
     return f;
 }
 
+}  // namespace
+
+GgxSampler::Frame GgxSampler::frameOf(const PathBsdf& b) {
+    // pathSampleBsdf's and pathGgxVisibleNormal's frame (path_surface.glsl, path_bsdf.h).
+    Frame f;
+    Vec3d tu, tv;
+    faceFrame(b.normal, tu, tv);
+    f.tu = toFloat(tu), f.tv = toFloat(tv), f.n = toFloat(toDouble(b.normal));
+    f.view = toFloat(b.view);
+    f.alpha = b.alpha;
+    f.cosView = float(b.cosView);
+    const float a = f.alpha;
+    const Vec3 v{dot(f.view, f.tu), dot(f.view, f.tv), f.cosView};
+    f.vh = normalize(Vec3{a * v.x, a * v.y, v.z});
+    const Vec3& vh = f.vh;
+    const float lensq = vh.x * vh.x + vh.y * vh.y;
+    f.t1 = lensq > 0.0f ? Vec3{-vh.y, vh.x, 0.0f} * (1.0f / std::sqrt(lensq)) : Vec3{1, 0, 0};
+    f.t2 = cross(vh, f.t1);
+    f.masking = shared::pathGgxMasking(f.cosView, a);
+    return f;
+}
+
 namespace {
 
 // A visible normal of GGX (Heitz 2018, "Sampling the GGX Distribution of Visible Normals") in
 // the frame (tu, tv, n), and the view reflected about it.
-Vec3d sampleGgx(const PathBsdf& b, const GgxSampler::Frame& f, float u1, float u2) {
+Vec3d sampleGgx(const PathBsdf& b, const DoubleFrame& f, float u1, float u2) {
     const Vec3d &tu = f.tu, &tv = f.tv, &n = f.n, &vh = f.vh, &t1 = f.t1, &t2 = f.t2;
     const double a = b.alpha;
     const double r = std::sqrt(double(u1)), phi = 2.0 * kPi * double(u2);
@@ -103,6 +131,39 @@ Vec3d sampleGgx(const PathBsdf& b, const GgxSampler::Frame& f, float u1, float u
     const Vec3d hLocal = normalize(Vec3d{a * nh.x, a * nh.y, std::max(0.0, nh.z)});
     const Vec3d h = tu * hLocal.x + tv * hLocal.y + n * hLocal.z;
     return normalize(h * (2.0 * dot(b.view, h)) - b.view);
+}
+
+// sampleGgx in float (the GPU's pathGgxVisibleNormal, its frame made once): the real-time
+// solvers' GGX rays (docs/algorithms/voxel-radiance-cascades.md §5). A sample is one long chain
+// of dependent square roots and divisions, so the half vector is not normalised: the view is
+// reflected about it as 2 (v.h) h / (h.h) - v, which is unit as it stands (one division where
+// two normalisations took two square roots and six divisions; within float rounding of them).
+Vec3 sampleGgxFloat(const GgxSampler::Frame& f, float u1, float u2) {
+    const float r = std::sqrt(u1), phi = 2.0f * LUXEL_PATH_PI * u2;
+    const float p1 = r * std::cos(phi);
+    const float s = 0.5f * (1.0f + f.vh.z);
+    const float p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * r * std::sin(phi);
+    const Vec3 nh =
+        f.t1 * p1 + f.t2 * p2 + f.vh * std::sqrt(std::max(0.0f, 1.0f - p1 * p1 - p2 * p2));
+    const float hu = f.alpha * nh.x, hv = f.alpha * nh.y, hn = std::max(0.0f, nh.z);
+    const Vec3 h = f.tu * hu + f.tv * hv + f.n * hn;
+    return h * (2.0f * dot(f.view, h) / dot(h, h)) - f.view;
+}
+
+// The solvers' GGX sample of lobe `b` (its specular lobe picked) in the float frame `f`: the
+// direction and f cos / (probability x density) = S 4 cos_v cos_l Vis / (G1(v) pSpecular); no
+// pdf. Lobe None when the direction falls below the face.
+BsdfSample sampleGgxSolver(const PathBsdf& b, const GgxSampler::Frame& f, PathRng& rng) {
+    BsdfSample out;
+    const float u1 = rng.next(), u2 = rng.next();
+    const Vec3 l = sampleGgxFloat(f, u1, u2);
+    const float cosL = dot(f.n, l);
+    if (!(cosL > 0.0f) || !(f.cosView > 0.0f)) return out;
+    out.lobe = BsdfSample::Lobe::Specular;
+    out.direction = {l.x, l.y, l.z};
+    const float vis = shared::ggxSmithVisibility(f.cosView, cosL, f.alpha);
+    out.weight = b.specular * (4.0f * f.cosView * cosL * vis / (f.masking * float(b.pSpecular)));
+    return out;
 }
 
 }  // namespace
@@ -188,8 +249,9 @@ BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng, bool density) {
         out.delta = true;
         return out;
     }
+    if (!density) return sampleGgxSolver(b, GgxSampler::frameOf(b), rng);
     const float u1 = rng.next(), u2 = rng.next();
-    out.direction = sampleGgx(b, GgxSampler::frameOf(b), u1, u2);
+    out.direction = sampleGgx(b, doubleFrameOf(b), u1, u2);
     const double cosL = dot(n, out.direction);
     if (!(cosL > 0.0) || !(b.cosView > 0.0)) {  // below the face: lost (single scattering)
         out.lobe = Lobe::None;
@@ -199,7 +261,7 @@ BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng, bool density) {
     const double vis = shared::ggxSmithVisibility(float(b.cosView), float(cosL), b.alpha);
     out.weight = b.specular * float(4.0 * b.cosView * cosL * vis /
                                     (ggxMasking(b.cosView, b.alpha) * b.pSpecular));
-    if (density) out.pdf = b.pSpecular * ggxPdf(b, out.direction);
+    out.pdf = b.pSpecular * ggxPdf(b, out.direction);
     return out;
 }
 
@@ -227,28 +289,12 @@ double ggxDensity(const PathBsdf& b, Vec3d l) {
 GgxSampler::GgxSampler(const PathBsdf& b)
     : b_(b),
       ggx_(b.pSpecular == 1.0 && b.pTransmission == 0.0 && b.pDiffuse == 0.0 && !b.mirror()) {
-    if (ggx_) {
-        frame_ = frameOf(b);
-        frame_.masking = ggxMasking(b.cosView, b.alpha);
-    }
+    if (ggx_) frame_ = frameOf(b);
 }
 
 BsdfSample GgxSampler::sample(PathRng& rng) const {
-    if (!ggx_) return sampleBsdf(b_, rng, false);
-    // sampleBsdf's GGX branch for one lobe (no number drawn for the lobe).
-    const PathBsdf& b = b_;
-    BsdfSample out;
-    out.lobe = BsdfSample::Lobe::Specular;
-    const float u1 = rng.next(), u2 = rng.next();
-    out.direction = sampleGgx(b, frame_, u1, u2);
-    const double cosL = dot(frame_.n, out.direction);
-    if (!(cosL > 0.0) || !(b.cosView > 0.0)) {
-        out.lobe = BsdfSample::Lobe::None;
-        return out;
-    }
-    const double vis = shared::ggxSmithVisibility(float(b.cosView), float(cosL), b.alpha);
-    out.weight = b.specular * float(4.0 * b.cosView * cosL * vis / (frame_.masking * b.pSpecular));
-    return out;
+    // sampleBsdf(b, rng, false)'s GGX branch for one lobe (no number drawn for the lobe).
+    return ggx_ ? sampleGgxSolver(b_, frame_, rng) : sampleBsdf(b_, rng, false);
 }
 
 }  // namespace luxel::voxel

@@ -64,8 +64,10 @@ struct BsdfSample {
 
 // Picks a lobe and samples its direction. Draws one number for the lobe when more than one lobe
 // has a non-zero probability, then two for the direction when the lobe is diffuse or GGX.
-// `density` false leaves a GGX sample's pdf 0 (the real-time solvers' split sum reads only the
-// direction and weight, which are the same either way).
+// `density` false is the real-time solvers' form: a GGX sample's pdf is left 0 (their split sum
+// reads only the direction and weight) and its direction and weight are computed in float, as
+// the GPU computes them (src/gpu/shaders/shared/path_bsdf.h), within float rounding of the
+// double ones the path tracer draws (docs/algorithms/voxel-radiance-cascades.md §5).
 BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng, bool density = true);
 
 // The real-time solvers' GGX directions of one lobe, drawn one after another: for a
@@ -79,9 +81,11 @@ class GgxSampler {
     explicit GgxSampler(const PathBsdf& b);
     BsdfSample sample(PathRng& rng) const;
 
+    // The lobe's frame in float: the face's tangents and normal, the view, the visible normals'
+    // hemisphere (vh, t1, t2) and G1 of the view.
     struct Frame {
-        Vec3d tu, tv, n, vh, t1, t2;
-        double masking = 0.0;  // G1 of the view (set by the sampler)
+        Vec3 tu, tv, n, view, vh, t1, t2;
+        float alpha = 0.0f, cosView = 0.0f, masking = 0.0f;
     };
     static Frame frameOf(const PathBsdf& b);
 

@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "gpu/shaders/shared/near_emitters.h"
+#include "gpu/shaders/shared/optics.h"
+#include "gpu/shaders/shared/path_bsdf.h"
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/voxel/surface_cast.h"
 #include "voxel/path_trace_bsdf.h"
@@ -172,6 +174,39 @@ const SunSpiral& sunSpiral(const ShadeOptions& shading, int sunRays) {
     return c;
 }
 
+// The GGX highlight of one of the sun's rays on a specular-only lobe: bsdfLight(specular, l,
+// radiance, 0) (a delta light: S D Vis cos_l radiance) in float with the GPU's arithmetic
+// (pathBsdfLight, path_surface.glsl), the lobe's values converted once for the surface's rays
+// (docs/algorithms/voxel-radiance-cascades.md §5).
+class SunHighlight {
+  public:
+    explicit SunHighlight(const PathBsdf& b)
+        : on_(b.pSpecular > 0.0 && !b.mirror() && b.cosView > 0.0),
+          n_{float(b.normal.x), float(b.normal.y), float(b.normal.z)},
+          view_{float(b.view.x), float(b.view.y), float(b.view.z)},
+          alpha_(b.alpha),
+          cosView_(float(b.cosView)),
+          specular_(b.specular) {}
+
+    Rgb light(Vec3d l, Rgb radiance) const {
+        const Vec3 lf{float(l.x), float(l.y), float(l.z)};
+        const float cosL = dot(n_, lf);
+        if (!on_ || !(cosL > 0.0f)) return {};
+        const Vec3 h = normalize(view_ + lf);
+        const float cosH = dot(n_, h);
+        const Vec3 across = h - n_ * cosH;
+        const float reflectance = gpu::shared::pathGgxD(cosH, dot(across, across), alpha_) *
+                                  gpu::shared::ggxSmithVisibility(cosView_, cosL, alpha_);
+        return specular_ * radiance * (reflectance * cosL);
+    }
+
+  private:
+    bool on_;
+    Vec3 n_, view_;
+    float alpha_, cosView_;
+    Rgb specular_;
+};
+
 }  // namespace
 
 Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
@@ -185,6 +220,7 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
     const int rays = int(spiral.directions.size());
     const Rgb perRay = sun.radianceOverPdf(shading.sunIrradiance) * float(1.0 / rays);
     Rgb cosines, glossy;  // the sum of cos x transmittance; the smooth lobes' light
+    const SunHighlight highlight = specular ? SunHighlight(*specular) : SunHighlight(PathBsdf{});
     for (int i = 0; i < rays; ++i) {
         const Vec3d& l = spiral.directions[std::size_t(i)];
         const double cosSun = dot(n, l);
@@ -194,7 +230,7 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
         if (!(t.maxComponent() > 0.0f)) continue;
         cosines += t * float(cosSun);
         // Each ray of the disk is a delta light of its share (lightPdf 0: no MIS weight).
-        if (specular) glossy += bsdfLight(*specular, l, perRay, 0.0) * t;
+        if (specular) glossy += highlight.light(l, perRay) * t;
     }
     return diffuse * perRay * cosines * float(1.0 / kPi) + glossy;
 }

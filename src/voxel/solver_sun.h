@@ -62,9 +62,10 @@ Rgb faceRayTransmittance(const VoxelWorld& world, const TextureSet* textures, co
                          const ShadeOptions& shading, const FaceTarget& target);
 
 // The sun's light on a face, each shadow ray weighted by its sunRayTransmittance: the diffuse
-// lobe `diffuse` and, when given, the smooth lobes of `specular` (whose diffuse lobe must be off;
-// each ray a delta light of its share, bsdfLight) lit by the sun's disk over `sunRays` rays of
-// its spiral (one for a delta sun). No rays when neither lobe can reflect.
+// lobe `diffuse` and, when given, the GGX lobe of `specular` (whose diffuse lobe must be off;
+// each ray a delta light of its share, bsdfLight's highlight computed in float as on the GPU)
+// lit by the sun's disk over `sunRays` rays of its spiral (one for a delta sun). No rays when
+// neither lobe can reflect.
 Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
                    const PathBsdf* specular, const ShadeOptions& shading,
                    int sunRays = kSunDiskRays);

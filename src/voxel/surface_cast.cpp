@@ -16,11 +16,13 @@ Ray continueThroughVoxel(const Ray& ray, const Hit& hit) {
 
 SurfaceHit castToSurface(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
                          int stepCap, double tMax) {
-    SurfaceHit s;
-    Ray current = ray;
-    double tOffset = 0.0;  // t along `ray` of current.origin
+    // The first cast made straight into the result, the ray read where the caller keeps it:
+    // copying the ray in and the hit out read each with wider loads than they had been stored
+    // with, and those stalls were a few percent of the radiance cascades' picture
+    // (docs/algorithms/voxel-radiance-cascades.md §5). Continuations restart from a copy.
+    SurfaceHit s{.hit = castRay(world, ray, tMax, stepCap), .texel = Texel{}};
+    double tOffset = 0.0;  // t along `ray` of the cast's origin
     for (;;) {
-        s.hit = castRay(world, current, tMax - tOffset, stepCap);
         if (!s.hit.hit) return s;
         s.hit.t += tOffset;
         const Int3 v = s.hit.voxel;
@@ -42,9 +44,10 @@ SurfaceHit castToSurface(const VoxelWorld& world, const TextureSet* textures, co
         ++s.continuations;
         // Exits are computed from the original ray, so the nudges do not add up over many
         // continuations.
-        current = continueThroughVoxel(ray, s.hit);
+        const Ray current = continueThroughVoxel(ray, s.hit);
         const Vec3d& d = ray.direction;
         tOffset = dot(current.origin - ray.origin, d) / dot(d, d);
+        s.hit = castRay(world, current, tMax - tOffset, stepCap);
     }
 }
 

@@ -91,22 +91,14 @@ Result<FaceTable> FaceTable::build(const VoxelWorld& world, const TextureSet* te
     }
     const std::uint64_t capacity = std::bit_ceil(std::uint64_t(table.faces_.size()) * 2 + 16);
     table.mask_ = capacity - 1;
-    table.slotKeys_.assign(capacity, 0);
-    table.slotIds_.assign(capacity, -1);
+    table.slots_.assign(capacity, Slot{});
     for (int id = 0; id < table.size(); ++id) {
         const std::uint64_t k = table.key(table.faces_[id].voxel, table.faces_[id].normal);
         std::uint64_t slot = mix(k) & table.mask_;
-        while (table.slotKeys_[slot] != 0) slot = (slot + 1) & table.mask_;
-        table.slotKeys_[slot] = k + 1;
-        table.slotIds_[slot] = id;
+        while (table.slots_[slot].stored() != 0) slot = (slot + 1) & table.mask_;
+        table.slots_[slot] = {std::uint32_t(k + 1), std::uint32_t((k + 1) >> 32), id};
     }
     return table;
-}
-
-std::uint64_t FaceTable::key(Int3 v, int normal) const {
-    return ((std::uint64_t(v.z) * size_.y + std::uint64_t(v.y)) * size_.x + std::uint64_t(v.x)) *
-               6 +
-           std::uint64_t(normal);
 }
 
 int FaceTable::find(Int3 v, int normal) const {
@@ -115,13 +107,15 @@ int FaceTable::find(Int3 v, int normal) const {
     }
     const std::uint64_t k = key(v, normal) + 1;
     for (std::uint64_t slot = mix(k - 1) & mask_;; slot = (slot + 1) & mask_) {
-        if (slotKeys_[slot] == k) return slotIds_[slot];
-        if (slotKeys_[slot] == 0) return -1;
+        const Slot& s = slots_[slot];
+        const std::uint64_t stored = s.stored();
+        if (stored == k) return s.id;
+        if (stored == 0) return -1;
     }
 }
 
 std::uint64_t FaceTable::bytes() const {
-    return faces_.size() * sizeof(Face) + slotKeys_.size() * (sizeof(std::uint64_t) + 4);
+    return faces_.size() * sizeof(Face) + slots_.size() * sizeof(Slot);
 }
 
 Vec3d faceCentre(const Face& face) {
