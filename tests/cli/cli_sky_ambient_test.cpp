@@ -5,33 +5,15 @@
 
 #include <string>
 
-#include "luxel/core/image_io.h"
-#include "support/cli_fixture.h"
+#include "cli/thin_walls_cli.h"
 
 namespace {
 
+using luxel::test::meanOf;
 using luxel::test::runLuxel;
 using luxel::test::RunResult;
 
-class CliSkyAmbient : public luxel::test::CliFixture {
-  protected:
-    luxel::Image render(const std::string& name, const std::string& flags) {
-        const RunResult r = runLuxel("render " + kThinWalls + " --backend cpu --size 64x36 " +
-                                     flags + " --out " + path(name));
-        EXPECT_EQ(r.exitCode, 0) << r.output;
-        auto image = luxel::readExr(path(name));
-        EXPECT_TRUE(image.ok()) << name;
-        return image.ok() ? *image : luxel::Image{};
-    }
-
-    const std::string kThinWalls = std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/thin-walls.json";
-};
-
-double meanOf(const luxel::Image& image) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < image.size(); ++i) sum += image.data()[i];
-    return image.size() ? sum / double(image.size()) : 0.0;
-}
+class CliSkyAmbient : public luxel::test::ThinWallsCli {};
 
 TEST_F(CliSkyAmbient, RaysDarkenTheSealedRoom) {
     const luxel::Image constant = render("constant.exr", "--sky-ambient-rays 0");

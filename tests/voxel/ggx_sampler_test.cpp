@@ -26,6 +26,23 @@ void expectSame(const BsdfSample& a, const BsdfSample& b) {
     ASSERT_EQ(a.weight.b, b.weight.b);
 }
 
+// A specular-only GGX lobe on the face of normal n, seen from a random direction of `views`
+// flipped into the face's side and tilted a little off the face.
+PathBsdf specularLobe(Int3 n, float roughness, PathRng& views) {
+    Vec3d view{2.0 * views.next() - 1.0, 2.0 * views.next() - 1.0, 2.0 * views.next() - 1.0};
+    const Vec3d nd{double(n.x), double(n.y), double(n.z)};
+    if (dot(view, nd) < 0.0) view = view - nd * (2.0 * dot(view, nd));
+    view = normalize(view + nd * 0.05);
+    PathBsdf b;
+    b.normal = n;
+    b.view = view;
+    b.cosView = dot(nd, view);
+    b.alpha = roughness * roughness;
+    b.specular = Rgb(1.0f);
+    b.pSpecular = 1.0;
+    return b;
+}
+
 TEST(GgxSampler, DrawsSampleBsdfsDirectionsAndWeights) {
     const Int3 normals[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     PathRng views(7, 0, 0);
@@ -33,19 +50,7 @@ TEST(GgxSampler, DrawsSampleBsdfsDirectionsAndWeights) {
     for (const Int3 n : normals) {
         for (const float roughness : {0.12f, 0.4f, 0.7f, 1.0f}) {
             for (int v = 0; v < 16; ++v) {
-                // A view on the face's side: a random direction flipped into its hemisphere.
-                Vec3d view{2.0 * views.next() - 1.0, 2.0 * views.next() - 1.0,
-                           2.0 * views.next() - 1.0};
-                const Vec3d nd{double(n.x), double(n.y), double(n.z)};
-                if (dot(view, nd) < 0.0) view = view - nd * (2.0 * dot(view, nd));
-                view = normalize(view + nd * 0.05);
-                PathBsdf b;
-                b.normal = n;
-                b.view = view;
-                b.cosView = dot(nd, view);
-                b.alpha = roughness * roughness;
-                b.specular = Rgb(1.0f);
-                b.pSpecular = 1.0;
+                const PathBsdf b = specularLobe(n, roughness, views);
                 const GgxSampler sampler(b);
                 PathRng a(11, std::uint64_t(drawn), 0), c(11, std::uint64_t(drawn), 0);
                 for (int k = 0; k < 4; ++k) {
@@ -73,18 +78,7 @@ TEST(GgxSampler, FloatSamplesAreTheDoubleOnes) {
     for (const Int3 n : normals) {
         for (const float roughness : {0.02f, 0.12f, 0.4f, 1.0f}) {
             for (int v = 0; v < 16; ++v) {
-                Vec3d view{2.0 * views.next() - 1.0, 2.0 * views.next() - 1.0,
-                           2.0 * views.next() - 1.0};
-                const Vec3d nd{double(n.x), double(n.y), double(n.z)};
-                if (dot(view, nd) < 0.0) view = view - nd * (2.0 * dot(view, nd));
-                view = normalize(view + nd * 0.05);
-                PathBsdf b;
-                b.normal = n;
-                b.view = view;
-                b.cosView = dot(nd, view);
-                b.alpha = roughness * roughness;
-                b.specular = Rgb(1.0f);
-                b.pSpecular = 1.0;
+                const PathBsdf b = specularLobe(n, roughness, views);
                 const GgxSampler sampler(b);
                 for (int k = 0; k < 4; ++k) {
                     PathRng a(13, std::uint64_t(v), std::uint64_t(k));
@@ -93,6 +87,7 @@ TEST(GgxSampler, FloatSamplesAreTheDoubleOnes) {
                     const BsdfSample d = sampleBsdf(b, c, true);
                     // Only a direction within rounding of the horizon may fall on either side.
                     if (int(f.lobe) != int(d.lobe)) {
+                        const Vec3d nd{double(n.x), double(n.y), double(n.z)};
                         EXPECT_LT(std::abs(dot(nd, d.direction)), 1e-5) << roughness;
                         continue;
                     }
