@@ -297,6 +297,13 @@ void ModeVoxel::drawSurfacePanel() {
     touched |= ImGui::Checkbox("refraction (R)", &s.refraction);
     ImGui::SameLine();
     touched |= ImGui::Checkbox("normal maps (N)", &s.normalMaps);
+    if (s.lighting == voxel::ShadeOptions::Lighting::Physical) {
+        // The ray caster's sky light: traced with occlusion, or (0 rays) a constant share.
+        touched |= ImGui::SliderInt("sky ambient rays", &s.skyAmbientRays, 0, 64);
+        if (s.skyAmbientRays == 0) {
+            touched |= ImGui::SliderFloat("sky ambient share", &s.skyAmbient, 0.0f, 1.0f, "%.2f");
+        }
+    }
     const char* filters[] = {"nearest", "trilinear", "anisotropic"};
     touched |= enumCombo("texture filter (X)", s.textureFilter, filters);
     touched |= ImGui::SliderInt("samples per pixel (, .)", &s.samplesPerPixel, 1, 64);
