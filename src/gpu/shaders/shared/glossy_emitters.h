@@ -28,11 +28,8 @@ LUXEL_SHARED_BEGIN
 
 // The point at (u, v) in [0, 1)^2 of the span, uniform in area.
 LUXEL_FUNC vec3 emitterSpanPoint(CascadeNearEmitter e, EmitterSpan s, float u, float v) {
-    const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
-    vec3 p = emitterSpanCorner(e, s, 0);
-    p[a] = s.loA + u * (s.hiA - s.loA);
-    p[b] = s.loB + v * (s.hiB - s.loB);
-    return p;
+    return nearEmitterPlanePoint(int(e.normal / 2u), emitterPlaneCoordinate(e),
+                                 s.loA + u * (s.hiA - s.loA), s.loB + v * (s.hiB - s.loB));
 }
 
 // What a point x with axis-aligned face normal n picks a lamp by: its light there as from a
