@@ -156,8 +156,10 @@ MediumExit walkMedium(const VoxelWorld& world, Int3 cell, Vec3d origin, Vec3d di
             if (exitT[a] < tExit) tExit = exitT[a], axis = a;  // ties: the lowest axis, as the DDA
         }
         if (axis < 0) break;
-        Int3 outward{};
-        outward[axis] = direction[axis] > 0.0 ? 1 : -1;
+        // Vectors made whole, not stored into a component picked at run time (a stall of the
+        // store forwarding when they are read next).
+        const int sign = direction[axis] > 0.0 ? 1 : -1;
+        const Int3 outward{axis == 0 ? sign : 0, axis == 1 ? sign : 0, axis == 2 ? sign : 0};
         const Int3 next{e.cell.x + outward.x, e.cell.y + outward.y, e.cell.z + outward.z};
         const Voxel v = world.get(next.x, next.y, next.z);
         if (world.inside(next.x, next.y, next.z) && v.a == medium) {
@@ -168,11 +170,13 @@ MediumExit walkMedium(const VoxelWorld& world, Int3 cell, Vec3d origin, Vec3d di
         e.distance = tExit;
         e.outward = outward;
         e.intoSolid = v.solid();
+        double p[3];
         for (int a = 0; a < 3; ++a) {
-            e.point[a] = std::clamp(origin[a] + tExit * direction[a], double(e.cell[a]),
-                                    double(e.cell[a] + 1));
+            p[a] = std::clamp(origin[a] + tExit * direction[a], double(e.cell[a]),
+                              double(e.cell[a] + 1));
         }
-        e.point[axis] = e.cell[axis] + (outward[axis] > 0 ? 1 : 0);
+        const double face = e.cell[axis] + (sign > 0 ? 1 : 0);
+        e.point = {axis == 0 ? face : p[0], axis == 1 ? face : p[1], axis == 2 ? face : p[2]};
         return e;
     }
     // Unreachable for finite directions: every walk leaves the world.
