@@ -119,8 +119,8 @@ Rgb nearEmitterHighlight(const RadianceCascades::State& state, const Hit& hit,
     return nearEmitterHighlight(state, rays, specular);
 }
 
-float nearEmitterShare(const RadianceCascades::State& state, const Hit& hit, int face,
-                       Int3 voxel, Int3 normal) {
+float nearEmitterShare(const RadianceCascades::State& state, const Hit& hit, int face, Int3 voxel,
+                       Int3 normal) {
     const FaceData& faces = state.faces;
     if (faces.nearOffset.empty() || face < 0) return 0.0f;
     const std::uint32_t met = std::uint32_t(normalIndex(normal));

@@ -62,9 +62,9 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
     const Rgb sun = face >= 0 ? cascades::faceDirectSun(*state_, face) : Rgb{};
     Rgb emission = surface.emission;
     if (glossy && emission.maxComponent() > 0.0f) {
-        emission = emission * (1.0f - cascades::nearEmitterShare(*state_, *glossy->at,
-                                                                 glossy->atFace, s.hit.voxel,
-                                                                 s.hit.normal));
+        emission =
+            emission * (1.0f - cascades::nearEmitterShare(*state_, *glossy->at, glossy->atFace,
+                                                          s.hit.voxel, s.hit.normal));
         // A lamp the surface's light samples could have found: handed back for the balance
         // heuristic, out of the split sum.
         const double density =

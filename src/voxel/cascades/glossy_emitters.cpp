@@ -70,8 +70,7 @@ GlossyLamps buildGlossyLamps(const VoxelWorld& world, const MaterialTable& mater
     return out;
 }
 
-GlossyLampChoice::GlossyLampChoice(const RadianceCascades::State& state, const Hit& hit,
-                                   int face)
+GlossyLampChoice::GlossyLampChoice(const RadianceCascades::State& state, const Hit& hit, int face)
     : state_(state),
       hit_(hit),
       face_(face),
