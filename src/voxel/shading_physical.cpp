@@ -140,33 +140,43 @@ MediumExit walkMedium(const VoxelWorld& world, Int3 cell, Vec3d origin, Vec3d di
     MediumExit e;
     e.cell = cell;
     const int cap = size.x + size.y + size.z + 3;
+    // Exit t of the current cell on each axis, from the fixed origin (no drift); a step moves
+    // the cell on one axis only, so only that axis's exit is found again.
+    double exitT[3];
+    const auto exitAlong = [&](int a) {
+        if (direction[a] == 0.0) return kInfinity;
+        const double boundary = e.cell[a] + (direction[a] > 0.0 ? 1 : 0);
+        return std::max((boundary - origin[a]) / direction[a], 0.0);
+    };
+    for (int a = 0; a < 3; ++a) exitT[a] = exitAlong(a);
     for (int step = 0; step < cap; ++step) {
-        // Exit t of the current cell on each axis, from the fixed origin (no drift).
         int axis = -1;
         double tExit = kInfinity;
         for (int a = 0; a < 3; ++a) {
-            if (direction[a] == 0.0) continue;
-            const double boundary = e.cell[a] + (direction[a] > 0.0 ? 1 : 0);
-            const double t = std::max((boundary - origin[a]) / direction[a], 0.0);
-            if (t < tExit) tExit = t, axis = a;  // ties: the lowest axis, as the DDA steps
+            if (exitT[a] < tExit) tExit = exitT[a], axis = a;  // ties: the lowest axis, as the DDA
         }
         if (axis < 0) break;
-        Int3 outward{};
-        outward[axis] = direction[axis] > 0.0 ? 1 : -1;
+        // Vectors made whole, not stored into a component picked at run time (a stall of the
+        // store forwarding when they are read next).
+        const int sign = direction[axis] > 0.0 ? 1 : -1;
+        const Int3 outward{axis == 0 ? sign : 0, axis == 1 ? sign : 0, axis == 2 ? sign : 0};
         const Int3 next{e.cell.x + outward.x, e.cell.y + outward.y, e.cell.z + outward.z};
         const Voxel v = world.get(next.x, next.y, next.z);
         if (world.inside(next.x, next.y, next.z) && v.a == medium) {
             e.cell = next;
+            exitT[axis] = exitAlong(axis);
             continue;
         }
         e.distance = tExit;
         e.outward = outward;
         e.intoSolid = v.solid();
+        double p[3];
         for (int a = 0; a < 3; ++a) {
-            e.point[a] = std::clamp(origin[a] + tExit * direction[a], double(e.cell[a]),
-                                    double(e.cell[a] + 1));
+            p[a] = std::clamp(origin[a] + tExit * direction[a], double(e.cell[a]),
+                              double(e.cell[a] + 1));
         }
-        e.point[axis] = e.cell[axis] + (outward[axis] > 0 ? 1 : 0);
+        const double face = e.cell[axis] + (sign > 0 ? 1 : 0);
+        e.point = {axis == 0 ? face : p[0], axis == 1 ? face : p[1], axis == 2 ? face : p[2]};
         return e;
     }
     // Unreachable for finite directions: every walk leaves the world.

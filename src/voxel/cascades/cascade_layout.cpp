@@ -75,9 +75,9 @@ std::uint64_t cascadeBytes(const std::vector<Level>& levels, std::int64_t faces,
         bytes += entries / 4 * 12;                                      // child means
         bytes += std::uint64_t(levels[k].probeCount()) * sizeof(Corners);
     }
-    // Its bins x 8 codes, plus its colours, corners and radiance cache.
+    // Its bins x 8 codes, plus its colours, corners, radiance cache and neighbours' ids.
     bytes += std::uint64_t(faces) *
-             (std::uint64_t(binsPerFace) * 8 * 4 + sizeof(Corners) + 6 * 12 + 4 + 4 + 24);
+             (std::uint64_t(binsPerFace) * 8 * 4 + sizeof(Corners) + 6 * 12 + 4 + 4 + 24 + 32);
     return bytes;
 }
 

@@ -119,12 +119,10 @@ Rgb nearEmitterHighlight(const RadianceCascades::State& state, const Hit& hit,
     return nearEmitterHighlight(state, rays, specular);
 }
 
-float nearEmitterShare(const RadianceCascades::State& state, const Hit& hit, Int3 voxel,
+float nearEmitterShare(const RadianceCascades::State& state, const Hit& hit, int face, Int3 voxel,
                        Int3 normal) {
     const FaceData& faces = state.faces;
-    if (faces.nearOffset.empty()) return 0.0f;
-    const int face = faces.table.find(hit.voxel, normalIndex(hit.normal));
-    if (face < 0) return 0.0f;
+    if (faces.nearOffset.empty() || face < 0) return 0.0f;
     const std::uint32_t met = std::uint32_t(normalIndex(normal));
     for (std::uint32_t i = faces.nearOffset[face]; i < faces.nearOffset[face + 1]; ++i) {
         const shared::CascadeNearEmitter& e = faces.nearEmitters[i];

@@ -62,8 +62,9 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
     const Rgb sun = face >= 0 ? cascades::faceDirectSun(*state_, face) : Rgb{};
     Rgb emission = surface.emission;
     if (glossy && emission.maxComponent() > 0.0f) {
-        emission = emission * (1.0f - cascades::nearEmitterShare(*state_, *glossy->at, s.hit.voxel,
-                                                                 s.hit.normal));
+        emission =
+            emission * (1.0f - cascades::nearEmitterShare(*state_, *glossy->at, glossy->atFace,
+                                                          s.hit.voxel, s.hit.normal));
         // A lamp the surface's light samples could have found: handed back for the balance
         // heuristic, out of the split sum.
         const double density =
@@ -107,13 +108,14 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
         kPictureSunRays, kPictureSpecularRays};
     // The near emitters' glossy highlight light-sampled, their GGX rays keeping the rest; the
     // lamps beyond, light-sampled and met by the GGX rays, weighed by the balance heuristic.
-    cascades::GlossyLampChoice lamps(*state_, s.hit);
+    cascades::GlossyLampChoice lamps(*state_, s.hit, face);
     struct Glossy {
         const RadianceCascades* cascades;
         PathRng* rng;
         const Hit* at;
+        int atFace;
         cascades::GlossyLampChoice* lamps;
-    } glossy{this, &rng, &s.hit, faces.glossy.empty() ? nullptr : &lamps};
+    } glossy{this, &rng, &s.hit, face, faces.glossy.empty() ? nullptr : &lamps};
     if (!faces.nearOffset.empty() || glossy.lamps) {
         if (!faces.nearOffset.empty()) {
             light.nearHighlight = [this, &nearRays](const PathBsdf& specular) {
@@ -121,7 +123,7 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
             };
         }
         light.glossyAlong = [&glossy](const Ray& r) {
-            cascades::GlossyRay g{glossy.at, glossy.lamps, {}};
+            cascades::GlossyRay g{glossy.at, glossy.atFace, glossy.lamps, {}};
             const Rgb rest = glossy.cascades->reflectedLight(r, false, 0, *glossy.rng, &g);
             return GlossyAlong{rest, g.met.emission, g.met.lightDensity};
         };

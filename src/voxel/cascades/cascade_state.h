@@ -209,9 +209,9 @@ Rgb nearEmitterHighlight(const RadianceCascades::State& state, const Hit& hit,
 Rgb nearEmitterHighlight(const RadianceCascades::State& state, NearEmitterRays& rays,
                          const PathBsdf& specular);
 // The nearEmitterWeight at `hit` of the emitting face (voxel, normal) when it is in the near list
-// of hit's face; 0 when it is not.
-float nearEmitterShare(const RadianceCascades::State& state, const Hit& hit, Int3 voxel,
-                       Int3 normal);
+// of hit's face `hitFace` (its id in the face table, -1: none); 0 when it is not.
+float nearEmitterShare(const RadianceCascades::State& state, const Hit& hit, int hitFace,
+                       Int3 voxel, Int3 normal);
 // One lighting pass (cascade_light.cpp); returns the relative change of total irradiance.
 double lightingPass(RadianceCascades::State& state);
 

@@ -70,9 +70,10 @@ GlossyLamps buildGlossyLamps(const VoxelWorld& world, const MaterialTable& mater
     return out;
 }
 
-GlossyLampChoice::GlossyLampChoice(const RadianceCascades::State& state, const Hit& hit)
+GlossyLampChoice::GlossyLampChoice(const RadianceCascades::State& state, const Hit& hit, int face)
     : state_(state),
       hit_(hit),
+      face_(face),
       point_(float(hit.point.x), float(hit.point.y), float(hit.point.z)),
       normal_(float(hit.normal.x), float(hit.normal.y), float(hit.normal.z)) {}
 
@@ -85,9 +86,11 @@ void GlossyLampChoice::choose() {
     for (int k = 0; k < LUXEL_GLOSSY_PICKS; ++k) {
         const std::uint32_t i = g.picks[std::size_t(cell) * LUXEL_GLOSSY_PICKS + k];
         if (i == LUXEL_GLOSSY_NO_PICK) break;
-        const float w = shared::glossyPickWeight(point_, normal_, g.lamps[i]);
+        const shared::EmitterSpan span = shared::emitterSpanInFront(point_, normal_, g.lamps[i]);
+        const float w = shared::glossyPickWeightOf(point_, normal_, g.lamps[i], span);
         if (!(w > 0.0f)) continue;
         index_[count_] = i;
+        span_[count_] = span;
         weight_[count_] = w;
         total_ += w;
         ++count_;
@@ -104,8 +107,7 @@ double GlossyLampChoice::density(Int3 voxel, Int3 normal, Vec3d y) {
                                                          {voxel.x, voxel.y, voxel.z})) {
             continue;
         }
-        const shared::EmitterSpan span = shared::emitterSpanInFront(point_, normal_, e);
-        return double(weight_[k] / total_ * shared::emitterSpanDensity(e, span, point_, at));
+        return double(weight_[k] / total_ * shared::emitterSpanDensity(e, span_[k], point_, at));
     }
     return 0.0;
 }
@@ -128,7 +130,7 @@ Rgb GlossyLampChoice::sample(const PathBsdf& specular, int lobeRays, PathRng& rn
             }
         }
         const shared::CascadeNearEmitter& e = state_.faces.glossy.lamps[index_[k]];
-        const shared::EmitterSpan span = shared::emitterSpanInFront(point_, normal_, e);
+        const shared::EmitterSpan& span = span_[k];
         const shared::vec3 y = shared::emitterSpanPoint(e, span, u1, u2);
         const float lightPdf = weight_[k] / total_ * shared::emitterSpanDensity(e, span, point_, y);
         if (!(lightPdf > 0.0f)) continue;
@@ -145,7 +147,7 @@ Rgb GlossyLampChoice::sample(const PathBsdf& specular, int lobeRays, PathRng& rn
                                       {seen.voxel.x, seen.voxel.y, seen.voxel.z})) {
             continue;
         }
-        const float share = 1.0f - nearEmitterShare(state_, hit_, seen.voxel, seen.normal);
+        const float share = 1.0f - nearEmitterShare(state_, hit_, face_, seen.voxel, seen.normal);
         if (!(share > 0.0f)) continue;
         const float lobePdf = float(ggxDensity(specular, dir));
         const float balance = shared::glossyBalance(

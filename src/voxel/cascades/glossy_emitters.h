@@ -51,7 +51,8 @@ struct GlossyLampHit {
 // found when first asked for (only glossy surfaces ask).
 class GlossyLampChoice {
   public:
-    GlossyLampChoice(const RadianceCascades::State& state, const Hit& hit);
+    // `face`: the hit's face id in the face table (-1: none), for nearEmitterShare.
+    GlossyLampChoice(const RadianceCascades::State& state, const Hit& hit, int face);
 
     // The density, in solid angle at the hit, with which the light samples find the point y on
     // face (voxel, normal); 0 when no pick holds it.
@@ -65,11 +66,14 @@ class GlossyLampChoice {
     void choose();
     const RadianceCascades::State& state_;
     const Hit& hit_;
+    int face_;
     gpu::shared::vec3 point_, normal_;
     bool chosen_ = false;
     int count_ = 0;
     std::uint32_t index_[LUXEL_GLOSSY_PICKS];
     float weight_[LUXEL_GLOSSY_PICKS];
+    // Each pick's part in front of the point, as its weight was found with.
+    gpu::shared::EmitterSpan span_[LUXEL_GLOSSY_PICKS];
     float total_ = 0.0f;
 };
 
@@ -77,6 +81,7 @@ class GlossyLampChoice {
 // surface's hit (its near list), its choice of lamps (null: none) and what the ray met of them.
 struct GlossyRay {
     const Hit* at = nullptr;
+    int atFace = -1;  // the hit's face id (-1: none)
     GlossyLampChoice* lamps = nullptr;
     GlossyLampHit met;
 };

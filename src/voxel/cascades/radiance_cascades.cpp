@@ -147,11 +147,18 @@ Rgb cascades::interpolatedIrradiance(const FaceData& faces, const std::vector<Rg
     const double fa = point[a] - voxel[a] - 0.5, fb = point[b] - voxel[b] - 0.5;
     const int da = fa < 0.0 ? -1 : 1, db = fb < 0.0 ? -1 : 1;
     const double wa = std::abs(fa), wb = std::abs(fb);
-    Int3 va = voxel, vb = voxel, vab = voxel;
-    va[a] += da, vb[b] += db, vab[a] += da, vab[b] += db;
-    const int self = faces.table.find(voxel, n), sideA = faces.table.find(va, n),
-              sideB = faces.table.find(vb, n);
-    const int diagonal = (sideA >= 0 || sideB >= 0) ? faces.table.find(vab, n) : -1;
+    const FaceTable& table = faces.table;
+    const int self = table.find(voxel, n);
+    int sideA, sideB, diagonal;
+    if (self >= 0) {  // its neighbours found when the table was built
+        sideA = table.neighbour(self, da, 0), sideB = table.neighbour(self, 0, db);
+        diagonal = (sideA >= 0 || sideB >= 0) ? table.neighbour(self, da, db) : -1;
+    } else {
+        Int3 va = voxel, vb = voxel, vab = voxel;
+        va[a] += da, vb[b] += db, vab[a] += da, vab[b] += db;
+        sideA = table.find(va, n), sideB = table.find(vb, n);
+        diagonal = (sideA >= 0 || sideB >= 0) ? table.find(vab, n) : -1;
+    }
     if (face) *face = self;
     const int ids[4] = {self, sideA, sideB, diagonal};
     const double weights[4] = {(1 - wa) * (1 - wb), wa * (1 - wb), (1 - wa) * wb, wa * wb};

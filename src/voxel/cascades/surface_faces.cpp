@@ -4,6 +4,7 @@
 #include <bit>
 #include <string>
 
+#include "luxel/core/parallel.h"
 #include "octahedral_bins.h"
 
 namespace luxel::voxel::cascades {
@@ -98,6 +99,22 @@ Result<FaceTable> FaceTable::build(const VoxelWorld& world, const TextureSet* te
         while (table.slots_[slot].stored() != 0) slot = (slot + 1) & table.mask_;
         table.slots_[slot] = {std::uint32_t(k + 1), std::uint32_t((k + 1) >> 32), id};
     }
+    table.neighbours_.resize(table.faces_.size() * 8);
+    parallelForRange(table.size(), 1024, [&](int begin, int end) {
+        for (int id = begin; id < end; ++id) {
+            const Face& f = table.faces_[id];
+            const int axis = f.normal / 2, a = (axis + 1) % 3, b = (axis + 2) % 3;
+            std::int32_t* out = &table.neighbours_[std::size_t(id) * 8];
+            for (int db = -1; db <= 1; ++db) {
+                for (int da = -1; da <= 1; ++da) {
+                    if (da == 0 && db == 0) continue;
+                    Int3 v = f.voxel;
+                    v[a] += da, v[b] += db;
+                    *out++ = table.find(v, f.normal);
+                }
+            }
+        }
+    });
     return table;
 }
 
@@ -115,7 +132,8 @@ int FaceTable::find(Int3 v, int normal) const {
 }
 
 std::uint64_t FaceTable::bytes() const {
-    return faces_.size() * sizeof(Face) + slots_.size() * sizeof(Slot);
+    return faces_.size() * sizeof(Face) + slots_.size() * sizeof(Slot) +
+           neighbours_.size() * sizeof(std::int32_t);
 }
 
 Vec3d faceCentre(const Face& face) {

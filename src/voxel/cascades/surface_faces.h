@@ -36,6 +36,13 @@ class FaceTable {
     const std::vector<Face>& faces() const { return faces_; }
     // The face's id, or -1 when (voxel, normal) is not in the table.
     int find(Int3 voxel, int normal) const;
+    // find() of face `id`'s neighbour in its plane, da and db (-1..1, not both 0) voxels along
+    // its plane's axes a = (axis + 1) % 3 and b = (axis + 2) % 3, with the same normal: found once
+    // when built, as the picture's interpolation reads them at every hit (§5).
+    int neighbour(int id, int da, int db) const {
+        const int k = (db + 1) * 3 + (da + 1);
+        return neighbours_[std::size_t(id) * 8 + std::size_t(k - (k > 4))];
+    }
     std::uint64_t bytes() const;
 
   private:
@@ -57,6 +64,7 @@ class FaceTable {
     Int3 size_;
     std::vector<Face> faces_;
     std::vector<Slot> slots_;
+    std::vector<std::int32_t> neighbours_;  // 8 per face, by neighbour()'s order
     std::uint64_t mask_ = 0;
 };
 

@@ -84,14 +84,19 @@ LUXEL_FUNC float emitterSpanArea(EmitterSpan s) {
     return max(s.hiA - s.loA, 0.0f) * max(s.hiB - s.loB, 0.0f);
 }
 
+// The coordinate of the emitter's plane on its axis (its voxels' far side for an outward normal
+// towards +axis).
+LUXEL_FUNC float emitterPlaneCoordinate(CascadeNearEmitter e) {
+    const int axis = int(e.normal / 2u);
+    const float c = float(axis == 0 ? e.x : (axis == 1 ? e.y : e.z));
+    return (e.normal & 1u) == 0u ? c + 1.0f : c;
+}
+
 // Corner `i` (0..3, in order around it, as nearEmitterCorner) of the span on the emitter's plane.
 LUXEL_FUNC vec3 emitterSpanCorner(CascadeNearEmitter e, EmitterSpan s, int i) {
-    const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
-    vec3 c = vec3(float(e.x), float(e.y), float(e.z));
-    if ((e.normal & 1u) == 0u) c[axis] += 1.0f;
-    c[a] = (i == 1 || i == 2) ? s.hiA : s.loA;
-    c[b] = (i == 2 || i == 3) ? s.hiB : s.loB;
-    return c;
+    return nearEmitterPlanePoint(int(e.normal / 2u), emitterPlaneCoordinate(e),
+                                 (i == 1 || i == 2) ? s.hiA : s.loA,
+                                 (i == 2 || i == 3) ? s.hiB : s.loB);
 }
 
 // The unoccluded light of the span at `x` (receiving normal `n`), Lambert's contour integral
@@ -115,11 +120,8 @@ LUXEL_FUNC vec3 emitterRayTarget(CascadeNearEmitter e, EmitterSpan s, int i, int
     const float u = (float(i) + 0.5f) / float(n);
     const float t = (float(i) + 0.5f) * 0.6180339887f;
     const float v = t - floor(t);
-    const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
-    vec3 p = emitterSpanCorner(e, s, 0);
-    p[a] = s.loA + u * (s.hiA - s.loA);
-    p[b] = s.loB + v * (s.hiB - s.loB);
-    return p;
+    return nearEmitterPlanePoint(int(e.normal / 2u), emitterPlaneCoordinate(e),
+                                 s.loA + u * (s.hiA - s.loA), s.loB + v * (s.hiB - s.loB));
 }
 
 // The grid cell holding point p (clamped into the grid of `cells` cells per axis).

@@ -28,11 +28,8 @@ LUXEL_SHARED_BEGIN
 
 // The point at (u, v) in [0, 1)^2 of the span, uniform in area.
 LUXEL_FUNC vec3 emitterSpanPoint(CascadeNearEmitter e, EmitterSpan s, float u, float v) {
-    const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
-    vec3 p = emitterSpanCorner(e, s, 0);
-    p[a] = s.loA + u * (s.hiA - s.loA);
-    p[b] = s.loB + v * (s.hiB - s.loB);
-    return p;
+    return nearEmitterPlanePoint(int(e.normal / 2u), emitterPlaneCoordinate(e),
+                                 s.loA + u * (s.hiA - s.loA), s.loB + v * (s.hiB - s.loB));
 }
 
 // What a point x with axis-aligned face normal n picks a lamp by: its light there as from a
@@ -40,8 +37,8 @@ LUXEL_FUNC vec3 emitterSpanPoint(CascadeNearEmitter e, EmitterSpan s, float u, f
 // d^2 + area for d^2 so that a lamp next to x stays finite (any weight keeps the estimator
 // unbiased, the GGX rays taking alone what it leaves out; the exact contour integral costs 4
 // arc tangents a lamp at every glossy pixel). 0: never picked (behind x, facing away).
-LUXEL_FUNC float glossyPickWeight(vec3 x, vec3 n, CascadeNearEmitter e) {
-    const EmitterSpan s = emitterSpanInFront(x, n, e);
+// `s`: the lamp's part in front of x, emitterSpanInFront(x, n, e).
+LUXEL_FUNC float glossyPickWeightOf(vec3 x, vec3 n, CascadeNearEmitter e, EmitterSpan s) {
     const float area = emitterSpanArea(s);
     if (!(area > 0.0f)) return 0.0f;
     const vec3 d = emitterSpanPoint(e, s, 0.5f, 0.5f) - x;
@@ -49,6 +46,10 @@ LUXEL_FUNC float glossyPickWeight(vec3 x, vec3 n, CascadeNearEmitter e) {
     if (!(towardsX > 0.0f) || !(fromX > 0.0f)) return 0.0f;
     const float r2 = dot(d, d) + area;
     return max(e.r, max(e.g, e.b)) * area * towardsX * fromX / (r2 * r2);
+}
+
+LUXEL_FUNC float glossyPickWeight(vec3 x, vec3 n, CascadeNearEmitter e) {
+    return glossyPickWeightOf(x, n, e, emitterSpanInFront(x, n, e));
 }
 
 // The density in solid angle, at x, of a uniform point y of the span: |y - x|^2 / (area cos_y);

@@ -67,6 +67,13 @@ LUXEL_FUNC float nearEmitterWeight(float d, float inner, float outer) {
     return 1.0f - t * t * (3.0f - 2.0f * t);
 }
 
+// The point with coordinate `n` on `axis` and `pa`, `pb` on a = (axis + 1) % 3 and
+// b = (axis + 2) % 3, made whole: storing into a component picked at run time, then reading the
+// vector, stalls the CPU's store forwarding (docs/algorithms/voxel-radiance-cascades.md §5).
+LUXEL_FUNC vec3 nearEmitterPlanePoint(int axis, float n, float pa, float pb) {
+    return axis == 0 ? vec3(n, pa, pb) : (axis == 1 ? vec3(pb, n, pa) : vec3(pa, pb, n));
+}
+
 LUXEL_FUNC vec3 nearEmitterNormal(uint normal) {
     const float outward = (normal & 1u) == 0u ? 1.0f : -1.0f;
     const uint axis = normal / 2u;
@@ -77,25 +84,22 @@ LUXEL_FUNC vec3 nearEmitterNormal(uint normal) {
 // The emitting face's centre, or with `quarter` 0..3 the centre of that quarter (faceCentre,
 // faceQuarterCentre: where the visibility rays aim).
 LUXEL_FUNC vec3 nearEmitterPoint(CascadeNearEmitter e, int quarter) {
-    vec3 p = vec3(float(e.x) + 0.5f, float(e.y) + 0.5f, float(e.z) + 0.5f) +
-             nearEmitterNormal(e.normal) * 0.5f;
-    if (quarter >= 0) {
-        const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
-        p[a] += (quarter & 1) != 0 ? 0.25f : -0.25f;
-        p[b] += (quarter & 2) != 0 ? 0.25f : -0.25f;
-    }
-    return p;
+    const vec3 p = vec3(float(e.x) + 0.5f, float(e.y) + 0.5f, float(e.z) + 0.5f) +
+                   nearEmitterNormal(e.normal) * 0.5f;
+    if (quarter < 0) return p;
+    const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
+    return nearEmitterPlanePoint(axis, p[axis], p[a] + ((quarter & 1) != 0 ? 0.25f : -0.25f),
+                                 p[b] + ((quarter & 2) != 0 ? 0.25f : -0.25f));
 }
 
 // Point `sub` (0 .. side^2 - 1) of a side x side grid of cell centres over quarter `quarter` of
 // the emitting face (the highlight's points).
 LUXEL_FUNC vec3 nearEmitterQuarterPoint(CascadeNearEmitter e, int quarter, int sub, int side) {
-    vec3 p = nearEmitterPoint(e, quarter);
+    const vec3 p = nearEmitterPoint(e, quarter);
     const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
     const float cell = 0.5f / float(side);
-    p[a] += (float(sub % side) + 0.5f) * cell - 0.25f;
-    p[b] += (float(sub / side) + 0.5f) * cell - 0.25f;
-    return p;
+    return nearEmitterPlanePoint(axis, p[axis], p[a] + ((float(sub % side) + 0.5f) * cell - 0.25f),
+                                 p[b] + ((float(sub / side) + 0.5f) * cell - 0.25f));
 }
 
 // Points a side of each quarter for the highlight seen through a GGX lobe of `alpha` from
@@ -111,11 +115,10 @@ LUXEL_FUNC int nearHighlightSide(float distance, float alpha) {
 // Corner `i` (0..3, in order around it) of the emitting face (faceCorners, cascade_emitters.cpp).
 LUXEL_FUNC vec3 nearEmitterCorner(CascadeNearEmitter e, int i) {
     const int axis = int(e.normal / 2u), a = (axis + 1) % 3, b = (axis + 2) % 3;
-    vec3 c = vec3(float(e.x), float(e.y), float(e.z));
-    if ((e.normal & 1u) == 0u) c[axis] += 1.0f;
-    if (i == 1 || i == 2) c[a] += 1.0f;
-    if (i == 2 || i == 3) c[b] += 1.0f;
-    return c;
+    const vec3 c = vec3(float(e.x), float(e.y), float(e.z));
+    return nearEmitterPlanePoint(axis, (e.normal & 1u) == 0u ? c[axis] + 1.0f : c[axis],
+                                 (i == 1 || i == 2) ? c[a] + 1.0f : c[a],
+                                 (i == 2 || i == 3) ? c[b] + 1.0f : c[b]);
 }
 
 // Lambert's contour integral without L over the quadrilateral c0..c3 (in order around it): the
