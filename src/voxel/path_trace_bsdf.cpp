@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gpu/shaders/shared/face_frame.h"
 #include "gpu/shaders/shared/optics.h"
 #include "gpu/shaders/shared/path_bsdf.h"
 #include "path_trace_surface.h"
@@ -31,14 +32,11 @@ double mean(Rgb c) {
     return (double(c.r) + double(c.g) + double(c.b)) / 3.0;
 }
 
-// The face's tangents (any orthonormal pair: GGX is isotropic).
+// The face's tangents (shared/face_frame.h; any orthonormal pair would do: GGX is isotropic).
 void faceFrame(Int3 normal, Vec3d& tu, Vec3d& tv) {
-    tu = {0, 0, 1}, tv = {0, 1, 0};
-    if (normal.y != 0) {
-        tu = {1, 0, 0}, tv = {0, 0, 1};
-    } else if (normal.z != 0) {
-        tu = {1, 0, 0}, tv = {0, 1, 0};
-    }
+    const shared::vec3 u = shared::faceTangentU({normal.x, normal.y, normal.z});
+    const shared::vec3 v = shared::faceTangentV({normal.x, normal.y, normal.z});
+    tu = {u.x, u.y, u.z}, tv = {v.x, v.y, v.z};
 }
 
 // GGX D for the half vector's cosine (and sine squared) to the normal.

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "gpu/shaders/shared/face_frame.h"
 #include "gpu/shaders/shared/sky_ambient.h"
 #include "gpu/shaders/shared/voxel_shading.h"
 #include "luxel/core/tonemap.h"
@@ -46,16 +47,11 @@ Rgb colourOf(Voxel v) {
     return {srgbToLinear(v.r / 255.0f), srgbToLinear(v.g / 255.0f), srgbToLinear(v.b / 255.0f)};
 }
 
-// The face's tangent frame, matching the (u, v) of castRay (voxel_walk.h): x faces use (z, y),
-// y faces (x, z), z faces (x, y), whatever the normal's sign.
+// The face's tangent frame, matching the (u, v) of castRay (voxel_walk.h; shared/face_frame.h).
 void faceTangents(Int3 normal, Vec3d& tu, Vec3d& tv) {
-    if (normal.x != 0) {
-        tu = {0, 0, 1}, tv = {0, 1, 0};
-    } else if (normal.y != 0) {
-        tu = {1, 0, 0}, tv = {0, 0, 1};
-    } else {
-        tu = {1, 0, 0}, tv = {0, 1, 0};
-    }
+    const shared::vec3 u = shared::faceTangentU({normal.x, normal.y, normal.z});
+    const shared::vec3 v = shared::faceTangentV({normal.x, normal.y, normal.z});
+    tu = {u.x, u.y, u.z}, tv = {v.x, v.y, v.z};
 }
 
 struct PathRay {

@@ -6,6 +6,7 @@
 #ifndef LUXEL_GPU_SHARED_SKY_AMBIENT_H
 #define LUXEL_GPU_SHARED_SKY_AMBIENT_H
 
+#include "face_frame.h"
 #include "glsl_compat.h"
 #include "optics.h"
 
@@ -18,18 +19,11 @@
 LUXEL_SHARED_BEGIN
 
 // A cosine-distributed unit direction about the axis-aligned face normal from two uniform numbers
-// in [0, 1) (pdf cos / π), in the face frame of the path tracer's cosineDirection (x faces (z, y),
-// y faces (x, z), z faces (x, y)), in float: u1 < 1, so the ray leaves the face.
+// in [0, 1) (pdf cos / π), in the face's frame (face_frame.h, as the path tracer's
+// cosineDirection), in float: u1 < 1, so the ray leaves the face.
 LUXEL_FUNC vec3 skyAmbientDirection(ivec3 normal, float u1, float u2) {
-    vec3 tu = vec3(0.0f, 0.0f, 1.0f);
-    vec3 tv = vec3(0.0f, 1.0f, 0.0f);
-    if (normal.y != 0) {
-        tu = vec3(1.0f, 0.0f, 0.0f);
-        tv = vec3(0.0f, 0.0f, 1.0f);
-    } else if (normal.z != 0) {
-        tu = vec3(1.0f, 0.0f, 0.0f);
-        tv = vec3(0.0f, 1.0f, 0.0f);
-    }
+    const vec3 tu = faceTangentU(normal);
+    const vec3 tv = faceTangentV(normal);
     const float r = sqrt(u1);
     const float phi = 2.0f * LUXEL_OPTICS_PI * u2;
     const float z = sqrt(1.0f - u1);

@@ -5,6 +5,7 @@
 // kernels are shared/path_bsdf.h. Needs castToSurface's SurfaceHit, albedo(), textureFactor(),
 // materials[] and materialIndex() (voxel_shading.glsl, voxel_physical.glsl), `path`
 // (PathTracePush) and pathRngNext (shared/path_rng.h).
+#include "shared/face_frame.h"
 
 struct PathSurface {
     vec3 albedo;
@@ -129,15 +130,8 @@ vec3 pathBsdfLight(PathBsdf b, vec3 l, vec3 radiance, float lightPdf) {
 
 // The face's tangents (cosineDirection's and the GGX frame of path_trace_bsdf.cpp).
 void pathFaceFrame(ivec3 normal, out vec3 tu, out vec3 tv) {
-    tu = vec3(0.0, 0.0, 1.0);
-    tv = vec3(0.0, 1.0, 0.0);
-    if (normal.y != 0) {
-        tu = vec3(1.0, 0.0, 0.0);
-        tv = vec3(0.0, 0.0, 1.0);
-    } else if (normal.z != 0) {
-        tu = vec3(1.0, 0.0, 0.0);
-        tv = vec3(0.0, 1.0, 0.0);
-    }
+    tu = faceTangentU(normal);
+    tv = faceTangentV(normal);
 }
 
 #define LUXEL_PATH_LOBE_NONE 0

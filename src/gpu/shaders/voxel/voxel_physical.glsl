@@ -7,6 +7,7 @@
 // alone (LUXEL_VOXEL_EMITTER_BINDINGS). Sky ambient with occlusion (params.skyAmbientRays) is
 // sky_ambient.glsl's, its numbers keyed by the camera sample. Included by voxel_shading.glsl
 // after castToSurface, skyColor and textureFactor.
+#include "shared/face_frame.h"
 
 struct PathRay {
     vec3 origin;
@@ -22,16 +23,8 @@ struct PathRay {
 // The face's tangent frame, matching castRay's (u, v): x faces use (z, y), y faces (x, z), z faces
 // (x, y), whatever the normal's sign (faceTangents in shading_physical.cpp).
 void faceTangents(ivec3 normal, out vec3 tu, out vec3 tv) {
-    if (normal.x != 0) {
-        tu = vec3(0.0, 0.0, 1.0);
-        tv = vec3(0.0, 1.0, 0.0);
-    } else if (normal.y != 0) {
-        tu = vec3(1.0, 0.0, 0.0);
-        tv = vec3(0.0, 0.0, 1.0);
-    } else {
-        tu = vec3(1.0, 0.0, 0.0);
-        tv = vec3(0.0, 1.0, 0.0);
-    }
+    tu = faceTangentU(normal);
+    tv = faceTangentV(normal);
 }
 
 // sunVisibility in shading_physical.cpp: 0 facing away, 1 without shadows, else the options'
