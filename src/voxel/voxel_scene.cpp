@@ -467,6 +467,13 @@ Result<VoxelScene> voxelSceneFromJson(const json::Json& root, std::string_view t
                          {},
                          std::move(warnings)};
         if (const Json* p = find(root, "post")) scene.post = post::postOptionsFromJson(*p, "post");
+        if (const Json* render = find(root, "render");
+            render && find(*render, "sky_ambient") && scene.shading.skyAmbientRays > 0) {
+            // The traced sky replaces the assumed share (docs/algorithms/voxel-surfaces.md).
+            scene.warnings.push_back(path +
+                                     ": render.sky_ambient is not used: render.sky_ambient_rays "
+                                     "traces the sky the faces see");
+        }
         return scene;
     } catch (const Invalid& invalid) {
         return json::locate(invalid, text, path);

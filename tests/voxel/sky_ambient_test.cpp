@@ -177,9 +177,17 @@ TEST(SkyAmbient, SceneFieldIsReadAndChecked) {
     ASSERT_TRUE(scene.ok()) << scene.error().message();
     EXPECT_EQ(scene->shading.skyAmbientRays, 24);
     EXPECT_EQ(scene->shading.skyAmbient, 0.3f);
+    // The share is then unused, and the scene says so.
+    ASSERT_EQ(scene->warnings.size(), 1u);
+    EXPECT_NE(scene->warnings[0].find("render.sky_ambient is not used"), std::string::npos)
+        << scene->warnings[0];
+    scene = parseVoxelScene(head + R"({"sky_ambient": 0.3, "sky_ambient_rays": 0}})", "s");
+    ASSERT_TRUE(scene.ok());
+    EXPECT_TRUE(scene->warnings.empty());
     scene = parseVoxelScene(head + "{}}", "s");
     ASSERT_TRUE(scene.ok());
     EXPECT_EQ(scene->shading.skyAmbientRays, 0);
+    EXPECT_TRUE(scene->warnings.empty());
     for (const char* bad : {R"({"sky_ambient_rays": -1}})", R"({"sky_ambient_rays": 257}})",
                             R"({"sky_ambient_rays": 2.5}})", R"({"sky_ambient_rays": "8"}})"}) {
         auto s = parseVoxelScene(head + bad, "bad.json");
