@@ -103,14 +103,9 @@ GgxSampler::Frame GgxSampler::frameOf(const PathBsdf& b) {
     f.view = toFloat(b.view);
     f.alpha = b.alpha;
     f.cosView = float(b.cosView);
-    const float a = f.alpha;
-    const Vec3 v{dot(f.view, f.tu), dot(f.view, f.tv), f.cosView};
-    f.vh = normalize(Vec3{a * v.x, a * v.y, v.z});
-    const Vec3& vh = f.vh;
-    const float lensq = vh.x * vh.x + vh.y * vh.y;
-    f.t1 = lensq > 0.0f ? Vec3{-vh.y, vh.x, 0.0f} * (1.0f / std::sqrt(lensq)) : Vec3{1, 0, 0};
-    f.t2 = cross(vh, f.t1);
-    f.masking = shared::pathGgxMasking(f.cosView, a);
+    f.visible = shared::pathGgxVisibleFrame(
+        shared::vec3(dot(f.view, f.tu), dot(f.view, f.tv), f.cosView), f.alpha);
+    f.masking = shared::pathGgxMasking(f.cosView, f.alpha);
     return f;
 }
 
@@ -137,14 +132,8 @@ Vec3d sampleGgx(const PathBsdf& b, const DoubleFrame& f, float u1, float u2) {
 // reflected about it as 2 (v.h) h / (h.h) - v, which is unit as it stands (one division where
 // two normalisations took two square roots and six divisions; within float rounding of them).
 Vec3 sampleGgxFloat(const GgxSampler::Frame& f, float u1, float u2) {
-    const float r = std::sqrt(u1), phi = 2.0f * LUXEL_PATH_PI * u2;
-    const float p1 = r * std::cos(phi);
-    const float s = 0.5f * (1.0f + f.vh.z);
-    const float p2 = (1.0f - s) * std::sqrt(std::max(0.0f, 1.0f - p1 * p1)) + s * r * std::sin(phi);
-    const Vec3 nh =
-        f.t1 * p1 + f.t2 * p2 + f.vh * std::sqrt(std::max(0.0f, 1.0f - p1 * p1 - p2 * p2));
-    const float hu = f.alpha * nh.x, hv = f.alpha * nh.y, hn = std::max(0.0f, nh.z);
-    const Vec3 h = f.tu * hu + f.tv * hv + f.n * hn;
+    const shared::vec3 hl = shared::pathGgxVisibleNormalUnnormalised(f.visible, f.alpha, u1, u2);
+    const Vec3 h = f.tu * hl.x + f.tv * hl.y + f.n * hl.z;
     return h * (2.0f * dot(f.view, h) / dot(h, h)) - f.view;
 }
 

@@ -15,6 +15,7 @@
 // smooth lobes and weights each against its own sampling (power heuristic).
 #pragma once
 
+#include "gpu/shaders/shared/path_bsdf.h"
 #include "luxel/core/vec.h"
 #include "luxel/voxel/material.h"
 #include "luxel/voxel/path_trace_rng.h"
@@ -82,9 +83,10 @@ class GgxSampler {
     BsdfSample sample(PathRng& rng) const;
 
     // The lobe's frame in float: the face's tangents and normal, the view, the visible normals'
-    // hemisphere (vh, t1, t2) and G1 of the view.
+    // frame (shared/path_bsdf.h, as the GPU makes it) and G1 of the view.
     struct Frame {
-        Vec3 tu, tv, n, view, vh, t1, t2;
+        Vec3 tu, tv, n, view;
+        gpu::shared::PathGgxVisibleFrame visible;
         float alpha = 0.0f, cosView = 0.0f, masking = 0.0f;
     };
     static Frame frameOf(const PathBsdf& b);

@@ -189,20 +189,17 @@ class SunHighlight {
           specular_(b.specular) {}
 
     Rgb light(Vec3d l, Rgb radiance) const {
-        const Vec3 lf{float(l.x), float(l.y), float(l.z)};
+        const gpu::shared::vec3 lf(float(l.x), float(l.y), float(l.z));
         const float cosL = dot(n_, lf);
         if (!on_ || !(cosL > 0.0f)) return {};
-        const Vec3 h = normalize(view_ + lf);
-        const float cosH = dot(n_, h);
-        const Vec3 across = h - n_ * cosH;
-        const float reflectance = gpu::shared::pathGgxD(cosH, dot(across, across), alpha_) *
-                                  gpu::shared::ggxSmithVisibility(cosView_, cosL, alpha_);
+        const float reflectance =
+            gpu::shared::pathGgxReflectance(n_, view_, lf, cosView_, cosL, alpha_);
         return specular_ * radiance * (reflectance * cosL);
     }
 
   private:
     bool on_;
-    Vec3 n_, view_;
+    gpu::shared::vec3 n_, view_;
     float alpha_, cosView_;
     Rgb specular_;
 };

@@ -1,6 +1,6 @@
 // The float kernels of the voxel path tracer's surface response and sun disk on the GPU
-// (src/gpu/shaders/voxel/path_surface.glsl): the power heuristic, GGX's distribution, masking
-// and visible-normal sampling, and the direction in the sun's cone. They are the CPU's
+// (src/gpu/shaders/voxel/path_surface.glsl): the power heuristic, GGX's distribution, masking,
+// reflectance and visible-normal sampling, and the direction in the sun's cone. They are the CPU's
 // (src/voxel/path_trace_bsdf.cpp, src/voxel/sun_disk.cpp, in double) written for float:
 // GGX's D takes the half vector's sin^2 and cos separately, D = a^2 / (pi (sin^2 + a^2 cos^2)^2),
 // and sin^2 comes from the half vector's two tangential components (exact for the axis-aligned
@@ -12,6 +12,7 @@
 #define LUXEL_GPU_SHARED_PATH_BSDF_H
 
 #include "glsl_compat.h"
+#include "optics.h"
 
 #define LUXEL_PATH_PI 3.14159265358979f
 // Below this GGX alpha (roughness 0.01) the specular lobe is a delta mirror (kMirrorAlpha).
@@ -43,21 +44,54 @@ LUXEL_FUNC float pathGgxMasking(float c, float alpha) {
     return 2.0f * c / (c + sqrt(a2 + (1.0f - a2) * c * c));
 }
 
-// A visible normal of GGX (Heitz 2018, "Sampling the GGX Distribution of Visible Normals") for
-// the view `v` in the face's frame (tangents, then the normal; v.z = cos_v), from two numbers
-// in [0, 1): the half vector in the same frame.
-LUXEL_FUNC vec3 pathGgxVisibleNormal(vec3 v, float alpha, float u1, float u2) {
-    const vec3 vh = normalize(vec3(alpha * v.x, alpha * v.y, v.z));
-    const float lensq = vh.x * vh.x + vh.y * vh.y;
-    const vec3 t1 =
-        lensq > 0.0f ? vec3(-vh.y, vh.x, 0.0f) * (1.0f / sqrt(lensq)) : vec3(1.0f, 0.0f, 0.0f);
-    const vec3 t2 = cross(vh, t1);
+// What a visible normal of GGX depends on besides its two numbers: the view stretched by alpha
+// (vh) and the two tangents of the disk it is sampled on, for the view `v` in the face's frame
+// (tangents, then the normal; v.z = cos_v). Made once where one lobe draws several normals (the
+// real-time solvers' GgxSampler, src/voxel/path_trace_bsdf.cpp).
+struct PathGgxVisibleFrame {
+    vec3 vh;
+    vec3 t1;
+    vec3 t2;
+};
+
+LUXEL_FUNC PathGgxVisibleFrame pathGgxVisibleFrame(vec3 v, float alpha) {
+    PathGgxVisibleFrame f;
+    f.vh = normalize(vec3(alpha * v.x, alpha * v.y, v.z));
+    const float lensq = f.vh.x * f.vh.x + f.vh.y * f.vh.y;
+    f.t1 =
+        lensq > 0.0f ? vec3(-f.vh.y, f.vh.x, 0.0f) * (1.0f / sqrt(lensq)) : vec3(1.0f, 0.0f, 0.0f);
+    f.t2 = cross(f.vh, f.t1);
+    return f;
+}
+
+// A visible normal of GGX (Heitz 2018, "Sampling the GGX Distribution of Visible Normals") in the
+// frame `f` of pathGgxVisibleFrame, from two numbers in [0, 1), before normalisation: the half
+// vector in the face's frame times a positive factor.
+LUXEL_FUNC vec3 pathGgxVisibleNormalUnnormalised(PathGgxVisibleFrame f, float alpha, float u1,
+                                                 float u2) {
     const float r = sqrt(u1), phi = 2.0f * LUXEL_PATH_PI * u2;
     const float p1 = r * cos(phi);
-    const float s = 0.5f * (1.0f + vh.z);
+    const float s = 0.5f * (1.0f + f.vh.z);
     const float p2 = (1.0f - s) * sqrt(max(0.0f, 1.0f - p1 * p1)) + s * r * sin(phi);
-    const vec3 nh = t1 * p1 + t2 * p2 + vh * sqrt(max(0.0f, 1.0f - p1 * p1 - p2 * p2));
-    return normalize(vec3(alpha * nh.x, alpha * nh.y, max(0.0f, nh.z)));
+    const vec3 nh = f.t1 * p1 + f.t2 * p2 + f.vh * sqrt(max(0.0f, 1.0f - p1 * p1 - p2 * p2));
+    return vec3(alpha * nh.x, alpha * nh.y, max(0.0f, nh.z));
+}
+
+// The visible normal for the view `v` in the face's frame: the half vector in the same frame.
+LUXEL_FUNC vec3 pathGgxVisibleNormal(vec3 v, float alpha, float u1, float u2) {
+    return normalize(
+        pathGgxVisibleNormalUnnormalised(pathGgxVisibleFrame(v, alpha), alpha, u1, u2));
+}
+
+// GGX's D times the height-correlated visibility for the unit light direction l at cosine cosL
+// to the axis-aligned face normal n, seen from the unit `view` at cosine cosView: f / S of a
+// specular lobe, the highlight of a delta light being S D Vis cos_l L.
+LUXEL_FUNC float pathGgxReflectance(vec3 n, vec3 view, vec3 l, float cosView, float cosL,
+                                    float alpha) {
+    const vec3 h = normalize(view + l);
+    const float cosH = dot(n, h);
+    const vec3 across = h - n * cosH;
+    return pathGgxD(cosH, dot(across, across), alpha) * ggxSmithVisibility(cosView, cosL, alpha);
 }
 
 // The unit direction at 1 - cos(theta) = oneMinusCos from the unit `axis`, at azimuth phi about

@@ -118,11 +118,7 @@ vec3 pathBsdfLight(PathBsdf b, vec3 l, vec3 radiance, float lightPdf) {
     }
     if (b.pSpecular > 0.0 && !pathMirror(b) && b.cosView > 0.0) {
         const float w = deltaLight ? 1.0 : pathPowerHeuristic(lightPdf, b.pSpecular * pathGgxPdf(b, l));
-        const vec3 h = normalize(b.view + l);
-        const float cosH = dot(n, h);
-        const vec3 across = h - n * cosH;
-        const float reflectance = pathGgxD(cosH, dot(across, across), b.alpha) *
-                                  ggxSmithVisibility(b.cosView, cosL, b.alpha);
+        const float reflectance = pathGgxReflectance(n, b.view, l, b.cosView, cosL, b.alpha);
         result += b.specular * radiance * (reflectance * cosL * w / divide);
     }
     return result;
