@@ -112,25 +112,23 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
     struct Glossy {
         const RadianceCascades* cascades;
         PathRng* rng;
-        const Hit* at;
-        int atFace;
-        cascades::GlossyLampChoice* lamps;
-    } glossy{this, &rng, &s.hit, face, faces.glossy.empty() ? nullptr : &lamps};
-    if (!faces.nearOffset.empty() || glossy.lamps) {
+        cascades::GlossyRay ray;  // each GGX ray's start: the surface, nothing met yet
+    } glossy{this, &rng, {&s.hit, face, faces.glossy.empty() ? nullptr : &lamps, {}}};
+    if (!faces.nearOffset.empty() || glossy.ray.lamps) {
         if (!faces.nearOffset.empty()) {
             light.nearHighlight = [this, &nearRays](const PathBsdf& specular) {
                 return cascades::nearEmitterHighlight(*state_, nearRays, specular);
             };
         }
         light.glossyAlong = [&glossy](const Ray& r) {
-            cascades::GlossyRay g{glossy.at, glossy.atFace, glossy.lamps, {}};
+            cascades::GlossyRay g = glossy.ray;
             const Rgb rest = glossy.cascades->reflectedLight(r, false, 0, *glossy.rng, &g);
             return GlossyAlong{rest, g.met.emission, g.met.lightDensity};
         };
     }
-    if (glossy.lamps) {
+    if (glossy.ray.lamps) {
         light.glossyLamps = [&glossy](const PathBsdf& specular, int lobeRays, PathRng& r) {
-            return glossy.lamps->sample(specular, lobeRays, r);
+            return glossy.ray.lamps->sample(specular, lobeRays, r);
         };
     }
     return shadeSolverSurface(world, state_->textures, s, ray, shading, light, rng);
