@@ -16,15 +16,17 @@ namespace luxel::gi2d::hrc {
 class NearLightMask {
   public:
     // Lights are the pixels whose max_c E_c min(sigma_c, 1) is at least 1/64 of the brightest
-    // pixel's; each pixel keeps hrcNearLightKept (shared/hrc_kernels.h) of its distance to the
-    // nearest one. A canvas without emission keeps the whole blend everywhere.
+    // pixel's; each pixel keeps a share of the blend by its distance to the nearest one's centre:
+    // none within 1 px, the whole from 3 px, linear between (near_lights.cpp). A canvas without
+    // emission keeps the whole blend everywhere.
     static NearLightMask fromMedium(const Medium2D& medium);
     // The same in place, keeping the allocations of a mask of the same size.
     void build(const Medium2D& medium);
 
     int width() const { return width_; }
     int height() const { return height_; }
-    // The kept fraction of pixel (x, y) in 64ths, 0 .. 64 (hrcNearBlendKept).
+    // The kept fraction of pixel (x, y) in 64ths, 0 .. 64 (the merges weigh the blend by it with
+    // hrcNearRowWeightAt, shared/hrc_kernels.h).
     std::uint8_t at(int x, int y) const { return bytes_[static_cast<std::size_t>(y) * width_ + x]; }
     // Whether any pixel of canvas column x / row y keeps less than the whole blend: the CPU sweep
     // reads the mask only along the columns and rows that do.
