@@ -14,6 +14,7 @@
 #include "luxel/voxel/surface_cast.h"
 #include "voxel/path_trace_bsdf.h"
 #include "voxel/shading_physical.h"
+#include "voxel/sun_blocker.h"
 #include "voxel/sun_disk.h"
 
 namespace luxel::voxel {
@@ -204,6 +205,21 @@ class SunHighlight {
     Rgb specular_;
 };
 
+// Whether the disk's shadow rays may share a blocker (SunBlocker): every solid voxel stops a ray
+// (no medium to pass, no cutout texel) and the walk's step cap is its default, never reached.
+bool raysShareBlockers(const TextureSet* textures, const ShadeOptions& shading) {
+    const bool media = shading.refraction && shading.materials.anyTransmission();
+    const bool cutouts = textures && !textures->empty() && textures->anyCutout();
+    return !media && !cutouts && shading.stepCap == 0;
+}
+
+// surfaceRayBlocked's walk over an opaque world (no cutout texel), with the hit kept.
+Hit opaqueShadowHit(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
+                    int stepCap) {
+    if (textures && !textures->empty()) return castToSurface(world, textures, ray, stepCap).hit;
+    return castRay(world, ray, kInfinity, stepCap);
+}
+
 }  // namespace
 
 Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
@@ -218,13 +234,28 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
     const Rgb perRay = sun.radianceOverPdf(shading.sunIrradiance) * float(1.0 / rays);
     Rgb cosines, glossy;  // the sum of cos x transmittance; the smooth lobes' light
     const SunHighlight highlight = specular ? SunHighlight(*specular) : SunHighlight(PathBsdf{});
+    const bool shareBlockers = raysShareBlockers(textures, shading);
+    SunBlocker blocker;
     for (int i = 0; i < rays; ++i) {
         const Vec3d& l = spiral.directions[std::size_t(i)];
         const double cosSun = dot(n, l);
         // Rays start on the face; castRay's start-cell rule puts them in the cell in front.
         if (!(cosSun > 0.0)) continue;
-        const Rgb t = sunRayTransmittance(world, textures, {hit.point, l}, shading);
-        if (!(t.maxComponent() > 0.0f)) continue;
+        const Ray ray{hit.point, l};
+        Rgb t(1.0f);
+        if (shareBlockers) {
+            // The same answer as sunRayTransmittance's walk, which an earlier ray's blocker
+            // often gives without one.
+            if (blocker.blocks(world, ray)) continue;
+            const Hit stop = opaqueShadowHit(world, textures, ray, shading.stepCap);
+            if (stop.hit) {
+                blocker.note(stop);
+                continue;
+            }
+        } else {
+            t = sunRayTransmittance(world, textures, ray, shading);
+            if (!(t.maxComponent() > 0.0f)) continue;
+        }
         cosines += t * float(cosSun);
         // Each ray of the disk is a delta light of its share (lightPdf 0: no MIS weight).
         if (specular) glossy += highlight.light(l, perRay) * t;

@@ -221,6 +221,7 @@ Result<int> TextureSet::add(Texture texture) {
             }
         }
     }
+    for (const Texel& t : texture.texels) anyCutout_ = anyCutout_ || t.cutout();
     // Premultiplied alpha before averaging, so a leaf's transparent texels do not darken it.
     std::vector<Texel> premultiplied(texture.texels.size());
     for (std::size_t i = 0; i < premultiplied.size(); ++i) {

@@ -42,6 +42,22 @@ TEST(TextureSet, LookupAtFaceUvCorners) {
     EXPECT_EQ(set.lookup(0, -0.5f, -0.5f), (Texel{0, 1, 0, 1}));
 }
 
+TEST(TextureSet, KnowsWhetherAnyTexelIsACutout) {
+    TextureSet set;
+    EXPECT_FALSE(set.anyCutout());
+    ASSERT_TRUE(set.add(indexTexture("opaque", 4, 2)).ok());
+    EXPECT_FALSE(set.anyCutout());
+    Texture leaf = indexTexture("leaf", 4, 2);
+    leaf.texels[5].a = 0.49f;  // below 0.5: a cutout
+    Texture bad = indexTexture("bad", 2, 2);
+    bad.texels[0].a = 0.0f;
+    bad.texels[1].r = std::nanf("");
+    EXPECT_FALSE(set.add(bad).ok());  // refused textures do not count
+    EXPECT_FALSE(set.anyCutout());
+    ASSERT_TRUE(set.add(leaf).ok());
+    EXPECT_TRUE(set.anyCutout());
+}
+
 TEST(TextureSet, MaterialByteSelectsTheSlot) {
     EXPECT_EQ(textureSlotOf(Voxel{1, 2, 3, 0}), -1);
     EXPECT_EQ(textureSlotOf(Voxel{1, 2, 3, 255}), -1);

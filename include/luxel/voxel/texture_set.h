@@ -96,6 +96,8 @@ class TextureSet {
     Vec3 normalAt(int slot, float u, float v, const TexelFootprint& footprint, TextureFilter filter,
                   int maxAnisotropy = 16) const;
     bool hasNormalMap(int slot) const { return !normalMips_[slot].empty(); }
+    // Whether any texel of any texture is a cutout (a ray may pass a textured voxel).
+    bool anyCutout() const { return anyCutout_; }
 
     // Mip chains, built by add(): levels of max(1, side >> l) texels (exact area averages),
     // level after level, rows top to bottom (sizes and offsets: shared/texture_filter.h). Colour
@@ -108,6 +110,7 @@ class TextureSet {
   private:
     std::vector<Texture> textures_;
     std::vector<std::vector<Texel>> colourMips_, normalMips_;
+    bool anyCutout_ = false;
 };
 
 // Filter names as the CLI and scene files spell them: "nearest", "trilinear", "anisotropic".
