@@ -232,6 +232,56 @@ TEST(VoxelFastWalk, FarOriginsMatchTheSharedKernel) {
     EXPECT_GT(counts.hits, 1000);
 }
 
+// Rays grazing a flat floor with posts on it (solid below y = 5: the floor's top bricks hold one
+// solid layer and three empty ones), from the floor's face as shadow and reflection rays start,
+// just above it and from outside the world, climbing or sinking slowly, so they walk the empty
+// layers of non-empty bricks voxel by voxel for many cells; the world's x and z sizes are not
+// multiples of the brick, and tMax and the step cap end many of them inside such bricks. These
+// are the rays a jump out of a non-empty brick would serve (docs/algorithms/voxel-traversal.md
+// §4.5, "Leaving a non-empty brick in one jump").
+TEST(VoxelFastWalk, GrazingRaysInsideNonEmptyBricks) {
+    const Int3 size{70, 24, 66};
+    VoxelWorld world = VoxelWorld::create(size, 16).value();
+    for (int z = 0; z < size.z; ++z) {
+        for (int x = 0; x < size.x; ++x) {
+            for (int y = 0; y < 5; ++y) world.set(x, y, z, kStone);
+        }
+    }
+    std::mt19937_64 rng(19);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int i = 0; i < 40; ++i) {
+        const int x = static_cast<int>(unit(rng) * size.x),
+                  z = static_cast<int>(unit(rng) * size.z);
+        for (int y = 5; y < 5 + 1 + i % 6; ++y) world.set(x, y, z, kStone);
+    }
+    world.refreshEmptySpace();
+    std::vector<Ray> rays;
+    const double slopes[] = {0.0, -0.0, 0.01, -0.01, 0.03, 0.0625, -0.0625, 1e-7, 0.25};
+    for (int i = 0; i < 20000; ++i) {
+        const double angle = unit(rng) * 6.283185307179586;
+        const double slope = slopes[i % 9];
+        Vec3d direction{std::cos(angle), slope, std::sin(angle)};
+        if (i % 5 == 0) direction = {i % 2 ? 1.0 : -0.5, slope, i % 3 ? 0.25 : -1.0};  // ties
+        Vec3d origin{unit(rng) * size.x, 5.0, unit(rng) * size.z};
+        if (i % 4 == 1) origin.y = 5.0 + unit(rng) * 0.9;
+        if (i % 4 == 2) origin.y = std::nextafter(5.0, 6.0);
+        if (i % 8 == 3) origin.x = -3.0 - unit(rng) * 20.0;  // entering through the x = 0 face
+        if (i % 16 == 7) {
+            origin.x = std::floor(origin.x) + 0.5;
+            origin.z = std::floor(origin.z);
+        }
+        rays.push_back({origin, direction});
+    }
+    const Counts all = compare(world, rays);
+    EXPECT_GT(all.hits, 5000);
+    // Short reaches ending inside bricks, on cell boundaries and between them.
+    for (const double tMax : {0.0, 1.0, 2.5, 3.75, 7.0}) compare(world, rays, tMax);
+    for (const int cap : {1, 2, 3, 5, 8, 11}) {
+        const Counts capped = compare(world, rays, kInfinity, cap);
+        EXPECT_GT(capped.capped, 1000) << "cap " << cap;
+    }
+}
+
 // Worlds the batch calls leave to castRay (stale distances, fewer than 8 bricks), odd rays (NaN,
 // zero, denormal components, negative tMax) and batches of every size around the lane count.
 TEST(VoxelFastWalk, BatchEdgeCases) {
