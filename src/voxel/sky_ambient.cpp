@@ -7,6 +7,7 @@
 #include "gpu/shaders/shared/sky_ambient.h"
 #include "luxel/voxel/dda.h"
 #include "path_trace_surface.h"
+#include "voxel/shadow_blockers.h"
 
 namespace luxel::voxel {
 
@@ -17,12 +18,24 @@ SkyAmbient traceSkyAmbient(const VoxelWorld& world, const TextureSet* textures, 
     const int n = std::clamp(options.skyAmbientRays, 1, kMaxSkyAmbientRays);
     int escaped = 0;
     Rgb sky;
+    // Under a roof most rays stop at the same few faces, which then answer for the rest.
+    const bool share = shadowBlockersHold(textures, options.stepCap);
+    ShadowBlockers blockers;
     for (int i = 0; i < n; ++i) {
         const float u1 = rng.next(), u2 = rng.next();
         const gpu::shared::vec3 d =
             gpu::shared::skyAmbientDirection({normal.x, normal.y, normal.z}, u1, u2);
         const Ray ray{point, {d.x, d.y, d.z}};
-        if (surfaceRayBlocked(world, textures, ray, kInfinity, options.stepCap)) continue;
+        if (share) {
+            if (blockers.blocks(world, ray)) continue;
+            const Hit stop = opaqueShadowHit(world, textures, ray, options.stepCap);
+            if (stop.hit) {
+                blockers.note(stop);
+                continue;
+            }
+        } else if (surfaceRayBlocked(world, textures, ray, kInfinity, options.stepCap)) {
+            continue;
+        }
         ++escaped;
         sky += skyColor(ray.direction, options);
     }

@@ -14,7 +14,7 @@
 #include "luxel/voxel/surface_cast.h"
 #include "voxel/path_trace_bsdf.h"
 #include "voxel/shading_physical.h"
-#include "voxel/sun_blocker.h"
+#include "voxel/shadow_blockers.h"
 #include "voxel/sun_disk.h"
 
 namespace luxel::voxel {
@@ -205,19 +205,11 @@ class SunHighlight {
     Rgb specular_;
 };
 
-// Whether the disk's shadow rays may share a blocker (SunBlocker): every solid voxel stops a ray
-// (no medium to pass, no cutout texel) and the walk's step cap is its default, never reached.
+// Whether the disk's shadow rays may share blockers (ShadowBlockers): every solid voxel stops a
+// ray, and no glass or water lets one through.
 bool raysShareBlockers(const TextureSet* textures, const ShadeOptions& shading) {
     const bool media = shading.refraction && shading.materials.anyTransmission();
-    const bool cutouts = textures && !textures->empty() && textures->anyCutout();
-    return !media && !cutouts && shading.stepCap == 0;
-}
-
-// surfaceRayBlocked's walk over an opaque world (no cutout texel), with the hit kept.
-Hit opaqueShadowHit(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
-                    int stepCap) {
-    if (textures && !textures->empty()) return castToSurface(world, textures, ray, stepCap).hit;
-    return castRay(world, ray, kInfinity, stepCap);
+    return !media && shadowBlockersHold(textures, shading.stepCap);
 }
 
 }  // namespace
@@ -235,7 +227,7 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
     Rgb cosines, glossy;  // the sum of cos x transmittance; the smooth lobes' light
     const SunHighlight highlight = specular ? SunHighlight(*specular) : SunHighlight(PathBsdf{});
     const bool shareBlockers = raysShareBlockers(textures, shading);
-    SunBlocker blocker;
+    ShadowBlockers blockers;
     for (int i = 0; i < rays; ++i) {
         const Vec3d& l = spiral.directions[std::size_t(i)];
         const double cosSun = dot(n, l);
@@ -246,10 +238,10 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
         if (shareBlockers) {
             // The same answer as sunRayTransmittance's walk, which an earlier ray's blocker
             // often gives without one.
-            if (blocker.blocks(world, ray)) continue;
+            if (blockers.blocks(world, ray)) continue;
             const Hit stop = opaqueShadowHit(world, textures, ray, shading.stepCap);
             if (stop.hit) {
-                blocker.note(stop);
+                blockers.note(stop);
                 continue;
             }
         } else {

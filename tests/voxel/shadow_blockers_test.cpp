@@ -1,6 +1,7 @@
-// SunBlocker (src/voxel/sun_blocker.h): the shadow rays it proves blocked are blocked by the exact
-// walk (occluded), on terrain with floating blocks, from points on its faces, for bundles of
-// directions a fraction of a degree to tens of degrees apart; and it proves nothing where its
+// ShadowBlockers (src/voxel/shadow_blockers.h): the shadow rays it proves blocked are blocked by
+// the exact walk (occluded), on terrain with floating blocks, from points on its faces, for
+// bundles of directions a fraction of a degree to tens of degrees apart, and in a closed room
+// for rays over the whole hemisphere; and it proves nothing where its
 // reasoning does not hold (rays along or away from the face, crossings on a voxel's edge, a
 // crossing over an empty cell, a hit without a face).
 #include <gtest/gtest.h>
@@ -11,7 +12,7 @@
 
 #include "luxel/voxel/dda.h"
 #include "luxel/voxel/generators.h"
-#include "voxel/sun_blocker.h"
+#include "voxel/shadow_blockers.h"
 
 namespace luxel::voxel {
 namespace {
@@ -32,9 +33,11 @@ VoxelWorld terrainWithBlocks(Int3 size, std::uint64_t seed) {
     return world;
 }
 
-Vec3d normalised(Vec3d v) { return v * (1.0 / std::sqrt(dot(v, v))); }
+Vec3d normalised(Vec3d v) {
+    return v * (1.0 / std::sqrt(dot(v, v)));
+}
 
-TEST(SunBlocker, ProvesOnlyRaysTheWalkFindsBlocked) {
+TEST(ShadowBlockers, ProvesOnlyRaysTheWalkFindsBlocked) {
     const VoxelWorld world = terrainWithBlocks({64, 48, 64}, 7);
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> unit(0.0, 1.0), signedUnit(-1.0, 1.0);
@@ -48,10 +51,10 @@ TEST(SunBlocker, ProvesOnlyRaysTheWalkFindsBlocked) {
         // A sun and a disk around it: spreads from 0.1 to 30 degrees.
         const Vec3d sun = normalised({signedUnit(rng), 0.05 + unit(rng), signedUnit(rng)});
         const double spread = 0.0017 + 0.52 * unit(rng) * unit(rng);
-        SunBlocker blocker;
+        ShadowBlockers blocker;
         for (int k = 0; k < 8; ++k) {
-            const Vec3d l = normalised(
-                sun + Vec3d{signedUnit(rng), signedUnit(rng), signedUnit(rng)} * spread);
+            const Vec3d l =
+                normalised(sun + Vec3d{signedUnit(rng), signedUnit(rng), signedUnit(rng)} * spread);
             const Vec3d n{double(surface.normal.x), double(surface.normal.y),
                           double(surface.normal.z)};
             if (!(dot(l, n) > 0.0)) continue;
@@ -73,6 +76,44 @@ TEST(SunBlocker, ProvesOnlyRaysTheWalkFindsBlocked) {
     EXPECT_GT(blockedWalks, 500);
 }
 
+TEST(ShadowBlockers, ProveMostOfARoomsHemisphereRaysWithItsCeilingAndWalls) {
+    // A closed room: a 20 x 12 x 20 shell with a pillar in it.
+    VoxelWorld world = VoxelWorld::create({20, 12, 20}, 16).value();
+    for (int x = 0; x < 20; ++x) {
+        for (int y = 0; y < 12; ++y) {
+            for (int z = 0; z < 20; ++z) {
+                const bool shell = x == 0 || y == 0 || z == 0 || x == 19 || y == 11 || z == 19;
+                const bool pillar = x >= 8 && x <= 10 && z >= 8 && z <= 9;
+                if (shell || pillar) world.set(x, y, z, kStone);
+            }
+        }
+    }
+    world.refreshEmptySpace();
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int proofs = 0, rays = 0;
+    for (int point = 0; point < 300; ++point) {
+        const Vec3d origin{1.0 + 18.0 * unit(rng), 1.0, 1.0 + 18.0 * unit(rng)};
+        if (world.solid(int(origin.x), 1, int(origin.z))) continue;
+        ShadowBlockers blockers;
+        for (int k = 0; k < 16; ++k) {
+            // Cosine-distributed about +y.
+            const double r = std::sqrt(unit(rng)), phi = 6.283185307179586 * unit(rng);
+            const Ray ray{origin, {r * std::cos(phi), std::sqrt(1.0 - r * r), r * std::sin(phi)}};
+            ++rays;
+            ASSERT_TRUE(occluded(world, ray));
+            if (blockers.blocks(world, ray)) {
+                ++proofs;
+                continue;
+            }
+            blockers.note(castRay(world, ray));
+        }
+    }
+    // The ceiling and four walls (and the pillar): all but the first four or five rays of each
+    // point.
+    EXPECT_GT(proofs, rays * 2 / 3) << proofs << " of " << rays;
+}
+
 // A slab of stone at y = 10 over the whole world; a ray from the floor at y = 2 hits its
 // underside.
 VoxelWorld slab() {
@@ -87,13 +128,13 @@ VoxelWorld slab() {
     return world;
 }
 
-TEST(SunBlocker, ProvesNothingWhereItsReasonDoesNotHold) {
+TEST(ShadowBlockers, ProvesNothingWhereItsReasonDoesNotHold) {
     const VoxelWorld world = slab();
     const Vec3d origin{4.3, 2.0, 4.6};
     const Hit up = castRay(world, {origin, normalised({0.1, 1.0, 0.05})});
     ASSERT_TRUE(up.hit);
     ASSERT_EQ(up.normal, (Int3{0, -1, 0}));
-    SunBlocker blocker;
+    ShadowBlockers blocker;
     EXPECT_FALSE(blocker.blocks(world, {origin, {0.0, 1.0, 0.0}}));  // nothing kept yet
     blocker.note(up);
     EXPECT_TRUE(blocker.blocks(world, {origin, normalised({-0.2, 1.0, 0.1})}));
@@ -111,12 +152,12 @@ TEST(SunBlocker, ProvesNothingWhereItsReasonDoesNotHold) {
     EXPECT_FALSE(blocker.blocks(world, {origin, normalised({3.0, 1.0, 0.0})}));
 }
 
-TEST(SunBlocker, KeepsNoHitWithoutAFace) {
+TEST(ShadowBlockers, KeepsNoHitWithoutAFace) {
     const VoxelWorld world = slab();
     Hit inside;
     inside.hit = true;
     inside.voxel = {3, 10, 3};
-    SunBlocker blocker;
+    ShadowBlockers blocker;
     blocker.note(inside);  // started inside a solid voxel: no face
     EXPECT_FALSE(blocker.blocks(world, {{4.3, 2.0, 4.6}, {0.0, 1.0, 0.0}}));
 }
