@@ -8,6 +8,7 @@
 #include "../path_trace_surface.h"
 #include "../solver_sun.h"
 #include "../sun_disk.h"
+#include "cascade_demand.h"
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/surface_cast.h"
@@ -86,52 +87,52 @@ Rgb mergeCorners(const std::uint32_t* codes, const Corners& corners,
     return weight > 0.0f ? sum * (1.0f / weight) : Rgb{};
 }
 
+// Merges level k's demanded entries (cascade_demand.h), the levels above already merged: on
+// level 0 its radiance, which the faces gather; above it only the child means that the level
+// below reads, each found from its four children as they are merged (kept in registers, not
+// stored and read back).
 void mergeLevel(RadianceCascades::State& state, std::size_t k) {
     LevelData& data = state.levels[k];
     const std::vector<Rgb>& outgoing = state.faces.outgoing;
     const std::vector<Passage>& passages = state.passages;
-    const int bins = data.bins.count();
-    const std::int64_t probes = data.level.probeCount();
-    data.radiance.resize(std::size_t(probes) * bins);
+    const int bins = data.bins.count(), entries = demandBins(state, k), words = entries / 64;
+    const std::size_t probes = std::size_t(data.level.probeCount());
     const LevelData* upper = data.level.top ? nullptr : &state.levels[k + 1];
-    parallelForRange(int(probes), 1, [&](int begin, int end) {
-        for (int p = begin; p < end; ++p) {
-            Rgb* radiance = &data.radiance[std::size_t(p) * bins];
-            if (!upper) {
-                for (int b = 0; b < bins; ++b) {
-                    radiance[b] = chainRadiance(data.codes[std::size_t(p) * bins + b], passages,
-                                                outgoing, data.sky[b], [] { return Rgb{}; });
-                }
-                continue;
-            }
-            const Corners& corners = data.corners[p];
-            for (int b = 0; b < bins; ++b) {
-                radiance[b] = mergeCorners(
-                    &data.codes[(std::size_t(p) * bins + b) * 8], corners, passages, outgoing,
-                    data.sky[b], [&](int c) {
-                        return upper->childMean[std::size_t(corners.probe[c]) * bins + b];
-                    });
-            }
+    // What bin b of probe p brings: the top level's own segment, or the weighted mean over the
+    // corners of what each chain reaches.
+    const auto binRadiance = [&](int p, int b) {
+        if (!upper) {
+            return chainRadiance(data.codes[std::size_t(p) * bins + b], passages, outgoing,
+                                 data.sky[b], [] { return Rgb{}; });
         }
-    });
-    // What the level below reads: for each of its bins the solid-angle mean of the children here
-    // (level 0 and the faces share their bins, so the faces read level 0's radiance directly).
-    if (k == 0) return;
-    const int parents = bins / 4;
-    data.childMean.resize(std::size_t(probes) * parents);
-    const DirectionBins& below = state.levels[k - 1].bins;
-    parallelForRange(int(probes), 16, [&](int begin, int end) {
-        for (int p = begin; p < end; ++p) {
-            for (int b = 0; b < parents; ++b) {
+        const Corners& corners = data.corners[p];
+        return mergeCorners(
+            &data.codes[(std::size_t(p) * bins + b) * 8], corners, passages, outgoing, data.sky[b],
+            [&](int c) { return upper->childMean[std::size_t(corners.probe[c]) * bins + b]; });
+    };
+    std::vector<Rgb>& out = k == 0 ? data.radiance : data.childMean;
+    out.resize(probes * entries);
+    const DirectionBins* below = k == 0 ? nullptr : &state.levels[k - 1].bins;
+    const std::vector<std::int32_t>& demanded = data.demandProbes;
+    parallelForRange(int(demanded.size()), 1, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            const int p = demanded[i];
+            Rgb* row = &out[std::size_t(p) * entries];
+            forEachDemanded(&data.demand[std::size_t(p) * words], words, [&](int e) {
+                if (!below) {
+                    row[e] = binRadiance(p, e);
+                    return;
+                }
+                // The solid-angle mean of bin e's children here.
                 Rgb sum;
                 double area = 0.0;
-                for (int child : below.children(b)) {
+                for (const int child : below->children(e)) {
                     const double a = data.bins.solidAngle[child];
-                    sum += data.radiance[std::size_t(p) * bins + child] * float(a);
+                    sum += binRadiance(p, child) * float(a);
                     area += a;
                 }
-                data.childMean[std::size_t(p) * parents + b] = sum * float(1.0 / area);
-            }
+                row[e] = sum * float(1.0 / area);
+            });
         }
     });
 }

@@ -49,8 +49,15 @@ struct LevelData {
     std::vector<Rgb> sky;              // per bin
     std::vector<Corners> corners;      // per probe: the level above's probes around it
     std::vector<std::uint32_t> codes;  // [probe][bin][corner] ([probe][bin] on the top level)
-    std::vector<Rgb> radiance;         // [probe][bin]
-    std::vector<Rgb> childMean;        // [probe][bin of the level below]: mean of its children
+    // What a pass merges (cascade_light.cpp): level 0's radiance, which the faces gather, and
+    // above it only the child means the level below reads. Only the demanded entries are
+    // written; the others are never read.
+    std::vector<Rgb> radiance;   // [probe][bin], level 0
+    std::vector<Rgb> childMean;  // [probe][bin of the level below]: mean of its children
+    // The entries a pass merges (cascade_demand.h), one bit each in rows of 64-bit words:
+    // [probe][bin] on level 0, [probe][bin of the level below] above; and the probes with any.
+    std::vector<std::uint64_t> demand;
+    std::vector<std::int32_t> demandProbes;
 };
 
 struct FaceData {
