@@ -153,12 +153,19 @@ inline Rgb codeRadiance(std::uint32_t code, const std::vector<Rgb>& outgoing, Rg
     return Rgb{};
 }
 
-// The plain code the chain of passages from `code` ends in, and what it brings with `next` as
-// kContinue's radiance: the glass faces' own light plus the transmittance times the end's
-// (out of line, so the plain codes' path stays small; cascade_passages.cpp).
+// The plain code the chain of passages from `code` ends in.
 std::uint32_t passageEnd(std::uint32_t code, const std::vector<Passage>& passages);
-Rgb passageRadiance(std::uint32_t code, const std::vector<Passage>& passages,
-                    const std::vector<Rgb>& outgoing, Rgb sky, Rgb next);
+// A chain of passages from `code` followed to its plain code `end`: the glass faces' own light
+// on the way (`light`) and the transmittance through all of them (`through`), so that the chain
+// brings light + through times what `end` brings. One walk gives what decides whether the level
+// above is read and what the chain brings (out of line, so the plain codes' path stays small;
+// cascade_passages.cpp).
+struct PassageWalk {
+    Rgb light, through;
+    std::uint32_t end = kBlack;
+};
+PassageWalk walkPassages(std::uint32_t code, const std::vector<Passage>& passages,
+                         const std::vector<Rgb>& outgoing);
 
 // Radiance a segment code brings, following its passages (the GPU's twin:
 // src/gpu/shaders/voxel/cascades_chain.glsl); next() is what kContinue brings.
@@ -168,8 +175,9 @@ inline Rgb chainRadiance(std::uint32_t code, const std::vector<Passage>& passage
     if (!isPassage(code)) [[likely]] {
         return codeRadiance(code, outgoing, sky, code == kContinue ? next() : Rgb{});
     }
-    const Rgb behind = passageEnd(code, passages) == kContinue ? next() : Rgb{};
-    return passageRadiance(code, passages, outgoing, sky, behind);
+    const PassageWalk walk = walkPassages(code, passages, outgoing);
+    const Rgb behind = walk.end == kContinue ? next() : Rgb{};
+    return walk.light + walk.through * codeRadiance(walk.end, outgoing, sky, behind);
 }
 
 // Casts every segment of the faces and the levels once (cascade_segments.cpp). Refuses, with
