@@ -2,7 +2,8 @@
 // (src/voxel/cascades/cascade_demand.h; docs/algorithms/voxel-radiance-cascades.md §5): the faces'
 // irradiance after several passes equals, to the bit, what merging every entry of every level
 // gives, on the cottage (chains through its glass windows) and on a floor with glass after new
-// light casts the segments again; and the demand leaves entries out.
+// light casts the segments again; the demand leaves entries out; and new light finds the sky of
+// the bins a pass reads again.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -38,9 +39,11 @@ std::unique_ptr<RadianceCascades::State> buildState(const VoxelWorld& world,
     return state;
 }
 
-// Every entry of every level demanded: the pass as it was before the demand.
+// Every entry of every level demanded, with the sky of every bin: the pass as it was before the
+// demand.
 void demandEverything(RadianceCascades::State& state) {
     for (LevelData& level : state.levels) {
+        level.sky = skyMeans(level.bins, state.shading);
         std::fill(level.demand.begin(), level.demand.end(), ~std::uint64_t(0));
         level.demandProbes.resize(std::size_t(level.level.probeCount()));
         std::iota(level.demandProbes.begin(), level.demandProbes.end(), 0);
@@ -125,6 +128,35 @@ TEST(CascadesDemand, ANewCastFindsTheDemandAgain) {
     auto every = buildState(world, nullptr, opaque);
     demandEverything(*every);
     expectSameLight(*demanded, *every, 3);
+}
+
+// New light finds the sky again for the bins a pass reads: a Preetham sky, which follows the sun.
+TEST(CascadesDemand, NewLightFindsTheSkyOfTheDemandedBinsAgain) {
+    const VoxelWorld world = floorWithGlass();
+    ShadeOptions first = plainLight(0.7f, Rgb(0.0f), Rgb(0.8f, 0.9f, 1.0f));
+    first.skyModel = ShadeOptions::SkyModel::Preetham;
+    first.sunDirection = {0.4f, 1.0f, 0.3f};
+    ShadeOptions second = first;
+    second.sunDirection = {-0.6f, 0.5f, 0.1f};
+    auto state = buildState(world, nullptr, first);
+    std::vector<std::vector<Rgb>> before;
+    for (const LevelData& level : state->levels) before.push_back(level.sky);
+    state->shading = second;  // as RadianceCascades::setLight does when no segment changes
+    updateFaceLight(*state);
+    int changed = 0, read = 0;
+    for (std::size_t k = 0; k < state->levels.size(); ++k) {
+        const LevelData& level = state->levels[k];
+        const std::vector<Rgb> full = skyMeans(level.bins, second);
+        const std::vector<bool> demanded = demandedBins(*state, k);
+        for (int b = 0; b < level.bins.count(); ++b) {
+            if (!demanded[b]) continue;
+            ++read;
+            for (int c = 0; c < 3; ++c) ASSERT_EQ(level.sky[b][c], full[b][c]) << k << " " << b;
+            changed += !(level.sky[b][0] == before[k][b][0]);
+        }
+    }
+    EXPECT_GT(read, 0);
+    EXPECT_GT(changed, read / 2);
 }
 
 }  // namespace

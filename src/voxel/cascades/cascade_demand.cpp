@@ -121,4 +121,22 @@ void findDemand(RadianceCascades::State& state) {
     }
 }
 
+std::vector<bool> demandedBins(const RadianceCascades::State& state, std::size_t k) {
+    const LevelData& data = state.levels[k];
+    const int words = demandBins(state, k) / 64;
+    std::vector<std::uint64_t> any(std::size_t(words), 0);
+    for (const std::int32_t p : data.demandProbes) {
+        for (int w = 0; w < words; ++w) any[w] |= data.demand[std::size_t(p) * words + w];
+    }
+    std::vector<bool> bins(std::size_t(data.bins.count()), false);
+    forEachDemanded(any.data(), words, [&](int e) {
+        if (k == 0) {
+            bins[e] = true;
+            return;
+        }
+        for (const int child : state.levels[k - 1].bins.children(e)) bins[child] = true;
+    });
+    return bins;
+}
+
 }  // namespace luxel::voxel::cascades

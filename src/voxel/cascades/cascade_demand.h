@@ -9,6 +9,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <vector>
 
 #include "cascade_state.h"
 
@@ -17,6 +18,10 @@ namespace luxel::voxel::cascades {
 // Finds each level's demand and demandProbes (LevelData) from the codes, corners and passages
 // of the last cast (castSegments calls it).
 void findDemand(RadianceCascades::State& state);
+
+// The bins of level k that its demanded entries merge (for the levels above 0 the children of
+// the bins demanded), as flags: the only bins whose sky a pass reads there.
+std::vector<bool> demandedBins(const RadianceCascades::State& state, std::size_t k);
 
 // Entries of a level's rows in LevelData::demand: level 0's radiance bins, above it the bins of
 // the level below (the child means), 64 to a word.

@@ -224,7 +224,10 @@ void updateFaceLight(RadianceCascades::State& state) {
         faces.emittersExact = computeEmitterIrradiance(state);
     }
     faces.sky = skyMeans(faces.bins, shading);
-    for (LevelData& level : state.levels) level.sky = skyMeans(level.bins, shading);
+    for (std::size_t k = 0; k < state.levels.size(); ++k) {
+        const std::vector<bool> read = demandedBins(state, k);
+        state.levels[k].sky = skyMeans(state.levels[k].bins, shading, &read);
+    }
 }
 
 double lightingPass(RadianceCascades::State& state) {
