@@ -46,7 +46,8 @@ struct Passage {
 struct LevelData {
     Level level;
     DirectionBins bins;
-    std::vector<Rgb> sky;              // per bin
+    // The sky's mean per bin: over the bins a pass reads only (demandedBins), the others black.
+    std::vector<Rgb> sky;
     std::vector<Corners> corners;      // per probe: the level above's probes around it
     std::vector<std::uint32_t> codes;  // [probe][bin][corner] ([probe][bin] on the top level)
     // What a pass merges (cascade_light.cpp): level 0's radiance, which the faces gather, and
