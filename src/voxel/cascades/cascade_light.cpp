@@ -2,12 +2,14 @@
 // faces send emission plus the diffuse reflection of the sun and of last pass's irradiance; the
 // levels merge from the top down through the cached segment codes; each face gathers its
 // irradiance from level 0 through its own segments.
+#include <bit>
 #include <cmath>
 
 #include "../path_trace_bsdf.h"
 #include "../path_trace_surface.h"
 #include "../solver_sun.h"
 #include "../sun_disk.h"
+#include "cascade_demand.h"
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/surface_cast.h"
@@ -70,68 +72,80 @@ Rgb sunPassing(const RadianceCascades::State& state, const Face& face, const Sun
     return passing * (1.0f / float(4 * perQuarter));
 }
 
-// The trilinear mean over the corners whose segments do not start inside a solid.
+// The corners with a weight, as bits: hidden corners have none (§3.2), and near a floor or a wall
+// that is often half of them, so the merges skip them once per probe or face, not per bin.
+std::uint32_t weightedCorners(const Corners& corners) {
+    std::uint32_t live = 0;
+    for (int c = 0; c < 8; ++c) live |= std::uint32_t(corners.weight[c] != 0.0f) << c;
+    return live;
+}
+
+// The trilinear mean over the weighted corners (`live`, weightedCorners) whose segments do not
+// start inside a solid.
 template <typename Next>
-Rgb mergeCorners(const std::uint32_t* codes, const Corners& corners,
+Rgb mergeCorners(const std::uint32_t* codes, const Corners& corners, std::uint32_t live,
                  const std::vector<Passage>& passages, const std::vector<Rgb>& outgoing, Rgb sky,
                  Next&& next) {
     Rgb sum;
     float weight = 0.0f;
-    for (int c = 0; c < 8; ++c) {
+    for (; live != 0; live &= live - 1) {
+        const int c = std::countr_zero(live);
+        if (codes[c] == kVoid) continue;
         const float w = corners.weight[c];
-        if (codes[c] == kVoid || w == 0.0f) continue;
         sum += chainRadiance(codes[c], passages, outgoing, sky, [&] { return next(c); }) * w;
         weight += w;
     }
     return weight > 0.0f ? sum * (1.0f / weight) : Rgb{};
 }
 
+// Merges level k's demanded entries (cascade_demand.h), the levels above already merged: on
+// level 0 its radiance, which the faces gather; above it only the child means that the level
+// below reads, each found from its four children as they are merged (kept in registers, not
+// stored and read back).
 void mergeLevel(RadianceCascades::State& state, std::size_t k) {
     LevelData& data = state.levels[k];
     const std::vector<Rgb>& outgoing = state.faces.outgoing;
     const std::vector<Passage>& passages = state.passages;
-    const int bins = data.bins.count();
-    const std::int64_t probes = data.level.probeCount();
-    data.radiance.resize(std::size_t(probes) * bins);
+    const int bins = data.bins.count(), entries = demandBins(state, k), words = entries / 64;
+    const std::size_t probes = std::size_t(data.level.probeCount());
     const LevelData* upper = data.level.top ? nullptr : &state.levels[k + 1];
-    parallelForRange(int(probes), 1, [&](int begin, int end) {
-        for (int p = begin; p < end; ++p) {
-            Rgb* radiance = &data.radiance[std::size_t(p) * bins];
-            if (!upper) {
-                for (int b = 0; b < bins; ++b) {
-                    radiance[b] = chainRadiance(data.codes[std::size_t(p) * bins + b], passages,
-                                                outgoing, data.sky[b], [] { return Rgb{}; });
-                }
-                continue;
-            }
-            const Corners& corners = data.corners[p];
-            for (int b = 0; b < bins; ++b) {
-                radiance[b] = mergeCorners(
-                    &data.codes[(std::size_t(p) * bins + b) * 8], corners, passages, outgoing,
-                    data.sky[b], [&](int c) {
-                        return upper->childMean[std::size_t(corners.probe[c]) * bins + b];
-                    });
-            }
+    // What bin b of probe p (its weighted corners `live`) brings: the top level's own segment, or
+    // the weighted mean over the corners of what each chain reaches.
+    const auto binRadiance = [&](int p, std::uint32_t live, int b) {
+        if (!upper) {
+            return chainRadiance(data.codes[std::size_t(p) * bins + b], passages, outgoing,
+                                 data.sky[b], [] { return Rgb{}; });
         }
-    });
-    // What the level below reads: for each of its bins the solid-angle mean of the children here
-    // (level 0 and the faces share their bins, so the faces read level 0's radiance directly).
-    if (k == 0) return;
-    const int parents = bins / 4;
-    data.childMean.resize(std::size_t(probes) * parents);
-    const DirectionBins& below = state.levels[k - 1].bins;
-    parallelForRange(int(probes), 16, [&](int begin, int end) {
-        for (int p = begin; p < end; ++p) {
-            for (int b = 0; b < parents; ++b) {
+        const Corners& corners = data.corners[p];
+        return mergeCorners(&data.codes[(std::size_t(p) * bins + b) * 8], corners, live, passages,
+                            outgoing, data.sky[b], [&](int c) {
+                                return upper->childMean[std::size_t(corners.probe[c]) * bins + b];
+                            });
+    };
+    std::vector<Rgb>& out = k == 0 ? data.radiance : data.childMean;
+    out.resize(probes * entries);
+    const DirectionBins* below = k == 0 ? nullptr : &state.levels[k - 1].bins;
+    const std::vector<std::int32_t>& demanded = data.demandProbes;
+    parallelForRange(int(demanded.size()), 1, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            const int p = demanded[i];
+            const std::uint32_t live = upper ? weightedCorners(data.corners[p]) : 0;
+            Rgb* row = &out[std::size_t(p) * entries];
+            forEachDemanded(&data.demand[std::size_t(p) * words], words, [&](int e) {
+                if (!below) {
+                    row[e] = binRadiance(p, live, e);
+                    return;
+                }
+                // The solid-angle mean of bin e's children here.
                 Rgb sum;
                 double area = 0.0;
-                for (int child : below.children(b)) {
+                for (const int child : below->children(e)) {
                     const double a = data.bins.solidAngle[child];
-                    sum += data.radiance[std::size_t(p) * bins + child] * float(a);
+                    sum += binRadiance(p, live, child) * float(a);
                     area += a;
                 }
-                data.childMean[std::size_t(p) * parents + b] = sum * float(1.0 / area);
-            }
+                row[e] = sum * float(1.0 / area);
+            });
         }
     });
 }
@@ -210,7 +224,10 @@ void updateFaceLight(RadianceCascades::State& state) {
         faces.emittersExact = computeEmitterIrradiance(state);
     }
     faces.sky = skyMeans(faces.bins, shading);
-    for (LevelData& level : state.levels) level.sky = skyMeans(level.bins, shading);
+    for (std::size_t k = 0; k < state.levels.size(); ++k) {
+        const std::vector<bool> read = demandedBins(state, k);
+        state.levels[k].sky = skyMeans(state.levels[k].bins, shading, &read);
+    }
 }
 
 double lightingPass(RadianceCascades::State& state) {
@@ -235,11 +252,12 @@ double lightingPass(RadianceCascades::State& state) {
             const auto& seen = faces.bins.cosine[faces.table[f].normal];
             const std::uint32_t* codes = &faces.codes[faces.codeOffset[f]];
             const Corners& corners = faces.corners[f];
+            const std::uint32_t live = weightedCorners(corners);
             Rgb irradiance;
             for (std::size_t i = 0; i < seen.bin.size(); ++i) {
                 const int b = seen.bin[i];
                 const Rgb incoming = mergeCorners(
-                    codes + i * 8, corners, state.passages, faces.outgoing, faces.sky[b],
+                    codes + i * 8, corners, live, state.passages, faces.outgoing, faces.sky[b],
                     [&](int c) {
                         return level0.radiance[std::size_t(corners.probe[c]) * bins + b];
                     });

@@ -185,16 +185,18 @@ std::uint32_t passageEnd(std::uint32_t code, const std::vector<Passage>& passage
     return code;
 }
 
-Rgb passageRadiance(std::uint32_t code, const std::vector<Passage>& passages,
-                    const std::vector<Rgb>& outgoing, Rgb sky, Rgb next) {
-    Rgb sum, through(1.0f);
+PassageWalk walkPassages(std::uint32_t code, const std::vector<Passage>& passages,
+                         const std::vector<Rgb>& outgoing) {
+    PassageWalk walk;
+    walk.through = Rgb(1.0f);
     for (int i = 0; i < kMaxPassages && isPassage(code); ++i) {
         const Passage& p = passages[code - kPassage];
-        if (p.face < kPassage) sum += through * outgoing[p.face];
-        through *= p.transmittance;
+        if (p.face < kPassage) walk.light += walk.through * outgoing[p.face];
+        walk.through *= p.transmittance;
         code = p.next;
     }
-    return sum + through * codeRadiance(code, outgoing, sky, next);
+    walk.end = code;
+    return walk;
 }
 
 bool PassageWriter::reserveFor(std::size_t more) {

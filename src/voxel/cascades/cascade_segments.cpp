@@ -10,6 +10,7 @@
 #include <cmath>
 #include <string>
 
+#include "cascade_demand.h"
 #include "cascade_passages.h"
 #include "cascade_state.h"
 #include "luxel/core/memory.h"
@@ -156,6 +157,8 @@ Status castSegments(RadianceCascades::State& state, const std::string& hint) {
         castLevel(state, passages, k);
     }
     if (!passages.refused()) castFaces(state, passages);
+    // What the passes merge follows from the codes; a refused cast's too (they read what it left).
+    findDemand(state);
     if (passages.refused()) {
         state.passagesRefusedAt = passages.reached();
         return Error(

@@ -46,11 +46,19 @@ struct Passage {
 struct LevelData {
     Level level;
     DirectionBins bins;
-    std::vector<Rgb> sky;              // per bin
+    // The sky's mean per bin: over the bins a pass reads only (demandedBins), the others black.
+    std::vector<Rgb> sky;
     std::vector<Corners> corners;      // per probe: the level above's probes around it
     std::vector<std::uint32_t> codes;  // [probe][bin][corner] ([probe][bin] on the top level)
-    std::vector<Rgb> radiance;         // [probe][bin]
-    std::vector<Rgb> childMean;        // [probe][bin of the level below]: mean of its children
+    // What a pass merges (cascade_light.cpp): level 0's radiance, which the faces gather, and
+    // above it only the child means the level below reads. Only the demanded entries are
+    // written; the others are never read.
+    std::vector<Rgb> radiance;   // [probe][bin], level 0
+    std::vector<Rgb> childMean;  // [probe][bin of the level below]: mean of its children
+    // The entries a pass merges (cascade_demand.h), one bit each in rows of 64-bit words:
+    // [probe][bin] on level 0, [probe][bin of the level below] above; and the probes with any.
+    std::vector<std::uint64_t> demand;
+    std::vector<std::int32_t> demandProbes;
 };
 
 struct FaceData {
@@ -146,12 +154,19 @@ inline Rgb codeRadiance(std::uint32_t code, const std::vector<Rgb>& outgoing, Rg
     return Rgb{};
 }
 
-// The plain code the chain of passages from `code` ends in, and what it brings with `next` as
-// kContinue's radiance: the glass faces' own light plus the transmittance times the end's
-// (out of line, so the plain codes' path stays small; cascade_passages.cpp).
+// The plain code the chain of passages from `code` ends in.
 std::uint32_t passageEnd(std::uint32_t code, const std::vector<Passage>& passages);
-Rgb passageRadiance(std::uint32_t code, const std::vector<Passage>& passages,
-                    const std::vector<Rgb>& outgoing, Rgb sky, Rgb next);
+// A chain of passages from `code` followed to its plain code `end`: the glass faces' own light
+// on the way (`light`) and the transmittance through all of them (`through`), so that the chain
+// brings light + through times what `end` brings. One walk gives what decides whether the level
+// above is read and what the chain brings (out of line, so the plain codes' path stays small;
+// cascade_passages.cpp).
+struct PassageWalk {
+    Rgb light, through;
+    std::uint32_t end = kBlack;
+};
+PassageWalk walkPassages(std::uint32_t code, const std::vector<Passage>& passages,
+                         const std::vector<Rgb>& outgoing);
 
 // Radiance a segment code brings, following its passages (the GPU's twin:
 // src/gpu/shaders/voxel/cascades_chain.glsl); next() is what kContinue brings.
@@ -161,8 +176,9 @@ inline Rgb chainRadiance(std::uint32_t code, const std::vector<Passage>& passage
     if (!isPassage(code)) [[likely]] {
         return codeRadiance(code, outgoing, sky, code == kContinue ? next() : Rgb{});
     }
-    const Rgb behind = passageEnd(code, passages) == kContinue ? next() : Rgb{};
-    return passageRadiance(code, passages, outgoing, sky, behind);
+    const PassageWalk walk = walkPassages(code, passages, outgoing);
+    const Rgb behind = walk.end == kContinue ? next() : Rgb{};
+    return walk.light + walk.through * codeRadiance(walk.end, outgoing, sky, behind);
 }
 
 // Casts every segment of the faces and the levels once (cascade_segments.cpp). Refuses, with

@@ -1,6 +1,8 @@
 // Octahedral direction bins (octahedral_bins.h; docs/algorithms/voxel-radiance-cascades.md §2).
 #include "octahedral_bins.h"
 
+#include "luxel/core/parallel.h"
+
 #include <cmath>
 
 namespace luxel::voxel::cascades {
@@ -103,17 +105,22 @@ std::array<int, 4> DirectionBins::children(int bin) const {
     return {by * fine + bx, by * fine + bx + 1, (by + 1) * fine + bx, (by + 1) * fine + bx + 1};
 }
 
-std::vector<Rgb> skyMeans(const DirectionBins& bins, const ShadeOptions& shading) {
+std::vector<Rgb> skyMeans(const DirectionBins& bins, const ShadeOptions& shading,
+                          const std::vector<bool>* wanted) {
     std::vector<Rgb> means(bins.count());
-    for (int bin = 0; bin < bins.count(); ++bin) {
-        double sum[3] = {0, 0, 0}, area = 0.0;
-        forEachSample(bins.side, bin, [&](Vec3d w, double dw) {
-            const Rgb sky = skyColor(w, shading);
-            for (int c = 0; c < 3; ++c) sum[c] += sky[c] * dw;
-            area += dw;
-        });
-        means[bin] = Rgb(float(sum[0] / area), float(sum[1] / area), float(sum[2] / area));
-    }
+    // Each bin on its own: the same means on any number of threads.
+    parallelForRange(bins.count(), 16, [&](int begin, int end) {
+        for (int bin = begin; bin < end; ++bin) {
+            if (wanted && !(*wanted)[bin]) continue;
+            double sum[3] = {0, 0, 0}, area = 0.0;
+            forEachSample(bins.side, bin, [&](Vec3d w, double dw) {
+                const Rgb sky = skyColor(w, shading);
+                for (int c = 0; c < 3; ++c) sum[c] += sky[c] * dw;
+                area += dw;
+            });
+            means[bin] = Rgb(float(sum[0] / area), float(sum[1] / area), float(sum[2] / area));
+        }
+    });
     return means;
 }
 

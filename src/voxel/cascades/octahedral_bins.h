@@ -53,7 +53,10 @@ struct DirectionBins {
     std::array<int, 4> children(int bin) const;
 };
 
-// The solid-angle weighted mean of the scene's sky over each bin.
-std::vector<Rgb> skyMeans(const DirectionBins& bins, const ShadeOptions& shading);
+// The solid-angle weighted mean of the scene's sky over each bin; with `wanted` (a flag per
+// bin), over the bins flagged only, the others left black (the fine levels' maps have up to 65536
+// bins, a pass reads few of them, and the sky is found again whenever the light is set).
+std::vector<Rgb> skyMeans(const DirectionBins& bins, const ShadeOptions& shading,
+                          const std::vector<bool>* wanted = nullptr);
 
 }  // namespace luxel::voxel::cascades
