@@ -71,15 +71,24 @@ void castBentSegments(const RadianceCascades::State& state, PassageWriter& passa
     }
 }
 
+// A level's codes (all kVoid) and corners (no weight) before anything is cast: a cast refused
+// before or while it reaches the level leaves it so, carrying no light, instead of the last
+// cast's codes, whose runs through glass index the passages this cast has cleared.
+void layOutLevel(LevelData& data) {
+    const Level& level = data.level;
+    const int corners = level.top ? 1 : 8;
+    const std::int64_t probes = level.probeCount();
+    data.codes.assign(std::size_t(probes) * data.bins.count() * corners, kVoid);
+    if (!level.top) data.corners.assign(std::size_t(probes), Corners{});
+}
+
 void castLevel(RadianceCascades::State& state, PassageWriter& passages, std::size_t k) {
     LevelData& data = state.levels[k];
     const Level& level = data.level;
     const bool top = level.top;
     const DirectionBins& below = k == 0 ? state.faces.bins : state.levels[k - 1].bins;
-    const int bins = data.bins.count(), corners = top ? 1 : 8;
+    const int bins = data.bins.count(), codesPerBin = top ? 1 : 8;
     const std::int64_t probes = level.probeCount();
-    data.codes.assign(std::size_t(probes) * bins * corners, kVoid);
-    if (!top) data.corners.resize(std::size_t(probes));
     const LevelData* upper = top ? nullptr : &state.levels[k + 1];
     parallelForRange(int(probes), 1, [&](int begin, int end) {
         for (int p = begin; p < end; ++p) {
@@ -93,7 +102,7 @@ void castLevel(RadianceCascades::State& state, PassageWriter& passages, std::siz
                 // Level 0 has the faces' bins; above, a bin's chain came through its parent.
                 const Vec3d from = k == 0 ? data.bins.centre[b] : below.centre[data.bins.parent(b)];
                 const Vec3d start = origin + from * level.tStart;
-                std::uint32_t* codes = &data.codes[(std::size_t(p) * bins + b) * corners];
+                std::uint32_t* codes = &data.codes[(std::size_t(p) * bins + b) * codesPerBin];
                 if (top) {
                     codes[0] =
                         passages.codeOf(traceSegment(state, start, data.bins.centre[b], kInfinity));
@@ -108,8 +117,10 @@ void castLevel(RadianceCascades::State& state, PassageWriter& passages, std::siz
     });
 }
 
-void castFaces(RadianceCascades::State& state, PassageWriter& passages) {
-    FaceData& faces = state.faces;
+// The faces' codes (all kVoid) and corners (no weight) laid out for the current face table, before
+// anything is cast: a cast refused before or while it reaches the faces leaves them so, carrying
+// no light, instead of the last cast's, which may belong to another table.
+void layOutFaces(FaceData& faces) {
     const int count = faces.table.size();
     faces.codeOffset.resize(std::size_t(count) + 1);
     std::uint32_t offset = 0;
@@ -119,7 +130,12 @@ void castFaces(RadianceCascades::State& state, PassageWriter& passages) {
     }
     faces.codeOffset[count] = offset;
     faces.codes.assign(offset, kVoid);
-    faces.corners.resize(std::size_t(count));
+    faces.corners.assign(std::size_t(count), Corners{});
+}
+
+void castFaces(RadianceCascades::State& state, PassageWriter& passages) {
+    FaceData& faces = state.faces;
+    const int count = faces.table.size();
     const Level& level0 = state.levels.front().level;
     parallelForRange(count, 64, [&](int begin, int end) {
         for (int f = begin; f < end; ++f) {
@@ -146,13 +162,17 @@ void castFaces(RadianceCascades::State& state, PassageWriter& passages) {
 }  // namespace
 
 Status castSegments(RadianceCascades::State& state, const std::string& hint) {
-    state.passages = {};  // frees the last cast's before this one counts its own
+    // Frees the last cast's before this one counts its own (assigning {} would keep its capacity,
+    // which the budget does not see).
+    state.passages = std::vector<Passage>();
     state.castMedia = mediaSignature(state.shading);
     state.castComplete = false;
     state.passagesRefusedAt = 0;
     ++state.casts;
     const std::uint64_t planned = state.plannedBytes, limit = state.memoryLimit;
     PassageWriter passages(state.passages, limit > planned ? limit - planned : 0);
+    for (LevelData& level : state.levels) layOutLevel(level);
+    layOutFaces(state.faces);
     for (std::size_t k = 0; k < state.levels.size() && !passages.refused(); ++k) {
         castLevel(state, passages, k);
     }
