@@ -26,13 +26,6 @@ inline bool shadowBlockersHold(const TextureSet* textures, int stepCap) {
     return !(textures && !textures->empty() && textures->anyCutout()) && stepCap == 0;
 }
 
-// surfaceRayBlocked's walk where shadowBlockersHold, with the hit kept for ShadowBlockers::note.
-inline Hit opaqueShadowHit(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
-                           int stepCap) {
-    if (textures && !textures->empty()) return castToSurface(world, textures, ray, stepCap).hit;
-    return castRay(world, ray, kInfinity, stepCap);
-}
-
 class ShadowBlockers {
   public:
     // Crossing points this close to a face's edge (in voxels) prove nothing: the walk's own
@@ -67,6 +60,17 @@ class ShadowBlockers {
             if (blocksThrough(planes_[k], world, ray)) return true;
         }
         return false;
+    }
+
+    // surfaceRayBlocked(world, textures, ray, kInfinity, stepCap) where shadowBlockersHold: a
+    // kept face's proof, else the walk, whose stopping face is kept.
+    bool blocked(const VoxelWorld& world, const TextureSet* textures, const Ray& ray, int stepCap) {
+        if (blocks(world, ray)) return true;
+        const Hit stop = textures && !textures->empty()
+                             ? castToSurface(world, textures, ray, stepCap).hit
+                             : castRay(world, ray, kInfinity, stepCap);
+        note(stop);
+        return stop.hit;
     }
 
   private:

@@ -26,16 +26,10 @@ SkyAmbient traceSkyAmbient(const VoxelWorld& world, const TextureSet* textures, 
         const gpu::shared::vec3 d =
             gpu::shared::skyAmbientDirection({normal.x, normal.y, normal.z}, u1, u2);
         const Ray ray{point, {d.x, d.y, d.z}};
-        if (share) {
-            if (blockers.blocks(world, ray)) continue;
-            const Hit stop = opaqueShadowHit(world, textures, ray, options.stepCap);
-            if (stop.hit) {
-                blockers.note(stop);
-                continue;
-            }
-        } else if (surfaceRayBlocked(world, textures, ray, kInfinity, options.stepCap)) {
-            continue;
-        }
+        const bool blocked =
+            share ? blockers.blocked(world, textures, ray, options.stepCap)
+                  : surfaceRayBlocked(world, textures, ray, kInfinity, options.stepCap);
+        if (blocked) continue;
         ++escaped;
         sky += skyColor(ray.direction, options);
     }

@@ -238,12 +238,7 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
         if (shareBlockers) {
             // The same answer as sunRayTransmittance's walk, which an earlier ray's blocker
             // often gives without one.
-            if (blockers.blocks(world, ray)) continue;
-            const Hit stop = opaqueShadowHit(world, textures, ray, shading.stepCap);
-            if (stop.hit) {
-                blockers.note(stop);
-                continue;
-            }
+            if (blockers.blocked(world, textures, ray, shading.stepCap)) continue;
         } else {
             t = sunRayTransmittance(world, textures, ray, shading);
             if (!(t.maxComponent() > 0.0f)) continue;

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "luxel/voxel/voxel_scene.h"
+#include "voxel/cascade_states.h"
 #include "voxel/cascades/cascade_demand.h"
 #include "voxel/cascades/cascade_state.h"
 #include "voxel/plain_light_worlds.h"
@@ -23,21 +24,6 @@ using namespace luxel;
 using namespace luxel::voxel;
 using namespace luxel::voxel::cascades;
 using namespace luxel::voxel::test;
-
-// The cascades' state as RadianceCascades::create builds it.
-std::unique_ptr<RadianceCascades::State> buildState(const VoxelWorld& world,
-                                                    const TextureSet* textures,
-                                                    const ShadeOptions& shading) {
-    auto state = std::make_unique<RadianceCascades::State>();
-    state->world = &world;
-    state->textures = textures;
-    state->shading = shading;
-    state->memoryLimit = std::uint64_t(1) << 31;
-    state->faces.bins = DirectionBins::build(kFaceBinSide);
-    EXPECT_TRUE(buildSegments(*state).ok());
-    updateFaceLight(*state);
-    return state;
-}
 
 // Every entry of every level demanded, with the sky of every bin: the pass as it was before the
 // demand.
@@ -82,29 +68,14 @@ TEST(CascadesDemand, DemandedEntriesGiveTheLightOfEveryEntryOnTheCottage) {
     auto scene =
         loadVoxelScene(std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/cottage.json", 64, 36);
     ASSERT_TRUE(scene.ok()) << scene.error().message();
-    auto demanded = buildState(scene->world, &scene->textures, scene->shading);
-    auto every = buildState(scene->world, &scene->textures, scene->shading);
+    auto demanded = buildCascadeState(scene->world, &scene->textures, scene->shading);
+    auto every = buildCascadeState(scene->world, &scene->textures, scene->shading);
     EXPECT_GT(demanded->passages.size(), 0u);  // chains through the windows
     const double share = demandedShare(*demanded);
     EXPECT_GT(share, 0.05);
     EXPECT_LT(share, 0.9);
     demandEverything(*every);
     expectSameLight(*demanded, *every, 4);
-}
-
-// A floor with a glass slab and a glass block on it.
-VoxelWorld floorWithGlass() {
-    constexpr Voxel kGlass{255, 255, 255, 1};  // texture slot 0
-    VoxelWorld world = makeWorld({20, 8, 20});
-    for (int z = 0; z < 20; ++z)
-        for (int x = 0; x < 20; ++x) world.set(x, 0, z, kWhite);
-    for (int z = 3; z < 11; ++z)
-        for (int x = 3; x < 11; ++x) world.set(x, 1, z, kGlass), world.set(x, 2, z, kGlass);
-    for (int y = 1; y < 4; ++y)
-        for (int z = 13; z < 16; ++z)
-            for (int x = 12; x < 15; ++x) world.set(x, y, z, kGlass);
-    world.refreshEmptySpace();
-    return world;
 }
 
 TEST(CascadesDemand, ANewCastFindsTheDemandAgain) {
@@ -116,7 +87,7 @@ TEST(CascadesDemand, ANewCastFindsTheDemandAgain) {
     ShadeOptions opaque = clear;
     opaque.refraction = false;  // the glass stops the segments: other codes, other demand
 
-    auto demanded = buildState(world, nullptr, clear);
+    auto demanded = buildCascadeState(world, nullptr, clear);
     const std::vector<std::uint64_t> before = demanded->levels.front().demand;
     // As RadianceCascades::setLight does for light that changes what passes glass.
     demanded->shading = opaque;
@@ -125,7 +96,7 @@ TEST(CascadesDemand, ANewCastFindsTheDemandAgain) {
     updateFaceLight(*demanded);
     EXPECT_NE(demanded->levels.front().demand, before);
 
-    auto every = buildState(world, nullptr, opaque);
+    auto every = buildCascadeState(world, nullptr, opaque);
     demandEverything(*every);
     expectSameLight(*demanded, *every, 3);
 }
@@ -138,7 +109,7 @@ TEST(CascadesDemand, NewLightFindsTheSkyOfTheDemandedBinsAgain) {
     first.sunDirection = {0.4f, 1.0f, 0.3f};
     ShadeOptions second = first;
     second.sunDirection = {-0.6f, 0.5f, 0.1f};
-    auto state = buildState(world, nullptr, first);
+    auto state = buildCascadeState(world, nullptr, first);
     std::vector<std::vector<Rgb>> before;
     for (const LevelData& level : state->levels) before.push_back(level.sky);
     state->shading = second;  // as RadianceCascades::setLight does when no segment changes

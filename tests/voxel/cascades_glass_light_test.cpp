@@ -16,20 +16,11 @@ using namespace luxel;
 using namespace luxel::voxel;
 using namespace luxel::voxel::test;
 
-constexpr Voxel kGlass{255, 255, 255, 1};  // texture slot 0
 constexpr Voxel kLamp{255, 255, 255, 2};   // texture slot 1
 
-// A floor with a glass slab two voxels thick lying on part of it, a glass block standing on it
-// with an opaque voxel inside, and a lamp beside the slab.
-VoxelWorld floorWithGlass() {
-    VoxelWorld world = makeWorld({20, 8, 20});
-    for (int z = 0; z < 20; ++z)
-        for (int x = 0; x < 20; ++x) world.set(x, 0, z, kWhite);
-    for (int z = 3; z < 11; ++z)
-        for (int x = 3; x < 11; ++x) world.set(x, 1, z, kGlass), world.set(x, 2, z, kGlass);
-    for (int y = 1; y < 4; ++y)
-        for (int z = 13; z < 16; ++z)
-            for (int x = 12; x < 15; ++x) world.set(x, y, z, kGlass);
+// floorWithGlass with an opaque voxel inside the glass block and a lamp beside the slab.
+VoxelWorld floorWithGlassAndLamp() {
+    VoxelWorld world = floorWithGlass();
     world.set(13, 2, 14, kWhite);
     world.set(12, 1, 6, kLamp);
     world.refreshEmptySpace();
@@ -106,7 +97,7 @@ void expectSameStats(const CascadeStats& a, const CascadeStats& b, const std::st
 // faces and runs through glass, and after three passes the same irradiance and picture.
 void expectFreshAfterChange(const ShadeOptions& before, const ShadeOptions& after,
                             const std::string& what) {
-    const VoxelWorld world = floorWithGlass();
+    const VoxelWorld world = floorWithGlassAndLamp();
     RadianceCascades changed = build(world, before);
     ASSERT_TRUE(changed.setLight(after).ok()) << what;
     RadianceCascades fresh = build(world, after);
@@ -126,7 +117,7 @@ TEST(CascadesGlassLight, TurningRefractionOffOrOnBuildsWhatAFreshCreateBuilds) {
     ShadeOptions off = on;
     off.refraction = false;
     // The faces under glass are probes only while refraction is on.
-    const VoxelWorld world = floorWithGlass();
+    const VoxelWorld world = floorWithGlassAndLamp();
     EXPECT_GT(build(world, on).stats().faces, build(world, off).stats().faces);
     EXPECT_EQ(build(world, off).stats().passages, 0);
     expectFreshAfterChange(on, off, "refraction turned off");
@@ -150,7 +141,7 @@ TEST(CascadesGlassLight, GlassMadeOpaqueOrMoreAbsorbingBuildsWhatAFreshCreateBui
 // passes after converge to what a fresh build converges to (40 passes each: what is left of the
 // start shrinks by the albedo, 0.7, at each).
 TEST(CascadesGlassLight, IrradianceGatheredBeforeTheChangeConvergesToTheFreshBuilds) {
-    const VoxelWorld world = floorWithGlass();
+    const VoxelWorld world = floorWithGlassAndLamp();
     const ShadeOptions on = glassLight();
     ShadeOptions off = on;
     off.refraction = false;

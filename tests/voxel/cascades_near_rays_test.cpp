@@ -13,6 +13,7 @@
 #include "luxel/voxel/render_image.h"
 #include "luxel/voxel/surface_cast.h"
 #include "luxel/voxel/voxel_scene.h"
+#include "voxel/cascade_states.h"
 #include "voxel/cascades/cascade_near_rays.h"
 #include "voxel/cascades/cascade_state.h"
 #include "voxel/path_trace_bsdf.h"
@@ -25,22 +26,6 @@ using namespace luxel;
 using namespace luxel::voxel;
 using namespace luxel::voxel::cascades;
 using namespace luxel::voxel::test;
-
-// The cascades' state as RadianceCascades::create builds it (faces, segments, the emitters'
-// light and near lists); the near terms need no lighting pass.
-std::unique_ptr<RadianceCascades::State> buildState(const VoxelWorld& world,
-                                                    const TextureSet* textures,
-                                                    const ShadeOptions& shading) {
-    auto state = std::make_unique<RadianceCascades::State>();
-    state->world = &world;
-    state->textures = textures;
-    state->shading = shading;
-    state->memoryLimit = std::uint64_t(1) << 31;
-    state->faces.bins = DirectionBins::build(kFaceBinSide);
-    EXPECT_TRUE(buildSegments(*state).ok());
-    updateFaceLight(*state);
-    return state;
-}
 
 struct Tally {
     int nearPixels = 0;     // pixels whose surface has near emitters and some of their light
@@ -99,7 +84,7 @@ TEST(CascadesNearRays, SharedLinesGiveTheSameLightAndHighlightOnThinWalls) {
     auto scene =
         loadVoxelScene(std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/thin-walls.json", 160, 90);
     ASSERT_TRUE(scene.ok()) << scene.error().message();
-    const auto state = buildState(scene->world, &scene->textures, scene->shading);
+    const auto state = buildCascadeState(scene->world, &scene->textures, scene->shading);
     ASSERT_FALSE(state->faces.nearEmitters.empty());
     const Tally tally = compareOverThePicture(*state, scene->camera);
     EXPECT_GT(tally.nearPixels, 100);
@@ -129,7 +114,7 @@ TEST(CascadesNearRays, SharedLinesGiveTheSameLightPastTheKeptEmitters) {
     for (int z = 7; z < 13; ++z)
         for (int x = 7; x < 13; ++x) world.set(x, 3, z, Voxel{255, 255, 255, alphaForSlot(0)});
     world.refreshEmptySpace();
-    const auto state = buildState(world, nullptr, o);
+    const auto state = buildCascadeState(world, nullptr, o);
     const FaceData& faces = state->faces;
     std::uint32_t longest = 0;
     for (std::size_t f = 0; f + 1 < faces.nearOffset.size(); ++f) {

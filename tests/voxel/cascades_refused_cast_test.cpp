@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <memory>
 
+#include "voxel/cascade_states.h"
 #include "voxel/cascades/cascade_state.h"
 #include "voxel/plain_light_worlds.h"
 
@@ -40,20 +40,6 @@ ShadeOptions glassLight(bool refraction, float absorption) {
     EXPECT_TRUE(o.materials.setSlot(0, glass(Rgb(absorption))).ok());
     o.refraction = refraction;
     return o;
-}
-
-std::unique_ptr<RadianceCascades::State> builtState(const VoxelWorld& world,
-                                                    const ShadeOptions& shading,
-                                                    std::uint64_t limit) {
-    auto state = std::make_unique<RadianceCascades::State>();
-    state->world = &world;
-    state->shading = shading;
-    state->options.spacing = 2;  // given: a refused cast is not tried at a larger spacing
-    state->memoryLimit = limit;
-    state->faces.bins = DirectionBins::build(kFaceBinSide);
-    EXPECT_TRUE(buildSegments(*state).ok());
-    updateFaceLight(*state);
-    return state;
 }
 
 // Every array the passes read is laid out for the current levels and face table, and every run
@@ -93,7 +79,7 @@ TEST(CascadesRefusedCast, LeavesTheFacesOfTheNewTableLaidOut) {
     CascadeOptions given;
     given.spacing = 2;
     const std::uint64_t tight = estimateCascades(world, given).bytes + 1024;
-    auto state = builtState(world, glassLight(false, 0.1f), tight);
+    auto state = buildCascadeState(world, nullptr, glassLight(false, 0.1f), 2, tight);
     const int opaqueFaces = state->faces.table.size();
     state->shading = glassLight(true, 0.1f);
     ASSERT_FALSE(buildSegments(*state).ok());
@@ -105,7 +91,7 @@ TEST(CascadesRefusedCast, LeavesTheFacesOfTheNewTableLaidOut) {
 
 TEST(CascadesRefusedCast, LeavesNoCodeOfTheLastCastsRunsThroughGlass) {
     const VoxelWorld world = glassOnAFloor();
-    auto state = builtState(world, glassLight(true, 0.1f), std::uint64_t(1) << 30);
+    auto state = buildCascadeState(world, nullptr, glassLight(true, 0.1f), 2);
     ASSERT_GT(state->passages.size(), 0u);
     // New glass (another absorption) casts again, now with room for a few runs only.
     state->shading = glassLight(true, 0.3f);

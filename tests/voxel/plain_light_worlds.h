@@ -21,6 +21,22 @@ inline VoxelWorld makeWorld(Int3 size) {
     return std::move(*world);
 }
 
+// A 20 x 8 x 20 floor with a glass slab two voxels thick lying on part of it and a glass block
+// standing on it; the glass is texture slot 0.
+inline VoxelWorld floorWithGlass() {
+    constexpr Voxel kGlass{255, 255, 255, 1};
+    VoxelWorld world = makeWorld({20, 8, 20});
+    for (int z = 0; z < 20; ++z)
+        for (int x = 0; x < 20; ++x) world.set(x, 0, z, kWhite);
+    for (int z = 3; z < 11; ++z)
+        for (int x = 3; x < 11; ++x) world.set(x, 1, z, kGlass), world.set(x, 2, z, kGlass);
+    for (int y = 1; y < 4; ++y)
+        for (int z = 13; z < 16; ++z)
+            for (int x = 12; x < 15; ++x) world.set(x, y, z, kGlass);
+    world.refreshEmptySpace();
+    return world;
+}
+
 // Light only from the materials and the sky the test sets; plain diffuse blocks: Lambertian in
 // the path tracer too (ior 1: no index contrast, so no specular layer), and a delta sun unless
 // a test gives it a radius.
