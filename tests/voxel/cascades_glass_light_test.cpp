@@ -16,7 +16,7 @@ using namespace luxel;
 using namespace luxel::voxel;
 using namespace luxel::voxel::test;
 
-constexpr Voxel kLamp{255, 255, 255, 2};   // texture slot 1
+constexpr Voxel kLamp{255, 255, 255, 2};  // texture slot 1
 
 // floorWithGlass with an opaque voxel inside the glass block and a lamp beside the slab.
 VoxelWorld floorWithGlassAndLamp() {
