@@ -19,12 +19,9 @@ bool readsAbove(std::uint32_t code, const std::vector<Passage>& passages) {
 struct Rows {
     std::vector<std::uint64_t>& bits;
     int words;
-    std::int64_t probes;
 
-    // Marks the entry (probe, bin) (corners from an earlier cast than the codes may point past
-    // the level; they are left out).
+    // Marks the entry (probe, bin).
     void mark(std::int32_t probe, int bin) {
-        if (probe < 0 || probe >= probes) return;
         bits[std::size_t(probe) * words + bin / 64] |= std::uint64_t(1) << (bin % 64);
     }
     // Marks (corner's probe, bin) for each of the eight corners whose segment reads it.
@@ -40,28 +37,15 @@ struct Rows {
 
 Rows rowsOf(RadianceCascades::State& state, std::size_t k) {
     LevelData& data = state.levels[k];
-    return Rows{data.demand, demandBins(state, k) / 64, data.level.probeCount()};
-}
-
-// Whether level k holds all its codes and corners: a refused cast may stop before it.
-bool levelCast(const RadianceCascades::State& state, std::size_t k) {
-    const LevelData& data = state.levels[k];
-    const std::uint64_t entries = std::uint64_t(data.level.probeCount()) * data.bins.count();
-    if (data.level.top) return data.codes.size() == entries;
-    return data.codes.size() == entries * 8 &&
-           data.corners.size() == std::size_t(data.level.probeCount());
+    return Rows{data.demand, demandBins(state, k) / 64};
 }
 
 // Level 0's radiance that the faces' gather reads.
 void markFaces(RadianceCascades::State& state) {
     const FaceData& faces = state.faces;
     Rows rows = rowsOf(state, 0);
-    const std::size_t count =
-        std::min({std::size_t(faces.table.size()), faces.corners.size(),
-                  faces.codeOffset.empty() ? std::size_t(0) : faces.codeOffset.size() - 1});
-    for (std::size_t f = 0; f < count; ++f) {
-        const auto& seen = faces.bins.cosine[faces.table[int(f)].normal];
-        if (faces.codeOffset[f] + seen.bin.size() * 8 > faces.codes.size()) continue;
+    for (int f = 0; f < faces.table.size(); ++f) {
+        const auto& seen = faces.bins.cosine[faces.table[f].normal];
         const std::uint32_t* codes = &faces.codes[faces.codeOffset[f]];
         for (std::size_t i = 0; i < seen.bin.size(); ++i) {
             rows.markCorners(codes + i * 8, faces.corners[f], seen.bin[i], state.passages);
@@ -110,12 +94,9 @@ void findDemand(RadianceCascades::State& state) {
     }
     if (state.levels.empty()) return;
     markFaces(state);
+    // Every level and the faces are laid out for this cast (castSegments): where a refused cast
+    // stopped, the codes are void, which read nothing above.
     for (std::size_t k = 0; k < state.levels.size(); ++k) {
-        // A level not cast reads nothing and passes nothing on: its entries stay zero.
-        if (!levelCast(state, k)) {
-            std::fill(state.levels[k].demand.begin(), state.levels[k].demand.end(), 0);
-            continue;
-        }
         listProbes(state, k);
         if (!state.levels[k].level.top) markAbove(state, k);
     }
