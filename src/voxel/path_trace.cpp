@@ -287,7 +287,7 @@ Rgb tracePath(const VoxelWorld& world, const TextureSet* textures, const Ray& ca
     // direction it left its last smooth vertex in: chainPdf its density (0: no such vertex, or
     // a surface with a smooth lobe since), chainDirection that direction (a smooth lobe's
     // directions all leave above the face, as sun light sampling's do).
-    const bool sunChains = p.sunThroughGlass && o.refraction && o.materials.anyTransmission();
+    const bool sunChains = p.sunThroughGlass && o.lightPassesMedia();
     double chainPdf = 0.0;
     Vec3d chainDirection;
     bool inside = false;  // the ray travels through the medium of `cell`

@@ -57,9 +57,7 @@ shared::PathTracePush pathPush(const ShadeOptions& shading, const PathTraceOptio
     p.materialFlags =
         (shading.refraction ? LUXEL_PATH_REFRACTION : 0u) |
         (shading.fresnel == ShadeOptions::FresnelModel::Exact ? LUXEL_PATH_FRESNEL_EXACT : 0u) |
-        (options.sunThroughGlass && shading.refraction && shading.materials.anyTransmission()
-             ? LUXEL_PATH_SUN_CHAINS
-             : 0u);
+        (options.sunThroughGlass && shading.lightPassesMedia() ? LUXEL_PATH_SUN_CHAINS : 0u);
     // The disk as SunDisk has it, in double, rounded once.
     const SunDisk disk = SunDisk::make(d, shading.sunAngularRadius);
     packSunDisk(disk, p);

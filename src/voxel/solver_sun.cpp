@@ -92,7 +92,7 @@ bool targetHolds(const FaceTarget& target, Int3 voxel) {
 // opaque face first).
 Rgb lineTransmittance(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
                       const ShadeOptions& shading, const FaceTarget* target) {
-    const bool media = shading.refraction && shading.materials.anyTransmission();
+    const bool media = shading.lightPassesMedia();
     if (!media && !target) {
         const bool blocked = surfaceRayBlocked(world, textures, ray, kInfinity, shading.stepCap);
         return blocked ? Rgb{} : Rgb(1.0f);
@@ -208,8 +208,7 @@ class SunHighlight {
 // Whether the disk's shadow rays may share blockers (ShadowBlockers): every solid voxel stops a
 // ray, and no glass or water lets one through.
 bool raysShareBlockers(const TextureSet* textures, const ShadeOptions& shading) {
-    const bool media = shading.refraction && shading.materials.anyTransmission();
-    return !media && shadowBlockersHold(textures, shading.stepCap);
+    return !shading.lightPassesMedia() && shadowBlockersHold(textures, shading.stepCap);
 }
 
 }  // namespace

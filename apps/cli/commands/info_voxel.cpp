@@ -80,7 +80,7 @@ int infoVoxelScene(const voxel::VoxelScene& loaded) {
     const voxel::CascadeEstimate rc = voxel::estimateCascades(world);
     // Runs through glass are not estimated ahead; the build counts them against the limit and,
     // where they do not fit, doubles the automatic spacing.
-    const bool glass = shading.refraction && shading.materials.anyTransmission();
+    const bool glass = shading.lightPassesMedia();
     std::printf("  cascades (rc)      %s: spacing %d, %d levels, %lld probes, %lld faces%s%s\n",
                 formatBytes(rc.bytes).c_str(), rc.spacing, rc.levels,
                 static_cast<long long>(rc.probes), static_cast<long long>(rc.faces),

@@ -108,6 +108,10 @@ struct ShadeOptions {
     bool emitterLight = true;
     int emitterRays = 4;
     const EmitterLights* emitterLights = nullptr;
+
+    // Whether light passes some voxel's medium (glass, water): refraction on and a material
+    // that transmits; else every solid voxel stops a ray.
+    bool lightPassesMedia() const { return refraction && materials.anyTransmission(); }
 };
 
 // The Unity tracer's face factor min((dot(n, L) + 1) / 2 + ambient, 1); in shadow dot(n, L) is

@@ -82,7 +82,7 @@ SegmentTrace traceSegment(const RadianceCascades::State& state, Vec3d start, Vec
     const ShadeOptions& shading = state.shading;
     const double length = std::sqrt(dot(d, d));
     // A segment of no length (a connector to where it already is) has no direction to walk.
-    const bool media = shading.refraction && shading.materials.anyTransmission() && length > 0.0;
+    const bool media = shading.lightPassesMedia() && length > 0.0;
     const Vec3d dir = media ? d * (1.0 / length) : d;
     SegmentTrace out;
     Vec3d origin = start;
@@ -170,7 +170,7 @@ Rgb traceTransmittance(const SegmentTrace& trace) {
 
 std::vector<float> mediaSignature(const ShadeOptions& shading) {
     const MaterialTable& materials = shading.materials;
-    if (!shading.refraction || !materials.anyTransmission()) return {};
+    if (!shading.lightPassesMedia()) return {};
     std::vector<float> key{float(shading.fresnel)};
     for (int slot = -1; slot < materials.slotCount(); ++slot) {
         const Material& m = materials.forSlot(slot);

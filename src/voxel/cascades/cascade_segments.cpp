@@ -26,7 +26,7 @@ namespace {
 // segments bend towards the wall). When it sees none, all keep their weights.
 void keepVisibleCorners(const RadianceCascades::State& state, const Level& upper, Vec3d from,
                         Corners& corners) {
-    const bool media = state.shading.refraction && state.shading.materials.anyTransmission();
+    const bool media = state.shading.lightPassesMedia();
     Corners visible = corners;
     float total = 0.0f;
     for (int c = 0; c < 8; ++c) {
