@@ -214,7 +214,8 @@ bool raysShareBlockers(const TextureSet* textures, const ShadeOptions& shading) 
 }  // namespace
 
 Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
-                   const PathBsdf* specular, const ShadeOptions& shading, int sunRays) {
+                   const PathBsdf* specular, const ShadeOptions& shading, int sunRays,
+                   const SunOpenMap* open) {
     if (!(shading.sunIrradiance.maxComponent() > 0.0f)) return {};
     if (!(diffuse.maxComponent() > 0.0f) && !specular) return {};
     const SunSpiral& spiral = sunSpiral(shading, sunRays);
@@ -226,6 +227,7 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
     Rgb cosines, glossy;  // the sum of cos x transmittance; the smooth lobes' light
     const SunHighlight highlight = specular ? SunHighlight(*specular) : SunHighlight(PathBsdf{});
     const bool shareBlockers = raysShareBlockers(textures, shading);
+    const bool mapped = open && open->startsClear(world, hit);
     ShadowBlockers blockers;
     for (int i = 0; i < rays; ++i) {
         const Vec3d& l = spiral.directions[std::size_t(i)];
@@ -234,7 +236,9 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
         if (!(cosSun > 0.0)) continue;
         const Ray ray{hit.point, l};
         Rgb t(1.0f);
-        if (shareBlockers) {
+        if (mapped && open->rayOpen(hit, l)) {
+            // Proven to reach the sky: transmittance 1, as the walk finds it.
+        } else if (shareBlockers) {
             // The same answer as sunRayTransmittance's walk, which an earlier ray's blocker
             // often gives without one.
             if (blockers.blocked(world, textures, ray, shading.stepCap)) continue;

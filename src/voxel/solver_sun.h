@@ -10,6 +10,7 @@
 #pragma once
 
 #include "path_trace_surface.h"
+#include "sun_open_map.h"
 
 #include "luxel/core/vec.h"
 #include "luxel/voxel/dda.h"
@@ -65,10 +66,11 @@ Rgb faceRayTransmittance(const VoxelWorld& world, const TextureSet* textures, co
 // lobe `diffuse` and, when given, the GGX lobe of `specular` (whose diffuse lobe must be off;
 // each ray a delta light of its share, bsdfLight's highlight computed in float as on the GPU)
 // lit by the sun's disk over `sunRays` rays of its spiral (one for a delta sun). No rays when
-// neither lobe can reflect.
+// neither lobe can reflect. A ray that `open` proves open (its spiral's directions mapped) takes
+// transmittance 1 without being walked: the walk's answer.
 Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
                    const PathBsdf* specular, const ShadeOptions& shading,
-                   int sunRays = kSunDiskRays);
+                   int sunRays = kSunDiskRays, const SunOpenMap* open = nullptr);
 
 // The radiance of the sun's disk along a unit direction that escapes to the sky after a delta lobe
 // (a mirror, a refraction), as the path tracer adds it: 0 outside the disk and for a delta sun.

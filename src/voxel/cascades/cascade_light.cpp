@@ -10,6 +10,7 @@
 #include "../solver_sun.h"
 #include "../sun_disk.h"
 #include "cascade_demand.h"
+#include "cascade_picture.h"
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/surface_cast.h"
@@ -52,21 +53,42 @@ float reflectedShare(const Material& m, const ShadeOptions& shading) {
     return float(1.0 - passed);
 }
 
+// The directions of the picture's sun rays (its surface's spiral and a followed surface's single
+// ray) and of the faces' (their quarters'), for the maps that prove them open.
+std::vector<Vec3d> spiralDirections(const SunDisk& sun, std::initializer_list<int> counts) {
+    std::vector<Vec3d> out;
+    for (const int count : counts) {
+        const int rays = sun.delta() ? 1 : count;
+        for (int i = 0; i < rays; ++i) out.push_back(sun.spiral(i, rays));
+    }
+    return out;
+}
+
 // Mean transmittance of the face's shadow rays (sunRayTransmittance: cutouts let them through,
 // glass dims them): from each of its four quarter centres one ray to a delta sun, or
 // kSunRaysPerQuarter rays to a disk (the quarters take turns along the disk's spiral, sun_disk.h,
 // so together they cover all of it).
-Rgb sunPassing(const RadianceCascades::State& state, const Face& face, const SunDisk& sun) {
+Rgb sunPassing(const RadianceCascades::State& state, const Face& face, const SunDisk& sun,
+               const SunOpenMap& open) {
     const Int3 n = normalFromIndex(face.normal);
     const Vec3d axis = sun.axis;
     if (!(n.x * axis.x + n.y * axis.y + n.z * axis.z > 0.0)) return {};
     const int perQuarter = sun.delta() ? 1 : kSunRaysPerQuarter;
     Rgb passing;
     for (int i = 0; i < 4; ++i) {
+        Hit from;
+        from.hit = true;
+        from.voxel = face.voxel;
+        from.normal = n;
+        from.point = faceQuarterCentre(face, i);
+        const bool mapped = open.startsClear(*state.world, from);
         for (int j = 0; j < perQuarter; ++j) {
             const Vec3d l = sun.spiral(4 * j + i, 4 * perQuarter);
-            passing += sunRayTransmittance(*state.world, state.textures,
-                                           {faceQuarterCentre(face, i), l}, state.shading);
+            // A ray proven to reach the sky (sun_open_map.h) passes whole, as walked.
+            passing += mapped && open.rayOpen(from, l)
+                           ? Rgb(1.0f)
+                           : sunRayTransmittance(*state.world, state.textures, {from.point, l},
+                                                 state.shading);
         }
     }
     return passing * (1.0f / float(4 * perQuarter));
@@ -197,6 +219,14 @@ void updateFaceLight(RadianceCascades::State& state) {
     faces.sunPassing.resize(count);
     if (faces.irradiance.size() != std::size_t(count)) faces.irradiance.assign(count, Rgb{});
     faces.outgoing.resize(count);
+    // The faces' map only while their rays are cast; the picture's kept (sun_open_map.h).
+    SunOpenMap facesOpen;
+    if (sunMoved) {
+        state.sunOpen =
+            SunOpenMap::build(*state.world, spiralDirections(sun, {kPictureSunRays, 1}));
+        facesOpen =
+            SunOpenMap::build(*state.world, spiralDirections(sun, {4 * kSunRaysPerQuarter}));
+    }
     parallelForRange(count, 64, [&](int begin, int end) {
         for (int f = begin; f < end; ++f) {
             const Face& face = faces.table[f];
@@ -215,7 +245,7 @@ void updateFaceLight(RadianceCascades::State& state) {
             const PathSurface surface = pathSurfaceAt(*state.world, s, shading);
             faces.albedo[f] = surface.albedo * reflectedShare(*surface.material, shading);
             faces.emission[f] = surface.emission;
-            if (sunMoved) faces.sunPassing[f] = sunPassing(state, face, sun);
+            if (sunMoved) faces.sunPassing[f] = sunPassing(state, face, sun, facesOpen);
         }
     });
     state.sunForVisibility = sun.axis;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "../../gpu/shaders/shared/near_emitters.h"
+#include "../sun_open_map.h"
 #include "cascade_layout.h"
 #include "glossy_emitters.h"
 #include "luxel/voxel/radiance_cascades.h"
@@ -123,6 +124,8 @@ struct RadianceCascades::State {
     std::uint64_t plannedBytes = 0, memoryLimit = 0, passagesRefusedAt = 0;
     Vec3d sunForVisibility{};           // the sun direction sunPassing was found for
     double sunRadiusForVisibility = 0;  // and the sun's angular radius
+    // The points whose shadow rays all reach the sky, for that sun (found with sunPassing).
+    SunOpenMap sunOpen;
     CascadeStats stats;
 };
 

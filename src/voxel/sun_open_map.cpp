@@ -1,0 +1,189 @@
+// Shadow rays proven to reach the sky (sun_open_map.h).
+#include "sun_open_map.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
+
+namespace luxel::voxel {
+namespace {
+
+constexpr std::int16_t kNothing = std::numeric_limits<std::int16_t>::min();
+// Slack for rounding, far above the walk's own (float or double: a cell it enters lies within
+// about 1e-5 voxels of the exact ray in worlds of thousands): around a voxel's projection and
+// around a start point's cell boundaries, in voxels.
+constexpr double kProjectionSlack = 1e-3;
+constexpr double kStartSlack = 1e-4;
+// A direction leaves a face plane when its component along the normal is above this.
+constexpr double kLeaves = 1e-9;
+
+int normalIndexOf(Int3 n) {
+    if (n.x != 0) return n.x > 0 ? 0 : 1;
+    if (n.y != 0) return n.y > 0 ? 2 : 3;
+    return n.z > 0 ? 4 : 5;
+}
+
+bool sameBits(const Vec3d& a, const Vec3d& b) {
+    return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
+           std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y) &&
+           std::bit_cast<std::uint64_t>(a.z) == std::bit_cast<std::uint64_t>(b.z);
+}
+
+// Whether solid voxel (x, y, z) has a non-solid face neighbour (outside the world counts): the
+// first solid cell a walk from an empty cell enters is one.
+bool exposed(const VoxelWorld& world, int x, int y, int z) {
+    return !world.solid(x - 1, y, z) || !world.solid(x + 1, y, z) || !world.solid(x, y - 1, z) ||
+           !world.solid(x, y + 1, z) || !world.solid(x, y, z - 1) || !world.solid(x, y, z + 1);
+}
+
+// Two unit tangents square to unit `d` and to each other.
+void tangentsOf(Vec3d d, Vec3d& u, Vec3d& v) {
+    const Vec3d helper = std::abs(d.x) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
+    u = normalize(cross(helper, d));
+    v = cross(d, u);
+}
+
+}  // namespace
+
+SunOpenMap::View SunOpenMap::mapOne(const VoxelWorld& world, Vec3d direction, Int3 solidLo,
+                                    Int3 solidHi) {
+    View view;
+    view.direction = direction;
+    bool any = false;
+    for (int n = 0; n < 6; ++n) {
+        view.on[std::size_t(n)] = (n % 2 ? -1.0 : 1.0) * direction[n / 2] > kLeaves;
+        any = any || view.on[std::size_t(n)];
+    }
+    if (!any || solidLo.x >= solidHi.x) return view;
+    tangentsOf(direction, view.tangentU, view.tangentV);
+    const Vec3d &tu = view.tangentU, &tv = view.tangentV;
+    // The unit cube's projection: its corners' least and largest offsets from the voxel's.
+    double cubeLoU = 0, cubeHiU = 0, cubeLoV = 0, cubeHiV = 0;
+    // The projection of the world's box, a texel to spare around it.
+    const Int3 size = world.size();
+    double minU = 0, maxU = 0, minV = 0, maxV = 0;
+    for (int a = 0; a < 3; ++a) {
+        cubeLoU += std::min(0.0, tu[a]), cubeHiU += std::max(0.0, tu[a]);
+        cubeLoV += std::min(0.0, tv[a]), cubeHiV += std::max(0.0, tv[a]);
+        minU += std::min(0.0, tu[a] * size[a]), maxU += std::max(0.0, tu[a] * size[a]);
+        minV += std::min(0.0, tv[a] * size[a]), maxV += std::max(0.0, tv[a] * size[a]);
+    }
+    view.texel = std::max(0.25, std::max(maxU - minU, maxV - minV) / (kMaxTexelsPerSide - 4));
+    view.originU = minU - 2.0 * view.texel, view.originV = minV - 2.0 * view.texel;
+    view.sizeU = int(std::ceil((maxU - minU) / view.texel)) + 4;
+    view.sizeV = int(std::ceil((maxV - minV) / view.texel)) + 4;
+    const std::size_t texels = std::size_t(view.sizeU) * std::size_t(view.sizeV);
+    for (int n = 0; n < 6; ++n) {
+        if (view.on[std::size_t(n)]) view.key[std::size_t(n)].assign(texels, kNothing);
+    }
+    // Every exposed solid voxel marks the texels its projection touches (with slack).
+    const double inv = 1.0 / view.texel;
+    for (int z = solidLo.z; z < solidHi.z; ++z) {
+        for (int y = solidLo.y; y < solidHi.y; ++y) {
+            for (int x = solidLo.x; x < solidHi.x; ++x) {
+                if (!world.solid(x, y, z) || !exposed(world, x, y, z)) continue;
+                const Vec3d corner{double(x), double(y), double(z)};
+                const double u = dot(corner, tu) - view.originU;
+                const double v = dot(corner, tv) - view.originV;
+                const int u0 = int(std::floor((u + cubeLoU - kProjectionSlack) * inv));
+                const int u1 = int(std::floor((u + cubeHiU + kProjectionSlack) * inv));
+                const int v0 = int(std::floor((v + cubeLoV - kProjectionSlack) * inv));
+                const int v1 = int(std::floor((v + cubeHiV + kProjectionSlack) * inv));
+                const int coordinate[3] = {x, y, z};
+                for (int n = 0; n < 6; ++n) {
+                    if (!view.on[std::size_t(n)]) continue;
+                    const auto key = std::int16_t(n % 2 ? -coordinate[n / 2] : coordinate[n / 2]);
+                    std::vector<std::int16_t>& keys = view.key[std::size_t(n)];
+                    for (int j = v0; j <= v1; ++j) {
+                        std::int16_t* row = keys.data() + std::size_t(j) * std::size_t(view.sizeU);
+                        for (int i = u0; i <= u1; ++i) row[i] = std::max(row[i], key);
+                    }
+                }
+            }
+        }
+    }
+    return view;
+}
+
+SunOpenMap SunOpenMap::build(const VoxelWorld& world, std::span<const Vec3d> directions) {
+    // The solids' box, [lo, hi) per axis: only voxels in it can mark.
+    const Int3 size = world.size();
+    Int3 lo = size, hi{0, 0, 0};
+    for (int z = 0; z < size.z; ++z) {
+        for (int y = 0; y < size.y; ++y) {
+            for (int x = 0; x < size.x; ++x) {
+                if (!world.solid(x, y, z)) continue;
+                lo = {std::min(lo.x, x), std::min(lo.y, y), std::min(lo.z, z)};
+                hi = {std::max(hi.x, x + 1), std::max(hi.y, y + 1), std::max(hi.z, z + 1)};
+            }
+        }
+    }
+    SunOpenMap map;
+    for (const Vec3d& d : directions) {
+        if (int(map.views_.size()) == kMaxDirections) break;
+        if (!(std::abs(dot(d, d) - 1.0) < 1e-9)) continue;
+        const bool mapped = std::any_of(map.views_.begin(), map.views_.end(),
+                                        [&](const View& v) { return sameBits(v.direction, d); });
+        if (!mapped) map.views_.push_back(mapOne(world, d, lo, hi));
+    }
+    return map;
+}
+
+bool SunOpenMap::startsClear(const VoxelWorld& world, const Hit& hit) const {
+    if (views_.empty() || !hit.hit || hit.normal == Int3{}) return false;
+    const int n = normalIndexOf(hit.normal), axis = n / 2;
+    const bool positive = n % 2 == 0;
+    const int plane = positive ? hit.voxel[axis] + 1 : hit.voxel[axis];
+    if (!(hit.point[axis] == double(plane))) return false;
+    // The cell in front of the face, and on (or near, for a walk in float) a cell boundary
+    // across the face those either side: castRay's start-cell rule picks by the ray's sign. All
+    // inside the world, so the ray starts inside it (a start on the world's boundary is entered
+    // through the world's face, with its cell clamped into the world).
+    Int3 lo, hi;
+    for (int a = 0; a < 3; ++a) {
+        if (a == axis) {
+            lo[a] = hi[a] = positive ? plane : plane - 1;
+            continue;
+        }
+        lo[a] = int(std::floor(hit.point[a] - kStartSlack));
+        hi[a] = int(std::floor(hit.point[a] + kStartSlack));
+    }
+    for (int z = lo.z; z <= hi.z; ++z) {
+        for (int y = lo.y; y <= hi.y; ++y) {
+            for (int x = lo.x; x <= hi.x; ++x) {
+                if (!world.inside(x, y, z) || world.solid(x, y, z)) return false;
+            }
+        }
+    }
+    return true;
+}
+
+bool SunOpenMap::rayOpen(const Hit& hit, const Vec3d& direction) const {
+    for (const View& view : views_) {
+        if (!sameBits(view.direction, direction)) continue;
+        const int n = normalIndexOf(hit.normal), axis = n / 2;
+        if (!view.on[std::size_t(n)]) return false;
+        // The voxels beyond the face's plane, which the ray may enter.
+        const int plane = n % 2 == 0 ? hit.voxel[axis] + 1 : hit.voxel[axis];
+        const int threshold = n % 2 == 0 ? plane : 1 - plane;
+        const double i = std::floor((dot(hit.point, view.tangentU) - view.originU) / view.texel);
+        const double j = std::floor((dot(hit.point, view.tangentV) - view.originV) / view.texel);
+        if (!(i >= 0.0 && j >= 0.0 && i < double(view.sizeU) && j < double(view.sizeV))) {
+            return false;
+        }
+        const std::size_t texel = std::size_t(j) * std::size_t(view.sizeU) + std::size_t(i);
+        return int(view.key[std::size_t(n)][texel]) < threshold;
+    }
+    return false;
+}
+
+std::uint64_t SunOpenMap::bytes() const {
+    std::uint64_t total = 0;
+    for (const View& v : views_) {
+        for (const auto& k : v.key) total += k.size() * sizeof(std::int16_t);
+    }
+    return total;
+}
+
+}  // namespace luxel::voxel

@@ -1,0 +1,67 @@
+// Shadow rays proven to reach the sky without being walked (docs/algorithms/voxel-radiance-
+// cascades.md §5, "Sunlit rays proven open"): a sunlit pixel's shadow rays all leave the world,
+// and walking each of them to its edge was a large part of an outdoor frame.
+//
+// The real-time solvers cast their sun rays along a fixed spiral over the disk (sun_disk.h), so
+// the directions are known in advance. For each, a map of the world seen from that direction:
+// every solid voxel with a non-solid neighbour marks the texels its projection along the
+// direction touches with its coordinate along each face normal the direction leaves. A ray from
+// a point p on such a face projects onto p's own texel all along its length and never goes back
+// below p's face plane, and the first solid cell the exact walk enters is one with a non-solid
+// neighbour. So when no voxel on the outer side of p's face plane marks p's texel, and the cells
+// the walk may start in are empty, the walk meets nothing: the ray's transmittance is exactly 1,
+// as sunRayTransmittance finds it. Anything else proves nothing and the ray is walked.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "luxel/core/vec.h"
+#include "luxel/voxel/dda.h"
+#include "luxel/voxel/voxel_world.h"
+
+namespace luxel::voxel {
+
+class SunOpenMap {
+  public:
+    // Texels per map side at most; larger worlds get coarser texels (fewer proofs, same answers).
+    static constexpr int kMaxTexelsPerSide = 512;
+    // Directions mapped at most (their maps' bytes grow with each).
+    static constexpr int kMaxDirections = 32;
+
+    // Nothing proven (every query false).
+    SunOpenMap() = default;
+    // One map per unit direction of `directions` (repeats mapped once; past kMaxDirections the
+    // rest are not mapped) of `world` as it is now.
+    static SunOpenMap build(const VoxelWorld& world, std::span<const Vec3d> directions);
+
+    // Whether the cells a ray from hit.point (on the face of hit.voxel with outward hit.normal,
+    // as castRay reports it) may start its walk in are empty: open() needs it for every ray.
+    bool startsClear(const VoxelWorld& world, const Hit& hit) const;
+    // Given startsClear, whether the ray from hit.point along `direction` (one of the mapped
+    // directions, bit for bit; any other proves nothing) leaves the world without entering a
+    // solid voxel. False proves nothing.
+    bool rayOpen(const Hit& hit, const Vec3d& direction) const;
+    bool open(const VoxelWorld& world, const Hit& hit, const Vec3d& direction) const {
+        return startsClear(world, hit) && rayOpen(hit, direction);
+    }
+    int directions() const { return int(views_.size()); }
+    std::uint64_t bytes() const;
+
+  private:
+    // The world seen along one direction: per face normal it leaves (`on`), per texel the
+    // largest coordinate along that normal (times its sign) of the voxels that mark it.
+    struct View {
+        Vec3d direction, tangentU, tangentV;
+        double originU = 0.0, originV = 0.0, texel = 1.0;
+        int sizeU = 0, sizeV = 0;
+        std::array<bool, 6> on{};
+        std::array<std::vector<std::int16_t>, 6> key;
+    };
+    static View mapOne(const VoxelWorld& world, Vec3d direction, Int3 solidLo, Int3 solidHi);
+    std::vector<View> views_;
+};
+
+}  // namespace luxel::voxel
