@@ -1,6 +1,7 @@
-// Shadow rays proven to reach the sky without being walked (docs/algorithms/voxel-radiance-
-// cascades.md §5, "Sunlit rays proven open"): a sunlit pixel's shadow rays all leave the world,
-// and walking each of them to its edge was a large part of an outdoor frame.
+// Shadow rays proven to reach the sky without being walked
+// (docs/algorithms/voxel-radiance-cascades.md §5, "Sunlit rays proven open"): a sunlit pixel's
+// shadow rays all leave the world, and walking each of them to its edge was a large part of an
+// outdoor frame.
 //
 // The real-time solvers cast their sun rays along a fixed spiral over the disk (sun_disk.h), so
 // the directions are known in advance. For each, a map of the world seen from that direction:

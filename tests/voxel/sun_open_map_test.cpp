@@ -72,8 +72,7 @@ TEST(SunOpenMap, ProvesOnlyRaysTheWalkFindsOpen) {
     int proofs = 0, openWalks = 0;
     for (const Vec3d& s : suns) {
         for (const double radius : {0.0, 0.0047, 0.035, 0.3}) {
-            const SunDisk sun =
-                SunDisk::make({float(s.x), float(s.y), float(s.z)}, radius);
+            const SunDisk sun = SunDisk::make({float(s.x), float(s.y), float(s.z)}, radius);
             const std::vector<Vec3d> directions = spiralOf(sun, 8);
             const SunOpenMap map = SunOpenMap::build(world, directions);
             for (int k = 0; k < 3000; ++k) {
@@ -99,11 +98,11 @@ TEST(SunOpenMap, ProvesOnlyRaysTheWalkFindsOpen) {
                     openWalks += walkedOpen;
                     if (!map.open(world, hit, l)) continue;
                     ++proofs;
-                    ASSERT_TRUE(walkedOpen) << "sun " << s.x << " " << s.y << " " << s.z
-                                            << ", radius " << radius << ", voxel " << voxel.x
-                                            << " " << voxel.y << " " << voxel.z << ", normal " << normal.x << " " << normal.y
-                                            << " " << normal.z << ", point " << hit.point.x
-                                            << " " << hit.point.y << " " << hit.point.z;
+                    ASSERT_TRUE(walkedOpen)
+                        << "sun " << s.x << " " << s.y << " " << s.z << ", radius " << radius
+                        << ", voxel " << voxel.x << " " << voxel.y << " " << voxel.z << ", normal "
+                        << normal.x << " " << normal.y << " " << normal.z << ", point "
+                        << hit.point.x << " " << hit.point.y << " " << hit.point.z;
                 }
             }
         }
@@ -141,7 +140,8 @@ TEST(SunOpenMap, ProvesTheLitFloorAndNothingInTheShadow) {
     EXPECT_GT(provenLit, lit - 3 * 8);
     // A face under a solid voxel, and a direction not mapped, prove nothing.
     EXPECT_FALSE(map.open(world, faceHit({20, 0, 20}, {0, 1, 0}, 0.5, 0.5), l));
-    EXPECT_FALSE(map.open(world, faceHit({5, 0, 5}, {0, 1, 0}, 0.5, 0.5), normalised({1, 1, 0.01})));
+    EXPECT_FALSE(
+        map.open(world, faceHit({5, 0, 5}, {0, 1, 0}, 0.5, 0.5), normalised({1, 1, 0.01})));
     EXPECT_TRUE(map.open(world, faceHit({5, 0, 5}, {0, 1, 0}, 0.5, 0.5), l));
 }
 
