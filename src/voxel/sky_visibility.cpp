@@ -12,6 +12,8 @@
 #include "path_trace_surface.h"
 #include "solver_sun.h"
 #include "solver_surface.h"
+#include "sun_disk.h"
+#include "sun_open_map.h"
 
 namespace luxel::voxel {
 
@@ -24,7 +26,7 @@ namespace {
 // kSolverFollowDepth deep when `follow` (some material is followed).
 Rgb reflectedLight(const VoxelWorld& world, const TextureSet* textures, const Ray& r, bool delta,
                    int depth, bool follow, const ShadeOptions& shading, double radius,
-                   PathRng& rng) {
+                   const SunOpenMap& sunOpen, PathRng& rng) {
     const bool followed = follow && depth < kSolverFollowDepth;
     if (shading.materials.anyEmission() || followed) {
         const SurfaceHit s = castToSurface(world, textures, r, shading.stepCap);
@@ -35,10 +37,11 @@ Rgb reflectedLight(const VoxelWorld& world, const TextureSet* textures, const Ra
                                          [&](const Ray& q, bool d) {
                                              return reflectedLight(world, textures, q, d && delta,
                                                                    depth + 1, follow, shading,
-                                                                   radius, rng);
+                                                                   radius, sunOpen, rng);
                                          },
                                          1,
-                                         1};
+                                         1,
+                                         &sunOpen};
                 return shadeSolverSurface(world, textures, s, r, shading, behind, rng);
             }
             return pathSurfaceAt(world, s, shading).emission;
@@ -47,6 +50,21 @@ Rgb reflectedLight(const VoxelWorld& world, const TextureSet* textures, const Ra
         return {};
     }
     return skyColor(r.direction, shading) + (delta ? sunDiskAlong(r.direction, shading) : Rgb{});
+}
+
+// The map that proves the sun's rays open (sun_open_map.h) for the surface's spiral and a
+// followed face's single ray; none for worlds past SunOpenMap::kMaxWorldVoxels, whose scan would
+// cost more than a picture's rays save.
+SunOpenMap sunOpenMapFor(const VoxelWorld& world, const ShadeOptions& shading) {
+    const Int3 size = world.size();
+    if (std::int64_t(size.x) * size.y * size.z > SunOpenMap::kMaxWorldVoxels) return {};
+    const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
+    std::vector<Vec3d> directions;
+    for (const int count : {kSunDiskRays, 1}) {
+        const int rays = sun.delta() ? 1 : count;
+        for (int i = 0; i < rays; ++i) directions.push_back(sun.spiral(i, rays));
+    }
+    return SunOpenMap::build(world, directions);
 }
 
 }  // namespace
@@ -105,6 +123,7 @@ Result<SkyVisibilityImage> renderSkyVisibility(const VoxelWorld& world, const Ca
     SkyVisibilityImage out{Image(width, height, 3), Image(width, height, 1)};
     const bool follow = solverFollowsAny(shading);
     const int samples = samplesPerPixel(shading);
+    const SunOpenMap sunOpen = sunOpenMapFor(world, shading);
     parallelForRange(height, 1, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {
             for (int x = 0; x < width; ++x) {
@@ -122,11 +141,13 @@ Result<SkyVisibilityImage> renderSkyVisibility(const VoxelWorld& world, const Ca
                         const SkyVisibility v = estimateSkyVisibility(
                             world, textures, s.hit.point, s.hit.normal, shading, options, rng);
                         visibility += v.visibility;
-                        const SolverLight light{
-                            v.skyLight + v.emitterLight, [&](const Ray& r, bool delta) {
-                                return reflectedLight(world, textures, r, delta, 0, follow, shading,
-                                                      options.radius, rng);
-                            }};
+                        const SolverLight light{v.skyLight + v.emitterLight,
+                                                [&](const Ray& r, bool delta) {
+                                                    return reflectedLight(
+                                                        world, textures, r, delta, 0, follow,
+                                                        shading, options.radius, sunOpen, rng);
+                                                },
+                                                kSunDiskRays, kSolverSpecularRays, &sunOpen};
                         radiance +=
                             shadeSolverSurface(world, textures, s, ray, shading, light, rng);
                     }

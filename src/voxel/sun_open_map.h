@@ -31,6 +31,9 @@ class SunOpenMap {
     static constexpr int kMaxTexelsPerSide = 512;
     // Directions mapped at most (their maps' bytes grow with each).
     static constexpr int kMaxDirections = 32;
+    // Worlds the renderers that make a map per picture (sky visibility) map at most: the scan
+    // of a larger one costs more than its picture's walks save.
+    static constexpr std::int64_t kMaxWorldVoxels = std::int64_t(1) << 24;
 
     // Nothing proven (every query false).
     SunOpenMap() = default;
