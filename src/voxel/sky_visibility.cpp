@@ -55,7 +55,8 @@ Rgb reflectedLight(const VoxelWorld& world, const TextureSet* textures, const Ra
 // The map that proves the sun's rays open (sun_open_map.h) for the surface's spiral and a
 // followed face's single ray; none for worlds past SunOpenMap::kMaxWorldVoxels, whose scan would
 // cost more than a picture's rays save.
-SunOpenMap sunOpenMapFor(const VoxelWorld& world, const ShadeOptions& shading) {
+SunOpenMap sunOpenMapFor(const VoxelWorld& world, const TextureSet* textures,
+                         const ShadeOptions& shading) {
     const Int3 size = world.size();
     if (std::int64_t(size.x) * size.y * size.z > SunOpenMap::kMaxWorldVoxels) return {};
     const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
@@ -64,7 +65,7 @@ SunOpenMap sunOpenMapFor(const VoxelWorld& world, const ShadeOptions& shading) {
         const int rays = sun.delta() ? 1 : count;
         for (int i = 0; i < rays; ++i) directions.push_back(sun.spiral(i, rays));
     }
-    return SunOpenMap::build(world, directions);
+    return SunOpenMap::build(world, directions, sunRaysStopAtSolids(textures, shading));
 }
 
 }  // namespace
@@ -123,7 +124,7 @@ Result<SkyVisibilityImage> renderSkyVisibility(const VoxelWorld& world, const Ca
     SkyVisibilityImage out{Image(width, height, 3), Image(width, height, 1)};
     const bool follow = solverFollowsAny(shading);
     const int samples = samplesPerPixel(shading);
-    const SunOpenMap sunOpen = sunOpenMapFor(world, shading);
+    const SunOpenMap sunOpen = sunOpenMapFor(world, textures, shading);
     parallelForRange(height, 1, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {
             for (int x = 0; x < width; ++x) {

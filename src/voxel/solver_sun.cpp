@@ -205,13 +205,11 @@ class SunHighlight {
     Rgb specular_;
 };
 
-// Whether the disk's shadow rays may share blockers (ShadowBlockers): every solid voxel stops a
-// ray, and no glass or water lets one through.
-bool raysShareBlockers(const TextureSet* textures, const ShadeOptions& shading) {
+}  // namespace
+
+bool sunRaysStopAtSolids(const TextureSet* textures, const ShadeOptions& shading) {
     return !shading.lightPassesMedia() && shadowBlockersHold(textures, shading.stepCap);
 }
-
-}  // namespace
 
 Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
                    const PathBsdf* specular, const ShadeOptions& shading, int sunRays,
@@ -226,7 +224,9 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
     const Rgb perRay = sun.radianceOverPdf(shading.sunIrradiance) * float(1.0 / rays);
     Rgb cosines, glossy;  // the sum of cos x transmittance; the smooth lobes' light
     const SunHighlight highlight = specular ? SunHighlight(*specular) : SunHighlight(PathBsdf{});
-    const bool shareBlockers = raysShareBlockers(textures, shading);
+    // Whether the disk's shadow rays may share blockers (ShadowBlockers) and take the map's
+    // proofs of blocked rays.
+    const bool shareBlockers = sunRaysStopAtSolids(textures, shading);
     const bool mapped = open && open->startsClear(world, hit);
     ShadowBlockers blockers;
     for (int i = 0; i < rays; ++i) {
@@ -239,8 +239,9 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
         if (mapped && open->rayOpen(hit, l)) {
             // Proven to reach the sky: transmittance 1, as the walk finds it.
         } else if (shareBlockers) {
-            // The same answer as sunRayTransmittance's walk, which an earlier ray's blocker
-            // often gives without one.
+            // The same answer as sunRayTransmittance's walk, which the map or an earlier ray's
+            // blocker often gives without one.
+            if (open && open->rayBlocked(hit, l)) continue;
             if (blockers.blocked(world, textures, ray, shading.stepCap)) continue;
         } else {
             t = sunRayTransmittance(world, textures, ray, shading);

@@ -62,12 +62,18 @@ struct FaceTarget {
 Rgb faceRayTransmittance(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
                          const ShadeOptions& shading, const FaceTarget& target);
 
+// Whether every solid voxel stops a sun ray: no glass or water lets light through, no texture
+// has a cutout texel, the default step cap (shadow rays may then share blockers, ShadowBlockers,
+// and a SunOpenMap built with solidsStop may prove them blocked).
+bool sunRaysStopAtSolids(const TextureSet* textures, const ShadeOptions& shading);
+
 // The sun's light on a face, each shadow ray weighted by its sunRayTransmittance: the diffuse
 // lobe `diffuse` and, when given, the GGX lobe of `specular` (whose diffuse lobe must be off;
 // each ray a delta light of its share, bsdfLight's highlight computed in float as on the GPU)
 // lit by the sun's disk over `sunRays` rays of its spiral (one for a delta sun). No rays when
 // neither lobe can reflect. A ray that `open` proves open (its spiral's directions mapped) takes
-// transmittance 1 without being walked: the walk's answer.
+// transmittance 1 without being walked, and one it proves blocked (while sunRaysStopAtSolids)
+// none: the walk's answers.
 Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
                    const PathBsdf* specular, const ShadeOptions& shading,
                    int sunRays = kSunDiskRays, const SunOpenMap* open = nullptr);

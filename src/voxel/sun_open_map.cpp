@@ -44,10 +44,57 @@ void tangentsOf(Vec3d d, Vec3d& u, Vec3d& v) {
     v = cross(d, u);
 }
 
+// The unit cube's silhouette along a direction: the convex hull of its corners' projections,
+// as half-planes n . q >= c that hold a point q (relative to the voxel's own projection) inside
+// it by at least kProjectionSlack.
+struct Silhouette {
+    std::vector<std::array<double, 3>> halfPlanes;  // nu, nv, c
+    bool holds(double u, double v) const {
+        for (const auto& h : halfPlanes) {
+            if (!(h[0] * u + h[1] * v >= h[2])) return false;
+        }
+        return true;
+    }
+};
+
+Silhouette silhouetteOf(const Vec3d& tu, const Vec3d& tv) {
+    std::vector<std::array<double, 2>> p;
+    for (int c = 0; c < 8; ++c) {
+        const Vec3d corner{double(c & 1), double(c >> 1 & 1), double(c >> 2 & 1)};
+        p.push_back({dot(corner, tu), dot(corner, tv)});
+    }
+    std::sort(p.begin(), p.end());
+    const auto turn = [](const std::array<double, 2>& o, const std::array<double, 2>& a,
+                         const std::array<double, 2>& b) {
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+    };
+    // Andrew's monotone chain: the hull counter-clockwise, collinear points dropped.
+    std::vector<std::array<double, 2>> hull(16);
+    int k = 0;
+    for (int i = 0; i < 8; ++i) {
+        while (k >= 2 && turn(hull[k - 2], hull[k - 1], p[i]) <= 1e-12) --k;
+        hull[k++] = p[i];
+    }
+    for (int i = 6, lower = k + 1; i >= 0; --i) {
+        while (k >= lower && turn(hull[k - 2], hull[k - 1], p[i]) <= 1e-12) --k;
+        hull[k++] = p[i];
+    }
+    Silhouette s;
+    for (int i = 0; i + 1 < k; ++i) {
+        // Inward normal of edge a -> b on a counter-clockwise hull: (-(b - a).v, (b - a).u).
+        const double eu = hull[i + 1][0] - hull[i][0], ev = hull[i + 1][1] - hull[i][1];
+        const double length = std::sqrt(eu * eu + ev * ev);
+        if (!(length > 1e-12)) continue;
+        const double nu = -ev / length, nv = eu / length;
+        s.halfPlanes.push_back({nu, nv, nu * hull[i][0] + nv * hull[i][1] + kProjectionSlack});
+    }
+    return s;
+}
+
 }  // namespace
 
 SunOpenMap::View SunOpenMap::mapOne(const VoxelWorld& world, Vec3d direction, Int3 solidLo,
-                                    Int3 solidHi) {
+                                    Int3 solidHi, bool solidsStop) {
     View view;
     view.direction = direction;
     bool any = false;
@@ -77,6 +124,10 @@ SunOpenMap::View SunOpenMap::mapOne(const VoxelWorld& world, Vec3d direction, In
     for (int n = 0; n < 6; ++n) {
         if (view.on[std::size_t(n)]) view.key[std::size_t(n)].assign(texels, kNothing);
     }
+    const Silhouette silhouette = silhouetteOf(tu, tv);
+    double cubeLeastDepth = 0.0;
+    for (int a = 0; a < 3; ++a) cubeLeastDepth += std::min(0.0, direction[a]);
+    if (solidsStop) view.ahead.assign(texels, -std::numeric_limits<float>::infinity());
     // Every exposed solid voxel marks the texels its projection touches (with slack).
     const double inv = 1.0 / view.texel;
     for (int z = solidLo.z; z < solidHi.z; ++z) {
@@ -100,13 +151,30 @@ SunOpenMap::View SunOpenMap::mapOne(const VoxelWorld& world, Vec3d direction, In
                         for (int i = u0; i <= u1; ++i) row[i] = std::max(row[i], key);
                     }
                 }
+                if (view.ahead.empty()) continue;
+                // The texels wholly inside the silhouette (corners with slack): a line through
+                // any point of them passes through the voxel's inside.
+                const auto depth = float(dot(corner, direction) + cubeLeastDepth);
+                for (int j = v0; j <= v1; ++j) {
+                    const double lo = j * view.texel - v, hi = lo + view.texel;
+                    for (int i = u0; i <= u1; ++i) {
+                        const double left = i * view.texel - u, right = left + view.texel;
+                        if (!silhouette.holds(left, lo) || !silhouette.holds(right, lo) ||
+                            !silhouette.holds(left, hi) || !silhouette.holds(right, hi)) {
+                            continue;
+                        }
+                        float& a = view.ahead[std::size_t(j) * std::size_t(view.sizeU) + i];
+                        a = std::max(a, depth);
+                    }
+                }
             }
         }
     }
     return view;
 }
 
-SunOpenMap SunOpenMap::build(const VoxelWorld& world, std::span<const Vec3d> directions) {
+SunOpenMap SunOpenMap::build(const VoxelWorld& world, std::span<const Vec3d> directions,
+                             bool solidsStop) {
     // The solids' box, [lo, hi) per axis: only voxels in it can mark.
     const Int3 size = world.size();
     Int3 lo = size, hi{0, 0, 0};
@@ -125,7 +193,7 @@ SunOpenMap SunOpenMap::build(const VoxelWorld& world, std::span<const Vec3d> dir
         if (!(std::abs(dot(d, d) - 1.0) < 1e-9)) continue;
         const bool mapped = std::any_of(map.views_.begin(), map.views_.end(),
                                         [&](const View& v) { return sameBits(v.direction, d); });
-        if (!mapped) map.views_.push_back(mapOne(world, d, lo, hi));
+        if (!mapped) map.views_.push_back(mapOne(world, d, lo, hi, solidsStop));
     }
     return map;
 }
@@ -159,29 +227,54 @@ bool SunOpenMap::startsClear(const VoxelWorld& world, const Hit& hit) const {
     return true;
 }
 
-bool SunOpenMap::rayOpen(const Hit& hit, const Vec3d& direction) const {
+const SunOpenMap::View* SunOpenMap::viewOf(const Vec3d& direction) const {
     for (const View& view : views_) {
-        if (!sameBits(view.direction, direction)) continue;
-        const int n = normalIndexOf(hit.normal), axis = n / 2;
-        if (!view.on[std::size_t(n)]) return false;
-        // The voxels beyond the face's plane, which the ray may enter.
-        const int plane = n % 2 == 0 ? hit.voxel[axis] + 1 : hit.voxel[axis];
-        const int threshold = n % 2 == 0 ? plane : 1 - plane;
-        const double i = std::floor((dot(hit.point, view.tangentU) - view.originU) / view.texel);
-        const double j = std::floor((dot(hit.point, view.tangentV) - view.originV) / view.texel);
-        if (!(i >= 0.0 && j >= 0.0 && i < double(view.sizeU) && j < double(view.sizeV))) {
-            return false;
-        }
-        const std::size_t texel = std::size_t(j) * std::size_t(view.sizeU) + std::size_t(i);
-        return int(view.key[std::size_t(n)][texel]) < threshold;
+        if (sameBits(view.direction, direction)) return &view;
     }
-    return false;
+    return nullptr;
+}
+
+namespace {
+
+// The texel of point p in a view, or -1 outside it.
+template <typename View>
+std::int64_t texelOf(const View& view, const Vec3d& p) {
+    const double i = std::floor((dot(p, view.tangentU) - view.originU) / view.texel);
+    const double j = std::floor((dot(p, view.tangentV) - view.originV) / view.texel);
+    if (!(i >= 0.0 && j >= 0.0 && i < double(view.sizeU) && j < double(view.sizeV))) return -1;
+    return std::int64_t(j) * view.sizeU + std::int64_t(i);
+}
+
+// Depth a voxel must lie ahead of a point by (float depths of worlds of thousands of voxels
+// round by under 3e-4).
+constexpr double kAheadSlack = 1e-2;
+
+}  // namespace
+
+bool SunOpenMap::rayOpen(const Hit& hit, const Vec3d& direction) const {
+    const View* view = viewOf(direction);
+    const int n = normalIndexOf(hit.normal), axis = n / 2;
+    if (!view || !view->on[std::size_t(n)]) return false;
+    // The voxels beyond the face's plane, which the ray may enter.
+    const int plane = n % 2 == 0 ? hit.voxel[axis] + 1 : hit.voxel[axis];
+    const int threshold = n % 2 == 0 ? plane : 1 - plane;
+    const std::int64_t texel = texelOf(*view, hit.point);
+    return texel >= 0 && int(view->key[std::size_t(n)][std::size_t(texel)]) < threshold;
+}
+
+bool SunOpenMap::rayBlocked(const Hit& hit, const Vec3d& direction) const {
+    const View* view = viewOf(direction);
+    if (!view || view->ahead.empty()) return false;
+    const std::int64_t texel = texelOf(*view, hit.point);
+    return texel >= 0 &&
+           double(view->ahead[std::size_t(texel)]) >= dot(hit.point, direction) + kAheadSlack;
 }
 
 std::uint64_t SunOpenMap::bytes() const {
     std::uint64_t total = 0;
     for (const View& v : views_) {
         for (const auto& k : v.key) total += k.size() * sizeof(std::int16_t);
+        total += v.ahead.size() * sizeof(float);
     }
     return total;
 }

@@ -39,7 +39,11 @@ class SunOpenMap {
     SunOpenMap() = default;
     // One map per unit direction of `directions` (repeats mapped once; past kMaxDirections the
     // rest are not mapped) of `world` as it is now.
-    static SunOpenMap build(const VoxelWorld& world, std::span<const Vec3d> directions);
+    // With `solidsStop` (every solid voxel stops a ray: no glass or water letting light through,
+    // no cutout texel, the default step cap; shadowBlockersHold) the maps also prove rays
+    // blocked (rayBlocked).
+    static SunOpenMap build(const VoxelWorld& world, std::span<const Vec3d> directions,
+                            bool solidsStop = false);
 
     // Whether the cells a ray from hit.point (on the face of hit.voxel with outward hit.normal,
     // as castRay reports it) may start its walk in are empty: open() needs it for every ray.
@@ -51,6 +55,11 @@ class SunOpenMap {
     bool open(const VoxelWorld& world, const Hit& hit, const Vec3d& direction) const {
         return startsClear(world, hit) && rayOpen(hit, direction);
     }
+    // Whether the ray from hit.point along `direction` (a mapped direction) passes through the
+    // inside of a solid voxel ahead of it, so that the exact walk stops there or earlier: with
+    // the map built with solidsStop, and while every solid still stops a ray. False proves
+    // nothing.
+    bool rayBlocked(const Hit& hit, const Vec3d& direction) const;
     int directions() const { return int(views_.size()); }
     std::uint64_t bytes() const;
 
@@ -63,8 +72,14 @@ class SunOpenMap {
         int sizeU = 0, sizeV = 0;
         std::array<bool, 6> on{};
         std::array<std::vector<std::int16_t>, 6> key;
+        // With solidsStop, per texel: the largest least depth along the direction of the voxels
+        // whose projection holds the texel inside it (a ray through the texel passes through
+        // their inside), -inf where none.
+        std::vector<float> ahead;
     };
-    static View mapOne(const VoxelWorld& world, Vec3d direction, Int3 solidLo, Int3 solidHi);
+    static View mapOne(const VoxelWorld& world, Vec3d direction, Int3 solidLo, Int3 solidHi,
+                       bool solidsStop);
+    const View* viewOf(const Vec3d& direction) const;
     std::vector<View> views_;
 };
 

@@ -59,7 +59,7 @@ Hit faceHit(Int3 voxel, Int3 normal, double a, double b) {
     return h;
 }
 
-TEST(SunOpenMap, ProvesOnlyRaysTheWalkFindsOpen) {
+TEST(SunOpenMap, ProvesOnlyRaysTheWalkFindsOpenOrBlocked) {
     const VoxelWorld world = terrainWithBlocks({48, 40, 48}, 5);
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> unit(0.0, 1.0), signedUnit(-1.0, 1.0);
@@ -69,12 +69,12 @@ TEST(SunOpenMap, ProvesOnlyRaysTheWalkFindsOpen) {
     for (int i = 0; i < 5; ++i) {
         suns.push_back(normalised({signedUnit(rng), 0.05 + unit(rng), signedUnit(rng)}));
     }
-    int proofs = 0, openWalks = 0;
+    int proofs = 0, openWalks = 0, blockedProofs = 0, blockedWalks = 0;
     for (const Vec3d& s : suns) {
         for (const double radius : {0.0, 0.0047, 0.035, 0.3}) {
             const SunDisk sun = SunDisk::make({float(s.x), float(s.y), float(s.z)}, radius);
             const std::vector<Vec3d> directions = spiralOf(sun, 8);
-            const SunOpenMap map = SunOpenMap::build(world, directions);
+            const SunOpenMap map = SunOpenMap::build(world, directions, true);
             for (int k = 0; k < 3000; ++k) {
                 // Half the faces where a ray from above meets the terrain, half any face of any
                 // solid voxel (the world's outer faces and faces between two solids too).
@@ -96,6 +96,14 @@ TEST(SunOpenMap, ProvesOnlyRaysTheWalkFindsOpen) {
                 for (const Vec3d& l : directions) {
                     const bool walkedOpen = !occluded(world, {hit.point, l});
                     openWalks += walkedOpen;
+                    blockedWalks += !walkedOpen;
+                    if (map.rayBlocked(hit, l)) {
+                        ++blockedProofs;
+                        ASSERT_FALSE(walkedOpen)
+                            << "blocked: sun " << s.x << " " << s.y << " " << s.z << ", radius "
+                            << radius << ", point " << hit.point.x << " " << hit.point.y << " "
+                            << hit.point.z;
+                    }
                     if (!map.open(world, hit, l)) continue;
                     ++proofs;
                     ASSERT_TRUE(walkedOpen)
@@ -110,6 +118,7 @@ TEST(SunOpenMap, ProvesOnlyRaysTheWalkFindsOpen) {
     // Most open rays proven: the map is not vacuous.
     EXPECT_GT(proofs, openWalks / 2);
     EXPECT_GT(proofs, 30000);
+    EXPECT_GT(blockedProofs, blockedWalks / 2);
 }
 
 TEST(SunOpenMap, ProvesTheLitFloorAndNothingInTheShadow) {
@@ -120,8 +129,8 @@ TEST(SunOpenMap, ProvesTheLitFloorAndNothingInTheShadow) {
     for (int y = 1; y < 9; ++y) world.set(20, y, 20, kStone);  // a pillar
     world.refreshEmptySpace();
     const Vec3d l = normalised({1, 1, 0});
-    const SunOpenMap map = SunOpenMap::build(world, std::vector<Vec3d>{l});
-    int lit = 0, provenLit = 0;
+    const SunOpenMap map = SunOpenMap::build(world, std::vector<Vec3d>{l}, true);
+    int lit = 0, provenLit = 0, provenShadowed = 0;
     for (int x = 0; x < 40; ++x) {
         for (int z = 0; z < 40; ++z) {
             if (x == 20 && z == 20) continue;
@@ -129,8 +138,11 @@ TEST(SunOpenMap, ProvesTheLitFloorAndNothingInTheShadow) {
             const bool open = !occluded(world, {hit.point, l});
             lit += open;
             provenLit += open && map.open(world, hit, l);
+            provenShadowed += !open && map.rayBlocked(hit, l);
             if (!open) {
                 EXPECT_FALSE(map.open(world, hit, l)) << x << " " << z;
+            } else {
+                EXPECT_FALSE(map.rayBlocked(hit, l)) << x << " " << z;
             }
         }
     }
@@ -138,6 +150,11 @@ TEST(SunOpenMap, ProvesTheLitFloorAndNothingInTheShadow) {
     // to texels and slack.
     EXPECT_EQ(lit, 40 * 40 - 1 - 8);
     EXPECT_GT(provenLit, lit - 3 * 8);
+    EXPECT_EQ(provenShadowed, 8);
+    // Built without solidsStop, it proves nothing blocked.
+    const SunOpenMap openOnly = SunOpenMap::build(world, std::vector<Vec3d>{l});
+    EXPECT_FALSE(openOnly.rayBlocked(faceHit({17, 0, 20}, {0, 1, 0}, 0.5, 0.5), l));
+    EXPECT_TRUE(map.rayBlocked(faceHit({17, 0, 20}, {0, 1, 0}, 0.5, 0.5), l));
     // A face under a solid voxel, and a direction not mapped, prove nothing.
     EXPECT_FALSE(map.open(world, faceHit({20, 0, 20}, {0, 1, 0}, 0.5, 0.5), l));
     EXPECT_FALSE(
@@ -159,41 +176,47 @@ TEST(SunOpenMap, MapsEachDirectionOnce) {
 
 TEST(SunOpenMap, LeavesTheSunsLightAtASurfaceAsItWasToTheBit) {
     VoxelWorld world = terrainWithBlocks({40, 32, 40}, 9);
-    // Glass in the sky (texture slot 0): rays through it are dimmed, not open.
+    // Glass in the sky (texture slot 0): with refraction on, rays through it are dimmed.
     constexpr Voxel kGlass{255, 255, 255, 1};
     for (int x = 10; x < 30; ++x) {
         for (int z = 10; z < 30; ++z) world.set(x, 30, z, kGlass);
     }
     world.refreshEmptySpace();
-    ShadeOptions shading;
-    shading.sunDirection = {0.4f, 1.0f, -0.3f};
-    shading.sunAngularRadius = 0.03;
-    shading.refraction = true;
-    Material glass;
-    glass.transmission = 1.0f;
-    glass.roughness = 0.0f;
-    ASSERT_TRUE(shading.materials.setSlot(0, glass).ok());
-    ASSERT_TRUE(shading.lightPassesMedia());
-    const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
-    const SunOpenMap map = SunOpenMap::build(world, spiralOf(sun, kSunDiskRays));
-    std::mt19937 rng(5);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    int lit = 0;
-    for (int k = 0; k < 3000; ++k) {
-        const Ray probe{{unit(rng) * 40.0, 31.9, unit(rng) * 40.0},
-                        normalised({unit(rng) - 0.5, -1.0, unit(rng) - 0.5})};
-        const Hit hit = castRay(world, probe);
-        if (!hit.hit || hit.normal == Int3{}) continue;
-        const Rgb diffuse(0.6f, 0.5f, 0.4f);
-        const Rgb walked = solverSunLobes(world, nullptr, hit, diffuse, nullptr, shading);
-        const Rgb proven =
-            solverSunLobes(world, nullptr, hit, diffuse, nullptr, shading, kSunDiskRays, &map);
-        ASSERT_EQ(walked.r, proven.r) << k;
-        ASSERT_EQ(walked.g, proven.g) << k;
-        ASSERT_EQ(walked.b, proven.b) << k;
-        lit += walked.maxComponent() > 0.0f;
+    for (const bool refraction : {true, false}) {
+        ShadeOptions shading;
+        shading.sunDirection = {0.4f, 1.0f, -0.3f};
+        shading.sunAngularRadius = 0.03;
+        shading.refraction = refraction;
+        Material glass;
+        glass.transmission = 1.0f;
+        glass.roughness = 0.0f;
+        ASSERT_TRUE(shading.materials.setSlot(0, glass).ok());
+        ASSERT_EQ(sunRaysStopAtSolids(nullptr, shading), !refraction);
+        // Built to prove blocked rays even where glass lets light through: the sun's light
+        // must not take those proofs then.
+        const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
+        const SunOpenMap map = SunOpenMap::build(world, spiralOf(sun, kSunDiskRays), true);
+        std::mt19937 rng(5);
+        std::uniform_real_distribution<double> unit(0.0, 1.0);
+        int lit = 0, shadowed = 0;
+        for (int k = 0; k < 3000; ++k) {
+            const Ray probe{{unit(rng) * 40.0, 31.9, unit(rng) * 40.0},
+                            normalised({unit(rng) - 0.5, -1.0, unit(rng) - 0.5})};
+            const Hit hit = castRay(world, probe);
+            if (!hit.hit || hit.normal == Int3{}) continue;
+            const Rgb diffuse(0.6f, 0.5f, 0.4f);
+            const Rgb walked = solverSunLobes(world, nullptr, hit, diffuse, nullptr, shading);
+            const Rgb proven =
+                solverSunLobes(world, nullptr, hit, diffuse, nullptr, shading, kSunDiskRays, &map);
+            ASSERT_EQ(walked.r, proven.r) << k;
+            ASSERT_EQ(walked.g, proven.g) << k;
+            ASSERT_EQ(walked.b, proven.b) << k;
+            lit += walked.maxComponent() > 0.0f;
+            shadowed += !(walked.maxComponent() > 0.0f);
+        }
+        EXPECT_GT(lit, 500);
+        EXPECT_GT(shadowed, 200);
     }
-    EXPECT_GT(lit, 500);
 }
 
 }  // namespace

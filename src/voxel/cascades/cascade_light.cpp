@@ -84,11 +84,14 @@ Rgb sunPassing(const RadianceCascades::State& state, const Face& face, const Sun
         const bool mapped = open.startsClear(*state.world, from);
         for (int j = 0; j < perQuarter; ++j) {
             const Vec3d l = sun.spiral(4 * j + i, 4 * perQuarter);
-            // A ray proven to reach the sky (sun_open_map.h) passes whole, as walked.
-            passing += mapped && open.rayOpen(from, l)
-                           ? Rgb(1.0f)
-                           : sunRayTransmittance(*state.world, state.textures, {from.point, l},
-                                                 state.shading);
+            // A ray proven to reach the sky (sun_open_map.h) passes whole, one proven blocked
+            // adds nothing, as walked.
+            if (mapped && open.rayOpen(from, l)) {
+                passing += Rgb(1.0f);
+            } else if (!open.rayBlocked(from, l)) {
+                passing += sunRayTransmittance(*state.world, state.textures, {from.point, l},
+                                               state.shading);
+            }
         }
     }
     return passing * (1.0f / float(4 * perQuarter));
@@ -222,10 +225,11 @@ void updateFaceLight(RadianceCascades::State& state) {
     // The faces' map only while their rays are cast; the picture's kept (sun_open_map.h).
     SunOpenMap facesOpen;
     if (sunMoved) {
+        const bool stop = sunRaysStopAtSolids(state.textures, shading);
         state.sunOpen =
-            SunOpenMap::build(*state.world, spiralDirections(sun, {kPictureSunRays, 1}));
+            SunOpenMap::build(*state.world, spiralDirections(sun, {kPictureSunRays, 1}), stop);
         facesOpen =
-            SunOpenMap::build(*state.world, spiralDirections(sun, {4 * kSunRaysPerQuarter}));
+            SunOpenMap::build(*state.world, spiralDirections(sun, {4 * kSunRaysPerQuarter}), stop);
     }
     parallelForRange(count, 64, [&](int begin, int end) {
         for (int f = begin; f < end; ++f) {
