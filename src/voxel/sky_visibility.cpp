@@ -13,7 +13,7 @@
 #include "solver_sun.h"
 #include "solver_surface.h"
 #include "sun_disk.h"
-#include "sun_open_map.h"
+#include "sun_ray_map.h"
 
 namespace luxel::voxel {
 
@@ -26,7 +26,7 @@ namespace {
 // kSolverFollowDepth deep when `follow` (some material is followed).
 Rgb reflectedLight(const VoxelWorld& world, const TextureSet* textures, const Ray& r, bool delta,
                    int depth, bool follow, const ShadeOptions& shading, double radius,
-                   const SunOpenMap& sunOpen, PathRng& rng) {
+                   const SunRayMap& sunRayMap, PathRng& rng) {
     const bool followed = follow && depth < kSolverFollowDepth;
     if (shading.materials.anyEmission() || followed) {
         const SurfaceHit s = castToSurface(world, textures, r, shading.stepCap);
@@ -37,11 +37,11 @@ Rgb reflectedLight(const VoxelWorld& world, const TextureSet* textures, const Ra
                                          [&](const Ray& q, bool d) {
                                              return reflectedLight(world, textures, q, d && delta,
                                                                    depth + 1, follow, shading,
-                                                                   radius, sunOpen, rng);
+                                                                   radius, sunRayMap, rng);
                                          },
                                          1,
                                          1,
-                                         &sunOpen};
+                                         &sunRayMap};
                 return shadeSolverSurface(world, textures, s, r, shading, behind, rng);
             }
             return pathSurfaceAt(world, s, shading).emission;
@@ -52,20 +52,20 @@ Rgb reflectedLight(const VoxelWorld& world, const TextureSet* textures, const Ra
     return skyColor(r.direction, shading) + (delta ? sunDiskAlong(r.direction, shading) : Rgb{});
 }
 
-// The map that proves the sun's rays open (sun_open_map.h) for the surface's spiral and a
-// followed face's single ray; none for worlds past SunOpenMap::kMaxWorldVoxels, whose scan would
+// The map that proves the sun's rays open (sun_ray_map.h) for the surface's spiral and a
+// followed face's single ray; none for worlds past SunRayMap::kMaxWorldVoxels, whose scan would
 // cost more than a picture's rays save.
-SunOpenMap sunOpenMapFor(const VoxelWorld& world, const TextureSet* textures,
-                         const ShadeOptions& shading) {
+SunRayMap sunRayMapFor(const VoxelWorld& world, const TextureSet* textures,
+                       const ShadeOptions& shading) {
     const Int3 size = world.size();
-    if (std::int64_t(size.x) * size.y * size.z > SunOpenMap::kMaxWorldVoxels) return {};
+    if (std::int64_t(size.x) * size.y * size.z > SunRayMap::kMaxWorldVoxels) return {};
     const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
     std::vector<Vec3d> directions;
     for (const int count : {kSunDiskRays, 1}) {
         const int rays = sun.delta() ? 1 : count;
         for (int i = 0; i < rays; ++i) directions.push_back(sun.spiral(i, rays));
     }
-    return SunOpenMap::build(world, directions, sunRaysStopAtSolids(textures, shading));
+    return SunRayMap::build(world, directions, sunRaysStopAtSolids(textures, shading));
 }
 
 }  // namespace
@@ -124,7 +124,7 @@ Result<SkyVisibilityImage> renderSkyVisibility(const VoxelWorld& world, const Ca
     SkyVisibilityImage out{Image(width, height, 3), Image(width, height, 1)};
     const bool follow = solverFollowsAny(shading);
     const int samples = samplesPerPixel(shading);
-    const SunOpenMap sunOpen = sunOpenMapFor(world, textures, shading);
+    const SunRayMap sunRayMap = sunRayMapFor(world, textures, shading);
     parallelForRange(height, 1, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {
             for (int x = 0; x < width; ++x) {
@@ -146,9 +146,9 @@ Result<SkyVisibilityImage> renderSkyVisibility(const VoxelWorld& world, const Ca
                                                 [&](const Ray& r, bool delta) {
                                                     return reflectedLight(
                                                         world, textures, r, delta, 0, follow,
-                                                        shading, options.radius, sunOpen, rng);
+                                                        shading, options.radius, sunRayMap, rng);
                                                 },
-                                                kSunDiskRays, kSolverSpecularRays, &sunOpen};
+                                                kSunDiskRays, kSolverSpecularRays, &sunRayMap};
                         radiance +=
                             shadeSolverSurface(world, textures, s, ray, shading, light, rng);
                     }

@@ -213,7 +213,7 @@ bool sunRaysStopAtSolids(const TextureSet* textures, const ShadeOptions& shading
 
 Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
                    const PathBsdf* specular, const ShadeOptions& shading, int sunRays,
-                   const SunOpenMap* open) {
+                   const SunRayMap* map) {
     if (!(shading.sunIrradiance.maxComponent() > 0.0f)) return {};
     if (!(diffuse.maxComponent() > 0.0f) && !specular) return {};
     const SunSpiral& spiral = sunSpiral(shading, sunRays);
@@ -227,7 +227,7 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
     // Whether the disk's shadow rays may share blockers (ShadowBlockers) and take the map's
     // proofs of blocked rays.
     const bool shareBlockers = sunRaysStopAtSolids(textures, shading);
-    const bool mapped = open && open->startsClear(world, hit);
+    const bool mapped = map && map->startsClear(world, hit);
     ShadowBlockers blockers;
     for (int i = 0; i < rays; ++i) {
         const Vec3d& l = spiral.directions[std::size_t(i)];
@@ -236,12 +236,12 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
         if (!(cosSun > 0.0)) continue;
         const Ray ray{hit.point, l};
         Rgb t(1.0f);
-        if (mapped && open->rayOpen(hit, l)) {
+        if (mapped && map->rayOpen(hit, l)) {
             // Proven to reach the sky: transmittance 1, as the walk finds it.
         } else if (shareBlockers) {
             // The same answer as sunRayTransmittance's walk, which the map or an earlier ray's
             // blocker often gives without one.
-            if (open && open->rayBlocked(hit, l)) continue;
+            if (map && map->rayBlocked(hit, l)) continue;
             if (blockers.blocked(world, textures, ray, shading.stepCap)) continue;
         } else {
             t = sunRayTransmittance(world, textures, ray, shading);

@@ -10,7 +10,7 @@
 #pragma once
 
 #include "path_trace_surface.h"
-#include "sun_open_map.h"
+#include "sun_ray_map.h"
 
 #include "luxel/core/vec.h"
 #include "luxel/voxel/dda.h"
@@ -64,19 +64,19 @@ Rgb faceRayTransmittance(const VoxelWorld& world, const TextureSet* textures, co
 
 // Whether every solid voxel stops a sun ray: no glass or water lets light through, no texture
 // has a cutout texel, the default step cap (shadow rays may then share blockers, ShadowBlockers,
-// and a SunOpenMap built with solidsStop may prove them blocked).
+// and a SunRayMap built with solidsStop may prove them blocked).
 bool sunRaysStopAtSolids(const TextureSet* textures, const ShadeOptions& shading);
 
 // The sun's light on a face, each shadow ray weighted by its sunRayTransmittance: the diffuse
 // lobe `diffuse` and, when given, the GGX lobe of `specular` (whose diffuse lobe must be off;
 // each ray a delta light of its share, bsdfLight's highlight computed in float as on the GPU)
 // lit by the sun's disk over `sunRays` rays of its spiral (one for a delta sun). No rays when
-// neither lobe can reflect. A ray that `open` proves open (its spiral's directions mapped) takes
+// neither lobe can reflect. A ray that `map` proves open (its spiral's directions mapped) takes
 // transmittance 1 without being walked, and one it proves blocked (while sunRaysStopAtSolids)
 // none: the walk's answers.
 Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
                    const PathBsdf* specular, const ShadeOptions& shading,
-                   int sunRays = kSunDiskRays, const SunOpenMap* open = nullptr);
+                   int sunRays = kSunDiskRays, const SunRayMap* map = nullptr);
 
 // The radiance of the sun's disk along a unit direction that escapes to the sky after a delta lobe
 // (a mirror, a refraction), as the path tracer adds it: 0 outside the disk and for a delta sun.

@@ -31,7 +31,7 @@
 
 namespace luxel::voxel {
 
-class SunOpenMap;
+class SunRayMap;
 
 // GGX directions sampled per pixel for the specular reflection of the surroundings.
 inline constexpr int kSolverSpecularRays = 4;
@@ -75,7 +75,7 @@ struct SolverLight {
     // GGX directions for the specular reflection of the surroundings.
     int specularRays = kSolverSpecularRays;
     // Points whose shadow rays all reach the sky, proven without walking them (null: none).
-    const SunOpenMap* sunOpen = nullptr;
+    const SunRayMap* sunRayMap = nullptr;
     // Set only for the radiance cascades' camera surface (their near term and far lamps, §4.2 of
     // docs/algorithms/voxel-radiance-cascades.md): the light-sampled highlight of the emitters
     // near the surface through its specular-only lobe (glossy, not a mirror); the radiance

@@ -54,7 +54,7 @@ float reflectedShare(const Material& m, const ShadeOptions& shading) {
 }
 
 // The directions of the picture's sun rays (its surface's spiral and a followed surface's single
-// ray) and of the faces' (their quarters'), for the maps that prove them open.
+// ray) and of the faces' (their quarters'), for the maps that prove them open or blocked.
 std::vector<Vec3d> spiralDirections(const SunDisk& sun, std::initializer_list<int> counts) {
     std::vector<Vec3d> out;
     for (const int count : counts) {
@@ -69,7 +69,7 @@ std::vector<Vec3d> spiralDirections(const SunDisk& sun, std::initializer_list<in
 // kSunRaysPerQuarter rays to a disk (the quarters take turns along the disk's spiral, sun_disk.h,
 // so together they cover all of it).
 Rgb sunPassing(const RadianceCascades::State& state, const Face& face, const SunDisk& sun,
-               const SunOpenMap& open) {
+               const SunRayMap& map) {
     const Int3 n = normalFromIndex(face.normal);
     const Vec3d axis = sun.axis;
     if (!(n.x * axis.x + n.y * axis.y + n.z * axis.z > 0.0)) return {};
@@ -81,14 +81,14 @@ Rgb sunPassing(const RadianceCascades::State& state, const Face& face, const Sun
         from.voxel = face.voxel;
         from.normal = n;
         from.point = faceQuarterCentre(face, i);
-        const bool mapped = open.startsClear(*state.world, from);
+        const bool mapped = map.startsClear(*state.world, from);
         for (int j = 0; j < perQuarter; ++j) {
             const Vec3d l = sun.spiral(4 * j + i, 4 * perQuarter);
-            // A ray proven to reach the sky (sun_open_map.h) passes whole, one proven blocked
+            // A ray proven to reach the sky (sun_ray_map.h) passes whole, one proven blocked
             // adds nothing, as walked.
-            if (mapped && open.rayOpen(from, l)) {
+            if (mapped && map.rayOpen(from, l)) {
                 passing += Rgb(1.0f);
-            } else if (!open.rayBlocked(from, l)) {
+            } else if (!map.rayBlocked(from, l)) {
                 passing += sunRayTransmittance(*state.world, state.textures, {from.point, l},
                                                state.shading);
             }
@@ -222,14 +222,14 @@ void updateFaceLight(RadianceCascades::State& state) {
     faces.sunPassing.resize(count);
     if (faces.irradiance.size() != std::size_t(count)) faces.irradiance.assign(count, Rgb{});
     faces.outgoing.resize(count);
-    // The faces' map only while their rays are cast; the picture's kept (sun_open_map.h).
-    SunOpenMap facesOpen;
+    // The faces' map only while their rays are cast; the picture's kept (sun_ray_map.h).
+    SunRayMap facesRayMap;
     if (sunMoved) {
         const bool stop = sunRaysStopAtSolids(state.textures, shading);
-        state.sunOpen =
-            SunOpenMap::build(*state.world, spiralDirections(sun, {kPictureSunRays, 1}), stop);
-        facesOpen =
-            SunOpenMap::build(*state.world, spiralDirections(sun, {4 * kSunRaysPerQuarter}), stop);
+        state.sunRayMap =
+            SunRayMap::build(*state.world, spiralDirections(sun, {kPictureSunRays, 1}), stop);
+        facesRayMap =
+            SunRayMap::build(*state.world, spiralDirections(sun, {4 * kSunRaysPerQuarter}), stop);
     }
     parallelForRange(count, 64, [&](int begin, int end) {
         for (int f = begin; f < end; ++f) {
@@ -249,7 +249,7 @@ void updateFaceLight(RadianceCascades::State& state) {
             const PathSurface surface = pathSurfaceAt(*state.world, s, shading);
             faces.albedo[f] = surface.albedo * reflectedShare(*surface.material, shading);
             faces.emission[f] = surface.emission;
-            if (sunMoved) faces.sunPassing[f] = sunPassing(state, face, sun, facesOpen);
+            if (sunMoved) faces.sunPassing[f] = sunPassing(state, face, sun, facesRayMap);
         }
     });
     state.sunForVisibility = sun.axis;

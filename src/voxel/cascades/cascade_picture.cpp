@@ -52,7 +52,7 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
         const SolverLight behind{
             irradiance * kInvPi,
             [&](const Ray& q, bool d) { return reflectedLight(q, d && delta, depth + 1, rng); }, 1,
-            1, &state_->sunOpen};
+            1, &state_->sunRayMap};
         return shadeSolverSurface(world, state_->textures, s, r, shading, behind, rng);
     }
     // The face met, Lambertian: its emission, the sun its face's rays found when the cascades
@@ -105,7 +105,7 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
     SolverLight light{
         irradiance * kInvPi,
         [this, &rng](const Ray& r, bool delta) { return reflectedLight(r, delta, 0, rng); },
-        kPictureSunRays, kPictureSpecularRays, &state_->sunOpen};
+        kPictureSunRays, kPictureSpecularRays, &state_->sunRayMap};
     // The near emitters' glossy highlight light-sampled, their GGX rays keeping the rest; the
     // lamps beyond, light-sampled and met by the GGX rays, weighed by the balance heuristic.
     cascades::GlossyLampChoice lamps(*state_, s.hit, face);

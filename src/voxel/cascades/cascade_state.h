@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "../../gpu/shaders/shared/near_emitters.h"
-#include "../sun_open_map.h"
+#include "../sun_ray_map.h"
 #include "cascade_layout.h"
 #include "glossy_emitters.h"
 #include "luxel/voxel/radiance_cascades.h"
@@ -125,7 +125,7 @@ struct RadianceCascades::State {
     Vec3d sunForVisibility{};           // the sun direction sunPassing was found for
     double sunRadiusForVisibility = 0;  // and the sun's angular radius
     // The points whose shadow rays all reach the sky, for that sun (found with sunPassing).
-    SunOpenMap sunOpen;
+    SunRayMap sunRayMap;
     CascadeStats stats;
 };
 

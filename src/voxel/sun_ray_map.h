@@ -1,7 +1,7 @@
-// Shadow rays proven to reach the sky without being walked
+// Sun rays proven open or blocked without being walked
 // (docs/algorithms/voxel-radiance-cascades.md §5, "Sunlit rays proven open"): a sunlit pixel's
-// shadow rays all leave the world, and walking each of them to its edge was a large part of an
-// outdoor frame.
+// shadow rays all leave the world, a shadowed one's all stop, and walking each of them was a
+// large part of a frame.
 //
 // The real-time solvers cast their sun rays along a fixed spiral over the disk (sun_disk.h), so
 // the directions are known in advance. For each, a map of the world seen from that direction:
@@ -11,7 +11,10 @@
 // below p's face plane, and the first solid cell the exact walk enters is one with a non-solid
 // neighbour. So when no voxel on the outer side of p's face plane marks p's texel, and the cells
 // the walk may start in are empty, the walk meets nothing: the ray's transmittance is exactly 1,
-// as sunRayTransmittance finds it. Anything else proves nothing and the ray is walked.
+// as sunRayTransmittance finds it. Where every solid stops a ray, a texel wholly inside a
+// voxel's projection keeps how far along the direction that voxel begins: a ray from behind it
+// passes through its inside, and the walk stops there or earlier. Anything else proves nothing
+// and the ray is walked.
 #pragma once
 
 #include <array>
@@ -25,7 +28,7 @@
 
 namespace luxel::voxel {
 
-class SunOpenMap {
+class SunRayMap {
   public:
     // Texels per map side at most; larger worlds get coarser texels (fewer proofs, same answers).
     static constexpr int kMaxTexelsPerSide = 512;
@@ -36,14 +39,14 @@ class SunOpenMap {
     static constexpr std::int64_t kMaxWorldVoxels = std::int64_t(1) << 24;
 
     // Nothing proven (every query false).
-    SunOpenMap() = default;
+    SunRayMap() = default;
     // One map per unit direction of `directions` (repeats mapped once; past kMaxDirections the
     // rest are not mapped) of `world` as it is now.
     // With `solidsStop` (every solid voxel stops a ray: no glass or water letting light through,
     // no cutout texel, the default step cap; shadowBlockersHold) the maps also prove rays
     // blocked (rayBlocked).
-    static SunOpenMap build(const VoxelWorld& world, std::span<const Vec3d> directions,
-                            bool solidsStop = false);
+    static SunRayMap build(const VoxelWorld& world, std::span<const Vec3d> directions,
+                           bool solidsStop = false);
 
     // Whether the cells a ray from hit.point (on the face of hit.voxel with outward hit.normal,
     // as castRay reports it) may start its walk in are empty: open() needs it for every ray.

@@ -1,4 +1,4 @@
-// SunOpenMap (src/voxel/sun_open_map.h): every shadow ray it proves open reaches the sky by the
+// SunRayMap (src/voxel/sun_ray_map.h): every shadow ray it proves open reaches the sky by the
 // exact walk, on terrain with floating blocks and glass, for suns from overhead to grazing and
 // disks from a point to 17 degrees, from points anywhere on every face (edges and corners too,
 // faces between two solid voxels included); it proves most of the lit rays of an open floor; and
@@ -14,7 +14,7 @@
 #include "voxel/path_trace_bsdf.h"
 #include "voxel/solver_sun.h"
 #include "voxel/sun_disk.h"
-#include "voxel/sun_open_map.h"
+#include "voxel/sun_ray_map.h"
 
 namespace luxel::voxel {
 namespace {
@@ -59,7 +59,7 @@ Hit faceHit(Int3 voxel, Int3 normal, double a, double b) {
     return h;
 }
 
-TEST(SunOpenMap, ProvesOnlyRaysTheWalkFindsOpenOrBlocked) {
+TEST(SunRayMap, ProvesOnlyRaysTheWalkFindsOpenOrBlocked) {
     const VoxelWorld world = terrainWithBlocks({48, 40, 48}, 5);
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> unit(0.0, 1.0), signedUnit(-1.0, 1.0);
@@ -74,7 +74,7 @@ TEST(SunOpenMap, ProvesOnlyRaysTheWalkFindsOpenOrBlocked) {
         for (const double radius : {0.0, 0.0047, 0.035, 0.3}) {
             const SunDisk sun = SunDisk::make({float(s.x), float(s.y), float(s.z)}, radius);
             const std::vector<Vec3d> directions = spiralOf(sun, 8);
-            const SunOpenMap map = SunOpenMap::build(world, directions, true);
+            const SunRayMap map = SunRayMap::build(world, directions, true);
             for (int k = 0; k < 3000; ++k) {
                 // Half the faces where a ray from above meets the terrain, half any face of any
                 // solid voxel (the world's outer faces and faces between two solids too).
@@ -121,7 +121,7 @@ TEST(SunOpenMap, ProvesOnlyRaysTheWalkFindsOpenOrBlocked) {
     EXPECT_GT(blockedProofs, blockedWalks / 2);
 }
 
-TEST(SunOpenMap, ProvesTheLitFloorAndNothingInTheShadow) {
+TEST(SunRayMap, ProvesTheLitFloorAndNothingInTheShadow) {
     VoxelWorld world = VoxelWorld::create({40, 16, 40}, 8).value();
     for (int x = 0; x < 40; ++x) {
         for (int z = 0; z < 40; ++z) world.set(x, 0, z, kStone);
@@ -129,7 +129,7 @@ TEST(SunOpenMap, ProvesTheLitFloorAndNothingInTheShadow) {
     for (int y = 1; y < 9; ++y) world.set(20, y, 20, kStone);  // a pillar
     world.refreshEmptySpace();
     const Vec3d l = normalised({1, 1, 0});
-    const SunOpenMap map = SunOpenMap::build(world, std::vector<Vec3d>{l}, true);
+    const SunRayMap map = SunRayMap::build(world, std::vector<Vec3d>{l}, true);
     int lit = 0, provenLit = 0, provenShadowed = 0;
     for (int x = 0; x < 40; ++x) {
         for (int z = 0; z < 40; ++z) {
@@ -152,7 +152,7 @@ TEST(SunOpenMap, ProvesTheLitFloorAndNothingInTheShadow) {
     EXPECT_GT(provenLit, lit - 3 * 8);
     EXPECT_EQ(provenShadowed, 8);
     // Built without solidsStop, it proves nothing blocked.
-    const SunOpenMap openOnly = SunOpenMap::build(world, std::vector<Vec3d>{l});
+    const SunRayMap openOnly = SunRayMap::build(world, std::vector<Vec3d>{l});
     EXPECT_FALSE(openOnly.rayBlocked(faceHit({17, 0, 20}, {0, 1, 0}, 0.5, 0.5), l));
     EXPECT_TRUE(map.rayBlocked(faceHit({17, 0, 20}, {0, 1, 0}, 0.5, 0.5), l));
     // A face under a solid voxel, and a direction not mapped, prove nothing.
@@ -162,19 +162,18 @@ TEST(SunOpenMap, ProvesTheLitFloorAndNothingInTheShadow) {
     EXPECT_TRUE(map.open(world, faceHit({5, 0, 5}, {0, 1, 0}, 0.5, 0.5), l));
 }
 
-TEST(SunOpenMap, MapsEachDirectionOnce) {
+TEST(SunRayMap, MapsEachDirectionOnce) {
     VoxelWorld world = VoxelWorld::create({8, 8, 8}, 8).value();
     world.set(1, 1, 1, kStone);
     const SunDisk delta = SunDisk::make({0.3f, 1.0f, 0.2f}, 0.0);
     const std::vector<Vec3d> same(5, delta.axis);
-    EXPECT_EQ(SunOpenMap::build(world, same).directions(), 1);
+    EXPECT_EQ(SunRayMap::build(world, same).directions(), 1);
     const SunDisk disk = SunDisk::make({0.3f, 1.0f, 0.2f}, 0.05);
-    EXPECT_EQ(SunOpenMap::build(world, spiralOf(disk, 40)).directions(),
-              SunOpenMap::kMaxDirections);
-    EXPECT_FALSE(SunOpenMap().open(world, faceHit({1, 1, 1}, {0, 1, 0}, 0.5, 0.5), delta.axis));
+    EXPECT_EQ(SunRayMap::build(world, spiralOf(disk, 40)).directions(), SunRayMap::kMaxDirections);
+    EXPECT_FALSE(SunRayMap().open(world, faceHit({1, 1, 1}, {0, 1, 0}, 0.5, 0.5), delta.axis));
 }
 
-TEST(SunOpenMap, LeavesTheSunsLightAtASurfaceAsItWasToTheBit) {
+TEST(SunRayMap, LeavesTheSunsLightAtASurfaceAsItWasToTheBit) {
     VoxelWorld world = terrainWithBlocks({40, 32, 40}, 9);
     // Glass in the sky (texture slot 0): with refraction on, rays through it are dimmed.
     constexpr Voxel kGlass{255, 255, 255, 1};
@@ -195,7 +194,7 @@ TEST(SunOpenMap, LeavesTheSunsLightAtASurfaceAsItWasToTheBit) {
         // Built to prove blocked rays even where glass lets light through: the sun's light
         // must not take those proofs then.
         const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
-        const SunOpenMap map = SunOpenMap::build(world, spiralOf(sun, kSunDiskRays), true);
+        const SunRayMap map = SunRayMap::build(world, spiralOf(sun, kSunDiskRays), true);
         std::mt19937 rng(5);
         std::uniform_real_distribution<double> unit(0.0, 1.0);
         int lit = 0, shadowed = 0;

@@ -1,5 +1,5 @@
-// Shadow rays proven to reach the sky (sun_open_map.h).
-#include "sun_open_map.h"
+// Shadow rays proven to reach the sky (sun_ray_map.h).
+#include "sun_ray_map.h"
 
 #include <algorithm>
 #include <bit>
@@ -93,8 +93,8 @@ Silhouette silhouetteOf(const Vec3d& tu, const Vec3d& tv) {
 
 }  // namespace
 
-SunOpenMap::View SunOpenMap::mapOne(const VoxelWorld& world, Vec3d direction, Int3 solidLo,
-                                    Int3 solidHi, bool solidsStop) {
+SunRayMap::View SunRayMap::mapOne(const VoxelWorld& world, Vec3d direction, Int3 solidLo,
+                                  Int3 solidHi, bool solidsStop) {
     View view;
     view.direction = direction;
     bool any = false;
@@ -173,8 +173,8 @@ SunOpenMap::View SunOpenMap::mapOne(const VoxelWorld& world, Vec3d direction, In
     return view;
 }
 
-SunOpenMap SunOpenMap::build(const VoxelWorld& world, std::span<const Vec3d> directions,
-                             bool solidsStop) {
+SunRayMap SunRayMap::build(const VoxelWorld& world, std::span<const Vec3d> directions,
+                           bool solidsStop) {
     // The solids' box, [lo, hi) per axis: only voxels in it can mark.
     const Int3 size = world.size();
     Int3 lo = size, hi{0, 0, 0};
@@ -187,7 +187,7 @@ SunOpenMap SunOpenMap::build(const VoxelWorld& world, std::span<const Vec3d> dir
             }
         }
     }
-    SunOpenMap map;
+    SunRayMap map;
     for (const Vec3d& d : directions) {
         if (int(map.views_.size()) == kMaxDirections) break;
         if (!(std::abs(dot(d, d) - 1.0) < 1e-9)) continue;
@@ -198,7 +198,7 @@ SunOpenMap SunOpenMap::build(const VoxelWorld& world, std::span<const Vec3d> dir
     return map;
 }
 
-bool SunOpenMap::startsClear(const VoxelWorld& world, const Hit& hit) const {
+bool SunRayMap::startsClear(const VoxelWorld& world, const Hit& hit) const {
     if (views_.empty() || !hit.hit || hit.normal == Int3{}) return false;
     const int n = normalIndexOf(hit.normal), axis = n / 2;
     const bool positive = n % 2 == 0;
@@ -227,7 +227,7 @@ bool SunOpenMap::startsClear(const VoxelWorld& world, const Hit& hit) const {
     return true;
 }
 
-const SunOpenMap::View* SunOpenMap::viewOf(const Vec3d& direction) const {
+const SunRayMap::View* SunRayMap::viewOf(const Vec3d& direction) const {
     for (const View& view : views_) {
         if (sameBits(view.direction, direction)) return &view;
     }
@@ -251,7 +251,7 @@ constexpr double kAheadSlack = 1e-2;
 
 }  // namespace
 
-bool SunOpenMap::rayOpen(const Hit& hit, const Vec3d& direction) const {
+bool SunRayMap::rayOpen(const Hit& hit, const Vec3d& direction) const {
     const View* view = viewOf(direction);
     const int n = normalIndexOf(hit.normal), axis = n / 2;
     if (!view || !view->on[std::size_t(n)]) return false;
@@ -262,7 +262,7 @@ bool SunOpenMap::rayOpen(const Hit& hit, const Vec3d& direction) const {
     return texel >= 0 && int(view->key[std::size_t(n)][std::size_t(texel)]) < threshold;
 }
 
-bool SunOpenMap::rayBlocked(const Hit& hit, const Vec3d& direction) const {
+bool SunRayMap::rayBlocked(const Hit& hit, const Vec3d& direction) const {
     const View* view = viewOf(direction);
     if (!view || view->ahead.empty()) return false;
     const std::int64_t texel = texelOf(*view, hit.point);
@@ -270,7 +270,7 @@ bool SunOpenMap::rayBlocked(const Hit& hit, const Vec3d& direction) const {
            double(view->ahead[std::size_t(texel)]) >= dot(hit.point, direction) + kAheadSlack;
 }
 
-std::uint64_t SunOpenMap::bytes() const {
+std::uint64_t SunRayMap::bytes() const {
     std::uint64_t total = 0;
     for (const View& v : views_) {
         for (const auto& k : v.key) total += k.size() * sizeof(std::int16_t);
