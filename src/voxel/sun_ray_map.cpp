@@ -117,6 +117,7 @@ SunRayMap::View SunRayMap::mapOne(const VoxelWorld& world, Vec3d direction, Int3
         minV += std::min(0.0, tv[a] * size[a]), maxV += std::max(0.0, tv[a] * size[a]);
     }
     view.texel = std::max(0.25, std::max(maxU - minU, maxV - minV) / (kMaxTexelsPerSide - 4));
+    view.perTexel = 1.0 / view.texel;
     view.originU = minU - 2.0 * view.texel, view.originV = minV - 2.0 * view.texel;
     view.sizeU = int(std::ceil((maxU - minU) / view.texel)) + 4;
     view.sizeV = int(std::ceil((maxV - minV) / view.texel)) + 4;
@@ -129,7 +130,7 @@ SunRayMap::View SunRayMap::mapOne(const VoxelWorld& world, Vec3d direction, Int3
     for (int a = 0; a < 3; ++a) cubeLeastDepth += std::min(0.0, direction[a]);
     if (solidsStop) view.ahead.assign(texels, -std::numeric_limits<float>::infinity());
     // Every exposed solid voxel marks the texels its projection touches (with slack).
-    const double inv = 1.0 / view.texel;
+    const double inv = view.perTexel;
     for (int z = solidLo.z; z < solidHi.z; ++z) {
         for (int y = solidLo.y; y < solidHi.y; ++y) {
             for (int x = solidLo.x; x < solidHi.x; ++x) {
@@ -236,11 +237,12 @@ const SunRayMap::View* SunRayMap::viewOf(const Vec3d& direction) const {
 
 namespace {
 
-// The texel of point p in a view, or -1 outside it.
+// The texel of point p in a view, or -1 outside it (a point within rounding of a texel's edge may
+// fall either side: the marks' slack covers both).
 template <typename View>
 std::int64_t texelOf(const View& view, const Vec3d& p) {
-    const double i = std::floor((dot(p, view.tangentU) - view.originU) / view.texel);
-    const double j = std::floor((dot(p, view.tangentV) - view.originV) / view.texel);
+    const double i = std::floor((dot(p, view.tangentU) - view.originU) * view.perTexel);
+    const double j = std::floor((dot(p, view.tangentV) - view.originV) * view.perTexel);
     if (!(i >= 0.0 && j >= 0.0 && i < double(view.sizeU) && j < double(view.sizeV))) return -1;
     return std::int64_t(j) * view.sizeU + std::int64_t(i);
 }

@@ -71,7 +71,7 @@ class SunRayMap {
     // largest coordinate along that normal (times its sign) of the voxels that mark it.
     struct View {
         Vec3d direction, tangentU, tangentV;
-        double originU = 0.0, originV = 0.0, texel = 1.0;
+        double originU = 0.0, originV = 0.0, texel = 1.0, perTexel = 1.0;  // 1 / texel
         int sizeU = 0, sizeV = 0;
         std::array<bool, 6> on{};
         std::array<std::vector<std::int16_t>, 6> key;
