@@ -1,4 +1,4 @@
-// Shadow rays proven to reach the sky (sun_ray_map.h).
+// Sun rays proven open or blocked (sun_ray_map.h).
 #include "sun_ray_map.h"
 
 #include <algorithm>

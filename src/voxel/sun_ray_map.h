@@ -41,10 +41,8 @@ class SunRayMap {
     // Nothing proven (every query false).
     SunRayMap() = default;
     // One map per unit direction of `directions` (repeats mapped once; past kMaxDirections the
-    // rest are not mapped) of `world` as it is now.
-    // With `solidsStop` (every solid voxel stops a ray: no glass or water letting light through,
-    // no cutout texel, the default step cap; shadowBlockersHold) the maps also prove rays
-    // blocked (rayBlocked).
+    // rest are not mapped) of `world` as it is now. With `solidsStop` (every solid voxel stops
+    // a ray: sunRaysStopAtSolids, solver_sun.h) the maps also prove rays blocked.
     static SunRayMap build(const VoxelWorld& world, std::span<const Vec3d> directions,
                            bool solidsStop = false);
 
