@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "luxel/voxel/dda.h"
-#include "luxel/voxel/generators.h"
+#include "terrain_with_blocks.h"
 #include "voxel/shadow_blockers.h"
 
 namespace luxel::voxel {
@@ -19,26 +19,8 @@ namespace {
 
 constexpr Voxel kStone{128, 128, 128, 255};
 
-VoxelWorld terrainWithBlocks(Int3 size, std::uint64_t seed) {
-    VoxelWorld world = VoxelWorld::create(size, 16).value();
-    TerrainOptions options;
-    options.seed = seed;
-    options.frequency = 0.05;
-    EXPECT_TRUE(generateTerrain(world, options).ok());
-    std::mt19937 rng(static_cast<unsigned>(seed));
-    std::uniform_int_distribution<int> x(0, size.x - 1), y(size.y / 3, size.y - 1),
-        z(0, size.z - 1);
-    for (int i = 0; i < 400; ++i) world.set(x(rng), y(rng), z(rng), kStone);
-    world.refreshEmptySpace();
-    return world;
-}
-
-Vec3d normalised(Vec3d v) {
-    return v * (1.0 / std::sqrt(dot(v, v)));
-}
-
 TEST(ShadowBlockers, ProvesOnlyRaysTheWalkFindsBlocked) {
-    const VoxelWorld world = terrainWithBlocks({64, 48, 64}, 7);
+    const VoxelWorld world = terrainWithBlocks({64, 48, 64}, 7, 400);
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> unit(0.0, 1.0), signedUnit(-1.0, 1.0);
     int proofs = 0, blockedWalks = 0;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "luxel/voxel/dda.h"
-#include "luxel/voxel/generators.h"
+#include "terrain_with_blocks.h"
 #include "voxel/path_trace_bsdf.h"
 #include "voxel/solver_sun.h"
 #include "voxel/sun_disk.h"
@@ -20,24 +20,6 @@ namespace luxel::voxel {
 namespace {
 
 constexpr Voxel kStone{128, 128, 128, 255};
-
-VoxelWorld terrainWithBlocks(Int3 size, std::uint64_t seed) {
-    VoxelWorld world = VoxelWorld::create(size, 16).value();
-    TerrainOptions options;
-    options.seed = seed;
-    options.frequency = 0.05;
-    EXPECT_TRUE(generateTerrain(world, options).ok());
-    std::mt19937 rng(static_cast<unsigned>(seed));
-    std::uniform_int_distribution<int> x(0, size.x - 1), y(size.y / 3, size.y - 1),
-        z(0, size.z - 1);
-    for (int i = 0; i < 300; ++i) world.set(x(rng), y(rng), z(rng), kStone);
-    world.refreshEmptySpace();
-    return world;
-}
-
-Vec3d normalised(Vec3d v) {
-    return v * (1.0 / std::sqrt(dot(v, v)));
-}
 
 std::vector<Vec3d> spiralOf(const SunDisk& sun, int count) {
     std::vector<Vec3d> out;
@@ -60,7 +42,7 @@ Hit faceHit(Int3 voxel, Int3 normal, double a, double b) {
 }
 
 TEST(SunRayMap, ProvesOnlyRaysTheWalkFindsOpenOrBlocked) {
-    const VoxelWorld world = terrainWithBlocks({48, 40, 48}, 5);
+    const VoxelWorld world = terrainWithBlocks({48, 40, 48}, 5, 300);
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> unit(0.0, 1.0), signedUnit(-1.0, 1.0);
     std::uniform_int_distribution<int> cell(0, 47), height(0, 39), face(0, 5);
@@ -174,7 +156,7 @@ TEST(SunRayMap, MapsEachDirectionOnce) {
 }
 
 TEST(SunRayMap, LeavesTheSunsLightAtASurfaceAsItWasToTheBit) {
-    VoxelWorld world = terrainWithBlocks({40, 32, 40}, 9);
+    VoxelWorld world = terrainWithBlocks({40, 32, 40}, 9, 300);
     // Glass in the sky (texture slot 0): with refraction on, rays through it are dimmed.
     constexpr Voxel kGlass{255, 255, 255, 1};
     for (int x = 10; x < 30; ++x) {
