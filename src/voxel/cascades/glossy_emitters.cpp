@@ -173,10 +173,12 @@ Rgb GlossyLampChoice::sample(const PathBsdf& specular, int lobeRays, PathRng& rn
         }
         const float share = 1.0f - nearEmitterShare(state_, hit_, face_, seen.voxel, seen.normal);
         if (!(share > 0.0f)) continue;
-        const float lobePdf = float(ggxDensity(specular, dir));
+        // ggxDensity and bsdfLight(..., 0) with one half vector.
+        const GgxTowards lobe(specular, dir);
+        const float lobePdf = float(lobe.density());
         const float balance = shared::glossyBalance(
             lightPdf, lobePdf, float(LUXEL_GLOSSY_LIGHT_SAMPLES), float(lobeRays));
-        sum += bsdfLight(specular, dir, Rgb(e.r, e.g, e.b) * (share * balance), 0.0);
+        sum += lobe.deltaLight(Rgb(e.r, e.g, e.b) * (share * balance));
     }
     return sum;
 }
