@@ -162,9 +162,14 @@ Rgb GlossyLampChoice::sample(const PathBsdf& specular, int lobeRays, PathRng& rn
             lampBlockers.blocks(*state_.world, towards, reach - ShadowBlockers::kEdgeMargin)) {
             continue;
         }
+        // Where every solid voxel stops a ray (no cutout texel), the first voxel castRay meets is
+        // castToSurface's, without the texel it would look up there.
         const Int3 outward = normalFromIndex(int(e.normal));
         const Hit seen =
-            castToSurface(*state_.world, state_.textures, towards, state_.shading.stepCap).hit;
+            blockersHold
+                ? castRay(*state_.world, towards, kInfinity, state_.shading.stepCap)
+                : castToSurface(*state_.world, state_.textures, towards, state_.shading.stepCap)
+                      .hit;
         if (!seen.hit || seen.normal != outward ||
             !shared::emitterRectHolds({e.x, e.y, e.z}, axis, e.extent,
                                       {seen.voxel.x, seen.voxel.y, seen.voxel.z})) {
