@@ -6,7 +6,9 @@
 // the face of a solid voxel (farther than kEdgeMargin from its edges), is inside that voxel just
 // past the plane, so the exact walk (which visits every cell the ray passes) stops there or
 // earlier: blocked, as `occluded` says. This holds while every solid voxel stops a ray
-// (shadowBlockersHold), and, for the sun, while no glass or water lets it through.
+// (shadowBlockersHold), and, for the sun, while no glass or water lets it through. The glossy
+// lamps' rays ask for a stop short of the lamp (`before`), from faces kept over many pixels
+// (§5, "The glossy lamps' rays").
 #pragma once
 
 #include <cmath>
