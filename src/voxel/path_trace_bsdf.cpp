@@ -52,25 +52,32 @@ double ggxMasking(double c, double alpha) {
     return 2.0 * c / (c + std::sqrt(a2 + (1.0 - a2) * c * c));
 }
 
-// Density of the visible-normal sampling finding l: G1(v) D(h) / (4 cos_v).
-double ggxPdf(const PathBsdf& b, Vec3d l) {
+// D for the light direction l: the half vector's cosine to the normal and D there.
+double ggxDistributionTowards(const PathBsdf& b, Vec3d l, double& cosH) {
     const Vec3d n = toDouble(b.normal);
     const Vec3d h = normalize(b.view + l);
-    const double cosH = dot(n, h);
-    if (!(cosH > 0.0)) return 0.0;
+    cosH = dot(n, h);
     const Vec3d across = h - n * cosH;
-    return ggxMasking(b.cosView, b.alpha) * ggxDistribution(cosH, dot(across, across), b.alpha) /
-           (4.0 * b.cosView);
+    return ggxDistribution(cosH, dot(across, across), b.alpha);
 }
 
-// D * Vis (Vis = G2 / (4 cos_l cos_v), height-correlated, optics.h) for a light direction l.
-double ggxReflectance(const PathBsdf& b, Vec3d l, double cosL) {
-    const Vec3d n = toDouble(b.normal);
-    const Vec3d h = normalize(b.view + l);
-    const double cosH = dot(n, h);
-    const Vec3d across = h - n * cosH;
-    return ggxDistribution(cosH, dot(across, across), b.alpha) *
-           shared::ggxSmithVisibility(float(b.cosView), float(cosL), b.alpha);
+// G1(v) D / (4 cos_v) from D (ggxPdf's density, 0 where the half vector is below the face).
+double ggxPdfOf(const PathBsdf& b, double cosH, double d) {
+    if (!(cosH > 0.0)) return 0.0;
+    return ggxMasking(b.cosView, b.alpha) * d / (4.0 * b.cosView);
+}
+
+// D * Vis (Vis = G2 / (4 cos_l cos_v), height-correlated, optics.h) for a light direction l,
+// from D.
+double ggxReflectanceOf(const PathBsdf& b, double d, double cosL) {
+    return d * shared::ggxSmithVisibility(float(b.cosView), float(cosL), b.alpha);
+}
+
+// Density of the visible-normal sampling finding l: G1(v) D(h) / (4 cos_v).
+double ggxPdf(const PathBsdf& b, Vec3d l) {
+    double cosH;
+    const double d = ggxDistributionTowards(b, l, cosH);
+    return ggxPdfOf(b, cosH, d);
 }
 
 // What sampleGgx needs of the lobe alone, whatever numbers are drawn.
@@ -179,9 +186,13 @@ PathBsdf pathBsdf(const Material& m, Rgb colour, Int3 normal, Vec3d direction,
     const float fresnel = dielectricFresnel(cosV, m.ior, o.fresnel);
     const float dielectric = 1.0f - m.metallic;
     const float transmission = o.refraction ? m.transmission : 0.0f;
-    const shared::vec3 metal =
-        shared::fresnelSchlickRgb(v3(Vec3d{colour.r, colour.g, colour.b}), cosV);
-    b.specular = Rgb(metal.x, metal.y, metal.z) * m.metallic + Rgb(dielectric * fresnel);
+    // A dielectric's metal term is 0 x a finite Schlick: left out, the sum is the same float.
+    b.specular = Rgb(dielectric * fresnel);
+    if (m.metallic != 0.0f) {
+        const shared::vec3 metal =
+            shared::fresnelSchlickRgb(v3(Vec3d{colour.r, colour.g, colour.b}), cosV);
+        b.specular = Rgb(metal.x, metal.y, metal.z) * m.metallic + b.specular;
+    }
     b.transmission = dielectric * (1.0f - fresnel) * transmission;
     b.diffuse = colour * (dielectric * (1.0f - fresnel) * (1.0f - transmission));
     const double s = mean(b.specular), t = b.transmission, d = mean(b.diffuse);
@@ -252,7 +263,12 @@ BsdfSample sampleBsdf(const PathBsdf& b, PathRng& rng, bool density) {
     return out;
 }
 
-Rgb bsdfLight(const PathBsdf& b, Vec3d l, Rgb radiance, double lightPdf) {
+namespace {
+
+// bsdfLight, D found by `distribution` when the specular lobe asks for it.
+template <class Distribution>
+Rgb bsdfLightWith(const PathBsdf& b, Vec3d l, Rgb radiance, double lightPdf,
+                  const Distribution& distribution) {
     const double cosL = dot(toDouble(b.normal), l);
     if (!(cosL > 0.0)) return {};
     const bool deltaLight = !(lightPdf > 0.0);
@@ -264,9 +280,31 @@ Rgb bsdfLight(const PathBsdf& b, Vec3d l, Rgb radiance, double lightPdf) {
     }
     if (b.pSpecular > 0.0 && !b.mirror() && b.cosView > 0.0) {
         const double w = deltaLight ? 1.0 : powerHeuristic(lightPdf, b.pSpecular * ggxPdf(b, l));
-        out += b.specular * radiance * float(ggxReflectance(b, l, cosL) * cosL * w / divide);
+        out += b.specular * radiance *
+               float(ggxReflectanceOf(b, distribution(), cosL) * cosL * w / divide);
     }
     return out;
+}
+
+}  // namespace
+
+Rgb bsdfLight(const PathBsdf& b, Vec3d l, Rgb radiance, double lightPdf) {
+    return bsdfLightWith(b, l, radiance, lightPdf, [&] {
+        double cosH;
+        return ggxDistributionTowards(b, l, cosH);
+    });
+}
+
+GgxTowards::GgxTowards(const PathBsdf& b, Vec3d l) : b_(b), l_(l) {
+    d_ = ggxDistributionTowards(b, l, cosH_);
+}
+
+double GgxTowards::density() const {
+    return ggxPdfOf(b_, cosH_, d_);
+}
+
+Rgb GgxTowards::deltaLight(Rgb radiance) const {
+    return bsdfLightWith(b_, l_, radiance, 0.0, [&] { return d_; });
 }
 
 double ggxDensity(const PathBsdf& b, Vec3d l) {

@@ -102,6 +102,21 @@ class GgxSampler {
 // which its own sampling finds l. lightPdf = 0 is a delta light (no weights, no division).
 Rgb bsdfLight(const PathBsdf& b, Vec3d l, Rgb radiance, double lightPdf);
 
+// ggxDensity(b, l) and bsdfLight(b, l, radiance, 0) for one direction l, the half vector and GGX's
+// D that both find made once (the same floats): a light sample of the glossy lamps asks for
+// both (docs/algorithms/voxel-radiance-cascades.md §5). `b` must outlive it.
+class GgxTowards {
+  public:
+    GgxTowards(const PathBsdf& b, Vec3d l);
+    double density() const;
+    Rgb deltaLight(Rgb radiance) const;
+
+  private:
+    const PathBsdf& b_;
+    Vec3d l_;
+    double cosH_ = 0.0, d_ = 0.0;  // n . h and D(h)
+};
+
 // The power heuristic's weight of a strategy of density `mine` against one of density `other`.
 double powerHeuristic(double mine, double other);
 

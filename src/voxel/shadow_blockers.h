@@ -6,7 +6,9 @@
 // the face of a solid voxel (farther than kEdgeMargin from its edges), is inside that voxel just
 // past the plane, so the exact walk (which visits every cell the ray passes) stops there or
 // earlier: blocked, as `occluded` says. This holds while every solid voxel stops a ray
-// (shadowBlockersHold), and, for the sun, while no glass or water lets it through.
+// (shadowBlockersHold), and, for the sun, while no glass or water lets it through. The glossy
+// lamps' rays ask for a stop short of the lamp (`before`), from faces kept over many pixels
+// (§5, "The glossy lamps' rays").
 #pragma once
 
 #include <cmath>
@@ -35,9 +37,10 @@ class ShadowBlockers {
     static constexpr int kFaces = 6;
 
     // Keeps the face of a blocked ray's hit while there is room and its plane is not kept yet; a
-    // hit without a face (a ray that started inside a solid voxel) is not kept.
-    void note(const Hit& hit) {
-        if (count_ == kFaces || !hit.hit) return;
+    // hit without a face (a ray that started inside a solid voxel) is not kept. With `replace`,
+    // a new plane takes the oldest one's place when all are taken (a cache over many points).
+    void note(const Hit& hit, bool replace = false) {
+        if ((count_ == kFaces && !replace) || !hit.hit) return;
         for (int a = 0; a < 3; ++a) {
             if (hit.normal[a] == 0) continue;
             // The face's plane: the voxel's side that faces the ray's origin.
@@ -49,15 +52,21 @@ class ShadowBlockers {
                     return;
                 }
             }
-            planes_[count_++] = p;
+            if (count_ < kFaces) {
+                planes_[count_++] = p;
+            } else {
+                planes_[oldest_] = p;
+                oldest_ = (oldest_ + 1) % kFaces;
+            }
         }
     }
 
-    // True when `ray` provably enters a solid voxel through a kept face's plane; false when no
-    // kept face proves it (the ray must then be walked).
-    bool blocks(const VoxelWorld& world, const Ray& ray) const {
+    // True when `ray` provably enters a solid voxel through a kept face's plane, where it has
+    // gone less than `before` (in units of its direction's length); false when no kept face
+    // proves it (the ray must then be walked).
+    bool blocks(const VoxelWorld& world, const Ray& ray, double before = kInfinity) const {
         for (int k = 0; k < count_; ++k) {
-            if (blocksThrough(planes_[k], world, ray)) return true;
+            if (blocksThrough(planes_[k], world, ray, before)) return true;
         }
         return false;
     }
@@ -79,11 +88,12 @@ class ShadowBlockers {
         double at;
     };
 
-    static bool blocksThrough(const Plane& plane, const VoxelWorld& world, const Ray& ray) {
+    static bool blocksThrough(const Plane& plane, const VoxelWorld& world, const Ray& ray,
+                              double before) {
         const double d = ray.direction[plane.axis];
         if (!(d * plane.towardsSolid > 0.0)) return false;
         const double t = (plane.at - ray.origin[plane.axis]) / d;
-        if (!(t > 0.0) || !std::isfinite(t)) return false;
+        if (!(t > 0.0) || !std::isfinite(t) || !(t < before)) return false;
         Int3 cell;
         cell[plane.axis] = plane.layer;
         for (int b = 0; b < 3; ++b) {
@@ -100,7 +110,7 @@ class ShadowBlockers {
         return world.solid(cell.x, cell.y, cell.z);
     }
 
-    int count_ = 0;
+    int count_ = 0, oldest_ = 0;
     Plane planes_[kFaces];
 };
 

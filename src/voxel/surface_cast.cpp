@@ -1,6 +1,8 @@
 // Cutout-aware ray casting: castRay, restarted past every cutout texel (see surface_cast.h).
 #include "luxel/voxel/surface_cast.h"
 
+#include <new>
+
 #include "voxel/voxel_world_access.h"
 
 namespace luxel::voxel {
@@ -19,8 +21,11 @@ SurfaceHit castToSurface(const VoxelWorld& world, const TextureSet* textures, co
     // The first cast made straight into the result, the ray read where the caller keeps it:
     // copying the ray in and the hit out read each with wider loads than they had been stored
     // with, and those stalls were a few percent of the radiance cascades' picture
-    // (docs/algorithms/voxel-radiance-cascades.md §5). Continuations restart from a copy.
-    SurfaceHit s{.hit = castRay(world, ray, tMax, stepCap), .texel = Texel{}};
+    // (docs/algorithms/voxel-radiance-cascades.md §5). Continuations restart from a copy. The
+    // hit is made in place over the default one: an aggregate initialiser with the cast in it
+    // cleared the whole result with `rep stos` before the cast filled it in.
+    SurfaceHit s;
+    new (&s.hit) Hit(castRay(world, ray, tMax, stepCap));
     double tOffset = 0.0;  // t along `ray` of the cast's origin
     for (;;) {
         if (!s.hit.hit) return s;

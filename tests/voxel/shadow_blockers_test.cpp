@@ -1,9 +1,10 @@
 // ShadowBlockers (src/voxel/shadow_blockers.h): the shadow rays it proves blocked are blocked by
 // the exact walk (occluded), on terrain with floating blocks, from points on its faces, for
 // bundles of directions a fraction of a degree to tens of degrees apart, and in a closed room
-// for rays over the whole hemisphere; and it proves nothing where its
-// reasoning does not hold (rays along or away from the face, crossings on a voxel's edge, a
-// crossing over an empty cell, a hit without a face).
+// for rays over the whole hemisphere; a proof short of a reach is never one short of where the
+// walk stops, with faces kept over many points; a full set replaces its oldest face only when
+// asked; and it proves nothing where its reasoning does not hold (rays along or away from the
+// face, crossings on a voxel's edge, a crossing over an empty cell, a hit without a face).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -96,6 +97,41 @@ TEST(ShadowBlockers, ProveMostOfARoomsHemisphereRaysWithItsCeilingAndWalls) {
     EXPECT_GT(proofs, rays * 2 / 3) << proofs << " of " << rays;
 }
 
+TEST(ShadowBlockers, ProvesNoStopShortOfTheWalksOwn) {
+    // The glossy lamps' rays ask for a stop short of the lamp's plane: the walk must stop no
+    // later than any such proof says, with faces kept over many points (replacing the oldest).
+    const VoxelWorld world = terrainWithBlocks({64, 48, 64}, 3);
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> unit(0.0, 1.0), signedUnit(-1.0, 1.0);
+    ShadowBlockers blockers;
+    int proofs = 0, walks = 0;
+    for (int point = 0; point < 12000; ++point) {
+        const Ray probe{{unit(rng) * 64.0, 47.5, unit(rng) * 64.0},
+                        normalised({signedUnit(rng), -0.3 - unit(rng), signedUnit(rng)})};
+        const Hit surface = castRay(world, probe);
+        if (!surface.hit || surface.normal == Int3{}) continue;
+        const Vec3d n{double(surface.normal.x), double(surface.normal.y), double(surface.normal.z)};
+        for (int k = 0; k < 4; ++k) {
+            const Vec3d l = normalised({signedUnit(rng), signedUnit(rng), signedUnit(rng)});
+            if (!(dot(l, n) > 0.0)) continue;
+            const Ray ray{surface.point, l};
+            const Hit walk = castRay(world, ray);
+            if (walk.hit) {
+                ++walks;
+                ASSERT_FALSE(blockers.blocks(world, ray, walk.t - ShadowBlockers::kEdgeMargin))
+                    << "point " << point << ", ray " << k;
+                proofs += blockers.blocks(world, ray, walk.t + 1.0);
+            } else {
+                ASSERT_FALSE(blockers.blocks(world, ray));
+            }
+            blockers.note(walk, true);
+        }
+    }
+    // Six planes kept over the whole terrain still prove a good share of the stops.
+    EXPECT_GT(walks, 3000);
+    EXPECT_GT(proofs, walks / 10) << proofs << " of " << walks;
+}
+
 // A slab of stone at y = 10 over the whole world; a ray from the floor at y = 2 hits its
 // underside.
 VoxelWorld slab() {
@@ -132,6 +168,32 @@ TEST(ShadowBlockers, ProvesNothingWhereItsReasonDoesNotHold) {
     EXPECT_FALSE(occluded(holed, {origin, normalised({1.9 / 8.0, 1.0, 0.0})}));
     // A crossing outside the world.
     EXPECT_FALSE(blocker.blocks(world, {origin, normalised({3.0, 1.0, 0.0})}));
+}
+
+TEST(ShadowBlockers, AFullSetReplacesItsOldestFaceOnlyWhenAsked) {
+    const VoxelWorld world = slab();
+    const Ray up{{4.3, 2.0, 4.6}, normalised({0.1, 1.0, 0.03})};
+    const Hit underside = castRay(world, up);
+    ASSERT_TRUE(underside.hit);
+    // Six other planes: faces towards +x of voxels in columns 0..5 (empty or not; a kept face
+    // is only a plane to test).
+    const auto fill = [](ShadowBlockers& b, bool replace) {
+        for (int x = 0; x < ShadowBlockers::kFaces; ++x) {
+            Hit h;
+            h.hit = true;
+            h.voxel = {x, 5, 5};
+            h.normal = {1, 0, 0};
+            b.note(h, replace);
+        }
+    };
+    ShadowBlockers kept, replaced;
+    kept.note(underside);
+    replaced.note(underside);
+    fill(kept, false);
+    fill(replaced, true);
+    EXPECT_TRUE(kept.blocks(world, up));
+    EXPECT_FALSE(replaced.blocks(world, up));
+    EXPECT_TRUE(castRay(world, up).hit);
 }
 
 TEST(ShadowBlockers, KeepsNoHitWithoutAFace) {

@@ -11,6 +11,7 @@
 #include "luxel/voxel/emitter_light.h"
 #include "luxel/voxel/surface_cast.h"
 #include "voxel/emitter_rect.h"
+#include "voxel/shadow_blockers.h"
 
 namespace luxel::voxel::cascades {
 
@@ -30,6 +31,13 @@ double cellScore(const EmitterFace& e, Vec3d lo, Vec3d hi) {
     return double(std::max(e.r, std::max(e.g, e.b))) * area /
            (boxDistanceSquared(c, lo, hi) + area);
 }
+
+// The faces this thread's lamp rays last stopped at short of their lamp (shadow_blockers.h): a
+// lamp ray that provably enters a solid voxel before it reaches the lamp's plane meets something
+// else first, and is refused without its walk (§5). Kept over pixels, as neighbours' rays to a
+// lamp mostly stop at the same wall; a face is only a plane to test, the proof reading the world
+// it is given, so one kept from another picture proves nothing false.
+thread_local ShadowBlockers lampBlockers;
 
 }  // namespace
 
@@ -86,6 +94,12 @@ void GlossyLampChoice::choose() {
     for (int k = 0; k < LUXEL_GLOSSY_PICKS; ++k) {
         const std::uint32_t i = g.picks[std::size_t(cell) * LUXEL_GLOSSY_PICKS + k];
         if (i == LUXEL_GLOSSY_NO_PICK) break;
+        // A lamp whose plane the point is not in front of weighs 0: glossyPickWeightOf's
+        // towardsX, the same float, found before the span (§5).
+        const shared::CascadeNearEmitter& e = g.lamps[i];
+        const int axis = int(e.normal / 2u);
+        const float along = shared::emitterPlaneCoordinate(e) - point_[axis];
+        if (!(((e.normal & 1u) == 0u ? -along : along) > 0.0f)) continue;
         const shared::EmitterSpan span = shared::emitterSpanInFront(point_, normal_, g.lamps[i]);
         const float w = shared::glossyPickWeightOf(point_, normal_, g.lamps[i], span);
         if (!(w > 0.0f)) continue;
@@ -115,6 +129,7 @@ double GlossyLampChoice::density(Int3 voxel, Int3 normal, Vec3d y) {
 Rgb GlossyLampChoice::sample(const PathBsdf& specular, int lobeRays, PathRng& rng) {
     choose();
     if (count_ == 0) return {};
+    const bool blockersHold = shadowBlockersHold(state_.textures, state_.shading.stepCap);
     Rgb sum;
     for (int n = 0; n < LUXEL_GLOSSY_LIGHT_SAMPLES; ++n) {
         const float u0 = rng.next(), u1 = rng.next(), u2 = rng.next();
@@ -135,24 +150,40 @@ Rgb GlossyLampChoice::sample(const PathBsdf& specular, int lobeRays, PathRng& rn
         const float lightPdf = weight_[k] / total_ * shared::emitterSpanDensity(e, span, point_, y);
         if (!(lightPdf > 0.0f)) continue;
         const shared::vec3 l = normalize(y - point_);
-        const Vec3d dir{double(l.x), double(l.y), double(l.z)};
+        const Ray towards{hit_.point, {double(l.x), double(l.y), double(l.z)}};
+        const Vec3d& dir = towards.direction;
         // Seen when the shadow ray first meets this rectangle through its face (glass and
-        // cutouts in between stop it, as they turn the GGX rays that count the lamp in full).
+        // cutouts in between stop it, as they turn the GGX rays that count the lamp in full):
+        // the face lies on the lamp's plane, which the ray crosses once, `reach` along it.
+        const int axis = int(e.normal / 2u);
+        const double reach =
+            (double(shared::emitterPlaneCoordinate(e)) - hit_.point[axis]) / dir[axis];
+        if (blockersHold && std::isfinite(reach) &&
+            lampBlockers.blocks(*state_.world, towards, reach - ShadowBlockers::kEdgeMargin)) {
+            continue;
+        }
+        // Where every solid voxel stops a ray (no cutout texel), the first voxel castRay meets is
+        // castToSurface's, without the texel it would look up there.
         const Int3 outward = normalFromIndex(int(e.normal));
         const Hit seen =
-            castToSurface(*state_.world, state_.textures, {hit_.point, dir}, state_.shading.stepCap)
-                .hit;
+            blockersHold
+                ? castRay(*state_.world, towards, kInfinity, state_.shading.stepCap)
+                : castToSurface(*state_.world, state_.textures, towards, state_.shading.stepCap)
+                      .hit;
         if (!seen.hit || seen.normal != outward ||
-            !shared::emitterRectHolds({e.x, e.y, e.z}, int(e.normal / 2u), e.extent,
+            !shared::emitterRectHolds({e.x, e.y, e.z}, axis, e.extent,
                                       {seen.voxel.x, seen.voxel.y, seen.voxel.z})) {
+            if (blockersHold) lampBlockers.note(seen, true);
             continue;
         }
         const float share = 1.0f - nearEmitterShare(state_, hit_, face_, seen.voxel, seen.normal);
         if (!(share > 0.0f)) continue;
-        const float lobePdf = float(ggxDensity(specular, dir));
+        // ggxDensity and bsdfLight(..., 0) with one half vector.
+        const GgxTowards lobe(specular, dir);
+        const float lobePdf = float(lobe.density());
         const float balance = shared::glossyBalance(
             lightPdf, lobePdf, float(LUXEL_GLOSSY_LIGHT_SAMPLES), float(lobeRays));
-        sum += bsdfLight(specular, dir, Rgb(e.r, e.g, e.b) * (share * balance), 0.0);
+        sum += lobe.deltaLight(Rgb(e.r, e.g, e.b) * (share * balance));
     }
     return sum;
 }
