@@ -100,7 +100,7 @@ TEST(ShadowBlockers, ProveMostOfARoomsHemisphereRaysWithItsCeilingAndWalls) {
 TEST(ShadowBlockers, ProvesNoStopShortOfTheWalksOwn) {
     // The glossy lamps' rays ask for a stop short of the lamp's plane: the walk must stop no
     // later than any such proof says, with faces kept over many points (replacing the oldest).
-    const VoxelWorld world = terrainWithBlocks({64, 48, 64}, 3);
+    const VoxelWorld world = terrainWithBlocks({64, 48, 64}, 3, 400);
     std::mt19937 rng(17);
     std::uniform_real_distribution<double> unit(0.0, 1.0), signedUnit(-1.0, 1.0);
     ShadowBlockers blockers;
