@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "luxel/core/parallel.h"
+
 namespace luxel::voxel {
 namespace {
 
@@ -93,8 +95,8 @@ Silhouette silhouetteOf(const Vec3d& tu, const Vec3d& tv) {
 
 }  // namespace
 
-SunRayMap::View SunRayMap::mapOne(const VoxelWorld& world, Vec3d direction, Int3 solidLo,
-                                  Int3 solidHi, bool solidsStop) {
+SunRayMap::View SunRayMap::mapOne(Int3 size, Vec3d direction,
+                                  const std::vector<Int3>& exposedVoxels, bool solidsStop) {
     View view;
     view.direction = direction;
     bool any = false;
@@ -102,13 +104,12 @@ SunRayMap::View SunRayMap::mapOne(const VoxelWorld& world, Vec3d direction, Int3
         view.on[std::size_t(n)] = (n % 2 ? -1.0 : 1.0) * direction[n / 2] > kLeaves;
         any = any || view.on[std::size_t(n)];
     }
-    if (!any || solidLo.x >= solidHi.x) return view;
+    if (!any || exposedVoxels.empty()) return view;
     tangentsOf(direction, view.tangentU, view.tangentV);
     const Vec3d &tu = view.tangentU, &tv = view.tangentV;
     // The unit cube's projection: its corners' least and largest offsets from the voxel's.
     double cubeLoU = 0, cubeHiU = 0, cubeLoV = 0, cubeHiV = 0;
     // The projection of the world's box, a texel to spare around it.
-    const Int3 size = world.size();
     double minU = 0, maxU = 0, minV = 0, maxV = 0;
     for (int a = 0; a < 3; ++a) {
         cubeLoU += std::min(0.0, tu[a]), cubeHiU += std::max(0.0, tu[a]);
@@ -131,43 +132,39 @@ SunRayMap::View SunRayMap::mapOne(const VoxelWorld& world, Vec3d direction, Int3
     if (solidsStop) view.ahead.assign(texels, -std::numeric_limits<float>::infinity());
     // Every exposed solid voxel marks the texels its projection touches (with slack).
     const double inv = view.perTexel;
-    for (int z = solidLo.z; z < solidHi.z; ++z) {
-        for (int y = solidLo.y; y < solidHi.y; ++y) {
-            for (int x = solidLo.x; x < solidHi.x; ++x) {
-                if (!world.solid(x, y, z) || !exposed(world, x, y, z)) continue;
-                const Vec3d corner{double(x), double(y), double(z)};
-                const double u = dot(corner, tu) - view.originU;
-                const double v = dot(corner, tv) - view.originV;
-                const int u0 = int(std::floor((u + cubeLoU - kProjectionSlack) * inv));
-                const int u1 = int(std::floor((u + cubeHiU + kProjectionSlack) * inv));
-                const int v0 = int(std::floor((v + cubeLoV - kProjectionSlack) * inv));
-                const int v1 = int(std::floor((v + cubeHiV + kProjectionSlack) * inv));
-                const int coordinate[3] = {x, y, z};
-                for (int n = 0; n < 6; ++n) {
-                    if (!view.on[std::size_t(n)]) continue;
-                    const auto key = std::int16_t(n % 2 ? -coordinate[n / 2] : coordinate[n / 2]);
-                    std::vector<std::int16_t>& keys = view.key[std::size_t(n)];
-                    for (int j = v0; j <= v1; ++j) {
-                        std::int16_t* row = keys.data() + std::size_t(j) * std::size_t(view.sizeU);
-                        for (int i = u0; i <= u1; ++i) row[i] = std::max(row[i], key);
-                    }
+    for (const Int3& e : exposedVoxels) {
+        const int x = e.x, y = e.y, z = e.z;
+        const Vec3d corner{double(x), double(y), double(z)};
+        const double u = dot(corner, tu) - view.originU;
+        const double v = dot(corner, tv) - view.originV;
+        const int u0 = int(std::floor((u + cubeLoU - kProjectionSlack) * inv));
+        const int u1 = int(std::floor((u + cubeHiU + kProjectionSlack) * inv));
+        const int v0 = int(std::floor((v + cubeLoV - kProjectionSlack) * inv));
+        const int v1 = int(std::floor((v + cubeHiV + kProjectionSlack) * inv));
+        const int coordinate[3] = {x, y, z};
+        for (int n = 0; n < 6; ++n) {
+            if (!view.on[std::size_t(n)]) continue;
+            const auto key = std::int16_t(n % 2 ? -coordinate[n / 2] : coordinate[n / 2]);
+            std::vector<std::int16_t>& keys = view.key[std::size_t(n)];
+            for (int j = v0; j <= v1; ++j) {
+                std::int16_t* row = keys.data() + std::size_t(j) * std::size_t(view.sizeU);
+                for (int i = u0; i <= u1; ++i) row[i] = std::max(row[i], key);
+            }
+        }
+        if (view.ahead.empty()) continue;
+        // The texels wholly inside the silhouette (corners with slack): a line through
+        // any point of them passes through the voxel's inside.
+        const auto depth = float(dot(corner, direction) + cubeLeastDepth);
+        for (int j = v0; j <= v1; ++j) {
+            const double lo = j * view.texel - v, hi = lo + view.texel;
+            for (int i = u0; i <= u1; ++i) {
+                const double left = i * view.texel - u, right = left + view.texel;
+                if (!silhouette.holds(left, lo) || !silhouette.holds(right, lo) ||
+                    !silhouette.holds(left, hi) || !silhouette.holds(right, hi)) {
+                    continue;
                 }
-                if (view.ahead.empty()) continue;
-                // The texels wholly inside the silhouette (corners with slack): a line through
-                // any point of them passes through the voxel's inside.
-                const auto depth = float(dot(corner, direction) + cubeLeastDepth);
-                for (int j = v0; j <= v1; ++j) {
-                    const double lo = j * view.texel - v, hi = lo + view.texel;
-                    for (int i = u0; i <= u1; ++i) {
-                        const double left = i * view.texel - u, right = left + view.texel;
-                        if (!silhouette.holds(left, lo) || !silhouette.holds(right, lo) ||
-                            !silhouette.holds(left, hi) || !silhouette.holds(right, hi)) {
-                            continue;
-                        }
-                        float& a = view.ahead[std::size_t(j) * std::size_t(view.sizeU) + i];
-                        a = std::max(a, depth);
-                    }
-                }
+                float& a = view.ahead[std::size_t(j) * std::size_t(view.sizeU) + i];
+                a = std::max(a, depth);
             }
         }
     }
@@ -176,26 +173,33 @@ SunRayMap::View SunRayMap::mapOne(const VoxelWorld& world, Vec3d direction, Int3
 
 SunRayMap SunRayMap::build(const VoxelWorld& world, std::span<const Vec3d> directions,
                            bool solidsStop) {
-    // The solids' box, [lo, hi) per axis: only voxels in it can mark.
+    // The solid voxels with a non-solid neighbour: only they mark.
     const Int3 size = world.size();
-    Int3 lo = size, hi{0, 0, 0};
+    std::vector<Int3> exposedVoxels;
     for (int z = 0; z < size.z; ++z) {
         for (int y = 0; y < size.y; ++y) {
             for (int x = 0; x < size.x; ++x) {
-                if (!world.solid(x, y, z)) continue;
-                lo = {std::min(lo.x, x), std::min(lo.y, y), std::min(lo.z, z)};
-                hi = {std::max(hi.x, x + 1), std::max(hi.y, y + 1), std::max(hi.z, z + 1)};
+                if (world.solid(x, y, z) && exposed(world, x, y, z))
+                    exposedVoxels.push_back({x, y, z});
             }
         }
     }
-    SunRayMap map;
+    std::vector<Vec3d> unique;
     for (const Vec3d& d : directions) {
-        if (int(map.views_.size()) == kMaxDirections) break;
+        if (int(unique.size()) == kMaxDirections) break;
         if (!(std::abs(dot(d, d) - 1.0) < 1e-9)) continue;
-        const bool mapped = std::any_of(map.views_.begin(), map.views_.end(),
-                                        [&](const View& v) { return sameBits(v.direction, d); });
-        if (!mapped) map.views_.push_back(mapOne(world, d, lo, hi, solidsStop));
+        const bool mapped = std::any_of(unique.begin(), unique.end(),
+                                        [&](const Vec3d& u) { return sameBits(u, d); });
+        if (!mapped) unique.push_back(d);
     }
+    SunRayMap map;
+    map.views_.resize(unique.size());
+    parallelForRange(int(unique.size()), 1, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            map.views_[std::size_t(i)] =
+                mapOne(size, unique[std::size_t(i)], exposedVoxels, solidsStop);
+        }
+    });
     return map;
 }
 

@@ -78,7 +78,7 @@ class SunRayMap {
         // their inside), -inf where none.
         std::vector<float> ahead;
     };
-    static View mapOne(const VoxelWorld& world, Vec3d direction, Int3 solidLo, Int3 solidHi,
+    static View mapOne(Int3 size, Vec3d direction, const std::vector<Int3>& exposedVoxels,
                        bool solidsStop);
     const View* viewOf(const Vec3d& direction) const;
     std::vector<View> views_;
