@@ -236,12 +236,13 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
         if (!(cosSun > 0.0)) continue;
         const Ray ray{hit.point, l};
         Rgb t(1.0f);
-        if (mapped && map->rayOpen(hit, l)) {
+        const SunRayProof proof = map ? map->prove(hit, l, mapped) : SunRayProof::None;
+        if (proof == SunRayProof::Open) {
             // Proven to reach the sky: transmittance 1, as the walk finds it.
         } else if (shareBlockers) {
             // The same answer as sunRayTransmittance's walk, which the map or an earlier ray's
             // blocker often gives without one.
-            if (map && map->rayBlocked(hit, l)) continue;
+            if (proof == SunRayProof::Blocked) continue;
             if (blockers.blocked(world, textures, ray, shading.stepCap)) continue;
         } else {
             t = sunRayTransmittance(world, textures, ray, shading);

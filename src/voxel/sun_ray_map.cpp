@@ -257,23 +257,33 @@ constexpr double kAheadSlack = 1e-2;
 
 }  // namespace
 
-bool SunRayMap::rayOpen(const Hit& hit, const Vec3d& direction) const {
+SunRayProof SunRayMap::prove(const Hit& hit, const Vec3d& direction, bool startsClear) const {
     const View* view = viewOf(direction);
-    const int n = normalIndexOf(hit.normal), axis = n / 2;
-    if (!view || !view->on[std::size_t(n)]) return false;
-    // The voxels beyond the face's plane, which the ray may enter.
-    const int plane = n % 2 == 0 ? hit.voxel[axis] + 1 : hit.voxel[axis];
-    const int threshold = n % 2 == 0 ? plane : 1 - plane;
+    if (!view) return SunRayProof::None;
     const std::int64_t texel = texelOf(*view, hit.point);
-    return texel >= 0 && int(view->key[std::size_t(n)][std::size_t(texel)]) < threshold;
+    if (texel < 0) return SunRayProof::None;
+    const int n = normalIndexOf(hit.normal), axis = n / 2;
+    if (startsClear && view->on[std::size_t(n)]) {
+        // The voxels beyond the face's plane, which the ray may enter.
+        const int plane = n % 2 == 0 ? hit.voxel[axis] + 1 : hit.voxel[axis];
+        const int threshold = n % 2 == 0 ? plane : 1 - plane;
+        if (int(view->key[std::size_t(n)][std::size_t(texel)]) < threshold) {
+            return SunRayProof::Open;
+        }
+    }
+    if (!view->ahead.empty() &&
+        double(view->ahead[std::size_t(texel)]) >= dot(hit.point, direction) + kAheadSlack) {
+        return SunRayProof::Blocked;
+    }
+    return SunRayProof::None;
+}
+
+bool SunRayMap::rayOpen(const Hit& hit, const Vec3d& direction) const {
+    return prove(hit, direction, true) == SunRayProof::Open;
 }
 
 bool SunRayMap::rayBlocked(const Hit& hit, const Vec3d& direction) const {
-    const View* view = viewOf(direction);
-    if (!view || view->ahead.empty()) return false;
-    const std::int64_t texel = texelOf(*view, hit.point);
-    return texel >= 0 &&
-           double(view->ahead[std::size_t(texel)]) >= dot(hit.point, direction) + kAheadSlack;
+    return prove(hit, direction, false) == SunRayProof::Blocked;
 }
 
 std::uint64_t SunRayMap::bytes() const {

@@ -28,6 +28,9 @@
 
 namespace luxel::voxel {
 
+// What a SunRayMap proves of one ray.
+enum class SunRayProof { None, Open, Blocked };
+
 class SunRayMap {
   public:
     // Texels per map side at most; larger worlds get coarser texels (fewer proofs, same answers).
@@ -61,6 +64,9 @@ class SunRayMap {
     // the map built with solidsStop, and while every solid still stops a ray. False proves
     // nothing.
     bool rayBlocked(const Hit& hit, const Vec3d& direction) const;
+    // rayOpen (when `startsClear`) and rayBlocked at once, the texel found once: Open, Blocked
+    // or None.
+    SunRayProof prove(const Hit& hit, const Vec3d& direction, bool startsClear) const;
     int directions() const { return int(views_.size()); }
     std::uint64_t bytes() const;
 

@@ -86,9 +86,10 @@ Rgb sunPassing(const RadianceCascades::State& state, const Face& face, const Sun
             const Vec3d l = sun.spiral(4 * j + i, 4 * perQuarter);
             // A ray proven to reach the sky (sun_ray_map.h) passes whole, one proven blocked
             // adds nothing, as walked.
-            if (mapped && map.rayOpen(from, l)) {
+            const SunRayProof proof = map.prove(from, l, mapped);
+            if (proof == SunRayProof::Open) {
                 passing += Rgb(1.0f);
-            } else if (!map.rayBlocked(from, l)) {
+            } else if (proof != SunRayProof::Blocked) {
                 passing += sunRayTransmittance(*state.world, state.textures, {from.point, l},
                                                state.shading);
             }
