@@ -118,7 +118,7 @@ void updateStats(RadianceCascades::State& state) {
     stats.segments = std::int64_t(state.faces.codes.size());
     stats.passages = std::int64_t(state.passages.size());
     stats.bytes = state.faces.table.bytes() + state.faces.codes.size() * 4 +
-                  state.passages.size() * sizeof(Passage);
+                  state.passages.size() * sizeof(Passage) + state.sunRayMap.bytes();
     for (const LevelData& level : state.levels) {
         stats.probes += level.level.probeCount();
         stats.segments += std::int64_t(level.codes.size());

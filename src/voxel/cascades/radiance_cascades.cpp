@@ -107,13 +107,15 @@ Status RadianceCascades::setLight(const ShadeOptions& shading) {
     // Which voxels the segments pass, and what passes, depends on the glass's materials.
     // A cast refused before is tried again (the new light may let less through).
     Status cast = Ok{};
-    if (!state_->castComplete || cascades::mediaSignature(shading) != state_->castMedia) {
+    const bool rebuild =
+        !state_->castComplete || cascades::mediaSignature(shading) != state_->castMedia;
+    if (rebuild) {
         state_->faces.clearEmitterLight();  // their light through glass is found again
         cast = cascades::buildSegments(*state_);
-        cascades::updateStats(*state_);
     }
     // Even when the cast is refused the faces' light stays consistent with the codes it left.
     updateFaceLight(*state_);
+    if (rebuild) cascades::updateStats(*state_);  // with the sun rays' map made for this light
     return cast;
 }
 
