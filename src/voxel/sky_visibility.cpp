@@ -52,7 +52,7 @@ Rgb reflectedLight(const VoxelWorld& world, const TextureSet* textures, const Ra
     return skyColor(r.direction, shading) + (delta ? sunDiskAlong(r.direction, shading) : Rgb{});
 }
 
-// The map that proves the sun's rays open (sun_ray_map.h) for the surface's spiral and a
+// The map that proves the sun's rays open or blocked (sun_ray_map.h) for the surface's spiral and a
 // followed face's single ray; none for worlds past SunRayMap::kMaxWorldVoxels, whose scan would
 // cost more than a picture's rays save.
 SunRayMap sunRayMapFor(const VoxelWorld& world, const TextureSet* textures,
@@ -60,12 +60,8 @@ SunRayMap sunRayMapFor(const VoxelWorld& world, const TextureSet* textures,
     const Int3 size = world.size();
     if (std::int64_t(size.x) * size.y * size.z > SunRayMap::kMaxWorldVoxels) return {};
     const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
-    std::vector<Vec3d> directions;
-    for (const int count : {kSunDiskRays, 1}) {
-        const int rays = sun.delta() ? 1 : count;
-        for (int i = 0; i < rays; ++i) directions.push_back(sun.spiral(i, rays));
-    }
-    return SunRayMap::build(world, directions, sunRaysStopAtSolids(textures, shading));
+    return SunRayMap::build(world, spiralDirections(sun, {kSunDiskRays, 1}),
+                            sunRaysStopAtSolids(textures, shading));
 }
 
 }  // namespace

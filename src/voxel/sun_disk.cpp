@@ -73,6 +73,15 @@ Vec3d SunDisk::spiral(int i, int count) const {
     return coneDirection(axis, u * oneMinusCos, golden * i);
 }
 
+std::vector<Vec3d> spiralDirections(const SunDisk& sun, std::initializer_list<int> counts) {
+    std::vector<Vec3d> out;
+    for (const int count : counts) {
+        const int rays = sun.delta() ? 1 : count;
+        for (int i = 0; i < rays; ++i) out.push_back(sun.spiral(i, rays));
+    }
+    return out;
+}
+
 void SunDisk::frame(Vec3d& t, Vec3d& b) const {
     tangents(axis, t, b);
 }

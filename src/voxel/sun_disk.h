@@ -5,6 +5,9 @@
 // three cast the same penumbrae (docs/algorithms/voxel-path-tracing.md).
 #pragma once
 
+#include <initializer_list>
+#include <vector>
+
 #include "luxel/core/vec.h"
 
 namespace luxel::voxel {
@@ -35,6 +38,10 @@ struct SunDisk {
     // The orthonormal tangents sample() turns about the axis (the GPU tracer's cone uses them).
     void frame(Vec3d& t, Vec3d& b) const;
 };
+
+// The directions of the disk's spirals of each of `counts` rays, one after another (a delta sun:
+// its axis once for each): the rays the real-time solvers cast, for SunRayMap to map.
+std::vector<Vec3d> spiralDirections(const SunDisk& sun, std::initializer_list<int> counts);
 
 // The disk as the GPU passes' push constants carry it (the path tracer's, the cascades'
 // picture's: the same named fields), computed in double and rounded once: 1 - cos r, the

@@ -21,12 +21,6 @@ namespace {
 
 constexpr Voxel kStone{128, 128, 128, 255};
 
-std::vector<Vec3d> spiralOf(const SunDisk& sun, int count) {
-    std::vector<Vec3d> out;
-    for (int i = 0; i < (sun.delta() ? 1 : count); ++i) out.push_back(sun.spiral(i, count));
-    return out;
-}
-
 // A point on face `normal` of `voxel` at (a, b) in [0, 1]^2 across it.
 Hit faceHit(Int3 voxel, Int3 normal, double a, double b) {
     Hit h;
@@ -55,7 +49,7 @@ TEST(SunRayMap, ProvesOnlyRaysTheWalkFindsOpenOrBlocked) {
     for (const Vec3d& s : suns) {
         for (const double radius : {0.0, 0.0047, 0.035, 0.3}) {
             const SunDisk sun = SunDisk::make({float(s.x), float(s.y), float(s.z)}, radius);
-            const std::vector<Vec3d> directions = spiralOf(sun, 8);
+            const std::vector<Vec3d> directions = spiralDirections(sun, {8});
             const SunRayMap map = SunRayMap::build(world, directions, true);
             for (int k = 0; k < 3000; ++k) {
                 // Half the faces where a ray from above meets the terrain, half any face of any
@@ -151,7 +145,8 @@ TEST(SunRayMap, MapsEachDirectionOnce) {
     const std::vector<Vec3d> same(5, delta.axis);
     EXPECT_EQ(SunRayMap::build(world, same).directions(), 1);
     const SunDisk disk = SunDisk::make({0.3f, 1.0f, 0.2f}, 0.05);
-    EXPECT_EQ(SunRayMap::build(world, spiralOf(disk, 40)).directions(), SunRayMap::kMaxDirections);
+    EXPECT_EQ(SunRayMap::build(world, spiralDirections(disk, {40})).directions(),
+              SunRayMap::kMaxDirections);
     EXPECT_FALSE(SunRayMap().open(world, faceHit({1, 1, 1}, {0, 1, 0}, 0.5, 0.5), delta.axis));
 }
 
@@ -176,7 +171,7 @@ TEST(SunRayMap, LeavesTheSunsLightAtASurfaceAsItWasToTheBit) {
         // Built to prove blocked rays even where glass lets light through: the sun's light
         // must not take those proofs then.
         const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
-        const SunRayMap map = SunRayMap::build(world, spiralOf(sun, kSunDiskRays), true);
+        const SunRayMap map = SunRayMap::build(world, spiralDirections(sun, {kSunDiskRays}), true);
         std::mt19937 rng(5);
         std::uniform_real_distribution<double> unit(0.0, 1.0);
         int lit = 0, shadowed = 0;

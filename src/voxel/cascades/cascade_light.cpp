@@ -53,17 +53,6 @@ float reflectedShare(const Material& m, const ShadeOptions& shading) {
     return float(1.0 - passed);
 }
 
-// The directions of the picture's sun rays (its surface's spiral and a followed surface's single
-// ray) and of the faces' (their quarters'), for the maps that prove them open or blocked.
-std::vector<Vec3d> spiralDirections(const SunDisk& sun, std::initializer_list<int> counts) {
-    std::vector<Vec3d> out;
-    for (const int count : counts) {
-        const int rays = sun.delta() ? 1 : count;
-        for (int i = 0; i < rays; ++i) out.push_back(sun.spiral(i, rays));
-    }
-    return out;
-}
-
 // Mean transmittance of the face's shadow rays (sunRayTransmittance: cutouts let them through,
 // glass dims them): from each of its four quarter centres one ray to a delta sun, or
 // kSunRaysPerQuarter rays to a disk (the quarters take turns along the disk's spiral, sun_disk.h,
@@ -223,7 +212,8 @@ void updateFaceLight(RadianceCascades::State& state) {
     faces.sunPassing.resize(count);
     if (faces.irradiance.size() != std::size_t(count)) faces.irradiance.assign(count, Rgb{});
     faces.outgoing.resize(count);
-    // The faces' map only while their rays are cast; the picture's kept (sun_ray_map.h).
+    // The maps of the picture's sun rays (its surface's spiral, a followed surface's single ray),
+    // kept, and of the faces' (their quarters'), while they are cast (sun_ray_map.h).
     SunRayMap facesRayMap;
     if (sunMoved) {
         const bool stop = sunRaysStopAtSolids(state.textures, shading);
