@@ -9,16 +9,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// Orthonormal tangents of a unit vector (Duff et al. 2017, "Building an Orthonormal Basis,
-// Revisited").
-void tangents(Vec3d n, Vec3d& t, Vec3d& b) {
-    const double sign = std::copysign(1.0, n.z);
-    const double a = -1.0 / (sign + n.z);
-    const double c = n.x * n.y * a;
-    t = {1.0 + sign * n.x * n.x * a, sign * c, -sign * n.x};
-    b = {c, sign + n.y * n.y * a, -n.y};
-}
-
 // The direction at 1 - cos(theta) = oneMinusCos from the axis and azimuth phi.
 Vec3d coneDirection(Vec3d axis, double oneMinusCos, double phi) {
     Vec3d t, b;
@@ -29,6 +19,15 @@ Vec3d coneDirection(Vec3d axis, double oneMinusCos, double phi) {
 }
 
 }  // namespace
+
+// Duff et al. 2017, "Building an Orthonormal Basis, Revisited".
+void tangents(Vec3d n, Vec3d& t, Vec3d& b) {
+    const double sign = std::copysign(1.0, n.z);
+    const double a = -1.0 / (sign + n.z);
+    const double c = n.x * n.y * a;
+    t = {1.0 + sign * n.x * n.x * a, sign * c, -sign * n.x};
+    b = {c, sign + n.y * n.y * a, -n.y};
+}
 
 SunDisk SunDisk::make(Vec3 direction, double angularRadius) {
     SunDisk s;

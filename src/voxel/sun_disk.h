@@ -12,6 +12,9 @@
 
 namespace luxel::voxel {
 
+// Orthonormal tangents t, b of a unit vector n (the disk's frame, and the sun rays' maps' planes).
+void tangents(Vec3d n, Vec3d& t, Vec3d& b);
+
 struct SunDisk {
     Vec3d axis;                // unit, towards the sun's centre
     double radius = 0.0;       // angular radius in radians; 0: a delta light

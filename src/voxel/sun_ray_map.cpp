@@ -6,7 +6,9 @@
 #include <cmath>
 #include <limits>
 
+#include "face_normal.h"
 #include "luxel/core/parallel.h"
+#include "sun_disk.h"
 
 namespace luxel::voxel {
 namespace {
@@ -20,12 +22,6 @@ constexpr double kStartSlack = 1e-4;
 // A direction leaves a face plane when its component along the normal is above this.
 constexpr double kLeaves = 1e-9;
 
-int normalIndexOf(Int3 n) {
-    if (n.x != 0) return n.x > 0 ? 0 : 1;
-    if (n.y != 0) return n.y > 0 ? 2 : 3;
-    return n.z > 0 ? 4 : 5;
-}
-
 bool sameBits(const Vec3d& a, const Vec3d& b) {
     return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
            std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y) &&
@@ -37,13 +33,6 @@ bool sameBits(const Vec3d& a, const Vec3d& b) {
 bool exposed(const VoxelWorld& world, int x, int y, int z) {
     return !world.solid(x - 1, y, z) || !world.solid(x + 1, y, z) || !world.solid(x, y - 1, z) ||
            !world.solid(x, y + 1, z) || !world.solid(x, y, z - 1) || !world.solid(x, y, z + 1);
-}
-
-// Two unit tangents square to unit `d` and to each other.
-void tangentsOf(Vec3d d, Vec3d& u, Vec3d& v) {
-    const Vec3d helper = std::abs(d.x) < 0.9 ? Vec3d{1, 0, 0} : Vec3d{0, 1, 0};
-    u = normalize(cross(helper, d));
-    v = cross(d, u);
 }
 
 // The unit cube's silhouette along a direction: the convex hull of its corners' projections,
@@ -105,7 +94,7 @@ SunRayMap::View SunRayMap::mapOne(Int3 size, Vec3d direction,
         any = any || view.on[std::size_t(n)];
     }
     if (!any || exposedVoxels.empty()) return view;
-    tangentsOf(direction, view.tangentU, view.tangentV);
+    tangents(direction, view.tangentU, view.tangentV);
     const Vec3d &tu = view.tangentU, &tv = view.tangentV;
     // The unit cube's projection: its corners' least and largest offsets from the voxel's.
     double cubeLoU = 0, cubeHiU = 0, cubeLoV = 0, cubeHiV = 0;
@@ -205,7 +194,7 @@ SunRayMap SunRayMap::build(const VoxelWorld& world, std::span<const Vec3d> direc
 
 bool SunRayMap::startsClear(const VoxelWorld& world, const Hit& hit) const {
     if (views_.empty() || !hit.hit || hit.normal == Int3{}) return false;
-    const int n = normalIndexOf(hit.normal), axis = n / 2;
+    const int n = normalIndex(hit.normal), axis = n / 2;
     const bool positive = n % 2 == 0;
     const int plane = positive ? hit.voxel[axis] + 1 : hit.voxel[axis];
     if (!(hit.point[axis] == double(plane))) return false;
@@ -262,7 +251,7 @@ SunRayProof SunRayMap::prove(const Hit& hit, const Vec3d& direction, bool starts
     if (!view) return SunRayProof::None;
     const std::int64_t texel = texelOf(*view, hit.point);
     if (texel < 0) return SunRayProof::None;
-    const int n = normalIndexOf(hit.normal), axis = n / 2;
+    const int n = normalIndex(hit.normal), axis = n / 2;
     if (startsClear && view->on[std::size_t(n)]) {
         // The voxels beyond the face's plane, which the ray may enter.
         const int plane = n % 2 == 0 ? hit.voxel[axis] + 1 : hit.voxel[axis];

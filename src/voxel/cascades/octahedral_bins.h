@@ -8,6 +8,7 @@
 #include <array>
 #include <vector>
 
+#include "../face_normal.h"
 #include "luxel/core/vec.h"
 #include "luxel/voxel/shading.h"
 
@@ -15,19 +16,6 @@ namespace luxel::voxel::cascades {
 
 // The unit direction at octahedral coordinates (u, v) in [0, 1]^2 (y is the pole).
 Vec3d octahedralDirection(double u, double v);
-
-// Index 0..5 of an axis-aligned unit normal: 2 * axis + (component < 0). Inline: the picture
-// asks at every face lookup.
-inline int normalIndex(Int3 n) {
-    if (n.x != 0) return n.x > 0 ? 0 : 1;
-    if (n.y != 0) return n.y > 0 ? 2 : 3;
-    return n.z > 0 ? 4 : 5;
-}
-inline Int3 normalFromIndex(int index) {
-    Int3 n{};
-    n[index / 2] = (index % 2) ? -1 : 1;
-    return n;
-}
 
 struct DirectionBins {
     int side = 0;                    // bins per side of the map
