@@ -26,10 +26,7 @@ TEST(ShadowBlockers, ProvesOnlyRaysTheWalkFindsBlocked) {
     std::uniform_real_distribution<double> unit(0.0, 1.0), signedUnit(-1.0, 1.0);
     int proofs = 0, blockedWalks = 0;
     for (int point = 0; point < 4000; ++point) {
-        // A point on a face: where a random ray from above the world meets it.
-        const Ray probe{{unit(rng) * 64.0, 47.5, unit(rng) * 64.0},
-                        normalised({signedUnit(rng), -0.3 - unit(rng), signedUnit(rng)})};
-        const Hit surface = castRay(world, probe);
+        const Hit surface = hitFromAbove(world, rng);
         if (!surface.hit || surface.normal == Int3{}) continue;
         // A sun and a disk around it: spreads from 0.1 to 30 degrees.
         const Vec3d sun = normalised({signedUnit(rng), 0.05 + unit(rng), signedUnit(rng)});
@@ -106,9 +103,7 @@ TEST(ShadowBlockers, ProvesNoStopShortOfTheWalksOwn) {
     ShadowBlockers blockers;
     int proofs = 0, walks = 0;
     for (int point = 0; point < 12000; ++point) {
-        const Ray probe{{unit(rng) * 64.0, 47.5, unit(rng) * 64.0},
-                        normalised({signedUnit(rng), -0.3 - unit(rng), signedUnit(rng)})};
-        const Hit surface = castRay(world, probe);
+        const Hit surface = hitFromAbove(world, rng);
         if (!surface.hit || surface.normal == Int3{}) continue;
         const Vec3d n{double(surface.normal.x), double(surface.normal.y), double(surface.normal.z)};
         for (int k = 0; k < 4; ++k) {

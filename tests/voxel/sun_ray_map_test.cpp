@@ -57,9 +57,7 @@ TEST(SunRayMap, ProvesOnlyRaysTheWalkFindsOpenOrBlocked) {
                 Int3 voxel{cell(rng), height(rng), cell(rng)}, normal{};
                 normal[face(rng) / 2] = face(rng) % 2 ? -1 : 1;
                 if (k % 2 == 0) {
-                    const Hit met = castRay(
-                        world, {{unit(rng) * 48.0, 39.5, unit(rng) * 48.0},
-                                normalised({signedUnit(rng), -0.3 - unit(rng), signedUnit(rng)})});
+                    const Hit met = hitFromAbove(world, rng);
                     if (!met.hit || met.normal == Int3{}) continue;
                     voxel = met.voxel, normal = met.normal;
                 }

@@ -1,5 +1,6 @@
 // A test world for proofs about rays: generated terrain with blocks floating over it, so rays
-// leave faces of every orientation and meet overhangs (ShadowBlockers, SunRayMap).
+// leave faces of every orientation and meet overhangs (ShadowBlockers, SunRayMap), and points on
+// its faces.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include <random>
 
 #include "luxel/core/vec.h"
+#include "luxel/voxel/dda.h"
 #include "luxel/voxel/generators.h"
 #include "luxel/voxel/voxel_world.h"
 
@@ -32,6 +34,16 @@ inline VoxelWorld terrainWithBlocks(Int3 size, std::uint64_t seed, int blocks) {
 
 inline Vec3d normalised(Vec3d v) {
     return v * (1.0 / std::sqrt(dot(v, v)));
+}
+
+// Where a random ray from half a voxel below the world's top, heading down at 17 to 73 degrees
+// from the vertical, first meets it: a point on a face the sky can see (hit.hit false on a miss).
+inline Hit hitFromAbove(const VoxelWorld& world, std::mt19937& rng) {
+    std::uniform_real_distribution<double> unit(0.0, 1.0), signedUnit(-1.0, 1.0);
+    const Int3 size = world.size();
+    const Vec3d origin{unit(rng) * size.x, size.y - 0.5, unit(rng) * size.z};
+    const Vec3d direction = normalised({signedUnit(rng), -0.3 - unit(rng), signedUnit(rng)});
+    return castRay(world, {origin, direction});
 }
 
 }  // namespace luxel::voxel
