@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "luxel/voxel/dda.h"
-#include "luxel/voxel/generators.h"
+#include "terrain_with_blocks.h"
 #include "voxel/fast_walk.h"
 #include "voxel/lane_walk.h"
 
@@ -35,17 +35,7 @@ void expectIdentical(const Hit& a, const Hit& b, int ray) {
 
 // Terrain with floating blocks and a cave-free sky: long empty boxes above, dense bricks below.
 VoxelWorld terrain(Int3 size, std::uint64_t seed) {
-    VoxelWorld world = VoxelWorld::create(size, 16).value();
-    TerrainOptions options;
-    options.seed = seed;
-    options.frequency = 0.03;
-    EXPECT_TRUE(generateTerrain(world, options).ok());
-    std::mt19937 rng(static_cast<unsigned>(seed));
-    std::uniform_int_distribution<int> x(0, size.x - 1), y(size.y / 2, size.y - 1),
-        z(0, size.z - 1);
-    for (int i = 0; i < 60; ++i) world.set(x(rng), y(rng), z(rng), kStone);
-    world.refreshEmptySpace();
-    return world;
+    return terrainWithBlocks(size, seed, 60, 0.03, size.y / 2);
 }
 
 struct Counts {

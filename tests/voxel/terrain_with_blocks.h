@@ -16,17 +16,19 @@
 
 namespace luxel::voxel {
 
-// Terrain of `size` from `seed`, and `blocks` stone voxels at random above its lowest third.
-inline VoxelWorld terrainWithBlocks(Int3 size, std::uint64_t seed, int blocks) {
+// Terrain of `size` from `seed` at noise `frequency`, and `blocks` stone voxels at random from
+// height `lowestBlockY` up (-1: a third of the way up).
+inline VoxelWorld terrainWithBlocks(Int3 size, std::uint64_t seed, int blocks,
+                                    double frequency = 0.05, int lowestBlockY = -1) {
     constexpr Voxel kStone{128, 128, 128, 255};
     VoxelWorld world = VoxelWorld::create(size, 16).value();
     TerrainOptions options;
     options.seed = seed;
-    options.frequency = 0.05;
+    options.frequency = frequency;
     EXPECT_TRUE(generateTerrain(world, options).ok());
     std::mt19937 rng(static_cast<unsigned>(seed));
-    std::uniform_int_distribution<int> x(0, size.x - 1), y(size.y / 3, size.y - 1),
-        z(0, size.z - 1);
+    std::uniform_int_distribution<int> x(0, size.x - 1),
+        y(lowestBlockY < 0 ? size.y / 3 : lowestBlockY, size.y - 1), z(0, size.z - 1);
     for (int i = 0; i < blocks; ++i) world.set(x(rng), y(rng), z(rng), kStone);
     world.refreshEmptySpace();
     return world;
