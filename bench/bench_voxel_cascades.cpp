@@ -11,6 +11,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "luxel/gpu/context.h"
 #include "luxel/voxel/radiance_cascades.h"
@@ -158,33 +159,19 @@ BENCHMARK(BM_VoxelCascadesBuild)
     ->Name("voxel_cascades/build/cottage")
     ->MeasureProcessCPUTime()
     ->Unit(benchmark::kMillisecond);
-#define LUXEL_PASS_BENCHMARK(id, scene)                             \
-    BENCHMARK_CAPTURE(BM_VoxelCascadesPass, id, std::string(scene)) \
-        ->Name("voxel_cascades/pass/" scene)                        \
-        ->MeasureProcessCPUTime()                                   \
-        ->Unit(benchmark::kMillisecond)
-LUXEL_PASS_BENCHMARK(cottage, "cottage");
-LUXEL_PASS_BENCHMARK(fence, "fence");
-LUXEL_PASS_BENCHMARK(garden, "garden");
-LUXEL_PASS_BENCHMARK(glass, "glass");
-LUXEL_PASS_BENCHMARK(thin_walls, "thin-walls");
-#define LUXEL_PICTURE_BENCHMARK(id, scene)                             \
-    BENCHMARK_CAPTURE(BM_VoxelCascadesPicture, id, std::string(scene)) \
-        ->Name("voxel_cascades/picture_640x360/" scene)                \
-        ->MeasureProcessCPUTime()                                      \
-        ->Unit(benchmark::kMillisecond)
-LUXEL_PICTURE_BENCHMARK(cottage, "cottage");
-LUXEL_PICTURE_BENCHMARK(fence, "fence");
-LUXEL_PICTURE_BENCHMARK(garden, "garden");
-LUXEL_PICTURE_BENCHMARK(glass, "glass");
-LUXEL_PICTURE_BENCHMARK(thin_walls, "thin-walls");
-#define LUXEL_FRAME_BENCHMARK(id, scene)                             \
-    BENCHMARK_CAPTURE(BM_VoxelCascadesFrame, id, std::string(scene)) \
-        ->Name("voxel_cascades/frame_640x360/" scene)                \
-        ->MeasureProcessCPUTime()                                    \
-        ->Unit(benchmark::kMillisecond)
-LUXEL_FRAME_BENCHMARK(cottage, "cottage");
-LUXEL_FRAME_BENCHMARK(fence, "fence");
-LUXEL_FRAME_BENCHMARK(garden, "garden");
-LUXEL_FRAME_BENCHMARK(glass, "glass");
-LUXEL_FRAME_BENCHMARK(thin_walls, "thin-walls");
+// voxel_cascades/<kind>/<scene>: each small shipped scene's pass, then picture, then frame.
+const bool kSceneBenchmarks = [] {
+    using Run = void (*)(benchmark::State&, const std::string&);
+    const std::pair<const char*, Run> kinds[] = {{"pass", BM_VoxelCascadesPass},
+                                                 {"picture_640x360", BM_VoxelCascadesPicture},
+                                                 {"frame_640x360", BM_VoxelCascadesFrame}};
+    for (const auto& [kind, run] : kinds) {
+        for (const char* scene : {"cottage", "fence", "garden", "glass", "thin-walls"}) {
+            const std::string name = std::string("voxel_cascades/") + kind + "/" + scene;
+            benchmark::RegisterBenchmark(name.c_str(), run, std::string(scene))
+                ->MeasureProcessCPUTime()
+                ->Unit(benchmark::kMillisecond);
+        }
+    }
+    return true;
+}();
