@@ -70,6 +70,11 @@ bool solverFollows(const VoxelWorld& world, const SurfaceHit& s, const ShadeOpti
     return solverFollows(shading.materials.forSlot(textureSlotOf(v)), shading);
 }
 
+bool solverRoughLobe(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& shading) {
+    const Voxel v = world.get(s.hit.voxel.x, s.hit.voxel.y, s.hit.voxel.z);
+    return shading.materials.forSlot(textureSlotOf(v)).roughness > kSolverFollowRoughness;
+}
+
 bool solverFollowsAny(const ShadeOptions& shading) {
     const MaterialTable& table = shading.materials;
     if (solverFollows(table.plain(), shading)) return true;

@@ -101,19 +101,29 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
                                                      s.hit.normal, s.hit.point, &face);
     cascades::NearEmitterRays nearRays(*state_, s.hit, face);
     const Rgb irradiance = far + cascades::nearEmitterLight(*state_, nearRays);
-    // The callbacks capture two pointers each, which std::function keeps without allocating.
-    SolverLight light{
-        irradiance * kInvPi,
-        [this, &rng](const Ray& r, bool delta) { return reflectedLight(r, delta, 0, rng); },
-        kPictureSunRays, kPictureSpecularRays, &state_->sunRayMap};
     // The near emitters' glossy highlight light-sampled, their GGX rays keeping the rest; the
     // lamps beyond, light-sampled and met by the GGX rays, weighed by the balance heuristic.
     cascades::GlossyLampChoice lamps(*state_, s.hit, face);
     struct Glossy {
         const RadianceCascades* cascades;
         PathRng* rng;
+        // Where the surface's GGX rays start following glass and polished metal: a rough
+        // surface's follow one such face fewer than its delta lobes, for what a rough lobe sees
+        // through a second one is blurred by it (§4.2, "Rough lobes follow one face").
+        int depth;
         cascades::GlossyRay ray;  // each GGX ray's start: the surface, nothing met yet
-    } glossy{this, &rng, {&s.hit, face, faces.glossy.empty() ? nullptr : &lamps, {}}};
+    } glossy{this,
+             &rng,
+             solverRoughLobe(world, s, shading) ? 1 : 0,
+             {&s.hit, face, faces.glossy.empty() ? nullptr : &lamps, {}}};
+    // The callbacks capture one or two pointers each, which std::function keeps without
+    // allocating.
+    SolverLight light{irradiance * kInvPi,
+                      [&glossy](const Ray& r, bool delta) {
+                          return glossy.cascades->reflectedLight(r, delta, delta ? 0 : glossy.depth,
+                                                                 *glossy.rng);
+                      },
+                      kPictureSunRays, kPictureSpecularRays, &state_->sunRayMap};
     if (!faces.nearOffset.empty() || glossy.ray.lamps) {
         if (!faces.nearOffset.empty()) {
             light.nearHighlight = [this, &nearRays](const PathBsdf& specular) {
@@ -122,7 +132,8 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
         }
         light.glossyAlong = [&glossy](const Ray& r) {
             cascades::GlossyRay g = glossy.ray;
-            const Rgb rest = glossy.cascades->reflectedLight(r, false, 0, *glossy.rng, &g);
+            const Rgb rest =
+                glossy.cascades->reflectedLight(r, false, glossy.depth, *glossy.rng, &g);
             return GlossyAlong{rest, g.met.emission, g.met.lightDensity};
         };
     }

@@ -85,14 +85,19 @@ layout(push_constant) uniform Push { CascadePicturePush path; };
 int pictureNearFace;
 vec3 pictureNearPoint;
 bool pictureGlossyRay;
+// Whether the camera's surface is rough: its GGX rays then follow glass and polished metal one
+// level less deep (RadianceCascades::pixelRadiance, §4.2 "Rough lobes follow one face").
+bool pictureRoughLobe;
 // The lamps beyond, light-sampled and weighed against the GGX rays (glossy_emitters.glsl).
 #include "voxel/glossy_emitters.glsl"
 #define LUXEL_SOLVER_NEAR
 #define LUXEL_SOLVER_REFLECTED reflectedLight0
 #define LUXEL_SOLVER_FOLLOW shadeSurface1
+#define LUXEL_SOLVER_FOLLOW_ROUGH shadeSurface2
 #include "voxel/solver_reflected.glsl"
 #undef LUXEL_SOLVER_REFLECTED
 #undef LUXEL_SOLVER_FOLLOW
+#undef LUXEL_SOLVER_FOLLOW_ROUGH
 #define LUXEL_SOLVER_SHADE shadeSurface0
 #define LUXEL_SOLVER_RADIANCE reflectedLight0
 #include "voxel/solver_shade.glsl"
@@ -110,6 +115,7 @@ vec3 pixelRadiance(vec3 origin, vec3 direction, inout uvec2 rng) {
     pictureNearFace = findFace(s.hit.voxel, normalIndex(s.hit.normal));
     pictureNearPoint = s.hit.point;
     pictureGlossyRay = false;
+    pictureRoughLobe = solverRoughLobe(s);
     pictureLampCount = 0;
     return shadeSurface0(s, direction, irradiance * LUXEL_SOLVER_INV_PI, int(path.sunRays),
                          int(path.specularRays), true, rng);

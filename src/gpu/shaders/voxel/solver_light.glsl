@@ -85,6 +85,13 @@ bool solverFollows(SurfaceHit s) {
     return passes || (m.metallic > 0.0 && m.roughness <= LUXEL_PICTURE_FOLLOW_ROUGHNESS);
 }
 
+// solverRoughLobe (src/voxel/solver_surface.h): the met voxel's GGX lobe is rough, its
+// roughness above that of the metals followed.
+bool solverRoughLobe(SurfaceHit s) {
+    return materials[materialIndex(voxelValue(s.hit.voxel))].roughness >
+           LUXEL_PICTURE_FOLLOW_ROUGHNESS;
+}
+
 int normalIndex(ivec3 n) {
     if (n.x != 0) return n.x > 0 ? 0 : 1;
     if (n.y != 0) return n.y > 0 ? 2 : 3;
