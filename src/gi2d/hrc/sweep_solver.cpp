@@ -110,15 +110,23 @@ void forUniformRows(int y0, int y1, int rows, const std::array<int, N>& offsets,
     }
 }
 
-// From this cascade up a chunk holds at most one plane of each cascade, at its first column
-// (§7.1): log2(kSweepChunk).
-constexpr int kChunkLevels = std::countr_zero(static_cast<unsigned>(kSweepChunk));
+// The planes of cascade n in the chunk of columns [x0, x1): last (x1 - 1) >> n, down to
+// ceil(x0 / 2^n), or 1 (plane 0 is never computed, §7.1).
+struct ChunkPlanes {
+    int x0, x1;
+    int last(int n) const { return (x1 - 1) >> n; }
+    int first(int n) const { return std::max(1, (x0 + pow2(n) - 1) >> n); }
+};
 
-// Those planes are made by angular sectors (§7.1): sector s of cascade n holds rays and cones
-// [s, s + 1) 2^n / kSectors, and reads only sector s of the cascades next to it, so one member
-// extends and merges a sector through every cascade while its planes are still in its cache.
-// Cascade kChunkLevels has one cone per sector.
-constexpr int kSectors = 1 << kChunkLevels;
+// The top cascades of a chunk are made by angular sectors (§7.1): sector s of cascade n holds
+// rays and cones [s, s + 1) 2^n / sectors and reads only sector s of the cascades next to it,
+// so one member extends and merges a sector through every cascade, with no barrier between
+// cascades, while its planes are still in its cache. The first such cascade has one cone per
+// sector; a team of more members than kMaxSectors splits rows instead.
+constexpr int kMaxSectors = 16;
+int sectorCount(int members) {
+    return members <= 4 ? 8 : kMaxSectors;
+}
 
 // Member 0's stopwatch: each lap is charged to one pass.
 class Laps {
@@ -201,8 +209,9 @@ class FrustumSweep {
         return static_cast<std::uint64_t>(rays) * rows_ * 12 * 5;
     }
     std::uint64_t mergeBytes(int n, int p, int cones) const;
-    // Cascades max(traced, kChunkLevels) .. top of the chunk at x0, one plane each, by sectors.
-    void sectors(ThreadTeam& team, int member, int x0, int top, Laps& laps);
+    // Cascades first .. top of the chunk by angular sectors.
+    void sectors(ThreadTeam& team, int member, const ChunkPlanes& chunk, int first, int top,
+                 Laps& laps);
     const float* nearRows(int p, int y0, int y1) const;
     std::uint64_t readOut(int u, int plane, int y0, int y1);
 
@@ -398,30 +407,33 @@ std::uint64_t FrustumSweep::readOut(int u, int plane, int y0, int y1) {
     return static_cast<std::uint64_t>(band) * (18 + (last - u + 1) * 24);
 }
 
-void FrustumSweep::sectors(ThreadTeam& team, int member, int x0, int top, Laps& laps) {
-    const int first = std::max(traced_, kChunkLevels), members = team.size();
-    // Ray s 2^n / kSectors of cascade n, where sector s begins, is even: it extends along one
-    // path, from ray s 2^(n-1) / kSectors below (§4). So each boundary between two sectors is a
-    // chain of rays, one per cascade, made before either sector.
-    for (int s = 1 + member; s < kSectors; s += members) {
+void FrustumSweep::sectors(ThreadTeam& team, int member, const ChunkPlanes& chunk, int first,
+                           int top, Laps& laps) {
+    const int members = team.size(), count = sectorCount(members);
+    // Ray s 2^n / count of cascade n, where sector s begins, is even: it extends along one path,
+    // from ray s 2^(n-1) / count below (§4). So each boundary between two sectors is a chain of
+    // rays, one per plane, made before either sector.
+    for (int s = 1 + member; s < count; s += members) {
         for (int n = first; n <= top; ++n) {
-            const int k = s * (pow2(n) / kSectors);
-            extend(n, x0 >> n, k, k + 1, 0, rows_);
+            const int k = s * (pow2(n) / count);
+            for (int p = chunk.last(n); p >= chunk.first(n); --p) extend(n, p, k, k + 1, 0, rows_);
         }
     }
     team.sync();
     laps.charge(SweepTimes::Extend, 0);
-    for (int s = member; s < kSectors; s += members) {
+    for (int s = member; s < count; s += members) {
         for (int n = first; n <= top; ++n) {
-            const int per = pow2(n) / kSectors, a = s * per;
+            const int per = pow2(n) / count, a = s * per;
             // Ray a is the chain's (sector 0's is ray 0); the last sector also makes ray 2^n.
-            extend(n, x0 >> n, s == 0 ? 0 : a + 1, s == kSectors - 1 ? a + per + 1 : a + per, 0,
-                   rows_);
+            const int k0 = s == 0 ? 0 : a + 1, k1 = s == count - 1 ? a + per + 1 : a + per;
+            for (int p = chunk.last(n); p >= chunk.first(n); --p) extend(n, p, k0, k1, 0, rows_);
         }
         laps.charge(SweepTimes::Extend, 0);
         for (int n = top; n >= first; --n) {
-            const int per = pow2(n) / kSectors;
-            merge(n, x0 >> n, s * per, (s + 1) * per, 0, rows_);
+            const int per = pow2(n) / count;
+            for (int p = chunk.last(n); p >= chunk.first(n); --p) {
+                merge(n, p, s * per, (s + 1) * per, 0, rows_);
+            }
         }
         laps.charge(SweepTimes::Merge, 0);
     }
@@ -430,8 +442,10 @@ void FrustumSweep::sectors(ThreadTeam& team, int member, int x0, int top, Laps& 
     // The team's bytes, charged once.
     std::uint64_t extended = 0, merged = 0;
     for (int n = first; n <= top; ++n) {
-        extended += extendBytes(pow2(n) + 1);
-        merged += mergeBytes(n, x0 >> n, pow2(n));
+        for (int p = chunk.last(n); p >= chunk.first(n); --p) {
+            extended += extendBytes(pow2(n) + 1);
+            merged += mergeBytes(n, p, pow2(n));
+        }
     }
     laps.charge(SweepTimes::Merge, merged);  // the wait above was the merge's
     laps.charge(SweepTimes::Extend, extended);
@@ -446,10 +460,12 @@ void FrustumSweep::run(ThreadTeam& team, int member, SweepTimes* times) {
     const int h0 = std::max(0, y0 - reach), h1 = std::min(rows_, y1 + reach);
     const int length = frame_.length;
     Laps laps(times);
-    // The first cascade the sectors make (0: none). A team larger than kSectors splits rows
-    // instead: sectors would leave members idle.
+    // The first cascade the sectors make (0: none): the one with a cone per sector, or the first
+    // extended one.
     const int bySectors =
-        team.size() <= kSectors ? std::max(traced_, kChunkLevels) : 0;
+        team.size() <= kMaxSectors
+            ? std::max(traced_, std::countr_zero(static_cast<unsigned>(sectorCount(team.size()))))
+            : 0;
     // The last pixel's read-out plane lies beyond the frame: it sees the sky (§6.2).
     readOut(length - 1, -1, y0, y1);
     // Chunks of kSweepChunk columns from the far end; in each, cascade by cascade, so the team
@@ -465,10 +481,10 @@ void FrustumSweep::run(ThreadTeam& team, int member, SweepTimes* times) {
         }
         team.sync();
         laps.charge(SweepTimes::Trace, traced);
-        // The planes of cascade n in the chunk: first (x1 - 1) >> n, down to ceil(x0 / 2^n), or 1.
-        auto lastPlane = [&](int n) { return (x1 - 1) >> n; };
-        auto firstPlane = [&](int n) { return std::max(1, (x0 + pow2(n) - 1) >> n); };
-        // The cascades [bySectors, top] hold one plane each here, made by sectors; none above.
+        const ChunkPlanes chunk{x0, x1};
+        auto lastPlane = [&](int n) { return chunk.last(n); };
+        auto firstPlane = [&](int n) { return chunk.first(n); };
+        // The cascades [bySectors, top] have planes here, made by sectors; none above.
         int top = -1;
         if (bySectors) {
             for (int n = bySectors; n < levels_ && lastPlane(n) >= firstPlane(n); ++n) top = n;
@@ -483,7 +499,7 @@ void FrustumSweep::run(ThreadTeam& team, int member, SweepTimes* times) {
             team.sync();
             laps.charge(SweepTimes::Extend, bytes);
         }
-        if (top >= 0) sectors(team, member, x0, top, laps);
+        if (top >= 0) sectors(team, member, chunk, bySectors, top, laps);
         for (int n = levels_ - 1; n >= 0; --n) {
             if (lastPlane(n) < firstPlane(n) || inSectors(n)) continue;
             std::uint64_t bytes = 0;
