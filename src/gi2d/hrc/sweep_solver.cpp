@@ -461,9 +461,10 @@ void FrustumSweep::run(ThreadTeam& team, int member, SweepTimes* times) {
     const int length = frame_.length;
     Laps laps(times);
     // The first cascade the sectors make (0: none): the one with a cone per sector, or the first
-    // extended one.
+    // extended one. A lone member meets no one, and its rows are every row: it keeps the
+    // cascade-by-cascade order (1024^2: the extend 37 ms against 40 by sectors).
     const int bySectors =
-        team.size() <= kMaxSectors
+        team.size() > 1 && team.size() <= kMaxSectors
             ? std::max(traced_, std::countr_zero(static_cast<unsigned>(sectorCount(team.size()))))
             : 0;
     // The last pixel's read-out plane lies beyond the frame: it sees the sky (§6.2).
