@@ -182,45 +182,75 @@ HWY_INLINE VF ThreeRows(const ConeRows& a, const ConeRows& b, const ConeRows& d,
     return hn::Add(ab, hn::Mul(LoadCone(d, c, y), hn::Set(df, 0.5f * second)));
 }
 
+// The near probe's read on even planes (§5.1): its row alone, blended with the row along the
+// side's ray by a constant weight, or by a weight per row (next to a light).
+enum class NearRead { kOneRow, kTwoRows, kPerRow };
+
+// One side's share of a cone at rows y .. y + lanes - 1, added to sum (Eq 14 or Eq 15-17).
+template <bool kOdd, NearRead kNear>
+HWY_INLINE void MergeSideRows(const MergeSide& side, int y, float second, float nearSecond,
+                              VF nearHere, VF sum[3]) {
+    const DF df;
+    const VF w = hn::Set(df, side.weight);
+    const Lanes6 here = LoadInterval(side.here, y);
+    if (kOdd) {  // Eq 14 (hrcMergeOdd)
+        for (int c = 0; c < 3; ++c) {
+            const VF upper = TwoRows(side.upperA, side.upperA2, c, y, second);
+            sum[c] = hn::Add(sum[c], hn::Add(hn::Mul(here.l[c], w), hn::Mul(here.t[c], upper)));
+        }
+        return;
+    }
+    // Eq 15-17 (hrcMergeEven): the double-length ray to the far probe.
+    const VF half = hn::Set(df, 0.5f);
+    const Lanes6 ray = Over(here, LoadInterval(side.next, y));
+    for (int c = 0; c < 3; ++c) {
+        const VF upperFar = ThreeRows(side.upperB, side.upperB2, side.upperB3, c, y, second);
+        const VF far = hn::Add(hn::Mul(ray.l[c], w), hn::Mul(ray.t[c], upperFar));
+        VF upperNear;
+        if (kNear == NearRead::kPerRow) {
+            upperNear = TwoRowsPerLane(side.upperA, side.upperA2, c, y, nearHere);
+        } else if (kNear == NearRead::kTwoRows) {
+            upperNear = TwoRows(side.upperA, side.upperA2, c, y, nearSecond);
+        } else {
+            upperNear = LoadCone(side.upperA, c, y);
+        }
+        sum[c] = hn::Add(sum[c], hn::Mul(hn::Add(upperNear, far), half));
+    }
+}
+
+template <bool kOdd, NearRead kNear>
+HWY_NOINLINE void MergeLoop(const MergeSide& side0, const MergeSide& side1, float second,
+                            float nearSecond, const float* nearRows, std::uint16_t* const out[3],
+                            int y0, int y1) {
+    const DF df;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    for (int y = y0; y < y1; y += lanes) {
+        VF sum[3] = {hn::Zero(df), hn::Zero(df), hn::Zero(df)};
+        const VF nearHere =
+            kNear == NearRead::kPerRow ? hn::LoadU(df, nearRows + y) : hn::Zero(df);
+        MergeSideRows<kOdd, kNear>(side0, y, second, nearSecond, nearHere, sum);
+        MergeSideRows<kOdd, kNear>(side1, y, second, nearSecond, nearHere, sum);
+        const int count = std::min(lanes, y1 - y);
+        for (int c = 0; c < 3; ++c) StoreHalves(sum[c], out[c], y, count);
+    }
+}
+
 void MergeRowsImpl(bool odd, const MergeSide& side0Ref, const MergeSide& side1Ref, float second,
                    float nearSecond, const float* nearRows, std::uint16_t* const outRef[3], int y0,
                    int y1) {
     // Local copies: stores through `out` cannot alias them, so their pointers stay in registers.
     const MergeSide side0 = side0Ref, side1 = side1Ref;
     std::uint16_t* const out[3] = {outRef[0], outRef[1], outRef[2]};
-    const DF df;
-    const int lanes = static_cast<int>(hn::Lanes(df));
-    const VF half = hn::Set(df, 0.5f);
-    const MergeSide* sides[2] = {&side0, &side1};
-    for (int y = y0; y < y1; y += lanes) {
-        VF sum[3] = {hn::Zero(df), hn::Zero(df), hn::Zero(df)};
-        const VF nearHere = nearRows != nullptr ? hn::LoadU(df, nearRows + y) : hn::Zero(df);
-        for (const MergeSide* side : sides) {
-            const VF w = hn::Set(df, side->weight);
-            const Lanes6 here = LoadInterval(side->here, y);
-            if (odd) {  // Eq 14 (hrcMergeOdd)
-                for (int c = 0; c < 3; ++c) {
-                    const VF upper = TwoRows(side->upperA, side->upperA2, c, y, second);
-                    sum[c] =
-                        hn::Add(sum[c], hn::Add(hn::Mul(here.l[c], w), hn::Mul(here.t[c], upper)));
-                }
-                continue;
-            }
-            // Eq 15-17 (hrcMergeEven): the double-length ray to the far probe.
-            const Lanes6 ray = Over(here, LoadInterval(side->next, y));
-            for (int c = 0; c < 3; ++c) {
-                const VF upperFar =
-                    ThreeRows(side->upperB, side->upperB2, side->upperB3, c, y, second);
-                const VF far = hn::Add(hn::Mul(ray.l[c], w), hn::Mul(ray.t[c], upperFar));
-                const VF upperNear =
-                    nearRows != nullptr
-                        ? TwoRowsPerLane(side->upperA, side->upperA2, c, y, nearHere)
-                        : TwoRows(side->upperA, side->upperA2, c, y, nearSecond);
-                sum[c] = hn::Add(sum[c], hn::Mul(hn::Add(upperNear, far), half));
-            }
-        }
-        const int count = std::min(lanes, y1 - y);
-        for (int c = 0; c < 3; ++c) StoreHalves(sum[c], out[c], y, count);
+    // One loop per case, so each holds only its own reads.
+    if (odd) {
+        MergeLoop<true, NearRead::kOneRow>(side0, side1, second, 0.0f, nullptr, out, y0, y1);
+    } else if (nearRows != nullptr) {
+        MergeLoop<false, NearRead::kPerRow>(side0, side1, second, 0.0f, nearRows, out, y0, y1);
+    } else if (nearSecond != 0.0f) {
+        MergeLoop<false, NearRead::kTwoRows>(side0, side1, second, nearSecond, nullptr, out, y0,
+                                             y1);
+    } else {
+        MergeLoop<false, NearRead::kOneRow>(side0, side1, second, 0.0f, nullptr, out, y0, y1);
     }
 }
 
