@@ -233,8 +233,7 @@ HWY_NOINLINE void MergeLoop(const MergeSide& side0, const MergeSide& side1, floa
     const int lanes = static_cast<int>(hn::Lanes(df));
     for (int y = y0; y < y1; y += lanes) {
         VF sum[3] = {hn::Zero(df), hn::Zero(df), hn::Zero(df)};
-        const VF nearHere =
-            kNear == NearRead::kPerRow ? hn::LoadU(df, nearRows + y) : hn::Zero(df);
+        const VF nearHere = kNear == NearRead::kPerRow ? hn::LoadU(df, nearRows + y) : hn::Zero(df);
         MergeSideRows<kOdd, kNear, kPresent>(side0, y, second, nearSecond, nearHere, sum);
         MergeSideRows<kOdd, kNear, kPresent>(side1, y, second, nearSecond, nearHere, sum);
         const int count = std::min(lanes, y1 - y);
