@@ -3,11 +3,62 @@
 // starting a loop per step would exceed the step.
 #pragma once
 
-#include <barrier>
+#include <atomic>
 #include <thread>
 #include <vector>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
+#endif
+
 namespace luxel {
+
+// A barrier that spins briefly before it sleeps. The HRC sweep meets thousands of times per solve
+// (docs/performance.md, HRC): a member put to sleep in the kernel at each meeting took some 20 us
+// to wake (std::barrier; 1024^2 on two threads, 296 ms a frame with it and 230 ms with this),
+// while the others usually arrive within a few microseconds. Past the spin it sleeps.
+class SpinBarrier {
+  public:
+    // A team larger than the hardware threads does not spin: a member spinning there could hold
+    // the core the last one needs to arrive.
+    explicit SpinBarrier(int size)
+        : size_(size),
+          spins_(static_cast<unsigned>(size) <= std::thread::hardware_concurrency() ? kSpins : 0) {}
+
+    void arriveAndWait() {
+        const unsigned phase = phase_.load(std::memory_order_acquire);
+        if (arrived_.fetch_add(1, std::memory_order_acq_rel) == size_ - 1) {
+            // The last to arrive: reset the count before the others may arrive at the next one.
+            arrived_.store(0, std::memory_order_relaxed);
+            phase_.store(phase + 1, std::memory_order_release);
+            phase_.notify_all();
+            return;
+        }
+        for (int spin = 0; spin < spins_; ++spin) {
+            if (phase_.load(std::memory_order_acquire) != phase) return;
+            pause();
+        }
+        while (phase_.load(std::memory_order_acquire) == phase) {
+            phase_.wait(phase, std::memory_order_acquire);
+        }
+    }
+
+  private:
+    // About 50-100 us of pause instructions before sleeping.
+    static constexpr int kSpins = 2000;
+
+    static void pause() {
+#if defined(__x86_64__) || defined(__i386__)
+        _mm_pause();
+#else
+        std::this_thread::yield();
+#endif
+    }
+
+    int size_, spins_;
+    std::atomic<int> arrived_{0};
+    std::atomic<unsigned> phase_{0};
+};
 
 class ThreadTeam {
   public:
@@ -29,7 +80,7 @@ class ThreadTeam {
 
     // Every member waits here until all have arrived.
     void sync() {
-        if (size_ > 1) barrier_.arrive_and_wait();
+        if (size_ > 1) barrier_.arriveAndWait();
     }
 
     // Rows [begin, end) of `rows` that member `index` owns.
@@ -41,7 +92,7 @@ class ThreadTeam {
     explicit ThreadTeam(int size) : size_(size), barrier_(size) {}
 
     int size_;
-    std::barrier<> barrier_;
+    SpinBarrier barrier_;
 };
 
 }  // namespace luxel

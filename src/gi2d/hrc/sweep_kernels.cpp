@@ -31,11 +31,13 @@ HWY_INLINE VF LoadHalf(const std::uint16_t* p, int y) {
     return hn::PromoteTo(df, hn::LoadU(dh, reinterpret_cast<const hwy::float16_t*>(p + y)));
 }
 
+// kPresent: the caller knows `plane[0]` is set, so no test per vector.
+template <bool kPresent = false>
 HWY_INLINE Lanes6 LoadInterval(const IntervalRows& rows, int y) {
     const DF df;
     Lanes6 v;
     for (int c = 0; c < 3; ++c) {
-        if (rows.plane[0] == nullptr) {
+        if (!kPresent && rows.plane[0] == nullptr) {
             v.l[c] = hn::Zero(df);
             v.t[c] = hn::Set(df, 1.0f);
         } else {
@@ -152,75 +154,132 @@ void ExtendRowsImpl(const IntervalRows& nearARef, const IntervalRows& farARef,
     }
 }
 
+template <bool kPresent = false>
 HWY_INLINE VF LoadCone(const ConeRows& rows, int c, int y) {
     const DF df;
-    if (rows.plane[0] == nullptr) return hn::Set(df, rows.fill[c]);
+    if (!kPresent && rows.plane[0] == nullptr) return hn::Set(df, rows.fill[c]);
     return LoadHalf(rows.plane[c], y + rows.offset);
 }
 
 // (1 - s) a + s b, or a alone when s = 0 (hrcBlendTwoRows, §5.1).
+template <bool kPresent = false>
 HWY_INLINE VF TwoRows(const ConeRows& a, const ConeRows& b, int c, int y, float second) {
     const DF df;
-    if (second == 0.0f) return LoadCone(a, c, y);
-    return hn::Add(hn::Mul(LoadCone(a, c, y), hn::Set(df, 1.0f - second)),
-                   hn::Mul(LoadCone(b, c, y), hn::Set(df, second)));
+    if (second == 0.0f) return LoadCone<kPresent>(a, c, y);
+    return hn::Add(hn::Mul(LoadCone<kPresent>(a, c, y), hn::Set(df, 1.0f - second)),
+                   hn::Mul(LoadCone<kPresent>(b, c, y), hn::Set(df, second)));
 }
 
 // The same with a weight per lane (the near probe next to a light, hrcNearRowWeightAt).
+template <bool kPresent = false>
 HWY_INLINE VF TwoRowsPerLane(const ConeRows& a, const ConeRows& b, int c, int y, VF second) {
     const DF df;
-    return hn::Add(hn::Mul(LoadCone(a, c, y), hn::Sub(hn::Set(df, 1.0f), second)),
-                   hn::Mul(LoadCone(b, c, y), second));
+    return hn::Add(hn::Mul(LoadCone<kPresent>(a, c, y), hn::Sub(hn::Set(df, 1.0f), second)),
+                   hn::Mul(LoadCone<kPresent>(b, c, y), second));
 }
 
 // (1 - 3s/2) a + s b + (s/2) d (hrcBlendThreeRows, §5.1).
+template <bool kPresent = false>
 HWY_INLINE VF ThreeRows(const ConeRows& a, const ConeRows& b, const ConeRows& d, int c, int y,
                         float second) {
     const DF df;
-    const VF ab = hn::Add(hn::Mul(LoadCone(a, c, y), hn::Set(df, 1.0f - 1.5f * second)),
-                          hn::Mul(LoadCone(b, c, y), hn::Set(df, second)));
-    return hn::Add(ab, hn::Mul(LoadCone(d, c, y), hn::Set(df, 0.5f * second)));
+    const VF ab = hn::Add(hn::Mul(LoadCone<kPresent>(a, c, y), hn::Set(df, 1.0f - 1.5f * second)),
+                          hn::Mul(LoadCone<kPresent>(b, c, y), hn::Set(df, second)));
+    return hn::Add(ab, hn::Mul(LoadCone<kPresent>(d, c, y), hn::Set(df, 0.5f * second)));
 }
 
-void MergeRowsImpl(bool odd, const MergeSide& side0Ref, const MergeSide& side1Ref, float second,
-                   float nearSecond, const float* nearRows, std::uint16_t* const outRef[3], int y0,
-                   int y1) {
-    // Local copies: stores through `out` cannot alias them, so their pointers stay in registers.
-    const MergeSide side0 = side0Ref, side1 = side1Ref;
-    std::uint16_t* const out[3] = {outRef[0], outRef[1], outRef[2]};
+// The near probe's read on even planes (§5.1): its row alone, blended with the row along the
+// side's ray by a constant weight, or by a weight per row (next to a light).
+enum class NearRead { kOneRow, kTwoRows, kPerRow };
+
+// One side's share of a cone at rows y .. y + lanes - 1, added to sum (Eq 14 or Eq 15-17).
+template <bool kOdd, NearRead kNear, bool kPresent>
+HWY_INLINE void MergeSideRows(const MergeSide& side, int y, float second, float nearSecond,
+                              VF nearHere, VF sum[3]) {
+    const DF df;
+    const VF w = hn::Set(df, side.weight);
+    const Lanes6 here = LoadInterval<true>(side.here, y);
+    if (kOdd) {  // Eq 14 (hrcMergeOdd)
+        for (int c = 0; c < 3; ++c) {
+            const VF upper = TwoRows<kPresent>(side.upperA, side.upperA2, c, y, second);
+            sum[c] = hn::Add(sum[c], hn::Add(hn::Mul(here.l[c], w), hn::Mul(here.t[c], upper)));
+        }
+        return;
+    }
+    // Eq 15-17 (hrcMergeEven): the double-length ray to the far probe.
+    const VF half = hn::Set(df, 0.5f);
+    const Lanes6 ray = Over(here, LoadInterval<kPresent>(side.next, y));
+    for (int c = 0; c < 3; ++c) {
+        const VF upperFar =
+            ThreeRows<kPresent>(side.upperB, side.upperB2, side.upperB3, c, y, second);
+        const VF far = hn::Add(hn::Mul(ray.l[c], w), hn::Mul(ray.t[c], upperFar));
+        VF upperNear;
+        if (kNear == NearRead::kPerRow) {
+            upperNear = TwoRowsPerLane<kPresent>(side.upperA, side.upperA2, c, y, nearHere);
+        } else if (kNear == NearRead::kTwoRows) {
+            upperNear = TwoRows<kPresent>(side.upperA, side.upperA2, c, y, nearSecond);
+        } else {
+            upperNear = LoadCone<kPresent>(side.upperA, c, y);
+        }
+        sum[c] = hn::Add(sum[c], hn::Mul(hn::Add(upperNear, far), half));
+    }
+}
+
+template <bool kOdd, NearRead kNear, bool kPresent>
+HWY_NOINLINE void MergeLoop(const MergeSide& side0, const MergeSide& side1, float second,
+                            float nearSecond, const float* nearRows, std::uint16_t* const out[3],
+                            int y0, int y1) {
     const DF df;
     const int lanes = static_cast<int>(hn::Lanes(df));
-    const VF half = hn::Set(df, 0.5f);
-    const MergeSide* sides[2] = {&side0, &side1};
     for (int y = y0; y < y1; y += lanes) {
         VF sum[3] = {hn::Zero(df), hn::Zero(df), hn::Zero(df)};
-        const VF nearHere = nearRows != nullptr ? hn::LoadU(df, nearRows + y) : hn::Zero(df);
-        for (const MergeSide* side : sides) {
-            const VF w = hn::Set(df, side->weight);
-            const Lanes6 here = LoadInterval(side->here, y);
-            if (odd) {  // Eq 14 (hrcMergeOdd)
-                for (int c = 0; c < 3; ++c) {
-                    const VF upper = TwoRows(side->upperA, side->upperA2, c, y, second);
-                    sum[c] =
-                        hn::Add(sum[c], hn::Add(hn::Mul(here.l[c], w), hn::Mul(here.t[c], upper)));
-                }
-                continue;
-            }
-            // Eq 15-17 (hrcMergeEven): the double-length ray to the far probe.
-            const Lanes6 ray = Over(here, LoadInterval(side->next, y));
-            for (int c = 0; c < 3; ++c) {
-                const VF upperFar =
-                    ThreeRows(side->upperB, side->upperB2, side->upperB3, c, y, second);
-                const VF far = hn::Add(hn::Mul(ray.l[c], w), hn::Mul(ray.t[c], upperFar));
-                const VF upperNear =
-                    nearRows != nullptr
-                        ? TwoRowsPerLane(side->upperA, side->upperA2, c, y, nearHere)
-                        : TwoRows(side->upperA, side->upperA2, c, y, nearSecond);
-                sum[c] = hn::Add(sum[c], hn::Mul(hn::Add(upperNear, far), half));
-            }
-        }
+        const VF nearHere = kNear == NearRead::kPerRow ? hn::LoadU(df, nearRows + y) : hn::Zero(df);
+        MergeSideRows<kOdd, kNear, kPresent>(side0, y, second, nearSecond, nearHere, sum);
+        MergeSideRows<kOdd, kNear, kPresent>(side1, y, second, nearSecond, nearHere, sum);
         const int count = std::min(lanes, y1 - y);
         for (int c = 0; c < 3; ++c) StoreHalves(sum[c], out[c], y, count);
+    }
+}
+
+// Runs MergeLoop for the case: kPresent where every source the loop reads is inside the frame
+// (most rows), which spares a test per source and vector.
+template <bool kOdd, NearRead kNear>
+HWY_INLINE void MergeCase(const MergeSide& side0, const MergeSide& side1, float second,
+                          float nearSecond, const float* nearRows, std::uint16_t* const out[3],
+                          int y0, int y1) {
+    bool present = true;
+    for (const MergeSide* side : {&side0, &side1}) {
+        present = present && side->here.plane[0] != nullptr && side->upperA.plane[0] != nullptr;
+        if (kOdd || kNear != NearRead::kOneRow) {
+            present = present && side->upperA2.plane[0] != nullptr;
+        }
+        if (!kOdd) {
+            present = present && side->next.plane[0] != nullptr &&
+                      side->upperB.plane[0] != nullptr && side->upperB2.plane[0] != nullptr &&
+                      side->upperB3.plane[0] != nullptr;
+        }
+    }
+    if (present) {
+        MergeLoop<kOdd, kNear, true>(side0, side1, second, nearSecond, nearRows, out, y0, y1);
+    } else {
+        MergeLoop<kOdd, kNear, false>(side0, side1, second, nearSecond, nearRows, out, y0, y1);
+    }
+}
+
+void MergeRowsImpl(bool odd, const MergeSide& side0, const MergeSide& side1, float second,
+                   float nearSecond, const float* nearRows, std::uint16_t* const outRef[3], int y0,
+                   int y1) {
+    std::uint16_t* const out[3] = {outRef[0], outRef[1], outRef[2]};
+    // One loop per case, so each holds only its own reads.
+    if (odd) {
+        MergeCase<true, NearRead::kOneRow>(side0, side1, second, 0.0f, nullptr, out, y0, y1);
+    } else if (nearRows != nullptr) {
+        MergeCase<false, NearRead::kPerRow>(side0, side1, second, 0.0f, nearRows, out, y0, y1);
+    } else if (nearSecond != 0.0f) {
+        MergeCase<false, NearRead::kTwoRows>(side0, side1, second, nearSecond, nullptr, out, y0,
+                                             y1);
+    } else {
+        MergeCase<false, NearRead::kOneRow>(side0, side1, second, 0.0f, nullptr, out, y0, y1);
     }
 }
 
