@@ -19,12 +19,25 @@ shared::vec3 vec3At(const float* p) {
     return {p[0], p[1], p[2]};
 }
 
-// The blur's gate per pixel of row y (paper Eq 21).
+bool sameSigma(const float* a, const shared::vec3& b) {
+    return a[0] == b.x && a[1] == b.y && a[2] == b.z;
+}
+
+// The blur's gate per pixel of row y (paper Eq 21). A run of pixels of equal sigma (most of a
+// canvas) reuses the run's exp: equal inputs give the same bits (±0 both give exp 1).
 void opacityRow(const Medium2D& medium, int y, std::vector<float>& out) {
     const int w = medium.width();
     out.resize(static_cast<std::size_t>(w));
     const float* sigma = medium.absorption.data() + static_cast<std::size_t>(y) * w * 3;
-    for (int x = 0; x < w; ++x) out[x] = shared::hrcOpacity(vec3At(sigma + 3 * x));
+    shared::vec3 last = vec3At(sigma);
+    float opacity = shared::hrcOpacity(last);
+    for (int x = 0; x < w; ++x) {
+        if (!sameSigma(sigma + 3 * x, last)) {
+            last = vec3At(sigma + 3 * x);
+            opacity = shared::hrcOpacity(last);
+        }
+        out[x] = opacity;
+    }
 }
 
 }  // namespace
@@ -73,6 +86,9 @@ void finishFluenceInPlace(const Medium2D& medium, Image& fluence, int frustums, 
                 const float* emission =
                     medium.emission.data() + static_cast<std::size_t>(y) * rowFloats;
                 float* out = row(y);
+                // T of the run of equal sigma the pixel is in (as in opacityRow).
+                shared::vec3 lastSigma = vec3At(sigma);
+                shared::vec3 t = shared::hrcFinishTransmittance(lastSigma);
                 for (int x = 0; x < w; ++x) {
                     const std::size_t i = static_cast<std::size_t>(x) * 3;
                     shared::vec3 arriving = vec3At(&current[i]);
@@ -92,9 +108,12 @@ void finishFluenceInPlace(const Medium2D& medium, Image& fluence, int frustums, 
                         if (next != nullptr) take(next + i, opacityBelow[x]);
                         arriving = sum * (1.0f / weight);
                     }
-                    const shared::vec3 f =
-                        shared::hrcFinishPixel(vec3At(sigma + i), vec3At(emission + i), arriving,
-                                               static_cast<float>(frustums));
+                    if (!sameSigma(sigma + i, lastSigma)) {
+                        lastSigma = vec3At(sigma + i);
+                        t = shared::hrcFinishTransmittance(lastSigma);
+                    }
+                    const shared::vec3 f = shared::hrcFinishPixelThrough(
+                        t, vec3At(emission + i), arriving, static_cast<float>(frustums));
                     out[i] = f.x, out[i + 1] = f.y, out[i + 2] = f.z;
                 }
                 if (blur) {

@@ -153,10 +153,18 @@ LUXEL_FUNC bool hrcBlurTakes(float centreOpacity, float neighbourOpacity) {
 // Mean radiance over directions at a pixel: its own half-pixel segment (L = E(1 - e^{-sigma/2}),
 // T = e^{-sigma/2}) over the `frustums` quarter turns, in front of the angular fluence arriving at
 // its read-out planes, divided by 2 pi.
-LUXEL_FUNC vec3 hrcFinishPixel(vec3 sigma, vec3 emission, vec3 arriving, float frustums) {
-    const vec3 t = exp(sigma * -0.5f);
+LUXEL_FUNC vec3 hrcFinishTransmittance(vec3 sigma) {
+    return exp(sigma * -0.5f);
+}
+
+// The same with T given (hrcFinishTransmittance): the CPU reuses it along runs of equal sigma.
+LUXEL_FUNC vec3 hrcFinishPixelThrough(vec3 t, vec3 emission, vec3 arriving, float frustums) {
     const vec3 own = emission * (vec3(1.0f) - t);
     return (own * (LUXEL_HRC_QUARTER_TURN * frustums) + t * arriving) * LUXEL_HRC_INV_TWO_PI;
+}
+
+LUXEL_FUNC vec3 hrcFinishPixel(vec3 sigma, vec3 emission, vec3 arriving, float frustums) {
+    return hrcFinishPixelThrough(hrcFinishTransmittance(sigma), emission, arriving, frustums);
 }
 
 LUXEL_SHARED_END
