@@ -9,6 +9,10 @@
 #include <algorithm>
 #include <cstring>
 
+#if HWY_ARCH_X86
+#include <xmmintrin.h>
+#endif
+
 #include "gi2d/hrc/sweep_kernels.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -58,6 +62,24 @@ HWY_INLINE Lanes6 Over(const Lanes6& near, const Lanes6& far) {
     return v;
 }
 
+// Subnormal floats read and made as zero (x86 MXCSR DAZ and FTZ) while it lives, on this thread.
+// Behind two opaque cells (sigma 50: t about e^-50) a traced ray's T falls below the smallest
+// normal float, and each subnormal product took a microcode assist of some hundred cycles: a
+// quarter of the trace's time on the room at 1024^2 (docs/performance.md, HRC). The stored
+// binary16 intervals keep their bits: any T below 2^-126 rounds to binary16 0 either way, and
+// once T is that small every later term T l of L is below half an ulp of any L binary16 does not
+// round to 0 (SweepKernels.TraceBehindOpaqueCellsStoresWhatUnflushedFloatsGive).
+class FlushSubnormals {
+  public:
+#if HWY_ARCH_X86
+    FlushSubnormals() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040u); }
+    ~FlushSubnormals() { _mm_setcsr(saved_); }
+
+  private:
+    unsigned saved_;
+#endif
+};
+
 // Stores the first `count` lanes (all of them for whole vectors).
 HWY_INLINE void StoreHalves(VF v, std::uint16_t* p, int y, int count) {
     const DF df;
@@ -92,6 +114,7 @@ HWY_INLINE void StoreInterval(const IntervalRowsOut& out, int y, const Lanes6& v
 
 void TraceRowsImpl(const TraceStep* steps, std::size_t stepCount, const CellTransfer* columns,
                    IntervalRowsOut out, int y0, int y1) {
+    const FlushSubnormals flush;
     const DF df;
     const int lanes = static_cast<int>(hn::Lanes(df));
     for (int y = y0; y < y1; y += lanes) {
