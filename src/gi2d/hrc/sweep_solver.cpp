@@ -103,7 +103,12 @@ void forUniformRows(int y0, int y1, int rows, const std::array<int, N>& offsets,
     }
     cuts[n++] = y1;
     for (int i = 1; i < n; ++i) {  // insertion sort: a handful of cuts
-        for (int j = i; j > 0 && cuts[j - 1] > cuts[j]; --j) std::swap(cuts[j - 1], cuts[j]);
+        // The cut moves in a register: swapping neighbours made the compiler load two ints as
+        // one word just after storing them apart, a stalled store forward per step.
+        const int cut = cuts[i];
+        int j = i;
+        for (; j > 0 && cuts[j - 1] > cut; --j) cuts[j] = cuts[j - 1];
+        cuts[j] = cut;
     }
     for (int i = 0; i + 1 < n; ++i) {
         if (cuts[i] < cuts[i + 1]) fn(cuts[i], cuts[i + 1]);
@@ -188,6 +193,11 @@ class FrustumSweep {
     ConeRows clip(ConeRows r, int y) const {
         if (r.plane[0] != nullptr && !insideRows(y + r.offset)) r.plane[0] = nullptr;
         return r;
+    }
+    // The first plane of `r` as clip(r, y) leaves it.
+    template <typename Rows>
+    const std::uint16_t* clippedPlane(const Rows& r, int y) const {
+        return insideRows(y + r.offset) ? r.plane[0] : nullptr;
     }
     // Cone j of upper plane q of cascade n + 1 at row y + offset; the sky beyond the frame.
     ConeRows upper(int n, int q, int j, int offset) const {
@@ -323,15 +333,19 @@ std::uint64_t FrustumSweep::merge(int n, int p, int i0, int i1, int y0, int y1) 
         std::uint16_t* const out[3] = {cones_.plane(n, p, i, 0), cones_.plane(n, p, i, 1),
                                        cones_.plane(n, p, i, 2)};
         const float* nearRowsHere = n == 0 && !odd ? nearRows(p, y0, y1) : nullptr;
+        // Each piece clears the sources outside the frame; only those pointers are reset per
+        // piece, not the whole sides copied.
+        MergeSide clipped[2] = {sides[0], sides[1]};
         forUniformRows(y0, y1, rows_, offsets, count, [&](int a, int b) {
-            MergeSide clipped[2] = {sides[0], sides[1]};
-            for (MergeSide& side : clipped) {
-                side.next = clip(side.next, a);
-                side.upperA = clip(side.upperA, a);
-                side.upperA2 = clip(side.upperA2, a);
-                side.upperB = clip(side.upperB, a);
-                side.upperB2 = clip(side.upperB2, a);
-                side.upperB3 = clip(side.upperB3, a);
+            for (int s = 0; s < 2; ++s) {
+                const MergeSide& side = sides[s];
+                MergeSide& to = clipped[s];
+                to.next.plane[0] = clippedPlane(side.next, a);
+                to.upperA.plane[0] = clippedPlane(side.upperA, a);
+                to.upperA2.plane[0] = clippedPlane(side.upperA2, a);
+                to.upperB.plane[0] = clippedPlane(side.upperB, a);
+                to.upperB2.plane[0] = clippedPlane(side.upperB2, a);
+                to.upperB3.plane[0] = clippedPlane(side.upperB3, a);
             }
             mergeRows(odd, clipped[0], clipped[1], second, nearSecond, nearRowsHere, out, a, b);
         });
