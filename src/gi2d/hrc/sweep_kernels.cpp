@@ -156,6 +156,25 @@ void CellTransferRowsImpl(const float* const sigma[3], const float* const emissi
     }
 }
 
+void AddRgbPlanesImpl(float* to, const float* const fromRef[3], int count) {
+    const float* const from[3] = {fromRef[0], fromRef[1], fromRef[2]};
+    const DF df;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    int i = 0;
+    for (; i + lanes <= count; i += lanes) {
+        float* const at = to + 3 * static_cast<std::ptrdiff_t>(i);
+        VF r, g, b;
+        hn::LoadInterleaved3(df, at, r, g, b);
+        r = hn::Add(r, hn::LoadU(df, from[0] + i));
+        g = hn::Add(g, hn::LoadU(df, from[1] + i));
+        b = hn::Add(b, hn::LoadU(df, from[2] + i));
+        hn::StoreInterleaved3(r, g, b, df, at);
+    }
+    for (; i < count; ++i) {
+        for (int c = 0; c < 3; ++c) to[3 * static_cast<std::ptrdiff_t>(i) + c] += from[c][i];
+    }
+}
+
 void ExtendRowsImpl(const IntervalRows& nearARef, const IntervalRows& farARef,
                     const IntervalRows& nearBRef, const IntervalRows& farBRef, bool twoPaths,
                     IntervalRowsOut out, int y0, int y1) {
@@ -315,6 +334,7 @@ namespace luxel::gi2d::hrc {
 
 HWY_EXPORT(TraceRowsImpl);
 HWY_EXPORT(CellTransferRowsImpl);
+HWY_EXPORT(AddRgbPlanesImpl);
 HWY_EXPORT(ExtendRowsImpl);
 HWY_EXPORT(MergeRowsImpl);
 
@@ -326,6 +346,10 @@ void traceRows(std::span<const TraceStep> steps, const CellTransfer* columns, In
 void cellTransferRows(const float* const sigma[3], const float* const emission[3], float length,
                       float* const t[3], float* const l[3], int count) {
     HWY_DYNAMIC_DISPATCH(CellTransferRowsImpl)(sigma, emission, length, t, l, count);
+}
+
+void addRgbPlanes(float* to, const float* const from[3], int count) {
+    HWY_DYNAMIC_DISPATCH(AddRgbPlanesImpl)(to, from, count);
 }
 
 void extendRows(const IntervalRows& nearA, const IntervalRows& farA, const IntervalRows& nearB,

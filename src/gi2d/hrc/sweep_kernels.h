@@ -57,6 +57,9 @@ void traceRows(std::span<const TraceStep> steps, const CellTransfer* columns, In
 void cellTransferRows(const float* const sigma[3], const float* const emission[3], float length,
                       float* const t[3], float* const l[3], int count);
 
+// to[3 i + c] += from[c][i] for i in [0, count), c < 3: planes added to RGB pixels.
+void addRgbPlanes(float* to, const float* const from[3], int count);
+
 // Rows [y0, y1) of an extended ray (paper Eq 18-20): over(nearA, farA), averaged with
 // over(nearB, farB) when `twoPaths`.
 void extendRows(const IntervalRows& nearA, const IntervalRows& farA, const IntervalRows& nearB,

@@ -411,10 +411,8 @@ std::uint64_t FrustumSweep::readOut(int u, int plane, int y0, int y1) {
         case Frustum::MinusY:
             for (int w = u; w <= last; ++w) {
                 float* row = pixel(0, frame_.frustum == Frustum::PlusY ? w : height - 1 - w);
-                const float* from[3] = {gathered(w, 0), gathered(w, 1), gathered(w, 2)};
-                for (int v = y0; v < y1; ++v) {
-                    for (int c = 0; c < 3; ++c) row[3 * v + c] += from[c][v - y0];
-                }
+                const float* const from[3] = {gathered(w, 0), gathered(w, 1), gathered(w, 2)};
+                addRgbPlanes(row + 3 * static_cast<std::ptrdiff_t>(y0), from, y1 - y0);
             }
             break;
     }
