@@ -175,6 +175,27 @@ void AddRgbPlanesImpl(float* to, const float* const fromRef[3], int count) {
     }
 }
 
+void AddGatheredRowsImpl(float* to, std::ptrdiff_t toStride, const float* from, int fromStride,
+                         const std::int32_t* index, int floats, int rows, int prefetchRows) {
+    const DF df;
+    const hn::RebindToSigned<DF> di;
+    const int lanes = static_cast<int>(hn::Lanes(df));
+    for (int r = 0; r < rows; ++r) {
+        float* const row = to + r * toStride;
+        const float* const base = from + static_cast<std::ptrdiff_t>(r) * fromStride;
+        if (r + prefetchRows < rows) {
+            const float* ahead = row + prefetchRows * toStride;
+            for (int k = 0; k < floats + 16; k += 16) __builtin_prefetch(ahead + k, 1);
+        }
+        int k = 0;
+        for (; k + lanes <= floats; k += lanes) {
+            const VF add = hn::GatherIndex(df, base, hn::LoadU(di, index + k));
+            hn::StoreU(hn::Add(hn::LoadU(df, row + k), add), df, row + k);
+        }
+        for (; k < floats; ++k) row[k] += base[index[k]];
+    }
+}
+
 void ExtendRowsImpl(const IntervalRows& nearARef, const IntervalRows& farARef,
                     const IntervalRows& nearBRef, const IntervalRows& farBRef, bool twoPaths,
                     IntervalRowsOut out, int y0, int y1) {
@@ -335,6 +356,7 @@ namespace luxel::gi2d::hrc {
 HWY_EXPORT(TraceRowsImpl);
 HWY_EXPORT(CellTransferRowsImpl);
 HWY_EXPORT(AddRgbPlanesImpl);
+HWY_EXPORT(AddGatheredRowsImpl);
 HWY_EXPORT(ExtendRowsImpl);
 HWY_EXPORT(MergeRowsImpl);
 
@@ -350,6 +372,12 @@ void cellTransferRows(const float* const sigma[3], const float* const emission[3
 
 void addRgbPlanes(float* to, const float* const from[3], int count) {
     HWY_DYNAMIC_DISPATCH(AddRgbPlanesImpl)(to, from, count);
+}
+
+void addGatheredRows(float* to, std::ptrdiff_t toStride, const float* from, int fromStride,
+                     const std::int32_t* index, int floats, int rows, int prefetchRows) {
+    HWY_DYNAMIC_DISPATCH(AddGatheredRowsImpl)
+    (to, toStride, from, fromStride, index, floats, rows, prefetchRows);
 }
 
 void extendRows(const IntervalRows& nearA, const IntervalRows& farA, const IntervalRows& nearB,

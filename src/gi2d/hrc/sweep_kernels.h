@@ -60,6 +60,12 @@ void cellTransferRows(const float* const sigma[3], const float* const emission[3
 // to[3 i + c] += from[c][i] for i in [0, count), c < 3: planes added to RGB pixels.
 void addRgbPlanes(float* to, const float* const from[3], int count);
 
+// to[r toStride + k] += from[r fromStride + index[k]] for k < floats, r < rows: a block of
+// planes added across canvas rows (each row's floats gathered from the planes), with the
+// canvas rows `prefetchRows` ahead fetched by hand (strides the prefetcher does not follow).
+void addGatheredRows(float* to, std::ptrdiff_t toStride, const float* from, int fromStride,
+                     const std::int32_t* index, int floats, int rows, int prefetchRows);
+
 // Rows [y0, y1) of an extended ray (paper Eq 18-20): over(nearA, farA), averaged with
 // over(nearB, farB) when `twoPaths`.
 void extendRows(const IntervalRows& nearA, const IntervalRows& farA, const IntervalRows& nearB,

@@ -393,20 +393,24 @@ std::uint64_t FrustumSweep::readOut(int u, int plane, int y0, int y1) {
     // The canvas pixel of frame pixel (w, v), as FrustumFrame::toCanvas maps it.
     switch (frame_.frustum) {
         case Frustum::PlusX:
-        case Frustum::MinusX:
-            for (int v = y0; v < y1; ++v) {
-                // Each v is another canvas row: its block a few rows ahead is fetched by hand
-                // (the prefetcher does not follow strides of a canvas row; ColumnWindow::load).
-                if (v + kPrefetchRows < y1) {
-                    const int lo = frame_.frustum == Frustum::PlusX ? u : width - 1 - last;
-                    prefetchFloats(pixel(lo, v + kPrefetchRows), (last - u + 1) * 3, true);
-                }
-                for (int w = u; w <= last; ++w) {
-                    float* p = pixel(frame_.frustum == Frustum::PlusX ? w : width - 1 - w, v);
-                    for (int c = 0; c < 3; ++c) p[c] += gathered(w, c)[v - y0];
+        case Frustum::MinusX: {
+            // Each v is another canvas row, holding the block's columns side by side (in
+            // reverse order for -x): float k of that stretch comes from pending plane
+            // index[k] / band, at v - y0.
+            const int columns = last - u + 1;
+            std::array<std::int32_t, kBlock * 3> index{};
+            for (int q = 0; q < columns; ++q) {
+                const int w = frame_.frustum == Frustum::PlusX ? u + q : last - q;
+                for (int c = 0; c < 3; ++c) {
+                    index[static_cast<std::size_t>(3 * q + c)] =
+                        static_cast<std::int32_t>(gathered(w, c) - pending.data());
                 }
             }
+            const int lo = frame_.frustum == Frustum::PlusX ? u : width - 1 - last;
+            addGatheredRows(pixel(lo, y0), static_cast<std::ptrdiff_t>(width) * 3, pending.data(),
+                            1, index.data(), columns * 3, band, kPrefetchRows);
             break;
+        }
         case Frustum::PlusY:
         case Frustum::MinusY:
             for (int w = u; w <= last; ++w) {
