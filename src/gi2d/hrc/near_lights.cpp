@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 
+#include "gi2d/hrc/light_scores.h"
 #include "gpu/shaders/shared/hrc_kernels.h"
 #include "luxel/core/parallel.h"
 
@@ -16,13 +17,6 @@ namespace {
 constexpr int kGrain = 32;
 // Squared distances from 9 (3 px) on keep the whole blend.
 constexpr int kFar = 9;
-
-// What a pixel emits towards a ray crossing it, per channel at most E min(sigma, 1).
-float lightScore(const float* e, const float* s) {
-    const float r = e[0] * std::min(s[0], 1.0f), g = e[1] * std::min(s[1], 1.0f),
-                b = e[2] * std::min(s[2], 1.0f);
-    return std::max(r, std::max(g, b));
-}
 
 // The kept fraction in 64ths for a squared pixel-centre distance below 9: none within 1 px, the
 // whole from 3 px, linear in the distance between (§12.3's best trial).
@@ -58,74 +52,76 @@ void NearLightMask::build(const Medium2D& medium) {
     mask.rowNear_.assign(static_cast<std::size_t>(h), 0);
     const float* emission = medium.emission.data();
     const float* sigma = medium.absorption.data();
+    // What a pixel emits towards a ray crossing it, per channel at most E min(sigma, 1)
+    // (lightScoreRow).
     std::vector<float> rowMost(static_cast<std::size_t>(h), 0.0f);
     parallelForRange(h, kGrain, [&](int y0, int y1) {
+        std::vector<float> scores(static_cast<std::size_t>(w));
         for (int y = y0; y < y1; ++y) {
-            float most = 0.0f;
-            for (std::size_t i = static_cast<std::size_t>(y) * w * 3, end = i + 3 * w; i < end;
-                 i += 3) {
-                most = std::max(most, lightScore(emission + i, sigma + i));
-            }
-            rowMost[static_cast<std::size_t>(y)] = most;
+            const std::size_t base = static_cast<std::size_t>(y) * w * 3;
+            rowMost[static_cast<std::size_t>(y)] =
+                lightScoreRow(emission + base, sigma + base, w, scores.data());
         }
     });
     const float brightest = *std::max_element(rowMost.begin(), rowMost.end());
     if (!(brightest > 0.0f)) return;
     const float threshold = brightest / 64.0f;
     static constexpr std::array<std::uint8_t, kFar + 1> kept = keptTable();
-    parallelForRange(h, kGrain, [&](int y0, int y1) {
+    parallelForRange(h, kGrain, [&, w, h, threshold](int y0, int y1) {
         // Per row of [y0 - 2, y1 + 2): the squared distance along the row to the nearest light,
-        // capped at 9 (forward and backward scans).
+        // capped at 9. The byte loops run through raw pointers and copies of the sizes: a byte
+        // store may alias anything reached by reference (a vector's own pointer, the width),
+        // which kept the compiler from vectorising them.
         auto lit = [&](int y) { return rowMost[static_cast<std::size_t>(y)] >= threshold; };
         const int r0 = std::max(0, y0 - 2), r1 = std::min(h, y1 + 2);
         std::vector<std::uint8_t> along(static_cast<std::size_t>(r1 - r0) * w, kFar);
+        std::vector<float> scores(static_cast<std::size_t>(w));
+        std::vector<std::uint8_t> lights(static_cast<std::size_t>(w) + 4, 0);  // 2 unlit each side
         for (int y = r0; y < r1; ++y) {
             if (!lit(y)) continue;
             std::uint8_t* row = along.data() + static_cast<std::size_t>(y - r0) * w;
             const std::size_t base = static_cast<std::size_t>(y) * w * 3;
-            int run = 3;
+            lightScoreRow(emission + base, sigma + base, w, scores.data());
+            std::uint8_t* const l = lights.data() + 2;
+            const float* const score = scores.data();
+            for (int x = 0; x < w; ++x) l[x] = score[x] >= threshold ? 1 : 0;
+            // The distance to the nearest light in the row, capped at 3, squared.
             for (int x = 0; x < w; ++x) {
-                const std::size_t i = base + 3 * static_cast<std::size_t>(x);
-                run = lightScore(emission + i, sigma + i) >= threshold ? 0 : std::min(run + 1, 3);
-                row[x] = static_cast<std::uint8_t>(run);
-            }
-            run = 3;
-            for (int x = w - 1; x >= 0; --x) {
-                run = row[x] == 0 ? 0 : std::min(run + 1, 3);
-                const int d = std::min(static_cast<int>(row[x]), run);
-                row[x] = static_cast<std::uint8_t>(d * d);
+                row[x] = l[x] ? 0 : (l[x - 1] | l[x + 1]) ? 1 : (l[x - 2] | l[x + 2]) ? 4 : kFar;
             }
         }
         // Then the least over the five rows around of along^2 + dy^2 (a loop over bytes the
         // compiler vectorises), and the kept fraction from it.
-        std::vector<std::uint8_t> d2(static_cast<std::size_t>(w));
+        std::vector<std::uint8_t> d2(lights.size());  // the first w bytes are used
         for (int y = y0; y < y1; ++y) {
             bool near = false;  // rows with no light within 2 rows keep the whole blend
             for (int r = std::max(0, y - 2); r <= std::min(h - 1, y + 2); ++r)
                 near = near || lit(r);
             if (!near) continue;
-            std::fill(d2.begin(), d2.end(), static_cast<std::uint8_t>(kFar));
+            std::uint8_t* const least = d2.data();
+            std::fill_n(least, w, static_cast<std::uint8_t>(kFar));
             for (int r = std::max(r0, y - 2); r <= std::min(r1 - 1, y + 2); ++r) {
                 const std::uint8_t* a = along.data() + static_cast<std::size_t>(r - r0) * w;
                 const auto dy2 = static_cast<std::uint8_t>((r - y) * (r - y));
                 for (int x = 0; x < w; ++x) {
-                    d2[x] = std::min(d2[x], static_cast<std::uint8_t>(a[x] + dy2));
+                    least[x] = std::min(least[x], static_cast<std::uint8_t>(a[x] + dy2));
                 }
             }
-            std::uint8_t* out = mask.bytes_.data() + static_cast<std::size_t>(y) * w;
+            std::uint8_t* const out = mask.bytes_.data() + static_cast<std::size_t>(y) * w;
             std::uint8_t any = 0;
             for (int x = 0; x < w; ++x) {
-                out[x] = kept[d2[x]];
+                out[x] = kept[least[x]];
                 any |= out[x] < 64 ? 1 : 0;
             }
             mask.rowNear_[static_cast<std::size_t>(y)] = any;
         }
     });
     // A column is near where some row's pixel in it is (the rows that are, usually few).
+    std::uint8_t* const near = mask.columnNear_.data();
     for (int y = 0; y < h; ++y) {
         if (!mask.rowNear(y)) continue;
         const std::uint8_t* row = mask.bytes_.data() + static_cast<std::size_t>(y) * w;
-        for (int x = 0; x < w; ++x) mask.columnNear_[static_cast<std::size_t>(x)] |= row[x] < 64;
+        for (int x = 0; x < w; ++x) near[x] |= row[x] < 64 ? 1 : 0;
     }
 }
 
