@@ -72,8 +72,12 @@ HWY_INLINE Lanes6 Over(const Lanes6& near, const Lanes6& far) {
 class FlushSubnormals {
   public:
 #if HWY_ARCH_X86
-    FlushSubnormals() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | 0x8040u); }
-    ~FlushSubnormals() { _mm_setcsr(saved_); }
+    FlushSubnormals() : saved_(_mm_getcsr()) {
+        _mm_setcsr(saved_ | 0x8040u);
+    }
+    ~FlushSubnormals() {
+        _mm_setcsr(saved_);
+    }
 
   private:
     unsigned saved_;

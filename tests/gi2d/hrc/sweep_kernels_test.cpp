@@ -38,7 +38,8 @@ TEST(SweepKernels, TraceBehindOpaqueCellsStoresWhatUnflushedFloatsGive) {
         for (int c = 0; c < 6; ++c) cells[s].plane[c] = planes[s * 6 + c].data() + kSweepRowPad;
         steps.push_back({s, s % 3 - 1});
     }
-    std::vector<std::vector<std::uint16_t>> out(6, std::vector<std::uint16_t>(kRows + kSweepRowPad));
+    std::vector<std::vector<std::uint16_t>> out(6,
+                                                std::vector<std::uint16_t>(kRows + kSweepRowPad));
     IntervalRowsOut rows;
     for (int c = 0; c < 6; ++c) rows.plane[c] = out[c].data();
     traceRows(steps, cells.data(), rows, 3, kRows);
