@@ -10,6 +10,7 @@
 #include "../../gpu/shaders/shared/near_emitters.h"
 #include "../sun_ray_map.h"
 #include "cascade_layout.h"
+#include "emitter_clear_box.h"
 #include "glossy_emitters.h"
 #include "luxel/voxel/radiance_cascades.h"
 #include "octahedral_bins.h"
@@ -87,6 +88,9 @@ struct FaceData {
     std::vector<Rgb> emitterFar;
     std::vector<std::uint32_t> nearOffset;
     std::vector<gpu::shared::CascadeNearEmitter> nearEmitters;
+    // Beside each near emitter, the empty box in front of it that proves its lines from the
+    // pixels inside clear without a walk (emitter_clear_box.h; CPU only).
+    std::vector<EmitterClearBox> nearClear;
     std::uint64_t emitterVersion = 0;
     // The lamps the picture's glossy surfaces light-sample (glossy_emitters.h), found with the
     // emitters' light.
@@ -97,6 +101,7 @@ struct FaceData {
         emitterFar.clear();
         nearOffset.clear();
         nearEmitters.clear();
+        nearClear.clear();
         glossy = GlossyLamps{};
     }
 };
