@@ -142,6 +142,8 @@ namespace luxel::voxel::cascades {
 // emission into the chains (nothing when emitterIrradiance carries it exactly): the CPU pass and
 // the GPU upload read the same values (cascade_light.cpp).
 Rgb faceDirectSun(const RadianceCascades::State& state, int f);
+// The same for a face whose normal the caller has (the face record left unread).
+Rgb faceDirectSun(const RadianceCascades::State& state, int f, Int3 normal);
 Rgb faceEmitted(const FaceData& faces, int f);
 // A pass's change of the faces' irradiance: sum of |after - before| over the sum of `after`
 // (0 when that is 0); solve() stops below the tolerance.
