@@ -204,7 +204,11 @@ float linearOfByte(std::uint8_t byte) {
 
 PathSurface pathSurfaceAt(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& o) {
     const Hit& hit = s.hit;
-    const Voxel voxel = world.get(hit.voxel.x, hit.voxel.y, hit.voxel.z);
+    return pathSurfaceAt(world.get(hit.voxel.x, hit.voxel.y, hit.voxel.z), s, o);
+}
+
+PathSurface pathSurfaceAt(Voxel voxel, const SurfaceHit& s, const ShadeOptions& o) {
+    const Hit& hit = s.hit;
     const int materialSlot = textureSlotOf(voxel);
     const Material& m = o.materials.forSlot(materialSlot);
     Rgb colour =

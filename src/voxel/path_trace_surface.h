@@ -26,6 +26,8 @@ inline constexpr int kSunDiskRays = 16;
 // What the hit face reflects and emits: the physical shading's surface colour (voxel colour x
 // texel x procedural texture x material albedo; nearest texel), every material taken as diffuse.
 PathSurface pathSurfaceAt(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& o);
+// The same for the hit voxel's value when the caller has read it.
+PathSurface pathSurfaceAt(Voxel voxel, const SurfaceHit& s, const ShadeOptions& o);
 
 // A cosine-weighted unit direction about the axis-aligned normal n from two uniform numbers in
 // [0, 1): pdf cos / pi, so a Lambertian bounce weighs albedo exactly.

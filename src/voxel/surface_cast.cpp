@@ -30,9 +30,15 @@ SurfaceHit castToSurface(const VoxelWorld& world, const TextureSet* textures, co
     for (;;) {
         if (!s.hit.hit) return s;
         s.hit.t += tOffset;
+        // No textures: no cutout, and the voxel (often not yet in cache) is left to the shading.
+        if (!textures || textures->empty()) {
+            s.slot = -1;
+            s.texel = Texel{};
+            return s;
+        }
         const Int3 v = s.hit.voxel;
         const int slot = textureSlotOf(world.get(v.x, v.y, v.z));
-        if (!textures || slot < 0 || slot >= textures->size()) {
+        if (slot < 0 || slot >= textures->size()) {
             s.slot = -1;
             s.texel = Texel{};
             return s;

@@ -168,11 +168,13 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
 }  // namespace
 
 Rgb faceDirectSun(const RadianceCascades::State& state, int f) {
-    const FaceData& faces = state.faces;
-    const Int3 n = normalFromIndex(faces.table[f].normal);
+    return faceDirectSun(state, f, normalFromIndex(state.faces.table[f].normal));
+}
+
+Rgb faceDirectSun(const RadianceCascades::State& state, int f, Int3 n) {
     const Vec3d sun = state.sunForVisibility;
     const double cosSun = std::max(0.0, n.x * sun.x + n.y * sun.y + n.z * sun.z);
-    return state.shading.sunIrradiance * faces.sunPassing[f] * float(cosSun);
+    return state.shading.sunIrradiance * state.faces.sunPassing[f] * float(cosSun);
 }
 
 Rgb faceEmitted(const FaceData& faces, int f) {

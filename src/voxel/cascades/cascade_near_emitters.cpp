@@ -16,6 +16,7 @@
 #include "../solver_sun.h"
 #include "cascade_near_rays.h"
 #include "cascade_state.h"
+#include "voxel/shadow_blockers.h"
 
 namespace luxel::voxel::cascades {
 
@@ -29,6 +30,10 @@ NearEmitterRays::NearEmitterRays(const RadianceCascades::State& state, const Hit
     if (face_ < 0) return;
     begin_ = faces.nearOffset[face_];
     end_ = faces.nearOffset[face_ + 1];
+    // The boxes prove what the walk finds when it stops at the first solid voxel: no cutout
+    // texels to continue through, and no step cap short of the world (castRay's default).
+    provable_ = faces.nearClear.size() == faces.nearEmitters.size() &&
+                shadowBlockersHold(state.textures, state.shading.stepCap);
 }
 
 Rgb NearEmitterRays::transmittance(std::uint32_t i, int q) {
@@ -38,11 +43,16 @@ Rgb NearEmitterRays::transmittance(std::uint32_t i, int q) {
         return Rgb(seen_[slot][0], seen_[slot][1], seen_[slot][2]);
     }
     const shared::CascadeNearEmitter& e = state_.faces.nearEmitters[i];
-    const FaceTarget target{{e.x, e.y, e.z}, normalFromIndex(int(e.normal))};
-    const shared::vec3 d = normalize(shared::nearEmitterPoint(e, q) - point_);
-    const Rgb t = faceRayTransmittance(*state_.world, state_.textures,
-                                       {hit_.point, {double(d.x), double(d.y), double(d.z)}},
-                                       state_.shading, target);
+    Rgb t(1.0f);
+    // A line inside the emitter's empty box is clear: the walk would cross empty cells and stop
+    // at the face (§5, "Near lines proven clear").
+    if (!(provable_ && lineProvenClear(state_.faces.nearClear[i], hit_))) {
+        const FaceTarget target{{e.x, e.y, e.z}, normalFromIndex(int(e.normal))};
+        const shared::vec3 d = normalize(shared::nearEmitterPoint(e, q) - point_);
+        t = faceRayTransmittance(*state_.world, state_.textures,
+                                 {hit_.point, {double(d.x), double(d.y), double(d.z)}},
+                                 state_.shading, target);
+    }
     ++cast_;
     if (kept) {
         seen_[slot][0] = t.r, seen_[slot][1] = t.g, seen_[slot][2] = t.b;

@@ -28,7 +28,7 @@ class NearEmitterRays {
     // i (begin() <= i < end()), cast the first time it is asked for (the first kKept emitters of
     // the list; later ones are cast at every ask).
     Rgb transmittance(std::uint32_t i, int q);
-    // Lines cast so far.
+    // Lines answered so far (cast, or proven clear by the emitter's empty box).
     int cast() const { return cast_; }
 
   private:
@@ -39,6 +39,7 @@ class NearEmitterRays {
     std::uint32_t begin_ = 0, end_ = 0;
     gpu::shared::vec3 point_;
     int cast_ = 0;
+    bool provable_ = false;     // lines may be proven clear (EmitterClearBox)
     std::uint64_t known_ = 0;   // bit 4 (i - begin) + q: line cast and kept in seen_
     float seen_[4 * kKept][3];  // left uninitialised: read only where known_ says it was cast
 };

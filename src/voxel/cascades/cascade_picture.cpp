@@ -41,12 +41,16 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
                (delta ? sunDiskAlong(r.direction, shading) : Rgb{});
     }
     if (s.hit.normal == Int3{}) return {};
+    // The hit voxel read once, for its material and its surface below (and early: its line is
+    // seldom in cache yet, and the face lookups can wait beside it).
+    const Voxel voxel = world.get(s.hit.voxel.x, s.hit.voxel.y, s.hit.voxel.z);
     // indirectIrradiance, keeping the face's id for its sun below.
     int face = -1;
     const Rgb irradiance =
         cascades::interpolatedIrradiance(state_->faces, state_->faces.emitterIrradiance,
                                          s.hit.voxel, s.hit.normal, s.hit.point, &face);
-    if (depth < kSolverFollowDepth && solverFollows(world, s, shading)) {
+    if (depth < kSolverFollowDepth &&
+        solverFollows(shading.materials.forSlot(textureSlotOf(voxel)), shading)) {
         // Glass or polished metal: shaded with its material, what lies behind it or what it
         // reflects followed as for the camera's ray.
         const SolverLight behind{
@@ -58,8 +62,9 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
     // The face met, Lambertian: its emission, the sun its face's rays found when the cascades
     // were lit (no shadow rays per pixel: a reflection is blurred by its lobe anyway) and the
     // cascades' irradiance.
-    const PathSurface surface = pathSurfaceAt(world, s, shading);
-    const Rgb sun = face >= 0 ? cascades::faceDirectSun(*state_, face) : Rgb{};
+    const PathSurface surface = pathSurfaceAt(voxel, s, shading);
+    // The face was found by this normal: its record need not be read for it.
+    const Rgb sun = face >= 0 ? cascades::faceDirectSun(*state_, face, s.hit.normal) : Rgb{};
     Rgb emission = surface.emission;
     if (glossy && emission.maxComponent() > 0.0f) {
         emission =

@@ -10,6 +10,7 @@
 #include "../../gpu/shaders/shared/near_emitters.h"
 #include "../sun_ray_map.h"
 #include "cascade_layout.h"
+#include "emitter_clear_box.h"
 #include "glossy_emitters.h"
 #include "luxel/voxel/radiance_cascades.h"
 #include "octahedral_bins.h"
@@ -87,6 +88,9 @@ struct FaceData {
     std::vector<Rgb> emitterFar;
     std::vector<std::uint32_t> nearOffset;
     std::vector<gpu::shared::CascadeNearEmitter> nearEmitters;
+    // Beside each near emitter, the empty box in front of it that proves its lines from the
+    // pixels inside clear without a walk (emitter_clear_box.h; CPU only).
+    std::vector<EmitterClearBox> nearClear;
     std::uint64_t emitterVersion = 0;
     // The lamps the picture's glossy surfaces light-sample (glossy_emitters.h), found with the
     // emitters' light.
@@ -97,6 +101,7 @@ struct FaceData {
         emitterFar.clear();
         nearOffset.clear();
         nearEmitters.clear();
+        nearClear.clear();
         glossy = GlossyLamps{};
     }
 };
@@ -137,6 +142,8 @@ namespace luxel::voxel::cascades {
 // emission into the chains (nothing when emitterIrradiance carries it exactly): the CPU pass and
 // the GPU upload read the same values (cascade_light.cpp).
 Rgb faceDirectSun(const RadianceCascades::State& state, int f);
+// The same for a face whose normal the caller has (the face record left unread).
+Rgb faceDirectSun(const RadianceCascades::State& state, int f, Int3 normal);
 Rgb faceEmitted(const FaceData& faces, int f);
 // A pass's change of the faces' irradiance: sum of |after - before| over the sum of `after`
 // (0 when that is 0); solve() stops below the tolerance.

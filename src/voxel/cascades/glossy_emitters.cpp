@@ -39,6 +39,10 @@ double cellScore(const EmitterFace& e, Vec3d lo, Vec3d hi) {
 // it is given, so one kept from another picture proves nothing false.
 thread_local ShadowBlockers lampBlockers;
 
+// How far from its lamp, in cells, an empty box may grow: a room's width (§5, "Near lines proven
+// clear").
+constexpr int kClearReach = 16;
+
 }  // namespace
 
 GlossyLamps buildGlossyLamps(const VoxelWorld& world, const MaterialTable& materials) {
@@ -47,6 +51,15 @@ GlossyLamps buildGlossyLamps(const VoxelWorld& world, const MaterialTable& mater
     if (lights.empty()) return out;
     out.cells = lights.cells();
     for (const EmitterFace& f : lights.faces()) out.lamps.push_back(shaderFace(f));
+    out.clear.resize(out.lamps.size());
+    parallelForRange(int(out.lamps.size()), 16, [&](int begin, int end) {
+        for (int i = begin; i < end; ++i) {
+            const shared::CascadeNearEmitter& e = out.lamps[std::size_t(i)];
+            out.clear[std::size_t(i)] = growEmitterClearBox(
+                world, {e.x, e.y, e.z}, int(e.normal), int(shared::emitterSizeA(e.extent)),
+                int(shared::emitterSizeB(e.extent)), kClearReach);
+        }
+    });
     const int cellCount = out.cells.x * out.cells.y * out.cells.z;
     out.picks.assign(std::size_t(cellCount) * LUXEL_GLOSSY_PICKS, LUXEL_GLOSSY_NO_PICK);
     const std::vector<std::uint32_t>& offsets = lights.cellOffsets();
@@ -130,6 +143,7 @@ Rgb GlossyLampChoice::sample(const PathBsdf& specular, int lobeRays, PathRng& rn
     choose();
     if (count_ == 0) return {};
     const bool blockersHold = shadowBlockersHold(state_.textures, state_.shading.stepCap);
+    const bool provable = state_.faces.glossy.clear.size() == state_.faces.glossy.lamps.size();
     Rgb sum;
     for (int n = 0; n < LUXEL_GLOSSY_LIGHT_SAMPLES; ++n) {
         const float u0 = rng.next(), u1 = rng.next(), u2 = rng.next();
@@ -158,25 +172,33 @@ Rgb GlossyLampChoice::sample(const PathBsdf& specular, int lobeRays, PathRng& rn
         const int axis = int(e.normal / 2u);
         const double reach =
             (double(shared::emitterPlaneCoordinate(e)) - hit_.point[axis]) / dir[axis];
-        if (blockersHold && std::isfinite(reach) &&
-            lampBlockers.blocks(*state_.world, towards, reach - ShadowBlockers::kEdgeMargin)) {
-            continue;
-        }
-        // Where every solid voxel stops a ray (no cutout texel), the first voxel castRay meets is
-        // castToSurface's, without the texel it would look up there.
         const Int3 outward = normalFromIndex(int(e.normal));
-        const Hit seen =
-            blockersHold
-                ? castRay(*state_.world, towards, kInfinity, state_.shading.stepCap)
-                : castToSurface(*state_.world, state_.textures, towards, state_.shading.stepCap)
-                      .hit;
-        if (!seen.hit || seen.normal != outward ||
-            !shared::emitterRectHolds({e.x, e.y, e.z}, axis, e.extent,
-                                      {seen.voxel.x, seen.voxel.y, seen.voxel.z})) {
-            if (blockersHold) lampBlockers.note(seen, true);
-            continue;
+        // Inside the lamp's empty box the ray provably meets the lamp, at a voxel the crossing
+        // decides (§5, "Near lines proven clear"); else blockers, then the walk.
+        Int3 seenVoxel;
+        if (!(blockersHold && provable &&
+              rayProvenToRect(state_.faces.glossy.clear[index_[k]], hit_, dir, reach,
+                              &seenVoxel))) {
+            if (blockersHold && std::isfinite(reach) &&
+                lampBlockers.blocks(*state_.world, towards, reach - ShadowBlockers::kEdgeMargin)) {
+                continue;
+            }
+            // Where every solid voxel stops a ray (no cutout texel), the first voxel castRay
+            // meets is castToSurface's, without the texel it would look up there.
+            const Hit seen =
+                blockersHold
+                    ? castRay(*state_.world, towards, kInfinity, state_.shading.stepCap)
+                    : castToSurface(*state_.world, state_.textures, towards, state_.shading.stepCap)
+                          .hit;
+            if (!seen.hit || seen.normal != outward ||
+                !shared::emitterRectHolds({e.x, e.y, e.z}, axis, e.extent,
+                                          {seen.voxel.x, seen.voxel.y, seen.voxel.z})) {
+                if (blockersHold) lampBlockers.note(seen, true);
+                continue;
+            }
+            seenVoxel = seen.voxel;
         }
-        const float share = 1.0f - nearEmitterShare(state_, hit_, face_, seen.voxel, seen.normal);
+        const float share = 1.0f - nearEmitterShare(state_, hit_, face_, seenVoxel, outward);
         if (!(share > 0.0f)) continue;
         // ggxDensity and bsdfLight(..., 0) with one half vector.
         const GgxTowards lobe(specular, dir);

@@ -17,6 +17,7 @@
 #include "luxel/voxel/path_trace_rng.h"
 #include "luxel/voxel/radiance_cascades.h"
 #include "luxel/voxel/voxel_world.h"
+#include "voxel/cascades/emitter_clear_box.h"
 
 namespace luxel::voxel {
 struct PathBsdf;
@@ -30,6 +31,9 @@ struct GlossyLamps {
     Int3 cells;                                          // the grid's cells per axis
     std::vector<std::uint32_t> picks;                    // LUXEL_GLOSSY_PICKS per cell
     std::vector<gpu::shared::CascadeNearEmitter> lamps;  // the rectangles
+    // Beside each lamp, the empty box in front of it that proves its light samples' rays from
+    // the points inside it seen without a walk (emitter_clear_box.h; CPU only).
+    std::vector<EmitterClearBox> clear;
     bool empty() const { return lamps.empty(); }
 };
 
