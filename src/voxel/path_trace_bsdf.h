@@ -53,6 +53,15 @@ float dielectricFresnel(float cosI, float ior, ShadeOptions::FresnelModel model)
 // the ray caster); Fresnel is exact or Schlick as shading.fresnel says.
 PathBsdf pathBsdf(const Material& m, Rgb colour, Int3 normal, Vec3d direction,
                   const ShadeOptions& shading);
+// The specular lobe of `b` alone, its S kept: no diffuse, no transmission (the sun's and the near
+// emitters' highlights; the diffuse lobe is lit apart).
+inline PathBsdf specularLobe(PathBsdf b) {
+    b.diffuse = Rgb(0.0f);
+    b.pDiffuse = 0.0;
+    b.transmission = 0.0f;
+    b.pTransmission = 0.0;
+    return b;
+}
 
 struct BsdfSample {
     enum class Lobe { None, Diffuse, Specular, Transmission };

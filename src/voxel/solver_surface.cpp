@@ -93,11 +93,7 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
         pathBsdf(*surface.material, surface.albedo, s.hit.normal, direction, shading);
     const bool glossy = b.pSpecular > 0.0 && b.cosView > 0.0;
     // The specular lobe alone, for the sun's highlight (the diffuse lobe is lit apart).
-    PathBsdf specular = b;
-    specular.diffuse = Rgb(0.0f);
-    specular.pDiffuse = 0.0;
-    specular.transmission = 0.0f;
-    specular.pTransmission = 0.0;
+    PathBsdf specular = specularLobe(b);
     Rgb out = surface.emission +
               solverSunLobes(world, textures, s.hit, b.diffuse,
                              glossy && !b.mirror() ? &specular : nullptr, shading, light.sunRays,

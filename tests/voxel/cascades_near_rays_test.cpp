@@ -45,12 +45,9 @@ Tally compareOverThePicture(const RadianceCascades::State& state, const Camera& 
             if (!s.hit.hit || s.hit.normal == Int3{}) continue;
             // The specular-only lobe shadeSolverSurface gives the highlight.
             const PathSurface surface = pathSurfaceAt(*state.world, s, shading);
-            PathBsdf specular = pathBsdf(*surface.material, surface.albedo, s.hit.normal,
-                                         normalize(ray.direction), shading);
-            specular.diffuse = Rgb(0.0f);
-            specular.pDiffuse = 0.0;
-            specular.transmission = 0.0f;
-            specular.pTransmission = 0.0;
+            const PathBsdf specular =
+                specularLobe(pathBsdf(*surface.material, surface.albedo, s.hit.normal,
+                                      normalize(ray.direction), shading));
 
             NearEmitterRays shared(state, s.hit);
             const Rgb light = nearEmitterLight(state, shared);

@@ -24,6 +24,7 @@
 #include "voxel/path_trace_surface.h"
 #include "voxel/plain_light_worlds.h"
 #include "voxel/solver_sun.h"
+#include "voxel/terrain_with_blocks.h"
 
 namespace luxel::voxel {
 namespace {
@@ -41,34 +42,28 @@ Rgb walkedLine(const VoxelWorld& world, const ShadeOptions& shading, const Hit& 
         world, nullptr, {hit.point, {double(d.x), double(d.y), double(d.z)}}, shading, target);
 }
 
-// A point on face `normal` of `voxel` at (a, b) in [0, 1]^2 across it, snapped on its plane.
-Hit faceHit(Int3 voxel, Int3 normal, double a, double b) {
-    Hit h;
-    h.hit = true;
-    h.voxel = voxel;
-    h.normal = normal;
-    const int axis = normalIndex(normal) / 2;
-    h.point = {double(voxel.x), double(voxel.y), double(voxel.z)};
-    h.point[axis] += normal[axis] > 0 ? 1.0 : 0.0;
-    h.point[(axis + 1) % 3] += a;
-    h.point[(axis + 2) % 3] += b;
-    return h;
+// A closed cube room `side` cells wide, walls one cell thick, with white blocks in a `fraction`
+// of its cells, drawn from `rng`.
+VoxelWorld closedRoomWithBlocks(int side, double fraction, std::mt19937& rng) {
+    VoxelWorld world = test::makeWorld({side, side, side});
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int z = 0; z < side; ++z)
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x) {
+                const bool wall =
+                    x == 0 || y == 0 || z == 0 || x == side - 1 || y == side - 1 || z == side - 1;
+                if (wall || unit(rng) < fraction) world.set(x, y, z, test::kWhite);
+            }
+    return world;
 }
 
 TEST(EmitterClearBox, ProvesOnlyLinesTheWalkFindsClear) {
     // A closed room with random blocks (a fifth of its cells) and lamps among them.
     constexpr int kSide = 16;
-    VoxelWorld world = test::makeWorld({kSide, kSide, kSide});
     std::mt19937 rng(7);
+    VoxelWorld world = closedRoomWithBlocks(kSide, 0.2, rng);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::uniform_int_distribution<int> inner(1, kSide - 2);
-    for (int z = 0; z < kSide; ++z)
-        for (int y = 0; y < kSide; ++y)
-            for (int x = 0; x < kSide; ++x) {
-                const bool wall = x == 0 || y == 0 || z == 0 || x == kSide - 1 || y == kSide - 1 ||
-                                  z == kSide - 1;
-                if (wall || unit(rng) < 0.2) world.set(x, y, z, test::kWhite);
-            }
     std::vector<Int3> lamps;
     for (int k = 0; k < 12; ++k) {
         const Int3 v{inner(rng), inner(rng), inner(rng)};
@@ -126,17 +121,10 @@ TEST(EmitterClearBox, ProvesOnlyLampRaysTheWalkSendsToTheirVoxel) {
     // Panels of 1x1 up to 3x2 voxels among random blocks in a closed room; rays from the faces
     // around each panel's box to uniform points of the panel (its edges and corners too).
     constexpr int kSide = 20;
-    VoxelWorld world = test::makeWorld({kSide, kSide, kSide});
     std::mt19937 rng(11);
+    VoxelWorld world = closedRoomWithBlocks(kSide, 0.05, rng);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::uniform_int_distribution<int> inner(1, kSide - 4), size(1, 3), side(0, 5);
-    for (int z = 0; z < kSide; ++z)
-        for (int y = 0; y < kSide; ++y)
-            for (int x = 0; x < kSide; ++x) {
-                const bool wall = x == 0 || y == 0 || z == 0 || x == kSide - 1 || y == kSide - 1 ||
-                                  z == kSide - 1;
-                if (wall || unit(rng) < 0.05) world.set(x, y, z, test::kWhite);
-            }
     struct Panel {
         Int3 corner;
         int normal, sizeA, sizeB;
@@ -205,11 +193,11 @@ TEST(EmitterClearBox, ProvesMostNearLinesOfThinWallsAndChangesNoBit) {
     ASSERT_TRUE(scene.ok()) << scene.error().message();
     const auto state = test::buildCascadeState(scene->world, &scene->textures, scene->shading);
     const FaceData& faces = state->faces;
-    ASSERT_EQ(faces.nearClear.size(), faces.nearEmitters.size());
+    ASSERT_EQ(faces.nearBox.size(), faces.nearEmitters.size());
     ASSERT_FALSE(faces.nearEmitters.empty());
     // The same state without the boxes: every line walked.
     auto walked = test::buildCascadeState(scene->world, &scene->textures, scene->shading);
-    walked->faces.nearClear.clear();
+    walked->faces.nearBox.clear();
     const ShadeOptions& shading = state->shading;
     long proven = 0, lines = 0;
     for (int y = 0; y < scene->camera.height(); ++y) {
@@ -221,7 +209,7 @@ TEST(EmitterClearBox, ProvesMostNearLinesOfThinWallsAndChangesNoBit) {
             if (face < 0) continue;
             for (std::uint32_t i = faces.nearOffset[face]; i < faces.nearOffset[face + 1]; ++i) {
                 lines += 4;
-                if (!lineProvenClear(faces.nearClear[i], s.hit)) continue;
+                if (!lineProvenClear(faces.nearBoxes[faces.nearBox[i]], s.hit)) continue;
                 proven += 4;
                 for (int q = 0; q < 4; ++q) {
                     const Rgb t =
@@ -232,12 +220,9 @@ TEST(EmitterClearBox, ProvesMostNearLinesOfThinWallsAndChangesNoBit) {
             }
             // The near light and highlight with the boxes and without, to the bit.
             const PathSurface surface = pathSurfaceAt(*state->world, s, shading);
-            PathBsdf specular = pathBsdf(*surface.material, surface.albedo, s.hit.normal,
-                                         normalize(ray.direction), shading);
-            specular.diffuse = Rgb(0.0f);
-            specular.pDiffuse = 0.0;
-            specular.transmission = 0.0f;
-            specular.pTransmission = 0.0;
+            const PathBsdf specular =
+                specularLobe(pathBsdf(*surface.material, surface.albedo, s.hit.normal,
+                                      normalize(ray.direction), shading));
             const Rgb light = nearEmitterLight(*state, s.hit);
             const Rgb highlight = nearEmitterHighlight(*state, s.hit, specular);
             const Rgb light0 = nearEmitterLight(*walked, s.hit);

@@ -21,20 +21,6 @@ namespace {
 
 constexpr Voxel kStone{128, 128, 128, 255};
 
-// A point on face `normal` of `voxel` at (a, b) in [0, 1]^2 across it.
-Hit faceHit(Int3 voxel, Int3 normal, double a, double b) {
-    Hit h;
-    h.hit = true;
-    h.voxel = voxel;
-    h.normal = normal;
-    const int axis = normal.x != 0 ? 0 : (normal.y != 0 ? 1 : 2);
-    h.point = {double(voxel.x), double(voxel.y), double(voxel.z)};
-    h.point[axis] += normal[axis] > 0 ? 1.0 : 0.0;
-    h.point[(axis + 1) % 3] += a;
-    h.point[(axis + 2) % 3] += b;
-    return h;
-}
-
 TEST(SunRayMap, ProvesOnlyRaysTheWalkFindsOpenOrBlocked) {
     const VoxelWorld world = terrainWithBlocks({48, 40, 48}, 5, 300);
     std::mt19937 rng(3);

@@ -48,4 +48,19 @@ inline Hit hitFromAbove(const VoxelWorld& world, std::mt19937& rng) {
     return castRay(world, {origin, direction});
 }
 
+// A point on face `normal` (a unit axis) of `voxel` at (a, b) in [0, 1]^2 across it, on the
+// face's plane, as castRay reports a hit there.
+inline Hit faceHit(Int3 voxel, Int3 normal, double a, double b) {
+    Hit h;
+    h.hit = true;
+    h.voxel = voxel;
+    h.normal = normal;
+    const int axis = normal.x != 0 ? 0 : (normal.y != 0 ? 1 : 2);
+    h.point = {double(voxel.x), double(voxel.y), double(voxel.z)};
+    h.point[axis] += normal[axis] > 0 ? 1.0 : 0.0;
+    h.point[(axis + 1) % 3] += a;
+    h.point[(axis + 2) % 3] += b;
+    return h;
+}
+
 }  // namespace luxel::voxel

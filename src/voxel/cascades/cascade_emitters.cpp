@@ -117,22 +117,22 @@ void listNearEmitters(RadianceCascades::State& state, const std::vector<int>& em
     faces.nearEmitters.resize(faces.nearOffset[count]);
     // Each emitter's empty box, grown as far as its near share reaches (§5, "Near lines proven
     // clear").
-    std::vector<EmitterClearBox> boxes(emitters.size());
+    faces.nearBoxes.resize(emitters.size());
     const int boxReach = int(std::ceil(reach));
     parallelForRange(int(emitters.size()), 16, [&](int begin, int end) {
         for (int k = begin; k < end; ++k) {
             const Face& face = faces.table[emitters[std::size_t(k)]];
-            boxes[std::size_t(k)] =
+            faces.nearBoxes[std::size_t(k)] =
                 growEmitterClearBox(*state.world, face.voxel, face.normal, 1, 1, boxReach);
         }
     });
-    faces.nearClear.resize(faces.nearOffset[count]);
+    faces.nearBox.resize(faces.nearOffset[count]);
     parallelForRange(count, 256, [&](int begin, int end) {
         for (int f = begin; f < end; ++f) {
             std::uint32_t at = faces.nearOffset[f];
             for (std::size_t k = 0; k < emitters.size(); ++k) {
                 if (!near(emitters[k], f)) continue;
-                faces.nearClear[at] = boxes[k];
+                faces.nearBox[at] = std::uint32_t(k);
                 faces.nearEmitters[at++] = nearEmitter(faces, emitters[k]);
             }
         }
@@ -152,7 +152,8 @@ bool computeEmitterIrradiance(RadianceCascades::State& state) {
     faces.emitterFar.assign(faces.table.size(), Rgb{});
     faces.nearOffset.assign(std::size_t(faces.table.size()) + 1, 0);
     faces.nearEmitters.clear();
-    faces.nearClear.clear();
+    faces.nearBoxes.clear();
+    faces.nearBox.clear();
     // The lamps the glossy surfaces light-sample (§4.2), whether or not the pairs below fit.
     faces.glossy = state.options.glossyEmitters
                        ? buildGlossyLamps(*state.world, state.shading.materials)

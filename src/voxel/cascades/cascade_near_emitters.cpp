@@ -32,7 +32,7 @@ NearEmitterRays::NearEmitterRays(const RadianceCascades::State& state, const Hit
     end_ = faces.nearOffset[face_ + 1];
     // The boxes prove what the walk finds when it stops at the first solid voxel: no cutout
     // texels to continue through, and no step cap short of the world (castRay's default).
-    provable_ = faces.nearClear.size() == faces.nearEmitters.size() &&
+    provable_ = faces.nearBox.size() == faces.nearEmitters.size() &&
                 shadowBlockersHold(state.textures, state.shading.stepCap);
 }
 
@@ -46,7 +46,7 @@ Rgb NearEmitterRays::transmittance(std::uint32_t i, int q) {
     Rgb t(1.0f);
     // A line inside the emitter's empty box is clear: the walk would cross empty cells and stop
     // at the face (§5, "Near lines proven clear").
-    if (!(provable_ && lineProvenClear(state_.faces.nearClear[i], hit_))) {
+    if (!(provable_ && lineProvenClear(state_.faces.nearBoxes[state_.faces.nearBox[i]], hit_))) {
         const FaceTarget target{{e.x, e.y, e.z}, normalFromIndex(int(e.normal))};
         const shared::vec3 d = normalize(shared::nearEmitterPoint(e, q) - point_);
         t = faceRayTransmittance(*state_.world, state_.textures,

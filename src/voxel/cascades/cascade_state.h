@@ -88,9 +88,11 @@ struct FaceData {
     std::vector<Rgb> emitterFar;
     std::vector<std::uint32_t> nearOffset;
     std::vector<gpu::shared::CascadeNearEmitter> nearEmitters;
-    // Beside each near emitter, the empty box in front of it that proves its lines from the
-    // pixels inside clear without a walk (emitter_clear_box.h; CPU only).
-    std::vector<EmitterClearBox> nearClear;
+    // The empty box in front of each emitting face that proves its lines from the pixels inside
+    // clear without a walk (emitter_clear_box.h; CPU only), and beside each near emitter the
+    // index of its box: a box is made once per emitter, not once per face that lists it.
+    std::vector<EmitterClearBox> nearBoxes;
+    std::vector<std::uint32_t> nearBox;
     std::uint64_t emitterVersion = 0;
     // The lamps the picture's glossy surfaces light-sample (glossy_emitters.h), found with the
     // emitters' light.
@@ -101,7 +103,8 @@ struct FaceData {
         emitterFar.clear();
         nearOffset.clear();
         nearEmitters.clear();
-        nearClear.clear();
+        nearBoxes.clear();
+        nearBox.clear();
         glossy = GlossyLamps{};
     }
 };
