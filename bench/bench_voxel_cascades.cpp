@@ -4,8 +4,8 @@
 // the cottage.
 // `--benchmark_filter=voxel_cascades`; the CPU column is the whole
 // process (all threads): on an idle 2-core machine a frame takes about half of it. The `_gpu`
-// benchmarks time the lighting pass and the picture on the GPU by its timestamps (transfers
-// excluded); they are skipped without a Vulkan device and on a CPU device (lavapipe).
+// benchmarks time the same pass, picture and frame of each scene on the GPU by its timestamps
+// (transfers excluded); they are skipped without a Vulkan device and on a CPU device (lavapipe).
 #include <benchmark/benchmark.h>
 
 #include <map>
@@ -108,37 +108,43 @@ gpu::Context* hardwareGpu(std::string& why) {
     return context.get();
 }
 
-// picture: false times one lighting pass, true the picture at the scene's 640x360 after a solve.
-void BM_VoxelCascadesGpu(benchmark::State& state, bool picture) {
+// What a GPU benchmark times: one lighting pass, the picture at the scene's 640x360 after a
+// solve, or a real-time frame (a pass, then the picture).
+enum class GpuPart { Pass, Picture, Frame };
+
+void BM_VoxelCascadesGpu(benchmark::State& state, const std::string& name, GpuPart part) {
     std::string why;
     gpu::Context* context = hardwareGpu(why);
     if (!context) {
         state.SkipWithError(why.c_str());
         return;
     }
-    VoxelScene& scene = cottage();
+    VoxelScene& scene = shippedScene(name);
     auto cascades = RadianceCascades::create(scene.world, &scene.textures, scene.shading);
     auto gpu = cascades ? RadianceCascadesGpu::create(*context, *cascades)
                         : Result<RadianceCascadesGpu>(cascades.error());
-    if (!gpu || (picture && !gpu->solve())) {
+    if (!gpu || (part != GpuPart::Pass && !gpu->solve())) {
         state.SkipWithError(gpu ? "the lighting passes failed" : gpu.error().message().c_str());
         return;
     }
     for (auto _ : state) {
         double ms = 0;
-        if (picture) {
-            auto image = gpu->render(scene.camera, &ms);
-            if (!image) {
-                state.SkipWithError(image.error().message().c_str());
-                return;
-            }
-        } else {
+        if (part != GpuPart::Picture) {
             auto pass = gpu->iterate(1);
             if (!pass) {
                 state.SkipWithError(pass.error().message().c_str());
                 return;
             }
-            ms = *pass;
+            ms += *pass;
+        }
+        if (part != GpuPart::Pass) {
+            double pictureMs = 0;
+            auto image = gpu->render(scene.camera, &pictureMs);
+            if (!image) {
+                state.SkipWithError(image.error().message().c_str());
+                return;
+            }
+            ms += pictureMs;
         }
         state.SetIterationTime(ms * 1e-3);
     }
@@ -147,14 +153,6 @@ void BM_VoxelCascadesGpu(benchmark::State& state, bool picture) {
 
 }  // namespace
 
-BENCHMARK_CAPTURE(BM_VoxelCascadesGpu, pass, false)
-    ->Name("voxel_cascades/pass_gpu/cottage")
-    ->UseManualTime()
-    ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_VoxelCascadesGpu, picture, true)
-    ->Name("voxel_cascades/picture_gpu_640x360/cottage")
-    ->UseManualTime()
-    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_VoxelCascadesBuild)
     ->Name("voxel_cascades/build/cottage")
     ->MeasureProcessCPUTime()
@@ -170,6 +168,18 @@ const bool kSceneBenchmarks = [] {
             const std::string name = std::string("voxel_cascades/") + kind + "/" + scene;
             benchmark::RegisterBenchmark(name.c_str(), run, std::string(scene))
                 ->MeasureProcessCPUTime()
+                ->Unit(benchmark::kMillisecond);
+        }
+    }
+    const std::pair<const char*, GpuPart> gpuKinds[] = {{"pass_gpu", GpuPart::Pass},
+                                                        {"picture_gpu_640x360", GpuPart::Picture},
+                                                        {"frame_gpu_640x360", GpuPart::Frame}};
+    for (const auto& [kind, part] : gpuKinds) {
+        for (const char* scene : {"cottage", "fence", "garden", "glass", "thin-walls"}) {
+            const std::string name = std::string("voxel_cascades/") + kind + "/" + scene;
+            benchmark::RegisterBenchmark(name.c_str(), BM_VoxelCascadesGpu, std::string(scene),
+                                         part)
+                ->UseManualTime()
                 ->Unit(benchmark::kMillisecond);
         }
     }
