@@ -40,6 +40,8 @@ inline constexpr int kSolverSpecularRays = 4;
 // another, before the face it meets is shaded as an opaque Lambertian one (each level shades the
 // face with its material).
 inline constexpr int kSolverFollowDepth = 2;
+// Interfaces a transmitted ray may meet inside a medium before what is left is dropped.
+inline constexpr int kMaxMediumExits = 8;
 // Metals at most this rough are followed: their reflection is sharp.
 inline constexpr float kSolverFollowRoughness = 0.1f;
 
@@ -90,6 +92,10 @@ struct SolverLight {
     std::function<Rgb(const PathBsdf& specular)> nearHighlight = nullptr;
     std::function<GlossyAlong(const Ray&)> glossyAlong = nullptr;
     std::function<Rgb(const PathBsdf& specular, int lobeRays, PathRng& rng)> glossyLamps = nullptr;
+    // Exits into the air whose refracted light the transmission lobe takes; after the last, the
+    // light reflected back inside the medium is dropped (the radiance cascades' picture, whose
+    // later exits carry F of it and cost a chain of rays each; kMaxMediumExits: none dropped).
+    int mediumAirExits = kMaxMediumExits;
 };
 
 // The radiance leaving the surface `s` towards the camera ray `ray` (s.hit.normal non-zero).

@@ -27,6 +27,8 @@ namespace {
 constexpr float kInvPi = float(1.0 / 3.14159265358979323846);
 }  // namespace
 
+using cascades::kPictureCameraAirExits;
+using cascades::kPictureFollowedAirExits;
 using cascades::kPictureSpecularRays;
 using cascades::kPictureSunRays;
 using cascades::kReflectionSeed;
@@ -52,11 +54,13 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
     if (depth < kSolverFollowDepth &&
         solverFollows(shading.materials.forSlot(textureSlotOf(voxel)), shading)) {
         // Glass or polished metal: shaded with its material, what lies behind it or what it
-        // reflects followed as for the camera's ray.
-        const SolverLight behind{
+        // reflects followed as for the camera's ray; of the light reflected inside glass, what
+        // leaves at its first exit into the air (§4.2).
+        SolverLight behind{
             irradiance * kInvPi,
             [&](const Ray& q, bool d) { return reflectedLight(q, d && delta, depth + 1, rng); }, 1,
             1, &state_->sunRayMap};
+        behind.mediumAirExits = kPictureFollowedAirExits;
         return shadeSolverSurface(world, state_->textures, s, r, shading, behind, rng);
     }
     // The face met, Lambertian: its emission, the sun its face's rays found when the cascades
@@ -129,6 +133,7 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
                                                                  *glossy.rng);
                       },
                       kPictureSunRays, kPictureSpecularRays, &state_->sunRayMap};
+    light.mediumAirExits = kPictureCameraAirExits;
     if (!faces.nearOffset.empty() || glossy.ray.lamps) {
         if (!faces.nearOffset.empty()) {
             light.nearHighlight = [this, &nearRays](const PathBsdf& specular) {

@@ -63,9 +63,11 @@ layout(push_constant) uniform Push { CascadePicturePush path; };
 #undef LUXEL_SOLVER_REFLECTED
 #define LUXEL_SOLVER_SHADE shadeSurface2
 #define LUXEL_SOLVER_RADIANCE reflectedLight2
+#define LUXEL_SOLVER_AIR_EXITS LUXEL_PICTURE_FOLLOWED_AIR_EXITS
 #include "voxel/solver_shade.glsl"
 #undef LUXEL_SOLVER_SHADE
 #undef LUXEL_SOLVER_RADIANCE
+#undef LUXEL_SOLVER_AIR_EXITS
 
 #define LUXEL_SOLVER_REFLECTED reflectedLight1
 #define LUXEL_SOLVER_FOLLOW shadeSurface2
@@ -74,9 +76,11 @@ layout(push_constant) uniform Push { CascadePicturePush path; };
 #undef LUXEL_SOLVER_FOLLOW
 #define LUXEL_SOLVER_SHADE shadeSurface1
 #define LUXEL_SOLVER_RADIANCE reflectedLight1
+#define LUXEL_SOLVER_AIR_EXITS LUXEL_PICTURE_FOLLOWED_AIR_EXITS
 #include "voxel/solver_shade.glsl"
 #undef LUXEL_SOLVER_SHADE
 #undef LUXEL_SOLVER_RADIANCE
+#undef LUXEL_SOLVER_AIR_EXITS
 
 // The camera's surface (level 0) takes its near emitters' highlight light-sampled; its GGX
 // rays count those emitters by the share left (RadianceCascades::pixelRadiance's nearHighlight
@@ -100,9 +104,11 @@ bool pictureRoughLobe;
 #undef LUXEL_SOLVER_FOLLOW_ROUGH
 #define LUXEL_SOLVER_SHADE shadeSurface0
 #define LUXEL_SOLVER_RADIANCE reflectedLight0
+#define LUXEL_SOLVER_AIR_EXITS LUXEL_PICTURE_CAMERA_AIR_EXITS
 #include "voxel/solver_shade.glsl"
 #undef LUXEL_SOLVER_SHADE
 #undef LUXEL_SOLVER_RADIANCE
+#undef LUXEL_SOLVER_AIR_EXITS
 #undef LUXEL_SOLVER_NEAR
 
 // The picture's radiance along one camera ray.
