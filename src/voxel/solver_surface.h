@@ -53,8 +53,8 @@ bool solverFollows(const VoxelWorld& world, const SurfaceHit& s, const ShadeOpti
 // Whether any material of shading.materials is followed.
 bool solverFollowsAny(const ShadeOptions& shading);
 // Whether the GGX lobe of the voxel a ray met is rough: roughness above kSolverFollowRoughness,
-// the metals that are not followed. Its GGX directions follow one glass or polished-metal face
-// fewer (docs/algorithms/voxel-radiance-cascades.md §4.2, "Rough lobes follow one face").
+// the metals that are not followed. Its GGX directions follow no glass or polished-metal face
+// (docs/algorithms/voxel-radiance-cascades.md §4.2, "Rough lobes follow no face").
 bool solverRoughLobe(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& shading);
 
 // What a GGX direction of the radiance cascades' camera surface brings (SolverLight::glossyAlong):

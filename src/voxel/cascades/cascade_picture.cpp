@@ -117,13 +117,14 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
         const RadianceCascades* cascades;
         PathRng* rng;
         // Where the surface's GGX rays start following glass and polished metal: a rough
-        // surface's follow one such face fewer than its delta lobes, for what a rough lobe sees
-        // through a second one is blurred by it (§4.2, "Rough lobes follow one face").
+        // surface's follow none, for what a rough lobe sees through glass or in a mirror is
+        // blurred by it, and they take such a face as Lambertian (§4.2, "Rough lobes follow no
+        // face").
         int depth;
         cascades::GlossyRay ray;  // each GGX ray's start: the surface, nothing met yet
     } glossy{this,
              &rng,
-             solverRoughLobe(world, s, shading) ? 1 : 0,
+             solverRoughLobe(world, s, shading) ? kSolverFollowDepth : 0,
              {&s.hit, face, faces.glossy.empty() ? nullptr : &lamps, {}}};
     // The callbacks capture one or two pointers each, which std::function keeps without
     // allocating.
