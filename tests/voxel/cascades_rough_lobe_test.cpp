@@ -76,8 +76,7 @@ TEST(CascadesRoughLobe, ARoughFloorsRaysTakeAMirrorAsTheyTakeRoughMetal) {
     EXPECT_GT(differing(polishedMirror, polishedRough), 48 * 32 / 10);
     // And so does the camera's own view of the wall.
     const Camera wall = *Camera::lookAt({12.0, 5.0, 8.0}, {12.0, 4.0, 20.0}, 50.0, 48, 32);
-    EXPECT_GT(differing(scene.draw(0.02f, 0.8f, wall), scene.draw(0.3f, 0.8f, wall)),
-              48 * 32 / 2);
+    EXPECT_GT(differing(scene.draw(0.02f, 0.8f, wall), scene.draw(0.3f, 0.8f, wall)), 48 * 32 / 2);
 }
 
 }  // namespace
