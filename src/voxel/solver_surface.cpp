@@ -19,13 +19,11 @@ Vec3d toDouble(Int3 v) {
     return {double(v.x), double(v.y), double(v.z)};
 }
 
-// Interfaces a transmitted ray may meet inside a medium before what is left is dropped.
-constexpr int kMaxMediumExits = 8;
-
 // What the transmission lobe shows: the camera ray refracted into the medium of the hit voxel
 // and followed as the path tracer follows it (walkMedium, Beer-Lambert, the Fresnel split at each
 // exit), every exit's refracted part bringing the solver's light along its direction; the part
-// reflected inside goes on, up to kMaxMediumExits interfaces.
+// reflected inside goes on, up to kMaxMediumExits interfaces and light.mediumAirExits exits into
+// the air.
 Rgb transmitted(const VoxelWorld& world, const SurfaceHit& s, const PathBsdf& b,
                 const ShadeOptions& shading, const SolverLight& light, PathRng& rng) {
     PathBsdf entering = b;
@@ -35,6 +33,7 @@ Rgb transmitted(const VoxelWorld& world, const SurfaceHit& s, const PathBsdf& b,
     Rgb weight(b.transmission), out;
     Ray ray{s.hit.point, in.direction};
     Int3 cell = s.hit.voxel;
+    int airExits = 0;
     for (int exits = 0; exits < kMaxMediumExits && weight.maxComponent() > 1e-4f; ++exits) {
         const Voxel v = world.get(cell.x, cell.y, cell.z);
         const Material& m = shading.materials.forSlot(textureSlotOf(v));
@@ -51,6 +50,7 @@ Rgb transmitted(const VoxelWorld& world, const SurfaceHit& s, const PathBsdf& b,
             out += weight * (1.0f - split.reflectance) *
                    light.radianceAlong({exit.point, split.refracted}, true);
             weight = weight * split.reflectance;
+            if (++airExits >= light.mediumAirExits) return out;
         }
         ray = {exit.point, split.reflected};
         cell = exit.cell;

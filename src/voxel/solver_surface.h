@@ -40,6 +40,8 @@ inline constexpr int kSolverSpecularRays = 4;
 // another, before the face it meets is shaded as an opaque Lambertian one (each level shades the
 // face with its material).
 inline constexpr int kSolverFollowDepth = 2;
+// Interfaces a transmitted ray may meet inside a medium before what is left is dropped.
+inline constexpr int kMaxMediumExits = 8;
 // Metals at most this rough are followed: their reflection is sharp.
 inline constexpr float kSolverFollowRoughness = 0.1f;
 
@@ -51,8 +53,8 @@ bool solverFollows(const VoxelWorld& world, const SurfaceHit& s, const ShadeOpti
 // Whether any material of shading.materials is followed.
 bool solverFollowsAny(const ShadeOptions& shading);
 // Whether the GGX lobe of the voxel a ray met is rough: roughness above kSolverFollowRoughness,
-// the metals that are not followed. Its GGX directions follow one glass or polished-metal face
-// fewer (docs/algorithms/voxel-radiance-cascades.md §4.2, "Rough lobes follow one face").
+// the metals that are not followed. Its GGX directions follow no glass or polished-metal face
+// (docs/algorithms/voxel-radiance-cascades.md §4.2, "Rough lobes follow no face").
 bool solverRoughLobe(const VoxelWorld& world, const SurfaceHit& s, const ShadeOptions& shading);
 
 // What a GGX direction of the radiance cascades' camera surface brings (SolverLight::glossyAlong):
@@ -90,6 +92,10 @@ struct SolverLight {
     std::function<Rgb(const PathBsdf& specular)> nearHighlight = nullptr;
     std::function<GlossyAlong(const Ray&)> glossyAlong = nullptr;
     std::function<Rgb(const PathBsdf& specular, int lobeRays, PathRng& rng)> glossyLamps = nullptr;
+    // Exits into the air whose refracted light the transmission lobe takes; after the last, the
+    // light reflected back inside the medium is dropped (the radiance cascades' picture, whose
+    // later exits carry F of it and cost a chain of rays each; kMaxMediumExits: none dropped).
+    int mediumAirExits = kMaxMediumExits;
 };
 
 // The radiance leaving the surface `s` towards the camera ray `ray` (s.hit.normal non-zero).

@@ -27,6 +27,8 @@ namespace {
 constexpr float kInvPi = float(1.0 / 3.14159265358979323846);
 }  // namespace
 
+using cascades::kPictureCameraAirExits;
+using cascades::kPictureFollowedAirExits;
 using cascades::kPictureSpecularRays;
 using cascades::kPictureSunRays;
 using cascades::kReflectionSeed;
@@ -52,11 +54,13 @@ Rgb RadianceCascades::reflectedLight(const Ray& r, bool delta, int depth, PathRn
     if (depth < kSolverFollowDepth &&
         solverFollows(shading.materials.forSlot(textureSlotOf(voxel)), shading)) {
         // Glass or polished metal: shaded with its material, what lies behind it or what it
-        // reflects followed as for the camera's ray.
-        const SolverLight behind{
+        // reflects followed as for the camera's ray; of the light reflected inside glass, what
+        // leaves at its first exit into the air (§4.2).
+        SolverLight behind{
             irradiance * kInvPi,
             [&](const Ray& q, bool d) { return reflectedLight(q, d && delta, depth + 1, rng); }, 1,
             1, &state_->sunRayMap};
+        behind.mediumAirExits = kPictureFollowedAirExits;
         return shadeSolverSurface(world, state_->textures, s, r, shading, behind, rng);
     }
     // The face met, Lambertian: its emission, the sun its face's rays found when the cascades
@@ -113,13 +117,14 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
         const RadianceCascades* cascades;
         PathRng* rng;
         // Where the surface's GGX rays start following glass and polished metal: a rough
-        // surface's follow one such face fewer than its delta lobes, for what a rough lobe sees
-        // through a second one is blurred by it (§4.2, "Rough lobes follow one face").
+        // surface's follow none, for what a rough lobe sees through glass or in a mirror is
+        // blurred by it, and they take such a face as Lambertian (§4.2, "Rough lobes follow no
+        // face").
         int depth;
         cascades::GlossyRay ray;  // each GGX ray's start: the surface, nothing met yet
     } glossy{this,
              &rng,
-             solverRoughLobe(world, s, shading) ? 1 : 0,
+             solverRoughLobe(world, s, shading) ? kSolverFollowDepth : 0,
              {&s.hit, face, faces.glossy.empty() ? nullptr : &lamps, {}}};
     // The callbacks capture one or two pointers each, which std::function keeps without
     // allocating.
@@ -129,6 +134,7 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
                                                                  *glossy.rng);
                       },
                       kPictureSunRays, kPictureSpecularRays, &state_->sunRayMap};
+    light.mediumAirExits = kPictureCameraAirExits;
     if (!faces.nearOffset.empty() || glossy.ray.lamps) {
         if (!faces.nearOffset.empty()) {
             light.nearHighlight = [this, &nearRays](const PathBsdf& specular) {

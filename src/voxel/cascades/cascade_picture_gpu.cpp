@@ -29,6 +29,8 @@ using namespace cascades;
 static_assert(LUXEL_PICTURE_FOLLOW_DEPTH == kSolverFollowDepth,
               "cascades_picture.comp.glsl unrolls the solver's follow depth");
 static_assert(float(LUXEL_PICTURE_FOLLOW_ROUGHNESS) == kSolverFollowRoughness);
+static_assert(LUXEL_PICTURE_CAMERA_AIR_EXITS == kPictureCameraAirExits &&
+              LUXEL_PICTURE_FOLLOWED_AIR_EXITS == kPictureFollowedAirExits);
 // path_surface.glsl reads the picture's flags as the path tracer's.
 static_assert(LUXEL_PICTURE_REFRACTION == LUXEL_PATH_REFRACTION &&
               LUXEL_PICTURE_FRESNEL_EXACT == LUXEL_PATH_FRESNEL_EXACT);

@@ -29,6 +29,11 @@ LUXEL_SHARED_BEGIN
 // Glass and polished metal followed one inside another (kSolverFollowDepth, solver_surface.h):
 // the shader unrolls the CPU's recursion into this many levels.
 #define LUXEL_PICTURE_FOLLOW_DEPTH 2
+// Exits into the air whose refracted light a medium's walk takes before it drops the light
+// reflected back inside (kPictureCameraAirExits, kPictureFollowedAirExits: cascade_picture.h):
+// at the camera's surface, and at a glass face followed from it.
+#define LUXEL_PICTURE_CAMERA_AIR_EXITS 2
+#define LUXEL_PICTURE_FOLLOWED_AIR_EXITS 1
 // Metals at most this rough are followed (kSolverFollowRoughness).
 #define LUXEL_PICTURE_FOLLOW_ROUGHNESS 0.1
 // The GGX albedo table's nodes per side (cosView, alpha; ggx_albedo.cpp).

@@ -63,9 +63,11 @@ layout(push_constant) uniform Push { CascadePicturePush path; };
 #undef LUXEL_SOLVER_REFLECTED
 #define LUXEL_SOLVER_SHADE shadeSurface2
 #define LUXEL_SOLVER_RADIANCE reflectedLight2
+#define LUXEL_SOLVER_AIR_EXITS LUXEL_PICTURE_FOLLOWED_AIR_EXITS
 #include "voxel/solver_shade.glsl"
 #undef LUXEL_SOLVER_SHADE
 #undef LUXEL_SOLVER_RADIANCE
+#undef LUXEL_SOLVER_AIR_EXITS
 
 #define LUXEL_SOLVER_REFLECTED reflectedLight1
 #define LUXEL_SOLVER_FOLLOW shadeSurface2
@@ -74,9 +76,11 @@ layout(push_constant) uniform Push { CascadePicturePush path; };
 #undef LUXEL_SOLVER_FOLLOW
 #define LUXEL_SOLVER_SHADE shadeSurface1
 #define LUXEL_SOLVER_RADIANCE reflectedLight1
+#define LUXEL_SOLVER_AIR_EXITS LUXEL_PICTURE_FOLLOWED_AIR_EXITS
 #include "voxel/solver_shade.glsl"
 #undef LUXEL_SOLVER_SHADE
 #undef LUXEL_SOLVER_RADIANCE
+#undef LUXEL_SOLVER_AIR_EXITS
 
 // The camera's surface (level 0) takes its near emitters' highlight light-sampled; its GGX
 // rays count those emitters by the share left (RadianceCascades::pixelRadiance's nearHighlight
@@ -85,24 +89,26 @@ layout(push_constant) uniform Push { CascadePicturePush path; };
 int pictureNearFace;
 vec3 pictureNearPoint;
 bool pictureGlossyRay;
-// Whether the camera's surface is rough: its GGX rays then follow glass and polished metal one
-// level less deep (RadianceCascades::pixelRadiance, §4.2 "Rough lobes follow one face").
+// Whether the camera's surface is rough: its GGX rays then follow no glass or polished metal
+// (RadianceCascades::pixelRadiance, §4.2 "Rough lobes follow no face").
 bool pictureRoughLobe;
 // The lamps beyond, light-sampled and weighed against the GGX rays (glossy_emitters.glsl).
 #include "voxel/glossy_emitters.glsl"
 #define LUXEL_SOLVER_NEAR
 #define LUXEL_SOLVER_REFLECTED reflectedLight0
 #define LUXEL_SOLVER_FOLLOW shadeSurface1
-#define LUXEL_SOLVER_FOLLOW_ROUGH shadeSurface2
+#define LUXEL_SOLVER_ROUGH_LAMBERTIAN
 #include "voxel/solver_reflected.glsl"
 #undef LUXEL_SOLVER_REFLECTED
 #undef LUXEL_SOLVER_FOLLOW
-#undef LUXEL_SOLVER_FOLLOW_ROUGH
+#undef LUXEL_SOLVER_ROUGH_LAMBERTIAN
 #define LUXEL_SOLVER_SHADE shadeSurface0
 #define LUXEL_SOLVER_RADIANCE reflectedLight0
+#define LUXEL_SOLVER_AIR_EXITS LUXEL_PICTURE_CAMERA_AIR_EXITS
 #include "voxel/solver_shade.glsl"
 #undef LUXEL_SOLVER_SHADE
 #undef LUXEL_SOLVER_RADIANCE
+#undef LUXEL_SOLVER_AIR_EXITS
 #undef LUXEL_SOLVER_NEAR
 
 // The picture's radiance along one camera ray.

@@ -4,9 +4,9 @@
 //   LUXEL_SOLVER_REFLECTED  the function to define: vec3 (origin, direction, delta, rng)
 //   LUXEL_SOLVER_FOLLOW     (only above the deepest level) the shading of the next level
 //                           (solver_shade.glsl) for glass and polished metal met by the ray
-//   LUXEL_SOLVER_FOLLOW_ROUGH (the camera surface's level) the same, one level deeper, for a
-//                           GGX direction of a rough camera surface (pictureGlossyRay and
-//                           pictureRoughLobe): it follows one such face fewer
+//   LUXEL_SOLVER_ROUGH_LAMBERTIAN (the camera surface's level) a GGX direction of a rough
+//                           camera surface (pictureGlossyRay and pictureRoughLobe) follows no
+//                           such face: it takes it as Lambertian
 //   LUXEL_SOLVER_NEAR       (the camera surface's level) while pictureGlossyRay, an emitter of
 //                           pictureNearFace's near list counts its emission times 1 - its near
 //                           weight at pictureNearPoint (nearEmitterShare), and a lamp the
@@ -24,13 +24,12 @@ vec3 LUXEL_SOLVER_REFLECTED(vec3 origin, vec3 direction, bool delta, inout uvec2
 #ifdef LUXEL_SOLVER_FOLLOW
     // Glass or polished metal: shaded with its material, what lies behind it or what it
     // reflects followed one level deeper.
-    if (solverFollows(s)) {
-#ifdef LUXEL_SOLVER_FOLLOW_ROUGH
-        if (pictureGlossyRay && pictureRoughLobe) {
-            return LUXEL_SOLVER_FOLLOW_ROUGH(s, direction, irradiance * LUXEL_SOLVER_INV_PI, 1, 1,
-                                             delta, rng);
-        }
+#ifdef LUXEL_SOLVER_ROUGH_LAMBERTIAN
+    const bool follows = solverFollows(s) && !(pictureGlossyRay && pictureRoughLobe);
+#else
+    const bool follows = solverFollows(s);
 #endif
+    if (follows) {
         return LUXEL_SOLVER_FOLLOW(s, direction, irradiance * LUXEL_SOLVER_INV_PI, 1, 1, delta,
                                    rng);
     }

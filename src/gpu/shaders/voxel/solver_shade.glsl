@@ -9,6 +9,9 @@
 //                                through delta lobes only (the camera's, a mirror's, glass's),
 //                                so its delta rays may show the sun's disk
 //   LUXEL_SOLVER_RADIANCE  the radiance along a ray leaving the surface (solver_reflected.glsl)
+//   LUXEL_SOLVER_AIR_EXITS the medium's exits into the air whose refracted light is taken; the
+//                          light reflected back inside after the last is dropped
+//                          (SolverLight::mediumAirExits)
 //   LUXEL_SOLVER_NEAR      (the camera's surface only) its near emitters' highlight
 //                          light-sampled (nearEmitterHighlight), and pictureGlossyRay set while
 //                          a GGX direction's radiance is taken, so that LUXEL_SOLVER_RADIANCE
@@ -46,7 +49,7 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
     bool inMedium = b.transmission > 0.0 && b.cosView > 0.0;
     vec3 weight = vec3(b.transmission), mediumOrigin = s.hit.point, mediumDirection = vec3(0.0);
     ivec3 cell = s.hit.voxel;
-    int exits = 0;
+    int exits = 0, airExits = 0;
     if (inMedium) {
         PathBsdf entering = b;
         entering.pSpecular = 0.0;
@@ -107,6 +110,8 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
                 ray = normalize(opticsRefract(mediumDirection, nIn, m.ior, cosI, k));
                 scale = weight * (1.0 - reflectance);
                 weight = weight * reflectance;
+                // The last exit taken: what is reflected inside is dropped.
+                if (++airExits >= LUXEL_SOLVER_AIR_EXITS) weight = vec3(0.0);
                 mediumOrigin = e.point;
                 mediumDirection = reflected;
                 cell = e.cell;
