@@ -100,6 +100,18 @@ struct HrcFinishParams {
     uint blur;      // 1 = opacity-gated cross blur
 };
 
+// Push constants of hrc_near_field (§12.3's exact near field): `count` canvas pixels, listed as
+// y * width + x, each overwritten in the fluence by the mean over `rays` directions marched from
+// its centre until every channel's transmittance is below `cutoff` (the sky beyond the canvas).
+struct HrcNearFieldParams {
+    uint width;
+    uint height;
+    uint count;
+    uint rays;
+    float cutoff;
+    float skyR, skyG, skyB;
+};
+
 #ifdef __cplusplus
 static_assert(sizeof(HrcTableEntry) == LUXEL_HRC_ENTRY_WORDS * 4);
 static_assert(sizeof(HrcConePair) == 4);
@@ -111,6 +123,7 @@ static_assert(offsetof(HrcMergeParams, skyR) == 20);
 static_assert(sizeof(HrcReadoutParams) == 32);
 static_assert(offsetof(HrcReadoutParams, skyR) == 20);
 static_assert(sizeof(HrcFinishParams) == 16);
+static_assert(sizeof(HrcNearFieldParams) == 32);
 static_assert(sizeof(HrcExtendParams) == 16);
 static_assert(offsetof(HrcExtendParams, rows) == 4);
 static_assert(offsetof(HrcExtendParams, planesBelow) == 8);
