@@ -24,7 +24,7 @@ struct HrcOptions {
     // Opacity-gated cross blur against the row-parity checkerboard (paper Eq 21).
     bool crossBlur = true;
     // Where every pixel absorbs enough that a ray fades below 1e-3 within 128 px, replace the
-    // fluence within 3 px of the lights, where HRC's bias sits, by 256 directions marched exactly
+    // fluence within 5 px of the lights, where HRC's bias sits, by 128 directions marched exactly
     // (docs/algorithms/holographic-radiance-cascades.md §12.3, "An exact near field in fog").
     // Elsewhere (any vacuum or thin medium) it does nothing; off for the debug views and for
     // fewer than four frustums.

@@ -15,8 +15,8 @@
 
 namespace luxel::gi2d::hrc {
 
-inline constexpr int kNearFieldRadius = 3;           // px from a light's pixel centre
-inline constexpr int kNearFieldRays = 256;           // directions per gathered pixel
+inline constexpr int kNearFieldRadius = 5;           // px from a light's pixel centre
+inline constexpr int kNearFieldRays = 128;           // directions per gathered pixel
 inline constexpr float kNearFieldCutoff = 1e-3f;     // a ray stops below this T in every channel
 inline constexpr float kNearFieldMaxReach = 128.0f;  // px: the longest ray the gather allows
 // The budget of marched pixels (rays x reach): this many per canvas pixel, and per pixel of a
