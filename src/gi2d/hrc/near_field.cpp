@@ -3,6 +3,7 @@
 #include "gi2d/hrc/near_field.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -61,14 +62,29 @@ NearFieldPlan planNearField(const Medium2D& medium) {
     return plan;
 }
 
-Rgb nearFieldGatherAt(const RayMarcher& marcher, int x, int y) {
+namespace {
+
+// The directions 2 pi (k + 1/2) / N, the same for every pixel: made once.
+const std::array<Vec2d, kNearFieldRays>& gatherDirections() {
+    static const std::array<Vec2d, kNearFieldRays> directions = [] {
+        std::array<Vec2d, kNearFieldRays> d;
+        const double step = 2.0 * std::numbers::pi / kNearFieldRays;
+        for (int k = 0; k < kNearFieldRays; ++k) {
+            const double angle = (k + 0.5) * step;
+            d[static_cast<std::size_t>(k)] = {std::cos(angle), std::sin(angle)};
+        }
+        return d;
+    }();
+    return directions;
+}
+
+}  // namespace
+
+Rgb nearFieldGatherAt(const RayMarcher& marcher, int x, int y, double reach) {
     const Vec2d origin{x + 0.5, y + 0.5};
-    const double step = 2.0 * std::numbers::pi / kNearFieldRays;
     double sum[3] = {0, 0, 0};
-    for (int k = 0; k < kNearFieldRays; ++k) {
-        const double angle = (k + 0.5) * step;
-        const RaySegment ray =
-            marcher.march(origin, {std::cos(angle), std::sin(angle)}, 1e30, kNearFieldCutoff);
+    for (const Vec2d& direction : gatherDirections()) {
+        const RaySegment ray = marcher.march(origin, direction, reach, kNearFieldCutoff);
         for (int c = 0; c < 3; ++c) sum[c] += ray.radiance[c];
     }
     const double norm = 1.0 / kNearFieldRays;
@@ -84,7 +100,7 @@ void gatherNearFieldInPlace(const Medium2D& medium, const NearFieldPlan& plan, I
         for (int i = begin; i < end; ++i) {
             const int x = static_cast<int>(plan.pixels[static_cast<std::size_t>(i)] % w);
             const int y = static_cast<int>(plan.pixels[static_cast<std::size_t>(i)] / w);
-            fluence.setRgb(x, y, nearFieldGatherAt(marcher, x, y));
+            fluence.setRgb(x, y, nearFieldGatherAt(marcher, x, y, plan.reach));
         }
     });
 }

@@ -36,8 +36,9 @@ struct NearFieldPlan {
 // Lights are those of NearLightMask: max_c E_c min(sigma_c, 1) at least 1/64 of the brightest.
 NearFieldPlan planNearField(const Medium2D& medium);
 
-// Mean radiance over kNearFieldRays directions 2 pi (k + 1/2) / N from the centre of (x, y).
-Rgb nearFieldGatherAt(const RayMarcher& marcher, int x, int y);
+// Mean radiance over kNearFieldRays directions 2 pi (k + 1/2) / N from the centre of (x, y),
+// each marched for at most `reach` px (a plan's reach: beyond it T is below the cutoff anyway).
+Rgb nearFieldGatherAt(const RayMarcher& marcher, int x, int y, double reach = 1e30);
 
 // Overwrites the plan's pixels of `fluence` with the gather (in parallel).
 void gatherNearFieldInPlace(const Medium2D& medium, const NearFieldPlan& plan, Image& fluence);
