@@ -163,7 +163,8 @@ TEST(GpuSharedLayout, HrcPushConstants) {
          {LUXEL_MEMBER(HrcNearFieldParams, width), LUXEL_MEMBER(HrcNearFieldParams, height),
           LUXEL_MEMBER(HrcNearFieldParams, count), LUXEL_MEMBER(HrcNearFieldParams, rays),
           LUXEL_MEMBER(HrcNearFieldParams, cutoff), LUXEL_MEMBER(HrcNearFieldParams, skyR),
-          LUXEL_MEMBER(HrcNearFieldParams, skyG), LUXEL_MEMBER(HrcNearFieldParams, skyB)}});
+          LUXEL_MEMBER(HrcNearFieldParams, skyG), LUXEL_MEMBER(HrcNearFieldParams, skyB),
+          LUXEL_MEMBER(HrcNearFieldParams, reach)}});
 }
 
 TEST(GpuSharedLayout, RcPushConstants) {

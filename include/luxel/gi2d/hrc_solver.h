@@ -23,11 +23,11 @@ struct HrcOptions {
     int tracedLevels = 3;
     // Opacity-gated cross blur against the row-parity checkerboard (paper Eq 21).
     bool crossBlur = true;
-    // Where every pixel absorbs enough that a ray fades below 1e-3 within 128 px, replace the
+    // Where every pixel absorbs enough that a ray fades below 1e-3 within 512 px, replace the
     // fluence within 5 px of the lights, where HRC's bias sits, by 128 directions marched exactly
-    // (docs/algorithms/holographic-radiance-cascades.md §12.3, "An exact near field in fog").
-    // Elsewhere (any vacuum or thin medium) it does nothing; off for the debug views and for
-    // fewer than four frustums.
+    // (docs/algorithms/holographic-radiance-cascades.md §12.3, "An exact near field in fog"),
+    // unless those rays would cost more than a budget. Elsewhere (any vacuum or thin medium) it
+    // does nothing; off for the debug views and for fewer than four frustums.
     bool exactNearField = true;
     // Which frustums to sum (bit r: 0 = +x, 1 = +y, 2 = -x, 3 = -y); debug views use one.
     unsigned frustumMask = 0xF;

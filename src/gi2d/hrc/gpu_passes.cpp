@@ -131,14 +131,14 @@ gpu::Dispatch makeFinishDispatch(gpu::Program* program, gpu::Buffer* canvasMediu
 
 gpu::Dispatch makeNearFieldDispatch(gpu::Program* program, gpu::Buffer* canvasMedium,
                                     gpu::Buffer* pixels, gpu::Buffer* fluence, int width,
-                                    int height, std::uint32_t count, Rgb sky) {
+                                    int height, std::uint32_t count, Rgb sky, float reach) {
     gpu::Dispatch d;
     d.name = "near field";
     d.program = program;
     d.buffers = {canvasMedium, pixels, fluence};
     d.setPush(shared::HrcNearFieldParams{u32(width), u32(height), count, u32(kNearFieldRays),
-                                         kNearFieldCutoff, sky.r, sky.g, sky.b});
-    d.setLinearThreads(count);
+                                         kNearFieldCutoff, sky.r, sky.g, sky.b, reach});
+    d.setLinearThreads(std::uint64_t{count} * kNearFieldRays);  // a workgroup per pixel
     return d;
 }
 

@@ -49,7 +49,7 @@ gpu::Dispatch makeFinishDispatch(gpu::Program* program, gpu::Buffer* canvasMediu
 // The exact near field (§12.3, hrc_near_field.comp.glsl) over `count` listed pixels of `fluence`.
 gpu::Dispatch makeNearFieldDispatch(gpu::Program* program, gpu::Buffer* canvasMedium,
                                     gpu::Buffer* pixels, gpu::Buffer* fluence, int width,
-                                    int height, std::uint32_t count, Rgb sky);
+                                    int height, std::uint32_t count, Rgb sky, float reach);
 
 // T_n of `tables` marched through `medium` seen in `frame`, the optical depth times `depthScale`
 // (CPU twin: traceLevel on frameMedium(medium, frame)).

@@ -214,7 +214,7 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
         }
         last.push_back(makeNearFieldDispatch(
             *nearFieldPass, canvasMedium->get(), nearPixels.get(), fluence->get(), w, h,
-            static_cast<std::uint32_t>(nearField.pixels.size()), sky));
+            static_cast<std::uint32_t>(nearField.pixels.size()), sky, nearField.reach));
     }
     auto ran = context.run(last);
     if (!ran) return ran.error();

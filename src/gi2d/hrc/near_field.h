@@ -9,16 +9,17 @@
 #include <cstdint>
 #include <vector>
 
+#include "gpu/shaders/shared/hrc_layout.h"
 #include "luxel/core/image.h"
 #include "luxel/gi2d/medium2d.h"
 #include "luxel/gi2d/ray_march.h"
 
 namespace luxel::gi2d::hrc {
 
-inline constexpr int kNearFieldRadius = 5;           // px from a light's pixel centre
-inline constexpr int kNearFieldRays = 128;           // directions per gathered pixel
+inline constexpr int kNearFieldRadius = 5;                        // px from a light's pixel centre
+inline constexpr int kNearFieldRays = LUXEL_HRC_NEAR_FIELD_RAYS;  // directions per pixel
 inline constexpr float kNearFieldCutoff = 1e-3f;     // a ray stops below this T in every channel
-inline constexpr float kNearFieldMaxReach = 128.0f;  // px: the longest ray the gather allows
+inline constexpr float kNearFieldMaxReach = 512.0f;  // px: the longest ray the gather allows
 // The budget of marched pixels (rays x reach): this many per canvas pixel, and per pixel of a
 // 256 x 256 canvas on smaller ones (their solve is cheap).
 inline constexpr double kNearFieldStepsPerPixel = 256;

@@ -75,7 +75,7 @@ TEST(HrcNearField, BringsLampsInDenseFogNearTheReference) {
 
 TEST(HrcNearField, LeavesCanvasesWithoutAnAbsorptionBoundBitIdentical) {
     // Vacuum around the lamps, and fog too thin to stop a ray within the longest reach.
-    for (double fog : {0.0, 0.004, 0.05}) {
+    for (double fog : {0.0, 0.004, 0.01}) {
         const Medium2D medium = mediumFrom(lampsInFog(fog), 80);
         EXPECT_TRUE(planNearField(medium).empty()) << fog;
         HrcOptions off;
@@ -85,7 +85,7 @@ TEST(HrcNearField, LeavesCanvasesWithoutAnAbsorptionBoundBitIdentical) {
 }
 
 TEST(HrcNearField, ActsWhereEveryPixelBoundsTheRays) {
-    // ln(1000) / 0.06 = 115 px: within the reach of 128 px; 0.05 (138 px) is not (above).
+    // ln(1000) / 0.06 = 115 px: within the longest reach, 512 px; 0.01 (691 px) is not (above).
     const Medium2D fog = mediumFrom(lampsInFog(0.06), 80);
     const NearFieldPlan plan = planNearField(fog);
     ASSERT_FALSE(plan.empty());
