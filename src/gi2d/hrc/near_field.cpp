@@ -36,6 +36,14 @@ NearFieldPlan planNearField(const Medium2D& medium) {
     }
     if (!(brightest > 0.0f)) return plan;
     const float threshold = brightest / 64.0f;
+    // The rays' cost against the canvas's: beyond the budget the gather is off altogether. The
+    // lights are among the gathered pixels, so too many of them end it before the stamping.
+    const double stepsPerPixel = kNearFieldRays * std::min<double>(reach, std::hypot(w, h));
+    const double budget = kNearFieldStepsPerPixel *
+                          std::max(static_cast<double>(pixels), kNearFieldBudgetFloorPixels);
+    const auto lights =
+        std::count_if(scores.begin(), scores.end(), [&](float s) { return s >= threshold; });
+    if (static_cast<double>(lights) * stepsPerPixel > budget) return plan;
     constexpr int r = kNearFieldRadius;
     std::vector<std::uint8_t> near(pixels, 0);
     for (int y = 0; y < h; ++y) {
@@ -52,12 +60,7 @@ NearFieldPlan planNearField(const Medium2D& medium) {
     for (std::size_t i = 0; i < pixels; ++i) {
         if (near[i]) plan.pixels.push_back(static_cast<std::uint32_t>(i));
     }
-    // The rays' cost against the canvas's: beyond the budget the gather is off altogether.
-    const double steps = static_cast<double>(plan.pixels.size()) * kNearFieldRays *
-                         std::min<double>(reach, std::hypot(w, h));
-    const double budget = kNearFieldStepsPerPixel *
-                          std::max(static_cast<double>(pixels), kNearFieldBudgetFloorPixels);
-    if (steps > budget) plan.pixels.clear();
+    if (static_cast<double>(plan.pixels.size()) * stepsPerPixel > budget) plan.pixels.clear();
     plan.reach = reach;
     return plan;
 }
