@@ -139,6 +139,32 @@ TEST(GpuHrc, DiskInVacuumFollowsTheArcsineLaw) {
     }
 }
 
+// dense-fog at 96 px (0.21 per pixel after scaling): the exact near field of §12.3 acts, on both
+// backends alike.
+TEST(GpuHrc, ExactNearFieldMatchesTheCpu) {
+    LUXEL_REQUIRE_GPU(context);
+    const gi2d::Medium2D medium =
+        gi2d::testing_support::shippedScene("hard/dense-fog.json", 96, 96);
+    gi2d::HrcOptions off;
+    off.exactNearField = false;
+    const Image cpu = gi2d::solveHrc(medium).value();
+    const Image cpuOff = gi2d::solveHrc(medium, off).value();
+    std::vector<PassTiming> timings;
+    auto gpu = gi2d::solveHrcOnGpu(*context, medium, {}, &timings);
+    ASSERT_TRUE(gpu.ok()) << gpu.error().message();
+    EXPECT_TRUE(std::any_of(timings.begin(), timings.end(),
+                            [](const PassTiming& t) { return t.name == "near field"; }));
+    const ImageErrors e = compareImages(*gpu, cpu).value();
+    const ImageErrors gathered = compareImages(cpuOff, cpu).value();
+    std::printf(
+        "dense-fog 96x96 near field: GPU vs CPU relative L1 %.2e, max %.2e; the gather "
+        "changes the CPU's image by relative L1 %.2e\n",
+        e.relativeL1, e.maxAbsError, gathered.relativeL1);
+    EXPECT_GT(gathered.relativeL1, 1e-3);
+    EXPECT_LT(e.relativeL1, 1e-5);
+    EXPECT_EQ(context->validationMessages(), 0) << context->lastValidationMessage();
+}
+
 }  // namespace
 }  // namespace luxel::gpu
 

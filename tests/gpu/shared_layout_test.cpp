@@ -157,6 +157,14 @@ TEST(GpuSharedLayout, HrcPushConstants) {
         {sizeof(HrcFinishParams),
          {LUXEL_MEMBER(HrcFinishParams, width), LUXEL_MEMBER(HrcFinishParams, height),
           LUXEL_MEMBER(HrcFinishParams, frustums), LUXEL_MEMBER(HrcFinishParams, blur)}});
+    expectPushConstants(
+        "hrc_near_field",
+        {sizeof(HrcNearFieldParams),
+         {LUXEL_MEMBER(HrcNearFieldParams, width), LUXEL_MEMBER(HrcNearFieldParams, height),
+          LUXEL_MEMBER(HrcNearFieldParams, count), LUXEL_MEMBER(HrcNearFieldParams, rays),
+          LUXEL_MEMBER(HrcNearFieldParams, cutoff), LUXEL_MEMBER(HrcNearFieldParams, skyR),
+          LUXEL_MEMBER(HrcNearFieldParams, skyG), LUXEL_MEMBER(HrcNearFieldParams, skyB),
+          LUXEL_MEMBER(HrcNearFieldParams, reach)}});
 }
 
 TEST(GpuSharedLayout, RcPushConstants) {

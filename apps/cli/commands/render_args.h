@@ -41,6 +41,7 @@ struct RenderArgs {
     // HRC
     int tracedLevels = gi2d::HrcOptions{}.tracedLevels;
     bool noBlur = false;
+    bool noNearField = false;
     std::string frustum;  // debug: one of +x, +y, -x, -y
     int cascade = 0;      // debug: the cascade --view cascade|probes shows (hrc, rc)
     // RC

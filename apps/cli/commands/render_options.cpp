@@ -79,6 +79,8 @@ Runner addRenderCommand(CLI::App& app) {
         ->check(wholeIn(1, 64))
         ->capture_default_str();
     app.add_flag("--no-blur", args->noBlur, "HRC: skip the opacity-gated cross blur (Eq 21)");
+    app.add_flag("--no-near-field", args->noNearField,
+                 "HRC: skip the exact near field in fog (acts only where every pixel absorbs)");
     app.add_option("--frustum", args->frustum, "HRC debug: only this frustum (+x, +y, -x, -y)");
     app.add_option("--cascade", args->cascade,
                    "debug: the cascade that --view cascade|probes shows")
@@ -190,8 +192,8 @@ Runner addRenderCommand(CLI::App& app) {
         const bool voxelSolver = seeded || args->solverName == "raycast";
         for (const char* name :
              {"--solver", "--rays", "--seed", "--supersample", "--traced-levels", "--no-blur",
-              "--frustum", "--cascade", "--merge", "--march", "--probe-spacing", "--base-rays",
-              "--base-interval", "--max-cascades", "--view", "--bounces"}) {
+              "--no-near-field", "--frustum", "--cascade", "--merge", "--march", "--probe-spacing",
+              "--base-rays", "--base-interval", "--max-cascades", "--view", "--bounces"}) {
             // rc names a solver of both kinds; --bounces serves both (runRender sorts them out).
             const bool rcOption =
                 args->solverName == "rc" &&

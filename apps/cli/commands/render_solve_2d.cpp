@@ -102,6 +102,7 @@ Result<Image> solveHrcFor(const RenderArgs& args, const gi2d::Medium2D& medium,
     gi2d::HrcOptions options;
     options.tracedLevels = args.tracedLevels;
     options.crossBlur = !args.noBlur;
+    options.exactNearField = !args.noNearField;
     options.frustumMask = *mask;
     options.debugCascade = args.view == "cascade" ? std::max(args.cascade, 0) : -1;
     options.onProgress = [&](int, int) { progress.advance(); };

@@ -23,6 +23,12 @@ struct HrcOptions {
     int tracedLevels = 3;
     // Opacity-gated cross blur against the row-parity checkerboard (paper Eq 21).
     bool crossBlur = true;
+    // Where every pixel absorbs enough that a ray fades below 1e-3 within 512 px, replace the
+    // fluence within 5 px of the lights, where HRC's bias sits, by 128 directions marched exactly
+    // (docs/algorithms/holographic-radiance-cascades.md §12.3, "An exact near field in fog"),
+    // unless those rays would cost more than a budget. Elsewhere (any vacuum or thin medium) it
+    // does nothing; off for the debug views and for fewer than four frustums.
+    bool exactNearField = true;
     // Which frustums to sum (bit r: 0 = +x, 1 = +y, 2 = -x, 3 = -y); debug views use one.
     unsigned frustumMask = 0xF;
     // >= 0: instead of the fluence, show cascade n's merged result read at each pixel's next
@@ -62,8 +68,8 @@ struct HrcCpuPass {
 
 // Fails with a clear message when the memory estimate exceeds the available memory, or for bad
 // options. `passes`, when given, receives the time of each pass (trace, extend, merge, readout,
-// finish) summed over the frustums; it stays empty for the debug views and for more than 5 traced
-// cascades, which run cascade by cascade.
+// finish, and "near field" where the exact near field acted) summed over the frustums; it stays
+// empty for the debug views and for more than 5 traced cascades, which run cascade by cascade.
 Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options = {},
                        std::vector<HrcCpuPass>* passes = nullptr);
 

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "gi2d/hrc/hrc_geometry.h"
+#include "gi2d/hrc/near_field.h"
 #include "gi2d/medium_gpu.h"
 #include "gpu/shaders/shared/hrc_layout.h"
 
@@ -125,6 +126,19 @@ gpu::Dispatch makeFinishDispatch(gpu::Program* program, gpu::Buffer* canvasMediu
     d.buffers = {canvasMedium, beyond, fluence};
     d.setPush(shared::HrcFinishParams{u32(width), u32(height), u32(frustums), blur ? 1u : 0u});
     d.setThreads(u32(width), u32(height));
+    return d;
+}
+
+gpu::Dispatch makeNearFieldDispatch(gpu::Program* program, gpu::Buffer* canvasMedium,
+                                    gpu::Buffer* pixels, gpu::Buffer* fluence, int width,
+                                    int height, std::uint32_t count, Rgb sky, float reach) {
+    gpu::Dispatch d;
+    d.name = "near field";
+    d.program = program;
+    d.buffers = {canvasMedium, pixels, fluence};
+    d.setPush(shared::HrcNearFieldParams{u32(width), u32(height), count, u32(kNearFieldRays),
+                                         kNearFieldCutoff, sky.r, sky.g, sky.b, reach});
+    d.setLinearThreads(std::uint64_t{count} * kNearFieldRays);  // a workgroup per pixel
     return d;
 }
 

@@ -6,6 +6,8 @@
 //   hrc_merge   mergeCascadeOnGpu   CPU twin mergeCascade   (cone_merge.h)
 //   hrc_readout readOutOnGpu        CPU twin readOut        (readout.h)
 //   hrc_finish  finishOnGpu         CPU twin finishFluence  (finish.h)
+// and hrc_near_field (CPU twin gatherNearFieldInPlace, near_field.h), compared through the whole
+// solve.
 // Every single-pass entry uploads its inputs, runs the pass, reads the output back and returns the
 // pass's GPU time in milliseconds.
 #pragma once
@@ -44,6 +46,10 @@ gpu::Dispatch makeTransposeDispatch(gpu::Program* program, gpu::Buffer* rows, gp
 gpu::Dispatch makeFinishDispatch(gpu::Program* program, gpu::Buffer* canvasMedium,
                                  gpu::Buffer* beyond, gpu::Buffer* fluence, int width, int height,
                                  int frustums, bool blur);
+// The exact near field (§12.3, hrc_near_field.comp.glsl) over `count` listed pixels of `fluence`.
+gpu::Dispatch makeNearFieldDispatch(gpu::Program* program, gpu::Buffer* canvasMedium,
+                                    gpu::Buffer* pixels, gpu::Buffer* fluence, int width,
+                                    int height, std::uint32_t count, Rgb sky, float reach);
 
 // T_n of `tables` marched through `medium` seen in `frame`, the optical depth times `depthScale`
 // (CPU twin: traceLevel on frameMedium(medium, frame)).

@@ -7,6 +7,7 @@
 #include "gi2d/hrc/frustum_frame.h"
 #include "gi2d/hrc/gpu_passes.h"
 #include "gi2d/hrc/hrc_geometry.h"
+#include "gi2d/hrc/near_field.h"
 #include "gi2d/hrc/near_lights.h"
 #include "gi2d/hrc/ray_tables.h"
 #include "gi2d/medium_gpu.h"
@@ -91,8 +92,9 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
     auto merge = context.program("hrc_merge", 5, sizeof(HrcMergeParams));
     auto readout = context.program("hrc_readout", 2, sizeof(HrcReadoutParams));
     auto finish = context.program("hrc_finish", 3, sizeof(HrcFinishParams));
+    auto nearFieldPass = context.program("hrc_near_field", 3, sizeof(shared::HrcNearFieldParams));
     auto transpose = context.program("medium_transpose", 2, sizeof(shared::MediumTransposeParams));
-    for (auto* p : {&trace, &extend, &merge, &readout, &finish, &transpose}) {
+    for (auto* p : {&trace, &extend, &merge, &readout, &finish, &nearFieldPass, &transpose}) {
         if (!*p) return p->error();
     }
 
@@ -195,10 +197,26 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
             options.onProgress(frustums, std::popcount(options.frustumMask & 0xFu));
     }
 
-    const gpu::Dispatch last =
-        makeFinishDispatch(*finish, canvasMedium->get(), beyond->get(), fluence->get(), w, h,
-                           frustums, options.crossBlur);
-    auto ran = context.run(std::span<const gpu::Dispatch>(&last, 1));
+    std::vector<gpu::Dispatch> last = {makeFinishDispatch(*finish, canvasMedium->get(),
+                                                          beyond->get(), fluence->get(), w, h,
+                                                          frustums, options.crossBlur)};
+    // The exact near field of §12.3 where the medium bounds the rays, as solveHrc does.
+    const NearFieldPlan nearField =
+        options.exactNearField && frustums == 4 ? planNearField(medium) : NearFieldPlan{};
+    std::shared_ptr<gpu::Buffer> nearPixels;
+    if (!nearField.empty()) {
+        auto b = context.createBuffer(nearField.pixels.size() * 4);
+        if (!b) return b.error();
+        nearPixels = *b;
+        if (Status s = context.upload(*nearPixels, std::as_bytes(std::span(nearField.pixels)));
+            !s) {
+            return s.error();
+        }
+        last.push_back(makeNearFieldDispatch(
+            *nearFieldPass, canvasMedium->get(), nearPixels.get(), fluence->get(), w, h,
+            static_cast<std::uint32_t>(nearField.pixels.size()), sky, nearField.reach));
+    }
+    auto ran = context.run(last);
     if (!ran) return ran.error();
     if (timings) timings->insert(timings->end(), ran->begin(), ran->end());
 

@@ -12,6 +12,7 @@
 #include "gi2d/hrc/frustum_frame.h"
 #include "gi2d/hrc/hrc_geometry.h"
 #include "gi2d/hrc/level_by_level.h"
+#include "gi2d/hrc/near_field.h"
 #include "gi2d/hrc/sweep_solver.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/thread_team.h"
@@ -59,21 +60,26 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
     }
     // The sweep's medium window grows with 2^tracedLevels times the distinct lengths inside cells
     // (3 for the paper's 3 traced cascades): many traced cascades go cascade by cascade instead.
+    const int frustums = std::popcount(options.frustumMask & 0xFu);
     const bool levelByLevel = debug || options.tracedLevels > kSweepMaxTracedLevels;
+    // The exact near field of §12.3 after the finish, for the whole fluence only.
+    const NearFieldPlan nearField =
+        options.exactNearField && !debug && frustums == 4 ? planNearField(medium) : NearFieldPlan{};
     const std::uint64_t needed =
-        levelByLevel ? levelByLevelBytes(w, h) + mediumBytes(w, h) / 2
-                     : sweepMemory(w, h, options.tracedLevels, ThreadTeam::defaultSize()).total() +
-                           estimateHrcMemory(w, h).output;
+        (nearField.empty() ? 0 : RayMarcher::bytesFor(w, h)) +
+        (levelByLevel ? levelByLevelBytes(w, h) + mediumBytes(w, h) / 2
+                      : sweepMemory(w, h, options.tracedLevels, ThreadTeam::defaultSize()).total() +
+                            estimateHrcMemory(w, h).output);
     if (Status s = checkMemory(needed, "HRC at " + std::to_string(w) + "x" + std::to_string(h));
         !s) {
         return s.error();
     }
 
-    const int frustums = std::popcount(options.frustumMask & 0xFu);
     if (levelByLevel) {
         if (passes != nullptr) passes->clear();
         Image beyond = levelByLevelBeyond(medium, options);
         finishFluenceInPlace(medium, beyond, frustums, options.crossBlur && !debug);
+        gatherNearFieldInPlace(medium, nearField, beyond);
         return beyond;
     }
     SweepTimes times;
@@ -94,6 +100,17 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                  .count(),
              pixels * (24 + 12 + 12 + 12)});
+    }
+    if (!nearField.empty()) {
+        const auto gather = std::chrono::steady_clock::now();
+        gatherNearFieldInPlace(medium, nearField, beyond);
+        if (passes != nullptr) {
+            passes->push_back({"near field",
+                               std::chrono::duration<double, std::milli>(
+                                   std::chrono::steady_clock::now() - gather)
+                                   .count(),
+                               0});
+        }
     }
     return beyond;
 }

@@ -22,6 +22,9 @@ using uint = std::uint32_t;
 
 // Rows per workgroup of the HRC passes.
 #define LUXEL_HRC_GROUP_SIZE 64
+// Directions per pixel of the exact near field (§12.3), one invocation each: hrc_near_field's
+// workgroup size.
+#define LUXEL_HRC_NEAR_FIELD_RAYS 128
 // 32-bit words per ray-table entry (six binary16 values).
 #define LUXEL_HRC_ENTRY_WORDS 3
 
@@ -100,6 +103,20 @@ struct HrcFinishParams {
     uint blur;      // 1 = opacity-gated cross blur
 };
 
+// Push constants of hrc_near_field (§12.3's exact near field): `count` canvas pixels, listed as
+// y * width + x, each overwritten in the fluence by the mean over `rays` (=
+// LUXEL_HRC_NEAR_FIELD_RAYS) directions marched from its centre for at most `reach` px or until
+// every channel's transmittance is below `cutoff` (the sky beyond the canvas).
+struct HrcNearFieldParams {
+    uint width;
+    uint height;
+    uint count;
+    uint rays;
+    float cutoff;
+    float skyR, skyG, skyB;
+    float reach;
+};
+
 #ifdef __cplusplus
 static_assert(sizeof(HrcTableEntry) == LUXEL_HRC_ENTRY_WORDS * 4);
 static_assert(sizeof(HrcConePair) == 4);
@@ -111,6 +128,7 @@ static_assert(offsetof(HrcMergeParams, skyR) == 20);
 static_assert(sizeof(HrcReadoutParams) == 32);
 static_assert(offsetof(HrcReadoutParams, skyR) == 20);
 static_assert(sizeof(HrcFinishParams) == 16);
+static_assert(sizeof(HrcNearFieldParams) == 36);
 static_assert(sizeof(HrcExtendParams) == 16);
 static_assert(offsetof(HrcExtendParams, rows) == 4);
 static_assert(offsetof(HrcExtendParams, planesBelow) == 8);
