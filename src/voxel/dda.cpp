@@ -4,6 +4,7 @@
 // jumps exactly as the shared one does.
 #include "luxel/voxel/dda.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 
@@ -43,10 +44,16 @@ bool streamable(const VoxelWorld& world) {
 // buffer of traces between the walk and the hit cost 5% to 12% on such rays
 // (docs/algorithms/voxel-traversal.md §4.5). The others run through the SIMD walk in blocks,
 // which also settles the rays that never walk (non-finite, tMax < 0, not eligible).
-template <typename Take>
+//
+// With kTiles (castCameraRays), rays[k * kCameraTileRays ..] form tiles, and the rays of a tile
+// that has a skip plane (tile_frustum.h) take the one-ray loop begun at that plane: after the skip
+// the walk is mostly voxel steps near the surface, where that loop is faster than the lanes
+// (docs/algorithms/voxel-traversal.md §4.6).
+template <bool kTiles = false, typename Take>
 void streamRays(const VoxelWorld& world, std::span<const Ray> rays, double tMax, int stepCap,
                 Take&& take) {
     constexpr std::size_t kBlock = 1024;
+    static_assert(kBlock % kCameraTileRays == 0);
     shared::VoxelTrace traces[kBlock];
     // The lanes' rays of a block that mixes both kinds (a vector: Ray's members zero-initialise).
     thread_local std::vector<Ray> laneRays(kBlock);
@@ -56,8 +63,19 @@ void streamRays(const VoxelWorld& world, std::span<const Ray> rays, double tMax,
     for (std::size_t first = 0; first < rays.size(); first += kBlock) {
         const std::size_t n = std::min(kBlock, rays.size() - first);
         std::size_t m = 0;
+        [[maybe_unused]] stream::Skip skip;
         for (std::size_t i = first; i < first + n; ++i) {
             const Ray& ray = rays[i];
+            if constexpr (kTiles) {
+                if ((i - first) % kCameraTileRays == 0) {
+                    const std::size_t count = std::min(kCameraTileRays, first + n - i);
+                    skip = stream::tileSkip(world, rays.subspan(i, count));
+                }
+                if (skip.axis >= 0 && walkable && fast::eligible(world, ray)) {
+                    take(i, fast::traverse<true>(world, ray, tMax, walk.cap, skip));
+                    continue;
+                }
+            }
             if (stream::startsInside(world, ray) && walkable && finiteRay(ray) &&
                 fast::eligible(world, ray)) {
                 take(i, fast::traverse(world, ray, tMax, walk.cap));
@@ -87,6 +105,21 @@ void castRayBatch(const VoxelWorld& world, std::span<const Ray> rays, std::span<
     streamRays(world, rays, tMax, stepCap, [&](std::size_t i, const shared::VoxelTrace& trace) {
         hits[i] = hitFromTrace(rays[i], trace);
     });
+}
+
+void castCameraRays(const VoxelWorld& world, std::span<const Ray> rays, std::span<Hit> hits,
+                    double tMax, int stepCap) {
+    const Int3 size = world.size();
+    // The skip changes the loop count, so it is taken only where the step cap cannot end a walk
+    // (a walk visits at most sx + sy + sz cells, dda.h).
+    if (!streamable(world) || resolvedCap(world, stepCap) < size.x + size.y + size.z) {
+        castRayBatch(world, rays, hits, tMax, stepCap);
+        return;
+    }
+    streamRays<true>(world, rays, tMax, stepCap,
+                     [&](std::size_t i, const shared::VoxelTrace& trace) {
+                         hits[i] = hitFromTrace(rays[i], trace);
+                     });
 }
 
 void occludedBatch(const VoxelWorld& world, std::span<const Ray> rays,
