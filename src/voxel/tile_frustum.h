@@ -1,7 +1,8 @@
 // The tile frustum skip for camera rays (docs/algorithms/voxel-traversal.md §4.6): rays that share
 // an origin outside the world and come from one small screen tile form a thin frustum; walking it
 // once, slab by slab along its main axis, finds a plane before which no ray of the tile meets a
-// solid voxel. Each ray's exact walk then begins with one jump to that plane (lane_start-inl.h).
+// solid voxel. Each ray's exact walk then begins with one jump to that plane (skip_jump.h, taken
+// by fast::traverse<true>).
 #pragma once
 
 #include <span>
