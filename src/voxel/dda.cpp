@@ -44,16 +44,10 @@ bool streamable(const VoxelWorld& world) {
 // buffer of traces between the walk and the hit cost 5% to 12% on such rays
 // (docs/algorithms/voxel-traversal.md §4.5). The others run through the SIMD walk in blocks,
 // which also settles the rays that never walk (non-finite, tMax < 0, not eligible).
-//
-// With kTiles (castCameraRays), rays[k * kCameraTileRays ..] form tiles, and the rays of a tile
-// that has a skip plane (tile_frustum.h) take the one-ray loop begun at that plane: after the skip
-// the walk is mostly voxel steps near the surface, where that loop is faster than the lanes
-// (docs/algorithms/voxel-traversal.md §4.6).
-template <bool kTiles = false, typename Take>
+template <typename Take>
 void streamRays(const VoxelWorld& world, std::span<const Ray> rays, double tMax, int stepCap,
                 Take&& take) {
     constexpr std::size_t kBlock = 1024;
-    static_assert(kBlock % kCameraTileRays == 0);
     shared::VoxelTrace traces[kBlock];
     // The lanes' rays of a block that mixes both kinds (a vector: Ray's members zero-initialise).
     thread_local std::vector<Ray> laneRays(kBlock);
@@ -63,19 +57,8 @@ void streamRays(const VoxelWorld& world, std::span<const Ray> rays, double tMax,
     for (std::size_t first = 0; first < rays.size(); first += kBlock) {
         const std::size_t n = std::min(kBlock, rays.size() - first);
         std::size_t m = 0;
-        [[maybe_unused]] stream::Skip skip;
         for (std::size_t i = first; i < first + n; ++i) {
             const Ray& ray = rays[i];
-            if constexpr (kTiles) {
-                if ((i - first) % kCameraTileRays == 0) {
-                    const std::size_t count = std::min(kCameraTileRays, first + n - i);
-                    skip = stream::tileSkip(world, rays.subspan(i, count));
-                }
-                if (skip.axis >= 0 && walkable && fast::eligible(world, ray)) {
-                    take(i, fast::traverse<true>(world, ray, tMax, walk.cap, skip));
-                    continue;
-                }
-            }
             if (stream::startsInside(world, ray) && walkable && finiteRay(ray) &&
                 fast::eligible(world, ray)) {
                 take(i, fast::traverse(world, ray, tMax, walk.cap));
@@ -110,16 +93,26 @@ void castRayBatch(const VoxelWorld& world, std::span<const Ray> rays, std::span<
 void castCameraRays(const VoxelWorld& world, std::span<const Ray> rays, std::span<Hit> hits,
                     double tMax, int stepCap) {
     const Int3 size = world.size();
+    const int cap = resolvedCap(world, stepCap);
     // The skip changes the loop count, so it is taken only where the step cap cannot end a walk
     // (a walk visits at most sx + sy + sz cells, dda.h).
-    if (!streamable(world) || resolvedCap(world, stepCap) < size.x + size.y + size.z) {
+    if (!streamable(world) || cap < size.x + size.y + size.z) {
         castRayBatch(world, rays, hits, tMax, stepCap);
         return;
     }
-    streamRays<true>(world, rays, tMax, stepCap,
-                     [&](std::size_t i, const shared::VoxelTrace& trace) {
-                         hits[i] = hitFromTrace(rays[i], trace);
-                     });
+    // Every ray in the one-ray loop: after a skip the walk is mostly voxel steps near the surface,
+    // where that loop is faster than the SIMD lanes (docs/algorithms/voxel-traversal.md §4.6).
+    stream::Skip skip;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        if (i % kCameraTileRays == 0) {
+            skip = stream::tileSkip(world,
+                                    rays.subspan(i, std::min(kCameraTileRays, rays.size() - i)));
+        }
+        const Ray& ray = rays[i];
+        hits[i] = tMax >= 0.0 && finiteRay(ray) && fast::eligible(world, ray)
+                      ? hitFromTrace(ray, fast::traverse<true>(world, ray, tMax, cap, skip))
+                      : castRay(world, ray, tMax, stepCap);
+    }
 }
 
 void occludedBatch(const VoxelWorld& world, std::span<const Ray> rays,
