@@ -88,12 +88,12 @@ double threadSeconds() {
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-// Casts every ray with luxel's batch call (SIMD; castCameraRays for primary rays), with Embree,
-// with luxel one ray at a time (castRay or occluded: the "scalar" column) and with castRayShared
-// (the shared kernel as written, which was castRay before the CPU got its own loop: the "before"
-// column), on this thread, each timed by the thread's CPU clock; reports the rates and luxel's
-// (batch) ratio to Embree. Each contender takes all the rays and returns how many it found
-// something for.
+// Casts every ray with luxel's batch call (castCameraRays for primary rays, else castRayBatch or
+// occludedBatch), with Embree, with luxel one ray at a time (castRay or occluded: the "scalar"
+// column) and with castRayShared (the shared kernel as written, which was castRay before the CPU
+// got its own loop: the "before" column), on this thread, each timed by the thread's CPU clock;
+// reports the rates and luxel's (batch) ratio to Embree. Each contender takes all the rays and
+// returns how many it found something for.
 template <typename Luxel, typename Embree, typename Scalar, typename Before>
 void race(benchmark::State& state, const std::vector<Ray>& rays, Luxel&& luxel, Embree&& embree,
           Scalar&& scalar, Before&& before) {

@@ -87,8 +87,9 @@ void occludedBatch(const VoxelWorld& world, std::span<const Ray> rays,
 // of its rays meets a solid voxel, and each ray's walk begins with one jump to that plane
 // (docs/algorithms/voxel-traversal.md §4.6). hits[i] equals castRay(world, rays[i], tMax,
 // stepCap) field by field except `steps`, which counts the iterations this walk makes (the jump
-// to the plane is one; the frustum walk is not counted). Rays that do not form such tiles, and
-// step caps below the world's sx + sy + sz, take castRayBatch (steps included).
+// to the plane is one; the frustum walk is not counted); rays of tiles without a plane keep
+// castRay's steps. Every ray takes castRay's one-ray loop; with a step cap below the world's
+// sx + sy + sz, or the brick reach stale, this is castRayBatch.
 inline constexpr std::size_t kCameraTileRays = 64;
 void castCameraRays(const VoxelWorld& world, std::span<const Ray> rays, std::span<Hit> hits,
                     double tMax = kInfinity, int stepCap = 0);
