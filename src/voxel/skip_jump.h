@@ -16,10 +16,9 @@ namespace luxel::voxel::stream {
 
 enum class SkipResult { NotTaken, Jumped, Missed };
 
-// The jump to `skip.plane` on `skip.axis` from the walk state `s` (voxelStart's, updated when
-// Jumped; s.size unused). NotTaken where the start
-// cell already lies at or past the plane; Missed where the ray leaves the world or passes tMax
-// before it.
+// The jump to `skip.plane` on `skip.axis` from the walk state `s` (voxelStart's; updated when
+// Jumped, s.size unused). NotTaken where the start cell already lies at or past the plane; Missed
+// where the ray leaves the world or passes tMax before it.
 inline SkipResult jumpToPlane(gpu::shared::VoxelWalk& s, Skip skip, const Int3& size, double tMax) {
     const int m = skip.axis;
     if (s.stp[m] == 0) return SkipResult::NotTaken;
