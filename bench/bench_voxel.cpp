@@ -88,11 +88,12 @@ double threadSeconds() {
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
-// Casts every ray with luxel's batch call (SIMD), with Embree, with luxel one ray at a time
-// (castRay or occluded: the "scalar" column) and with castRayShared (the shared kernel as written,
-// which was castRay before the CPU got its own loop: the "before" column), on this thread, each
-// timed by the thread's CPU clock; reports the rates and luxel's (batch) ratio to Embree. Each
-// contender takes all the rays and returns how many it found something for.
+// Casts every ray with luxel's batch call (castCameraRays for primary rays, else castRayBatch or
+// occludedBatch), with Embree, with luxel one ray at a time (castRay or occluded: the "scalar"
+// column) and with castRayShared (the shared kernel as written, which was castRay before the CPU
+// got its own loop: the "before" column), on this thread, each timed by the thread's CPU clock;
+// reports the rates and luxel's (batch) ratio to Embree. Each contender takes all the rays and
+// returns how many it found something for.
 template <typename Luxel, typename Embree, typename Scalar, typename Before>
 void race(benchmark::State& state, const std::vector<Ray>& rays, Luxel&& luxel, Embree&& embree,
           Scalar&& scalar, Before&& before) {
@@ -147,6 +148,23 @@ long luxelNearest(const VoxelWorld& world, const std::vector<Ray>& rays) {
     return found;
 }
 
+// Camera rays: castCameraRays, whose tiles (kCameraTileRays consecutive rays, here runs of 64
+// pixels of an image row) skip the empty space in front of them together. Also sums the loop
+// iterations it makes, which differ from castRay's `steps` (the skip is one of them).
+long luxelCamera(const VoxelWorld& world, const std::vector<Ray>& rays, double* steps = nullptr) {
+    static thread_local std::vector<Hit> hits(kBatch);
+    long found = 0;
+    for (std::size_t first = 0; first < rays.size(); first += kBatch) {
+        const std::size_t n = std::min(kBatch, rays.size() - first);
+        castCameraRays(world, std::span(rays).subspan(first, n), std::span(hits).first(n));
+        for (std::size_t i = 0; i < n; ++i) {
+            found += hits[i].hit;
+            if (steps) *steps += hits[i].steps;
+        }
+    }
+    return found;
+}
+
 long luxelOccluded(const VoxelWorld& world, const std::vector<Ray>& rays) {
     static thread_local std::vector<std::uint8_t> blocked(kBatch);
     long found = 0;
@@ -192,11 +210,17 @@ void voxelPrimary(benchmark::State& state, Cam cam) {
     const Setup& s = setup();
     const View& v = view(cam);
     race(
-        state, v.primary, [&](const auto& rays) { return luxelNearest(s.world, rays); },
+        state, v.primary, [&](const auto& rays) { return luxelCamera(s.world, rays); },
         each([&](const Ray& r) { return s.faces->cast(r).hit; }),
         each([&](const Ray& r) { return castRay(s.world, r).hit; }),
         each([&](const Ray& r) { return castRayShared(s.world, r).hit; }));
     agreement(state, s.world, v.primary, [&](const Ray& r) { return sameNearest(s, r); });
+    // The batch column's own loop count: castCameraRays's iterations, where `steps/ray` is
+    // castRay's.
+    double batchSteps = 0;
+    luxelCamera(s.world, v.primary, &batchSteps);
+    state.counters["batch_steps/ray"] =
+        batchSteps / std::max<double>(1.0, static_cast<double>(v.primary.size()));
 }
 
 void voxelShadow(benchmark::State& state, Cam cam) {

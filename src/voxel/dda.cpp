@@ -4,6 +4,7 @@
 // jumps exactly as the shared one does.
 #include "luxel/voxel/dda.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 
@@ -87,6 +88,31 @@ void castRayBatch(const VoxelWorld& world, std::span<const Ray> rays, std::span<
     streamRays(world, rays, tMax, stepCap, [&](std::size_t i, const shared::VoxelTrace& trace) {
         hits[i] = hitFromTrace(rays[i], trace);
     });
+}
+
+void castCameraRays(const VoxelWorld& world, std::span<const Ray> rays, std::span<Hit> hits,
+                    double tMax, int stepCap) {
+    const Int3 size = world.size();
+    const int cap = resolvedCap(world, stepCap);
+    // The skip changes the loop count, so it is taken only where the step cap cannot end a walk
+    // (a walk visits at most sx + sy + sz cells, dda.h).
+    if (!streamable(world) || cap < size.x + size.y + size.z) {
+        castRayBatch(world, rays, hits, tMax, stepCap);
+        return;
+    }
+    // Every ray in the one-ray loop: after a skip the walk is mostly voxel steps near the surface,
+    // where that loop is faster than the SIMD lanes (docs/algorithms/voxel-traversal.md §4.6).
+    stream::Skip skip;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        if (i % kCameraTileRays == 0) {
+            skip = stream::tileSkip(world,
+                                    rays.subspan(i, std::min(kCameraTileRays, rays.size() - i)));
+        }
+        const Ray& ray = rays[i];
+        hits[i] = tMax >= 0.0 && finiteRay(ray) && fast::eligible(world, ray)
+                      ? hitFromTrace(ray, fast::traverse<true>(world, ray, tMax, cap, skip))
+                      : castRay(world, ray, tMax, stepCap);
+    }
 }
 
 void occludedBatch(const VoxelWorld& world, std::span<const Ray> rays,

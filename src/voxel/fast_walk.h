@@ -22,6 +22,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "voxel/skip_jump.h"
 #include "voxel/voxel_world_access.h"
 
 namespace luxel::voxel::fast {
@@ -90,8 +91,11 @@ inline void startDeepInside(shared::VoxelWalk& w) {
 }
 
 // The shared kernel's voxelTraverse(jumps = true, reachCurrent = true) for an eligible ray
-// (finite, non-zero direction).
-inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, double tMax, int cap) {
+// (finite, non-zero direction). With kSkip, the walk begins with a jump to a camera tile's skip
+// plane (skip_jump.h, §4.6): the same result but for `steps`, which counts that jump as one.
+template <bool kSkip = false>
+inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, double tMax, int cap,
+                                   stream::Skip skip = {}) {
     shared::VoxelWalk w;
     w.o = toShared(ray.origin);
     w.d = toShared(ray.direction);
@@ -103,13 +107,20 @@ inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, doub
     } else if (!shared::voxelStart(w, tMax)) {
         return shared::voxelMiss(0, false);
     }
+    int steps = 0;
+    if constexpr (kSkip) {
+        if (skip.axis >= 0) {
+            const stream::SkipResult jumped = stream::jumpToPlane(w, skip, size, tMax);
+            if (jumped == stream::SkipResult::Missed) return shared::voxelMiss(1, false);
+            if (jumped == stream::SkipResult::Jumped) steps = 1;
+        }
+    }
 
     Axis x{w.o.x, w.d.x, w.inv.x, w.stp[0], size.x, w.cell.x, w.next[0]};
     Axis y{w.o.y, w.d.y, w.inv.y, w.stp[1], size.y, w.cell.y, w.next[1]};
     Axis z{w.o.z, w.d.z, w.inv.z, w.stp[2], size.z, w.cell.z, w.next[2]};
     double t = w.t;
     int axis = w.axis;
-    int steps = 0;
 
     // t <= tLimit: t is finite and within tMax.
     const double tLimit = std::min(tMax, std::numeric_limits<double>::max());

@@ -1,0 +1,145 @@
+// tileSkip: the frustum of a tile of camera rays walked slab by slab along its main axis, chunks
+// first, then bricks (docs/algorithms/voxel-traversal.md §4.6).
+#include "voxel/tile_frustum.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "voxel/cast_stream.h"
+
+namespace luxel::voxel::stream {
+
+namespace {
+
+// The tile's frustum: origin o, main axis m moved along in direction sgn, and on the other axes
+// the bounds [lo, hi] of the slopes d_a / |d_m| over the tile's rays. At distance u >= 0 in front
+// of the origin along m, every ray lies within o_a + u * [lo_a, hi_a].
+struct Frustum {
+    double o[3];
+    double lo[3], hi[3];
+    int m, sgn;
+};
+
+// The most cells (chunks or bricks) one slab may test: a tile too wide for that stops the walk.
+constexpr int kMaxSlabCells = 64;
+// Slopes beyond this (a ray nearly parallel to the main axis's planes) give no skip.
+constexpr double kMaxSlope = 1e6;
+
+// The voxels [first, last] on axis a that the rays can touch between distances u0 and u1 along
+// m, or false when they all lie outside the world there. The bounds are linear in u, so the ends
+// bound the slab. The margin covers the rounding of these bounds and of the walk's own boundary
+// t's, and the cells the walk visits where the ray touches their face (edge and corner ties).
+bool voxelRange(const Frustum& f, int a, double u0, double u1, int size, int& first, int& last) {
+    const double lo = f.o[a] + std::min(u0 * f.lo[a], u1 * f.lo[a]);
+    const double hi = f.o[a] + std::max(u0 * f.hi[a], u1 * f.hi[a]);
+    const double slope = std::max(std::abs(f.lo[a]), std::abs(f.hi[a]));
+    const double margin = 1e-3 + 1e-9 * (std::abs(f.o[a]) + u1 * (1.0 + slope));
+    const double from = lo - margin, to = hi + margin;
+    if (!(to >= 0.0) || !(from < size)) return false;
+    first = from <= 0.0 ? 0 : static_cast<int>(std::floor(from));
+    last = to >= size ? size - 1 : static_cast<int>(std::floor(to));
+    return true;
+}
+
+// Whether every cell of side 2^shift (a chunk or a brick) that the rays can touch in slab k along
+// m (the cells k << shift .. on m) is empty: `empty(cell index on each axis)` tests one.
+template <typename Empty>
+bool slabEmpty(const Frustum& f, const Int3& size, int shift, int k, Empty&& empty) {
+    const int m = f.m;
+    const double nearFace = k << shift;
+    const double farFace = std::min((k + 1) << shift, size[m]);
+    // Distances along m of the slab's faces in front of the origin (the slab may hold it).
+    const double uA = (f.sgn > 0 ? nearFace : farFace) - f.o[m];
+    const double uB = (f.sgn > 0 ? farFace : nearFace) - f.o[m];
+    const double u0 = std::max(0.0, uA * f.sgn), u1 = std::max(0.0, uB * f.sgn);
+    int first[3], last[3];
+    first[m] = last[m] = k;
+    int cells = 1;
+    for (int a = 0; a < 3; ++a) {
+        if (a == m) continue;
+        if (!voxelRange(f, a, u0, u1, size[a], first[a], last[a])) return true;
+        first[a] >>= shift;
+        last[a] >>= shift;
+        cells *= last[a] - first[a] + 1;
+    }
+    if (cells > kMaxSlabCells) return false;
+    for (int z = first[2]; z <= last[2]; ++z) {
+        for (int y = first[1]; y <= last[1]; ++y) {
+            for (int x = first[0]; x <= last[0]; ++x) {
+                if (!empty(x, y, z)) return false;
+            }
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
+    if (tile.empty() || !world.emptySpaceCurrent()) return {};
+    const Ray& first = tile.front();
+    if (!finiteRay(first) || startsInside(world, first)) return {};
+    Frustum f;
+    const Vec3d& d0 = first.direction;
+    f.m = std::abs(d0.x) >= std::abs(d0.y) && std::abs(d0.x) >= std::abs(d0.z)
+              ? 0
+              : (std::abs(d0.y) >= std::abs(d0.z) ? 1 : 2);
+    f.sgn = d0[f.m] > 0.0 ? 1 : -1;
+    for (int a = 0; a < 3; ++a) {
+        f.o[a] = first.origin[a];
+        f.lo[a] = kInfinity;
+        f.hi[a] = -kInfinity;
+    }
+    for (const Ray& r : tile) {
+        if (!(r.origin == first.origin) || !finiteRay(r)) return {};
+        const double dm = r.direction[f.m];
+        if (!(dm * f.sgn > 0.0)) return {};
+        for (int a = 0; a < 3; ++a) {
+            if (a == f.m) continue;
+            const double slope = r.direction[a] / std::abs(dm);
+            if (!(std::abs(slope) <= kMaxSlope)) return {};
+            f.lo[a] = std::min(f.lo[a], slope);
+            f.hi[a] = std::max(f.hi[a], slope);
+        }
+    }
+
+    const Int3 size = world.size();
+    const int m = f.m, sizeM = size[m];
+    const double om = f.o[m];
+    // The rays never meet the world's span on m.
+    if (f.sgn > 0 ? om >= sizeM : om <= 0.0) return {};
+    const int chunkShift = std::countr_zero(static_cast<unsigned>(world.chunkSize()));
+    constexpr int kBrickShift = VoxelWorld::kBrickShift;
+    const int chunksM = world.chunkCount()[m];
+    const int bricksM = world.brickCount()[m];
+    const auto chunkEmpty = [&](int x, int y, int z) {
+        return world.chunkSolidCount(x, y, z) == 0;
+    };
+    const auto brickEmpty = [&](int x, int y, int z) { return world.brickMask(x, y, z) == 0; };
+    // The slab holding the origin, or the world's near face (slabs in front of the origin only).
+    const int originCell = static_cast<int>(std::floor(std::clamp(om, 0.0, sizeM - 0.5)));
+    const int firstBrick = originCell >> kBrickShift;
+    int plane = f.sgn > 0 ? sizeM : 0;  // no solid cell before the world's far face
+    bool found = false;
+    for (int kc = originCell >> chunkShift; !found && kc >= 0 && kc < chunksM; kc += f.sgn) {
+        if (slabEmpty(f, size, chunkShift, kc, chunkEmpty)) continue;
+        // Some chunk there holds a solid voxel: the bricks of this chunk slab, in travel order.
+        const int perChunk = 1 << (chunkShift - kBrickShift);
+        int kb = f.sgn > 0 ? kc * perChunk : std::min((kc + 1) * perChunk, bricksM) - 1;
+        const int kbEnd = f.sgn > 0 ? std::min((kc + 1) * perChunk, bricksM) : kc * perChunk - 1;
+        if (f.sgn > 0 ? kb < firstBrick : kb > firstBrick) kb = firstBrick;
+        for (; kb != kbEnd; kb += f.sgn) {
+            if (slabEmpty(f, size, kBrickShift, kb, brickEmpty)) continue;
+            // The near face of the first slab that may hold a solid voxel.
+            plane = f.sgn > 0 ? kb << kBrickShift : std::min((kb + 1) << kBrickShift, sizeM);
+            found = true;
+            break;
+        }
+    }
+    // No plane in front of where the rays enter the world's span on m: nothing to skip.
+    if (f.sgn > 0 ? plane <= std::max(om, 0.0) : plane >= std::min(om, double(sizeM))) return {};
+    return {m, plane};
+}
+
+}  // namespace luxel::voxel::stream

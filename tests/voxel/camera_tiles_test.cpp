@@ -1,0 +1,241 @@
+// castCameraRays (the tile frustum skip, docs/algorithms/voxel-traversal.md §4.6) against castRay,
+// ray by ray and field by field (all but `steps`, which counts the skipping walk's own
+// iterations): tiles of camera rays from above, grazing, from far away, from every side, straddling
+// the world's edges, parallel to the axes with signed zeros, in row and square tile order, with
+// tMax cutting rays short; and the skip's frustum walk against a brute-force check of the cells
+// the tile's rays visit before its plane.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <random>
+#include <span>
+#include <vector>
+
+#include "luxel/voxel/camera.h"
+#include "luxel/voxel/dda.h"
+#include "terrain_with_blocks.h"
+#include "voxel/tile_frustum.h"
+
+namespace luxel::voxel {
+namespace {
+
+// Terrain in the lower half with blocks floating over it: empty space above, dense bricks below.
+// Sides that are not multiples of the brick or the chunk.
+VoxelWorld world() {
+    return terrainWithBlocks({150, 90, 134}, 21, 80, 0.03, 50);
+}
+
+struct Totals {
+    long rays = 0, hits = 0, skippedSteps = 0, castRaySteps = 0;
+};
+
+// castCameraRays on `rays` equals castRay on each, every field but `steps`.
+Totals expectSameAsCastRay(const VoxelWorld& w, const std::vector<Ray>& rays,
+                           double tMax = kInfinity, int stepCap = 0) {
+    std::vector<Hit> hits(rays.size());
+    castCameraRays(w, rays, hits, tMax, stepCap);
+    Totals totals;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const Hit reference = castRay(w, rays[i], tMax, stepCap);
+        const Hit& mine = hits[i];
+        EXPECT_EQ(mine.hit, reference.hit) << "ray " << i;
+        EXPECT_EQ(mine.capped, reference.capped) << "ray " << i;
+        EXPECT_EQ(mine.voxel, reference.voxel) << "ray " << i;
+        EXPECT_EQ(mine.normal, reference.normal) << "ray " << i;
+        // Bitwise: +inf on a miss on both sides, and the same double on a hit.
+        EXPECT_EQ(std::memcmp(&mine.t, &reference.t, sizeof(double)), 0) << "ray " << i;
+        EXPECT_EQ(mine.point, reference.point) << "ray " << i;
+        EXPECT_EQ(mine.u, reference.u) << "ray " << i;
+        EXPECT_EQ(mine.v, reference.v) << "ray " << i;
+        ++totals.rays;
+        totals.hits += reference.hit;
+        totals.skippedSteps += mine.steps;
+        totals.castRaySteps += reference.steps;
+    }
+    return totals;
+}
+
+// A camera's rays in image rows, or in 8x8 squares of pixels (tile after tile).
+std::vector<Ray> cameraRays(const Camera& camera, bool squares) {
+    std::vector<Ray> rays;
+    const int w = camera.width(), h = camera.height();
+    if (!squares) {
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) rays.push_back(camera.primaryRay(x, y));
+        return rays;
+    }
+    for (int ty = 0; ty < h; ty += 8)
+        for (int tx = 0; tx < w; tx += 8)
+            for (int y = ty; y < std::min(ty + 8, h); ++y)
+                for (int x = tx; x < std::min(tx + 8, w); ++x)
+                    rays.push_back(camera.primaryRay(x, y));
+    return rays;
+}
+
+Totals expectCamera(const VoxelWorld& w, const Camera& camera, double tMax = kInfinity) {
+    Totals all;
+    for (const bool squares : {false, true}) {
+        const Totals t = expectSameAsCastRay(w, cameraRays(camera, squares), tMax);
+        all.rays += t.rays;
+        all.hits += t.hits;
+        all.skippedSteps += t.skippedSteps;
+        all.castRaySteps += t.castRaySteps;
+    }
+    return all;
+}
+
+TEST(VoxelCameraTiles, FromAboveLookingDownSkipsAndMatchesCastRay) {
+    const VoxelWorld w = world();
+    const Totals t =
+        expectCamera(w, Camera::lookAt({75, 140, -30}, {75, 30, 90}, 60, 96, 64).value());
+    EXPECT_GT(t.hits, t.rays / 3);
+    // The skip took iterations off the walk (without it the two counts are equal).
+    EXPECT_LT(t.skippedSteps, t.castRaySteps);
+    // Straight down, the centre column parallel to y.
+    expectCamera(w, Camera::create({75.5, 200, 67.5}, 0, -90, 50, 40, 40).value());
+    expectCamera(w, Camera::create({20.25, 91, 30.75}, 30, -70, 80, 70, 33).value());
+}
+
+TEST(VoxelCameraTiles, GrazingFarAndFromEverySide) {
+    const VoxelWorld w = world();
+    // Grazing: just above the terrain's top, looking along it from outside.
+    expectCamera(w, Camera::create({75, 62, -5}, 0, -1, 40, 80, 30).value());
+    expectCamera(w, Camera::create({-3, 55, 60}, 90, 0, 60, 64, 48).value());
+    // Far away (the world a few pixels wide in a corner of the image).
+    expectCamera(w, Camera::lookAt({2e5, 7e4, -1.3e5}, {80, 40, 60}, 0.05, 48, 40).value());
+    expectCamera(w, Camera::lookAt({-4000, 3000, 9000}, {75, 45, 67}, 2, 50, 50).value());
+    // From every side, the world's edges and corners inside tiles (rays that miss next to rays
+    // that hit), and from below.
+    const Vec3d centre{75, 45, 67};
+    const Vec3d from[] = {{300, 60, 67},  {-150, 100, 67}, {75, 45, 400},   {75, 80, -200},
+                          {75, -120, 67}, {260, 200, 250}, {-90, -60, -80}, {150, 90, 134},
+                          {75, 90, 67},   {0, 45, -0.0}};
+    for (const Vec3d& p : from) {
+        SCOPED_TRACE(testing::Message() << "camera at " << p.x << ", " << p.y << ", " << p.z);
+        expectCamera(w, Camera::lookAt(p, centre + Vec3d{3.3, -2.1, 1.7}, 75, 72, 56).value());
+    }
+}
+
+TEST(VoxelCameraTiles, TMaxEndsRaysBeforeAndAfterThePlane) {
+    const VoxelWorld w = world();
+    const Camera camera = Camera::lookAt({75, 140, -30}, {75, 30, 90}, 60, 64, 40).value();
+    for (const double tMax : {0.0, 40.0, 95.0, 110.0, 130.0, 160.0}) {
+        SCOPED_TRACE(testing::Message() << "tMax " << tMax);
+        expectCamera(w, camera, tMax);
+    }
+    // A step cap below sx + sy + sz: castRayBatch, steps and capping included.
+    const std::vector<Ray> rays = cameraRays(camera, true);
+    std::vector<Hit> hits(rays.size());
+    castCameraRays(w, rays, hits, kInfinity, 9);
+    int capped = 0;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+        const Hit reference = castRay(w, rays[i], kInfinity, 9);
+        ASSERT_EQ(hits[i].hit, reference.hit) << "ray " << i;
+        EXPECT_EQ(hits[i].capped, reference.capped) << "ray " << i;
+        EXPECT_EQ(hits[i].steps, reference.steps) << "ray " << i;
+        EXPECT_EQ(hits[i].t, reference.t) << "ray " << i;
+        capped += reference.capped;
+    }
+    EXPECT_GT(capped, 100);
+}
+
+// Hand-made tiles: directions parallel to the axes with signed zeros, exact dyadic slopes that put
+// rays on brick and cell boundaries (ties at edges and corners inside the skipped slabs), origins
+// on the world's faces and on brick planes, tiles with a ray that is not from the common origin.
+TEST(VoxelCameraTiles, AxisParallelSignedZerosAndTies) {
+    const VoxelWorld w = world();
+    std::vector<Ray> rays;
+    const auto tile = [&](Vec3d origin, auto&& direction) {
+        for (std::size_t k = 0; k < kCameraTileRays; ++k)
+            rays.push_back({origin, direction(static_cast<int>(k))});
+    };
+    const double zeros[] = {0.0, -0.0};
+    for (const double z0 : zeros) {
+        for (const double z1 : zeros) {
+            tile({40, 100, 40}, [&](int) { return Vec3d{z0, -1.0, z1}; });
+            tile({40, 90, 40}, [&](int) { return Vec3d{z0, -2.0, z1}; });  // on the top face
+            tile({40.5, 120, -0.0}, [&](int k) { return Vec3d{k % 2 ? z0 : 0.25, -1.0, z1}; });
+            tile({-10, 60, 20}, [&](int k) { return Vec3d{1.0, z0, k % 3 ? z1 : -0.5}; });
+            tile({160, 48, 134}, [&](int k) { return Vec3d{-1.0, (k % 4) * -0.125, z1}; });
+        }
+    }
+    // Dyadic slopes from origins on brick and cell planes: boundary t's tie exactly.
+    for (int k = 0; k < 8; ++k) {
+        tile({32.0 + k, 96.0, 16.0 + 0.5 * k}, [&](int j) {
+            return Vec3d{0.25 * ((j % 9) - 4), -1.0, 0.125 * ((j / 9) - 3)};
+        });
+        tile({-8.0, 64.0 + k, 24.0}, [&](int j) {
+            return Vec3d{1.0, -0.25 * (j % 5), 0.5 * ((j / 5) % 5) - 1.0};
+        });
+    }
+    // A tile with one ray from elsewhere (no skip for it), and a short last tile.
+    tile({50, 130, 50}, [&](int j) { return Vec3d{0.01 * j, -1.0, 0.02}; });
+    rays[rays.size() - 5].origin.x += 1e-9;
+    for (int j = 0; j < 17; ++j) rays.push_back({{70, 110, 60}, {-0.03 * j, -1.0, 0.01 * j}});
+    const Totals t = expectSameAsCastRay(w, rays);
+    EXPECT_GT(t.hits, static_cast<long>(rays.size()) / 3);
+    EXPECT_LT(t.skippedSteps, t.castRaySteps);
+    for (const double tMax : {10.0, 45.0, 50.0}) expectSameAsCastRay(w, rays, tMax);
+}
+
+// Many random cameras around the world, at random distances, looking at random points.
+TEST(VoxelCameraTiles, RandomCameras) {
+    const VoxelWorld w = world();
+    std::mt19937_64 rng(31);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    Totals all;
+    for (int i = 0; i < 40; ++i) {
+        Vec3d position;
+        do {
+            for (int a = 0; a < 3; ++a) position[a] = -200.0 + unit(rng) * 550.0;
+        } while (position.x >= 0 && position.y >= 0 && position.z >= 0 && position.x < 150 &&
+                 position.y < 90 && position.z < 134);
+        const Vec3d target{unit(rng) * 150, unit(rng) * 90, unit(rng) * 134};
+        const double fov = 5.0 + unit(rng) * 100.0;
+        const Totals t = expectCamera(w, Camera::lookAt(position, target, fov, 40, 30).value());
+        all.rays += t.rays;
+        all.hits += t.hits;
+        all.skippedSteps += t.skippedSteps;
+        all.castRaySteps += t.castRaySteps;
+    }
+    EXPECT_GT(all.hits, all.rays / 4);
+    EXPECT_LT(all.skippedSteps, all.castRaySteps);
+}
+
+// The frustum walk alone: every cell that castRay's per-voxel loop (no jumps) visits before the
+// tile's plane is empty, for tiles that got a plane.
+TEST(VoxelCameraTiles, NoRayOfATileVisitsASolidCellBeforeItsPlane) {
+    const VoxelWorld w = world();
+    std::mt19937_64 rng(8);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int planes = 0;
+    for (int i = 0; i < 30; ++i) {
+        const Vec3d position{-100 + unit(rng) * 350, 95 + unit(rng) * 100, -100 + unit(rng) * 330};
+        const Vec3d target{unit(rng) * 150, unit(rng) * 60, unit(rng) * 134};
+        const std::vector<Ray> rays =
+            cameraRays(Camera::lookAt(position, target, 20 + unit(rng) * 60, 32, 16).value(), true);
+        for (std::size_t first = 0; first < rays.size(); first += kCameraTileRays) {
+            const std::span<const Ray> tile(rays.data() + first, kCameraTileRays);
+            const stream::Skip skip = stream::tileSkip(w, tile);
+            if (skip.axis < 0) continue;
+            ++planes;
+            for (const Ray& r : tile) {
+                // The loop without jumps reports the first solid cell: before the plane, none.
+                const Hit hit = castRay(w, r, kInfinity, 0, ChunkSkip::Disabled);
+                if (!hit.hit) continue;
+                const int c = hit.voxel[skip.axis];
+                if (r.direction[skip.axis] > 0) {
+                    EXPECT_GE(c, skip.plane);
+                } else {
+                    EXPECT_LT(c, skip.plane);
+                }
+            }
+        }
+    }
+    EXPECT_GT(planes, 100);
+}
+
+}  // namespace
+}  // namespace luxel::voxel
