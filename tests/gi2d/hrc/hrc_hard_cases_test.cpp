@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 
+#include "gi2d/medium_from_json.h"
 #include "luxel/core/parallel.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rasterize.h"
@@ -22,13 +23,7 @@
 namespace luxel::gi2d {
 namespace {
 
-Medium2D mediumFrom(const std::string& json, int size) {
-    auto scene = parseScene2D(json, "test", ".");
-    EXPECT_TRUE(scene.ok()) << scene.error().message();
-    auto medium = rasterize(*scene, {size, size, 16});
-    EXPECT_TRUE(medium.ok()) << medium.error().message();
-    return std::move(medium).value();
-}
+using testing_support::mediumFrom;
 
 double luminance(const Image& image, int x, int y) {
     const Rgb c = image.rgb(x, y);

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 
+#include "gi2d/medium_from_json.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/rasterize.h"
 #include "luxel/gi2d/reference_solver.h"
@@ -20,13 +21,7 @@
 namespace luxel::gi2d::hrc {
 namespace {
 
-Medium2D mediumFrom(const std::string& json, int size) {
-    auto scene = parseScene2D(json, "test", ".");
-    EXPECT_TRUE(scene.ok()) << scene.error().message();
-    auto medium = rasterize(*scene, {size, size, 16});
-    EXPECT_TRUE(medium.ok()) << medium.error().message();
-    return std::move(medium).value();
-}
+using testing_support::mediumFrom;
 
 // Two lamps in fog, dense-fog.json's optical depth per pixel unless `fog` says otherwise.
 std::string lampsInFog(double fog) {
