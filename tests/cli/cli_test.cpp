@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "luxel/core/image_io.h"
@@ -366,6 +367,28 @@ TEST_F(Cli, BenchesVoxelScenes) {
     r = runLuxel("bench " + scene + " --backend gpu --sizes 64x36 --repeat 1");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("dispatch ms"), std::string::npos) << r.output;
+}
+
+// The HRC bench times the exact near field in its own column: zero in vacuum, the gather's time
+// in fog dense enough to bound the rays (HRC §12.3).
+TEST_F(Cli, BenchShowsTheNearFieldWhereItActs) {
+    const auto nearColumn = [](const std::string& output, const std::string& size) {
+        std::istringstream table(output.substr(output.find("\n" + size + " ") + 1));
+        std::string label;
+        double value = -1;
+        table >> label;
+        for (int column = 0; column < 8; ++column) table >> value;  // ms .. finish, then near
+        return value;
+    };
+    const std::string fog = std::string(LUXEL_SOURCE_DIR) + "/scenes/2d/hard/dense-fog.json";
+    RunResult r = runLuxel("bench " + fog + " --backend cpu --sizes 64 --repeat 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    ASSERT_NE(r.output.find("      near "), std::string::npos) << r.output;
+    EXPECT_GT(nearColumn(r.output, "    64x64"), 0.0) << r.output;
+    const std::string room = std::string(LUXEL_SOURCE_DIR) + "/scenes/2d/room.json";
+    r = runLuxel("bench " + room + " --backend cpu --sizes 64 --repeat 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(nearColumn(r.output, "    64x64"), 0.0) << r.output;
 }
 
 TEST_F(Cli, HrcRendersAndRefusesSizesThatDoNotFit) {
