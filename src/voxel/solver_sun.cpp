@@ -28,7 +28,8 @@ float mediumEntryTransmission(const Material& m, Int3 normal, Vec3d direction,
                               const ShadeOptions& shading) {
     const float transmission = shading.refraction ? m.transmission : 0.0f;
     const float dielectric = 1.0f - m.metallic;
-    // (1 - F) is finite and not negative, so either factor 0 gives pathBsdf's +0.
+    // (1 - F) is finite and not negative (for a finite direction), so either factor 0 gives
+    // pathBsdf's +0.
     if (transmission == 0.0f || dielectric == 0.0f) return 0.0f;
     const double cosView = std::clamp(
         dot(Vec3d{double(normal.x), double(normal.y), double(normal.z)}, -direction), 0.0, 1.0);
@@ -269,8 +270,8 @@ namespace {
 
 // The sun's disk, kept per thread for the last sun asked for: sunDiskAlong is asked at every
 // delta lobe's escape to the sky, and making the disk (a square root, a division and a sine) each
-// time was about half a percent of the glass scene's frame (docs/performance.md "Glass entries'
-// transmission alone"). Compared bit for bit, so it is the disk SunDisk::make gives.
+// time was about a third of a percent of the glass scene's frame (docs/performance.md "Glass
+// entries' transmission alone"). Compared bit for bit, so it is the disk SunDisk::make gives.
 const SunDisk& keptSunDisk(const ShadeOptions& shading) {
     struct Kept {
         Vec3 direction{};
