@@ -79,7 +79,7 @@ bool slabEmpty(const Frustum& f, const Int3& size, int shift, int k, Empty&& emp
 Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
     if (tile.empty() || !world.emptySpaceCurrent()) return {};
     const Ray& first = tile.front();
-    if (!finiteRay(first) || startsInside(world, first)) return {};
+    if (!finiteRay(first)) return {};
     Frustum f;
     const Vec3d& d0 = first.direction;
     f.m = std::abs(d0.x) >= std::abs(d0.y) && std::abs(d0.x) >= std::abs(d0.z)
@@ -118,6 +118,8 @@ Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
     };
     const auto brickEmpty = [&](int x, int y, int z) { return world.brickMask(x, y, z) == 0; };
     // The slab holding the origin, or the world's near face (slabs in front of the origin only).
+    // From an origin inside the world the first slab's box begins at the origin's point, so a
+    // solid voxel in the origin's own brick ends the walk at a plane behind it: no skip.
     const int originCell = static_cast<int>(std::floor(std::clamp(om, 0.0, sizeM - 0.5)));
     const int firstBrick = originCell >> kBrickShift;
     int plane = f.sgn > 0 ? sizeM : 0;  // no solid cell before the world's far face
