@@ -1,5 +1,5 @@
 // tileSkip: the frustum of a tile of camera rays walked slab by slab along its main axis, chunks
-// first, then bricks (docs/algorithms/voxel-traversal.md §4.6).
+// first, then bricks, then cells (docs/algorithms/voxel-traversal.md §4.6).
 #include "voxel/tile_frustum.h"
 
 #include <algorithm>
@@ -42,7 +42,7 @@ bool voxelRange(const Frustum& f, int a, double u0, double u1, int size, int& fi
     return true;
 }
 
-// Whether every cell of side 2^shift (a chunk or a brick) that the rays can touch in slab k along
+// Whether every cell of side 2^shift (a chunk, a brick or a voxel) that the rays can touch in slab k along
 // m (the cells k << shift .. on m) is empty: `empty(cell index on each axis)` tests one.
 template <typename Empty>
 bool slabEmpty(const Frustum& f, const Int3& size, int shift, int k, Empty&& empty) {
