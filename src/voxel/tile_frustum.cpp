@@ -42,8 +42,8 @@ bool voxelRange(const Frustum& f, int a, double u0, double u1, int size, int& fi
     return true;
 }
 
-// Whether every cell of side 2^shift (a chunk, a brick or a voxel) that the rays can touch in slab k along
-// m (the cells k << shift .. on m) is empty: `empty(cell index on each axis)` tests one.
+// Whether every cell of side 2^shift (a chunk, a brick or a voxel) that the rays can touch in slab
+// k along m (the cells k << shift .. on m) is empty: `empty(cell index on each axis)` tests one.
 template <typename Empty>
 bool slabEmpty(const Frustum& f, const Int3& size, int shift, int k, Empty&& empty) {
     const int m = f.m;
