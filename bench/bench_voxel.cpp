@@ -222,7 +222,7 @@ void voxelPrimary(benchmark::State& state, Cam cam) {
     state.counters["batch_steps/ray"] =
         batchSteps / std::max<double>(1.0, static_cast<double>(v.primary.size()));
     // The same rays through castRayBatch's SIMD lanes, no tile skip: the lanes against the
-    // one-ray loop (the scalar column) on camera rays (voxel-traversal.md §4.6).
+    // one-ray loop (the scalar column) on camera rays (docs/algorithms/voxel-traversal.md §4.6).
     long found = 0;
     const double t0 = threadSeconds();
     for (benchmark::IterationCount i = 0; i < state.iterations(); ++i)
