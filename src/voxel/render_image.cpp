@@ -110,9 +110,9 @@ Image render(const VoxelWorld& world, const Camera& camera, const ShadeOptions& 
     const PreparedShading prepared(world, textures, options);
     const ShadeOptions& resolved = prepared.options();
     Image image(camera.width(), camera.height(), 3);
-    // Camera rays cast a row at a time where that paid (§4.6 "Picture path"): one sample per
-    // pixel, from a camera inside the world (terrain's picture 11% less CPU; cottage's, from
-    // outside, 2% more).
+    // Camera rays cast a row at a time where that paid (docs/algorithms/voxel-traversal.md §4.6,
+    // "The picture path"): one sample per pixel, from a camera inside the world (terrain's
+    // picture about 10% less CPU; cottage's, from outside, 2% more).
     const Vec3d p = camera.position();
     const Int3 size = world.size();
     const bool rows = samplesPerPixel(resolved) == 1 && p.x >= 0.0 && p.y >= 0.0 && p.z >= 0.0 &&
