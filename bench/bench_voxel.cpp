@@ -221,6 +221,16 @@ void voxelPrimary(benchmark::State& state, Cam cam) {
     luxelCamera(s.world, v.primary, &batchSteps);
     state.counters["batch_steps/ray"] =
         batchSteps / std::max<double>(1.0, static_cast<double>(v.primary.size()));
+    // The same rays through castRayBatch's SIMD lanes, no tile skip: the lanes against the
+    // one-ray loop (the scalar column) on camera rays (docs/algorithms/voxel-traversal.md §4.6).
+    long found = 0;
+    const double t0 = threadSeconds();
+    for (benchmark::IterationCount i = 0; i < state.iterations(); ++i)
+        found += luxelNearest(s.world, v.primary);
+    const double lanesSeconds = threadSeconds() - t0;
+    benchmark::DoNotOptimize(found);
+    state.counters["lanes_Mrays/cpu_s"] =
+        1e-6 * static_cast<double>(v.primary.size()) * state.iterations() / lanesSeconds;
 }
 
 void voxelShadow(benchmark::State& state, Cam cam) {

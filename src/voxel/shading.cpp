@@ -77,9 +77,9 @@ struct Sample {
 };
 
 Sample sample(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
-              const RayCone& cone, const ShadeOptions& options) {
+              const RayCone& cone, const ShadeOptions& options, const Hit* cast = nullptr) {
     Sample s;
-    s.surface = castToSurface(world, textures, ray, options.stepCap);
+    s.surface = castToSurface(world, textures, ray, options.stepCap, kInfinity, cast);
     // A capped ray (world larger than the cap allows) reads as sky rather than the Unity tracer's
     // yellow.
     if (!s.surface.hit.hit) {
@@ -186,7 +186,8 @@ Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const RayCone& rayCone,
         // The Unity tracer's loop: hit k (1-based) adds colour / k, then the sum is scaled by k /
         // (k + 1).
         for (int k = 1; k <= bounces + 1; ++k) {
-            const Sample s = sample(world, textures, current, cone, options);
+            const Sample s = sample(world, textures, current, cone, options,
+                                    k == 1 ? raySample.primary : nullptr);
             if (k == 1) {
                 sum = s.colour;
             } else {
@@ -200,7 +201,8 @@ Rgb shadeRay(const VoxelWorld& world, const Ray& ray, const RayCone& rayCone,
     }
     float weight = 1.0f;
     for (int k = 0; k <= bounces; ++k) {
-        const Sample s = sample(world, textures, current, cone, options);
+        const Sample s =
+            sample(world, textures, current, cone, options, k == 0 ? raySample.primary : nullptr);
         if (!s.reflects || k == bounces) {
             sum += s.colour * weight;
             break;

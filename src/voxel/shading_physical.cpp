@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "gpu/shaders/shared/face_frame.h"
 #include "gpu/shaders/shared/sky_ambient.h"
@@ -209,6 +210,7 @@ Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
     // pops them (voxel_physical.glsl draws the same).
     PathRng rng(LUXEL_SKY_AMBIENT_SEED, raySample.pixel, raySample.sample);
     const bool traceAmbient = o.skyAmbientRays > 0;
+    const Hit* primaryCast = raySample.primary;
     while (stack.size > 0) {
         const PathRay r = stack.rays[--stack.size];
         if (r.inside) {
@@ -220,7 +222,10 @@ Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
             leaveMedium(r, exit, m, r.weight * tint, o, stack);
             continue;
         }
-        const SurfaceHit s = castToSurface(world, textures, {r.origin, r.direction}, o.stepCap);
+        // The camera ray's cast may be made already (RaySample::primary): the first ray popped.
+        const Hit* cast = std::exchange(primaryCast, nullptr);
+        const SurfaceHit s =
+            castToSurface(world, textures, {r.origin, r.direction}, o.stepCap, kInfinity, cast);
         if (!s.hit.hit) {
             sum += r.weight * skyColor(r.direction, o);
             continue;

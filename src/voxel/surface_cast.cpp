@@ -17,7 +17,7 @@ Ray continueThroughVoxel(const Ray& ray, const Hit& hit) {
 }
 
 SurfaceHit castToSurface(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
-                         int stepCap, double tMax) {
+                         int stepCap, double tMax, const Hit* cast) {
     // The first cast made straight into the result, the ray read where the caller keeps it:
     // copying the ray in and the hit out read each with wider loads than they had been stored
     // with, and those stalls were a few percent of the radiance cascades' picture
@@ -25,7 +25,11 @@ SurfaceHit castToSurface(const VoxelWorld& world, const TextureSet* textures, co
     // hit is made in place over the default one: an aggregate initialiser with the cast in it
     // cleared the whole result with `rep stos` before the cast filled it in.
     SurfaceHit s;
-    new (&s.hit) Hit(castRay(world, ray, tMax, stepCap));
+    if (cast) {
+        s.hit = *cast;
+    } else {
+        new (&s.hit) Hit(castRay(world, ray, tMax, stepCap));
+    }
     double tOffset = 0.0;  // t along `ray` of the cast's origin
     for (;;) {
         if (!s.hit.hit) return s;

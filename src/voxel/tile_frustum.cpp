@@ -1,5 +1,5 @@
 // tileSkip: the frustum of a tile of camera rays walked slab by slab along its main axis, chunks
-// first, then bricks (docs/algorithms/voxel-traversal.md §4.6).
+// first, then bricks, then cells (docs/algorithms/voxel-traversal.md §4.6).
 #include "voxel/tile_frustum.h"
 
 #include <algorithm>
@@ -42,8 +42,8 @@ bool voxelRange(const Frustum& f, int a, double u0, double u1, int size, int& fi
     return true;
 }
 
-// Whether every cell of side 2^shift (a chunk or a brick) that the rays can touch in slab k along
-// m (the cells k << shift .. on m) is empty: `empty(cell index on each axis)` tests one.
+// Whether every cell of side 2^shift (a chunk, a brick or a voxel) that the rays can touch in slab
+// k along m (the cells k << shift .. on m) is empty: `empty(cell index on each axis)` tests one.
 template <typename Empty>
 bool slabEmpty(const Frustum& f, const Int3& size, int shift, int k, Empty&& empty) {
     const int m = f.m;
@@ -79,7 +79,7 @@ bool slabEmpty(const Frustum& f, const Int3& size, int shift, int k, Empty&& emp
 Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
     if (tile.empty() || !world.emptySpaceCurrent()) return {};
     const Ray& first = tile.front();
-    if (!finiteRay(first) || startsInside(world, first)) return {};
+    if (!finiteRay(first)) return {};
     Frustum f;
     const Vec3d& d0 = first.direction;
     f.m = std::abs(d0.x) >= std::abs(d0.y) && std::abs(d0.x) >= std::abs(d0.z)
@@ -117,7 +117,10 @@ Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
         return world.chunkSolidCount(x, y, z) == 0;
     };
     const auto brickEmpty = [&](int x, int y, int z) { return world.brickMask(x, y, z) == 0; };
+    const auto cellEmpty = [&](int x, int y, int z) { return !world.solid(x, y, z); };
     // The slab holding the origin, or the world's near face (slabs in front of the origin only).
+    // From an origin inside the world the first slab's box begins at the origin's point, so a
+    // solid voxel in the origin's own brick ends the walk at a plane behind it: no skip.
     const int originCell = static_cast<int>(std::floor(std::clamp(om, 0.0, sizeM - 0.5)));
     const int firstBrick = originCell >> kBrickShift;
     int plane = f.sgn > 0 ? sizeM : 0;  // no solid cell before the world's far face
@@ -129,12 +132,22 @@ Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
         int kb = f.sgn > 0 ? kc * perChunk : std::min((kc + 1) * perChunk, bricksM) - 1;
         const int kbEnd = f.sgn > 0 ? std::min((kc + 1) * perChunk, bricksM) : kc * perChunk - 1;
         if (f.sgn > 0 ? kb < firstBrick : kb > firstBrick) kb = firstBrick;
-        for (; kb != kbEnd; kb += f.sgn) {
+        for (; !found && kb != kbEnd; kb += f.sgn) {
             if (slabEmpty(f, size, kBrickShift, kb, brickEmpty)) continue;
-            // The near face of the first slab that may hold a solid voxel.
-            plane = f.sgn > 0 ? kb << kBrickShift : std::min((kb + 1) << kBrickShift, sizeM);
-            found = true;
-            break;
+            // Some brick there holds a solid voxel: the cell slabs of this brick slab, in travel
+            // order; the near face of the first that holds one in the box ends the walk. The
+            // cells' own boxes are tighter than the brick slab's: where all are empty, the walk
+            // goes on with the next brick slab.
+            int kv = f.sgn > 0 ? kb << kBrickShift : std::min((kb + 1) << kBrickShift, sizeM) - 1;
+            const int kvEnd =
+                f.sgn > 0 ? std::min((kb + 1) << kBrickShift, sizeM) : (kb << kBrickShift) - 1;
+            if (f.sgn > 0 ? kv < originCell : kv > originCell) kv = originCell;
+            for (; kv != kvEnd; kv += f.sgn) {
+                if (slabEmpty(f, size, 0, kv, cellEmpty)) continue;
+                plane = f.sgn > 0 ? kv : kv + 1;
+                found = true;
+                break;
+            }
         }
     }
     // No plane in front of where the rays enter the world's span on m: nothing to skip.

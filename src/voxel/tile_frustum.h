@@ -1,8 +1,8 @@
 // The tile frustum skip for camera rays (docs/algorithms/voxel-traversal.md §4.6): rays that share
-// an origin outside the world and come from one small screen tile form a thin frustum; walking it
-// once, slab by slab along its main axis, finds a plane before which no ray of the tile meets a
-// solid voxel. Each ray's exact walk then begins with one jump to that plane (skip_jump.h, taken
-// by fast::traverse<true>).
+// an origin (outside the world or inside it) and come from one small screen tile form a thin
+// frustum; walking it once, slab by slab along its main axis, finds a plane before which no ray
+// of the tile meets a solid voxel. Each ray's exact walk then begins with one jump to that plane
+// (skip_jump.h, taken by fast::traverse<true>).
 #pragma once
 
 #include <span>
@@ -19,7 +19,8 @@ struct Skip {
 };
 
 // The skip shared by every ray of `tile`, or none where the tile does not qualify: the rays
-// must share one origin outside the world, be finite, and move the same way along one axis.
+// must share one origin, be finite, and move the same way along one axis; from inside the world
+// the slabs are walked from the origin's own (§4.6 "From inside").
 // Conservative: every cell that any of the rays visits before the plane is empty.
 Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile);
 

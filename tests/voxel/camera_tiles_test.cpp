@@ -2,8 +2,10 @@
 // ray by ray and field by field (all but `steps`, which counts the skipping walk's own
 // iterations): tiles of camera rays from above, grazing, from far away, from every side, straddling
 // the world's edges, parallel to the axes with signed zeros, in row and square tile order, with
-// tMax cutting rays short; and the skip's frustum walk against a brute-force check of the cells
-// the tile's rays visit before its plane.
+// tMax cutting rays short; cameras inside the world (first-person over the ground, in a cave and
+// under overhangs, on cell, brick and chunk planes, near the world's faces, inside solid voxels);
+// and the skip's frustum walk against a brute-force check of the cells the tile's rays visit
+// before its plane.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -235,6 +237,178 @@ TEST(VoxelCameraTiles, NoRayOfATileVisitsASolidCellBeforeItsPlane) {
         }
     }
     EXPECT_GT(planes, 100);
+}
+
+// The lowest empty y above column (x, z)'s highest solid voxel.
+int groundY(const VoxelWorld& w, int x, int z) {
+    for (int y = w.size().y - 1; y >= 0; --y)
+        if (w.solid(x, y, z)) return y + 1;
+    return 0;
+}
+
+Totals add(Totals all, const Totals& t) {
+    all.rays += t.rays;
+    all.hits += t.hits;
+    all.skippedSteps += t.skippedSteps;
+    all.castRaySteps += t.castRaySteps;
+    return all;
+}
+
+// First-person cameras inside the world (§4.6 "From inside"): over the ground, grazing it, looking
+// along the axes and up into the blocks, the ground's own brick below the camera.
+TEST(VoxelCameraTiles, InsideTheWorldFirstPersonSkipsAndMatchesCastRay) {
+    const VoxelWorld w = world();
+    Totals all;
+    const int spots[][2] = {{75, 67}, {20, 110}, {130, 15}, {3, 3}, {146, 130}};
+    for (const auto& spot : spots) {
+        const double ground = groundY(w, spot[0], spot[1]);
+        for (const double above : {0.25, 2.5, 9.0}) {
+            const Vec3d p{spot[0] + 0.37, ground + above, spot[1] + 0.61};
+            if (p.y >= w.size().y) continue;
+            for (const double yaw : {0.0, 90.0, 180.0, 270.0, 37.0}) {
+                for (const double pitch : {0.0, -4.0, -30.0, 12.0}) {
+                    SCOPED_TRACE(testing::Message() << "camera at " << p.x << ", " << p.y << ", "
+                                                    << p.z << " yaw " << yaw << " pitch " << pitch);
+                    all = add(all,
+                              expectCamera(w, Camera::create(p, yaw, pitch, 70, 40, 24).value()));
+                }
+            }
+        }
+    }
+    EXPECT_GT(all.hits, all.rays / 3);
+    EXPECT_LT(all.skippedSteps, all.castRaySteps);
+    // Grazing: a hair above the ground, looking along it, and tMax ending rays before and after
+    // the plane.
+    const double g = groundY(w, 75, 67);
+    const Camera grazing = Camera::create({75.5, g + 1e-9, 67.5}, 10, -0.5, 50, 48, 32).value();
+    for (const double tMax : {kInfinity, 0.0, 3.0, 20.0, 60.0}) expectCamera(w, grazing, tMax);
+}
+
+// A cave under the ground and a roof of stone over the camera (overhangs), cameras on cell, brick
+// and chunk planes (integer, multiple of 4 and of 16 coordinates) looking along the axes (odd
+// image sizes: the centre ray parallel to an axis), and cameras near and on the world's faces.
+TEST(VoxelCameraTiles, InsideCavesOverhangsPlanesAndFaces) {
+    VoxelWorld w = world();
+    constexpr Voxel kStone{128, 128, 128, 255};
+    for (int x = 30; x < 90; ++x)
+        for (int y = 6; y < 19; ++y)
+            for (int z = 40; z < 100; ++z) w.set(x, y, z, Voxel{});
+    for (int x = 100; x < 140; ++x)
+        for (int z = 20; z < 60; ++z) w.set(x, 84, z, kStone);
+    w.refreshEmptySpace();
+    Totals all;
+    const Vec3d cameras[] = {{60.5, 12.5, 70.5},  {32.0, 8.0, 48.0},    {48.0, 16.0, 64.0},
+                             {44.0, 12.0, 99.0},  {120.25, 83.0, 40.0}, {120.0, 80.0, 32.0},
+                             {112.0, 64.0, 48.0}, {0.0, 70.0, 0.0},     {149.999, 88.5, 133.75},
+                             {0.0, 89.0, 67.0},   {75.0, 60.0, 0.0},    {1e-300, 75.0, 133.0}};
+    const double views[][2] = {{0, 0},   {90, 0}, {180, 0},   {270, 0}, {0, 90},
+                               {0, -90}, {45, 0}, {200, -20}, {315, 25}};
+    for (const Vec3d& p : cameras) {
+        for (const auto& v : views) {
+            SCOPED_TRACE(testing::Message() << "camera at " << p.x << ", " << p.y << ", " << p.z
+                                            << " yaw " << v[0] << " pitch " << v[1]);
+            all = add(all, expectCamera(w, Camera::create(p, v[0], v[1], 60, 33, 17).value()));
+        }
+    }
+    EXPECT_GT(all.hits, all.rays / 3);
+    EXPECT_LT(all.skippedSteps, all.castRaySteps);
+}
+
+// Hand-made tiles from inside: origins on cell and brick planes moving either way along axes with
+// signed zeros, origins inside a solid voxel and in a brick that holds one (no skip), and rays
+// that leave the world sideways before the plane.
+TEST(VoxelCameraTiles, InsideHandMadeTiles) {
+    const VoxelWorld w = world();
+    std::vector<Ray> rays;
+    const auto tile = [&](Vec3d origin, auto&& direction) {
+        for (std::size_t k = 0; k < kCameraTileRays; ++k)
+            rays.push_back({origin, direction(static_cast<int>(k))});
+    };
+    const double zeros[] = {0.0, -0.0};
+    for (const double z0 : zeros) {
+        for (const double z1 : zeros) {
+            tile({40, 80, 40}, [&](int) { return Vec3d{z0, -1.0, z1}; });
+            tile({40, 80, 40}, [&](int) { return Vec3d{z0, 1.0, z1}; });
+            tile({16, 64, 32}, [&](int k) { return Vec3d{-1.0, k % 2 ? z0 : -0.25, z1}; });
+            tile({16, 64, 32}, [&](int k) { return Vec3d{1.0, k % 2 ? z0 : -0.25, z1}; });
+            tile({0.0, 70, 60}, [&](int k) { return Vec3d{1.0, (k % 4) * -0.125, z1}; });
+            tile({150 - 1e-12, 70, 60}, [&](int k) { return Vec3d{-1.0, (k % 4) * -0.125, z0}; });
+        }
+    }
+    // Dyadic slopes from origins on brick and cell planes: boundary t's tie exactly.
+    for (int k = 0; k < 8; ++k) {
+        tile({32.0 + k, 80.0, 16.0 + 0.5 * k}, [&](int j) {
+            return Vec3d{0.25 * ((j % 9) - 4), -1.0, 0.125 * ((j / 9) - 3)};
+        });
+        tile({4.0, 64.0 + k, 24.0}, [&](int j) {
+            return Vec3d{1.0, -0.25 * (j % 5), 0.5 * ((j / 5) % 5) - 1.0};
+        });
+        tile({144.0, 60.0 + k, 128.0}, [&](int j) {
+            return Vec3d{-0.5 * (j % 3), -0.25 * (j % 5), 1.0 + 0.125 * (j / 15)};
+        });
+    }
+    // Inside a solid voxel, and just above the ground (its brick holds solid voxels).
+    const double g = groundY(w, 70, 70);
+    tile({70.5, g - 0.5, 70.5}, [&](int j) { return Vec3d{0.01 * j, -0.3, 1.0}; });
+    tile({70.5, g + 0.5, 70.5}, [&](int j) { return Vec3d{0.01 * j, -0.1, 1.0}; });
+    tile({70.5, g, 70.5}, [&](int j) { return Vec3d{1.0, -0.0, 0.02 * j - 0.6}; });
+    const Totals t = expectSameAsCastRay(w, rays);
+    EXPECT_GT(t.hits, static_cast<long>(rays.size()) / 3);
+    EXPECT_LT(t.skippedSteps, t.castRaySteps);
+    for (const double tMax : {1.0, 10.0, 45.0}) expectSameAsCastRay(w, rays, tMax);
+}
+
+// Random cameras anywhere inside the world (empty or solid cells), looking anywhere.
+TEST(VoxelCameraTiles, RandomCamerasInside) {
+    const VoxelWorld w = world();
+    std::mt19937_64 rng(47);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    Totals all;
+    for (int i = 0; i < 40; ++i) {
+        const Vec3d position{unit(rng) * 150, unit(rng) * 90, unit(rng) * 134};
+        const Vec3d target{unit(rng) * 150, unit(rng) * 90, unit(rng) * 134};
+        const double fov = 5.0 + unit(rng) * 100.0;
+        all = add(all, expectCamera(w, Camera::lookAt(position, target, fov, 40, 30).value()));
+    }
+    EXPECT_GT(all.hits, all.rays / 4);
+    EXPECT_LT(all.skippedSteps, all.castRaySteps);
+}
+
+// The frustum walk alone from inside: no ray of a tile meets a solid cell before its plane, and a
+// tile whose origin lies in a solid voxel gets no plane.
+TEST(VoxelCameraTiles, InsideNoRayOfATileVisitsASolidCellBeforeItsPlane) {
+    const VoxelWorld w = world();
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int planes = 0, solidOrigins = 0;
+    for (int i = 0; i < 60; ++i) {
+        const Vec3d position{unit(rng) * 150, unit(rng) * 90, unit(rng) * 134};
+        const Vec3d target{unit(rng) * 150, unit(rng) * 90, unit(rng) * 134};
+        const std::vector<Ray> rays =
+            cameraRays(Camera::lookAt(position, target, 20 + unit(rng) * 60, 32, 16).value(), true);
+        const bool inSolid = w.solid(static_cast<int>(position.x), static_cast<int>(position.y),
+                                     static_cast<int>(position.z));
+        solidOrigins += inSolid;
+        for (std::size_t first = 0; first < rays.size(); first += kCameraTileRays) {
+            const std::span<const Ray> tile(rays.data() + first, kCameraTileRays);
+            const stream::Skip skip = stream::tileSkip(w, tile);
+            if (skip.axis < 0) continue;
+            EXPECT_FALSE(inSolid);
+            ++planes;
+            for (const Ray& r : tile) {
+                const Hit hit = castRay(w, r, kInfinity, 0, ChunkSkip::Disabled);
+                if (!hit.hit) continue;
+                const int c = hit.voxel[skip.axis];
+                if (r.direction[skip.axis] > 0) {
+                    EXPECT_GE(c, skip.plane);
+                } else {
+                    EXPECT_LT(c, skip.plane);
+                }
+            }
+        }
+    }
+    EXPECT_GT(planes, 100);
+    EXPECT_GT(solidOrigins, 0);
 }
 
 }  // namespace

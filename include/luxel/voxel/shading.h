@@ -128,9 +128,13 @@ float textureFactor(const Hit& hit, const ShadeOptions& options);
 
 // The camera sample a ray stands for: its pixel (y * width + x) and sample index key the random
 // numbers of its sky ambient rays (ShadeOptions::skyAmbientRays), as the GPU renderer keys them.
+// `primary`, when given, is the ray's first cast made already (castRay's hit but for `steps`, from
+// castCameraRays, docs/algorithms/voxel-traversal.md §4.6), for the ray as the lighting model
+// casts it: as given for the Unity model, with its direction normalised for the physical one.
 struct RaySample {
     std::uint32_t pixel = 0;
     std::uint32_t sample = 0;
+    const Hit* primary = nullptr;
 };
 
 // Radiance along a ray (primary or not), with reflections per the options. `textures` gives the

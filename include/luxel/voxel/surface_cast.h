@@ -33,7 +33,9 @@ Ray continueThroughVoxel(const Ray& ray, const Hit& hit);
 // The first surface along the ray that is not a cutout. Voxels whose alpha selects a slot that
 // `textures` lacks (or any voxel when textures is null) are plain blocks. hit.t is measured
 // along the original ray (the continuations' t added up); surfaces past tMax are not met.
+// `cast`, when given, is castRay(world, ray, tMax, stepCap) made already (castCameraRays gives
+// it but for `steps`, docs/algorithms/voxel-traversal.md §4.6): the first cast is not made again.
 SurfaceHit castToSurface(const VoxelWorld& world, const TextureSet* textures, const Ray& ray,
-                         int stepCap = 0, double tMax = kInfinity);
+                         int stepCap = 0, double tMax = kInfinity, const Hit* cast = nullptr);
 
 }  // namespace luxel::voxel
