@@ -19,6 +19,7 @@ struct Solve2DArgs {
     std::optional<int> bounces;
     std::optional<int> tracedLevels;
     std::optional<bool> crossBlur;
+    std::optional<bool> nearField;  // HRC's exact near field where the medium bounds the rays
     std::optional<std::string> merge;
     std::optional<int> probeSpacing, baseRays, maxCascades, jitters;
     std::optional<double> baseInterval;

@@ -1,4 +1,6 @@
 """2D scenes and media: JSON in and out, rasterisation, numpy views of the medium, every solver."""
+import os
+
 import numpy as np
 import pytest
 
@@ -112,3 +114,15 @@ def test_load_shipped_scene(source_dir):
     assert fluence.shape == (64, 64, 3)
     # The light (left) is brighter than the shadow behind the occluder (right of it).
     assert fluence[32, 17].mean() > 10 * fluence[30, 45].mean()
+
+
+def test_hrc_near_field_gathers_in_dense_fog_only(source_dir):
+    fog = luxel.load_scene(os.path.join(source_dir, "scenes/2d/hard/dense-fog.json"))
+    args = dict(solver="hrc", width=64, height=64, backend="cpu")
+    gathered, plain = luxel.render(fog, **args), luxel.render(fog, near_field=False, **args)
+    assert not np.array_equal(gathered, plain)
+    room = luxel.load_scene(os.path.join(source_dir, "scenes/2d/room.json"))
+    assert np.array_equal(luxel.render(room, **args), luxel.render(room, near_field=False, **args))
+    with pytest.raises(luxel.Error, match="near_field applies to solver='hrc'"):
+        luxel.render(room, solver="reference", near_field=False, width=16, height=16)
+
