@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <random>
 #include <span>
 #include <vector>
@@ -32,6 +33,14 @@ VoxelWorld world() {
 struct Totals {
     long rays = 0, hits = 0, skippedSteps = 0, castRaySteps = 0;
 };
+
+Totals add(Totals all, const Totals& t) {
+    all.rays += t.rays;
+    all.hits += t.hits;
+    all.skippedSteps += t.skippedSteps;
+    all.castRaySteps += t.castRaySteps;
+    return all;
+}
 
 // castCameraRays on `rays` equals castRay on each, every field but `steps`.
 Totals expectSameAsCastRay(const VoxelWorld& w, const std::vector<Ray>& rays,
@@ -76,14 +85,27 @@ std::vector<Ray> cameraRays(const Camera& camera, bool squares) {
     return rays;
 }
 
+// A tile of kCameraTileRays rays from `origin`, ray k along direction(k).
+template <typename Direction>
+void appendTile(std::vector<Ray>& rays, Vec3d origin, Direction&& direction) {
+    for (std::size_t k = 0; k < kCameraTileRays; ++k)
+        rays.push_back({origin, direction(static_cast<int>(k))});
+}
+
+// Hand-made tiles: castRay's results whole and with each of `tMaxes`; enough hits, and fewer
+// steps than castRay's.
+void expectHandMadeTiles(const VoxelWorld& w, const std::vector<Ray>& rays,
+                         std::initializer_list<double> tMaxes) {
+    const Totals t = expectSameAsCastRay(w, rays);
+    EXPECT_GT(t.hits, static_cast<long>(rays.size()) / 3);
+    EXPECT_LT(t.skippedSteps, t.castRaySteps);
+    for (const double tMax : tMaxes) expectSameAsCastRay(w, rays, tMax);
+}
+
 Totals expectCamera(const VoxelWorld& w, const Camera& camera, double tMax = kInfinity) {
     Totals all;
     for (const bool squares : {false, true}) {
-        const Totals t = expectSameAsCastRay(w, cameraRays(camera, squares), tMax);
-        all.rays += t.rays;
-        all.hits += t.hits;
-        all.skippedSteps += t.skippedSteps;
-        all.castRaySteps += t.castRaySteps;
+        all = add(all, expectSameAsCastRay(w, cameraRays(camera, squares), tMax));
     }
     return all;
 }
@@ -149,10 +171,7 @@ TEST(VoxelCameraTiles, TMaxEndsRaysBeforeAndAfterThePlane) {
 TEST(VoxelCameraTiles, AxisParallelSignedZerosAndTies) {
     const VoxelWorld w = world();
     std::vector<Ray> rays;
-    const auto tile = [&](Vec3d origin, auto&& direction) {
-        for (std::size_t k = 0; k < kCameraTileRays; ++k)
-            rays.push_back({origin, direction(static_cast<int>(k))});
-    };
+    const auto tile = [&](Vec3d origin, auto&& direction) { appendTile(rays, origin, direction); };
     const double zeros[] = {0.0, -0.0};
     for (const double z0 : zeros) {
         for (const double z1 : zeros) {
@@ -176,10 +195,7 @@ TEST(VoxelCameraTiles, AxisParallelSignedZerosAndTies) {
     tile({50, 130, 50}, [&](int j) { return Vec3d{0.01 * j, -1.0, 0.02}; });
     rays[rays.size() - 5].origin.x += 1e-9;
     for (int j = 0; j < 17; ++j) rays.push_back({{70, 110, 60}, {-0.03 * j, -1.0, 0.01 * j}});
-    const Totals t = expectSameAsCastRay(w, rays);
-    EXPECT_GT(t.hits, static_cast<long>(rays.size()) / 3);
-    EXPECT_LT(t.skippedSteps, t.castRaySteps);
-    for (const double tMax : {10.0, 45.0, 50.0}) expectSameAsCastRay(w, rays, tMax);
+    expectHandMadeTiles(w, rays, {10.0, 45.0, 50.0});
 }
 
 // Many random cameras around the world, at random distances, looking at random points.
@@ -196,18 +212,11 @@ TEST(VoxelCameraTiles, RandomCameras) {
                  position.y < 90 && position.z < 134);
         const Vec3d target{unit(rng) * 150, unit(rng) * 90, unit(rng) * 134};
         const double fov = 5.0 + unit(rng) * 100.0;
-        const Totals t = expectCamera(w, Camera::lookAt(position, target, fov, 40, 30).value());
-        all.rays += t.rays;
-        all.hits += t.hits;
-        all.skippedSteps += t.skippedSteps;
-        all.castRaySteps += t.castRaySteps;
+        all = add(all, expectCamera(w, Camera::lookAt(position, target, fov, 40, 30).value()));
     }
     EXPECT_GT(all.hits, all.rays / 4);
     EXPECT_LT(all.skippedSteps, all.castRaySteps);
 }
-
-// The frustum walk alone: every cell that castRay's per-voxel loop (no jumps) visits before the
-// tile's plane is empty, for tiles that got a plane.
 
 // Checks every tile of `rays` that gets a skip against the loop without jumps, which reports the
 // first solid cell each ray enters: none lies before the tile's plane. Returns the tiles skipped.
@@ -232,6 +241,8 @@ int tilesStoppingBeforeTheirFirstSolidCell(const VoxelWorld& w, const std::vecto
     return skipped;
 }
 
+// The frustum walk alone: every cell that castRay's per-voxel loop (no jumps) visits before the
+// tile's plane is empty, for tiles that got a plane.
 TEST(VoxelCameraTiles, NoRayOfATileVisitsASolidCellBeforeItsPlane) {
     const VoxelWorld w = world();
     std::mt19937_64 rng(8);
@@ -252,14 +263,6 @@ int groundY(const VoxelWorld& w, int x, int z) {
     for (int y = w.size().y - 1; y >= 0; --y)
         if (w.solid(x, y, z)) return y + 1;
     return 0;
-}
-
-Totals add(Totals all, const Totals& t) {
-    all.rays += t.rays;
-    all.hits += t.hits;
-    all.skippedSteps += t.skippedSteps;
-    all.castRaySteps += t.castRaySteps;
-    return all;
 }
 
 // First-person cameras inside the world (§4.6 "From inside"): over the ground, grazing it, looking
@@ -328,10 +331,7 @@ TEST(VoxelCameraTiles, InsideCavesOverhangsPlanesAndFaces) {
 TEST(VoxelCameraTiles, InsideHandMadeTiles) {
     const VoxelWorld w = world();
     std::vector<Ray> rays;
-    const auto tile = [&](Vec3d origin, auto&& direction) {
-        for (std::size_t k = 0; k < kCameraTileRays; ++k)
-            rays.push_back({origin, direction(static_cast<int>(k))});
-    };
+    const auto tile = [&](Vec3d origin, auto&& direction) { appendTile(rays, origin, direction); };
     const double zeros[] = {0.0, -0.0};
     for (const double z0 : zeros) {
         for (const double z1 : zeros) {
@@ -360,10 +360,7 @@ TEST(VoxelCameraTiles, InsideHandMadeTiles) {
     tile({70.5, g - 0.5, 70.5}, [&](int j) { return Vec3d{0.01 * j, -0.3, 1.0}; });
     tile({70.5, g + 0.5, 70.5}, [&](int j) { return Vec3d{0.01 * j, -0.1, 1.0}; });
     tile({70.5, g, 70.5}, [&](int j) { return Vec3d{1.0, -0.0, 0.02 * j - 0.6}; });
-    const Totals t = expectSameAsCastRay(w, rays);
-    EXPECT_GT(t.hits, static_cast<long>(rays.size()) / 3);
-    EXPECT_LT(t.skippedSteps, t.castRaySteps);
-    for (const double tMax : {1.0, 10.0, 45.0}) expectSameAsCastRay(w, rays, tMax);
+    expectHandMadeTiles(w, rays, {1.0, 10.0, 45.0});
 }
 
 // Random cameras anywhere inside the world (empty or solid cells), looking anywhere.
