@@ -10,6 +10,7 @@
 #include "gpu/shaders/shared/pixel_samples.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/dda.h"
+#include "voxel/shading_physical.h"
 
 namespace luxel::voxel {
 
@@ -61,13 +62,8 @@ void shadeRow(const VoxelWorld& world, const Camera& camera, int py, const Shade
     cast.assign(rays.size(), 1);
     for (int x = 0; x < w; ++x) {
         Ray r = pixelSampleRay(camera, x, py, 0, 1);
-        if (physical) {
-            const double len = length(r.direction);
-            if (!(len > 0.0) || !std::isfinite(len))
-                cast[x] = 0;  // shaded as sky, no cast
-            else
-                r.direction = r.direction / len;
-        }
+        // The physical model shades a ray without a unit direction as sky, without a cast.
+        if (physical && !physicalRayDirection(r.direction, r.direction)) cast[x] = 0;
         rays[x] = r;
     }
     castCameraRays(world, rays, hits, kInfinity, options.stepCap);

@@ -184,8 +184,8 @@ MediumExit walkMedium(const VoxelWorld& world, Int3 cell, Vec3d origin, Vec3d di
 
 Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
                   const ShadeOptions& o, const TextureSet* textures, RaySample raySample) {
-    const double len = length(ray.direction);
-    if (!(len > 0.0) || !std::isfinite(len)) return skyColor(ray.direction, o);
+    Vec3d unit;
+    if (!physicalRayDirection(ray.direction, unit)) return skyColor(ray.direction, o);
     const Vec3d sun = normalize(Vec3d{o.sunDirection.x, o.sunDirection.y, o.sunDirection.z});
     const shared::vec3 l = v3(sun);
     const int model = o.specular == ShadeOptions::Specular::Ggx ? LUXEL_VOXEL_SPECULAR_GGX
@@ -198,7 +198,7 @@ Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
     Stack stack;
     PathRay first;
     first.origin = ray.origin;
-    first.direction = ray.direction / len;
+    first.direction = unit;
     first.weight = Rgb(1.0f);
     first.depth = std::clamp(o.maxReflections, 0, 16);
     first.cone = cone;

@@ -3,6 +3,8 @@
 // through transmissive voxels. Design: docs/algorithms/voxel-surfaces.md.
 #pragma once
 
+#include <cmath>
+
 #include "luxel/core/vec.h"
 #include "luxel/voxel/dda.h"
 #include "luxel/voxel/ray_cone.h"
@@ -33,6 +35,15 @@ struct ExitSplit {
     Vec3d reflected, refracted;  // unit; refracted only when !total
 };
 ExitSplit splitAtExit(Vec3d direction, Int3 outward, float ior, ShadeOptions::FresnelModel fresnel);
+
+// The unit direction the physical model casts a ray along; false for a zero, infinite or NaN
+// direction, which it shades as the sky without a cast.
+inline bool physicalRayDirection(Vec3d direction, Vec3d& unit) {
+    const double len = length(direction);
+    if (!(len > 0.0) || !std::isfinite(len)) return false;
+    unit = direction / len;
+    return true;
+}
 
 // `sample` keys the random numbers of the sky ambient rays (ShadeOptions::skyAmbientRays).
 Rgb shadePhysical(const VoxelWorld& world, const Ray& ray, const RayCone& cone,
