@@ -9,4 +9,10 @@ namespace luxel::gi2d::hrc {
 // from 0.
 float lightScoreRow(const float* emission, const float* sigma, int width, float* scores);
 
+// A pixel is a light where its score is at least this, 1/64 of the brightest pixel's (§12.3):
+// the near-light mask and the exact near field tell the lights alike.
+inline float lightScoreThreshold(float brightest) {
+    return brightest / 64.0f;
+}
+
 }  // namespace luxel::gi2d::hrc

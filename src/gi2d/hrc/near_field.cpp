@@ -17,11 +17,14 @@ NearFieldPlan planNearField(const Medium2D& medium) {
     const int w = medium.width(), h = medium.height();
     const std::size_t pixels = static_cast<std::size_t>(w) * h;
     if (pixels == 0) return plan;
-    // The least sigma over every pixel and channel bounds every ray; NaN or 0 bound nothing.
+    // The least sigma over every pixel and channel bounds every ray; NaN or 0 bound nothing, so
+    // the first such value ends the scan (at once on a canvas in vacuum: every solve plans).
     const float* sigma = medium.absorption.data();
     float least = sigma[0];
-    for (std::size_t i = 0; i < pixels * 3; ++i) least = std::min(least, sigma[i]);
-    if (!(least > 0.0f)) return plan;
+    for (std::size_t i = 0; i < pixels * 3; ++i) {
+        if (!(sigma[i] > 0.0f)) return plan;
+        least = std::min(least, sigma[i]);
+    }
     const float reach = std::log(1.0f / kNearFieldCutoff) / least;
     if (!(reach <= kNearFieldMaxReach)) return plan;
 
@@ -35,7 +38,7 @@ NearFieldPlan planNearField(const Medium2D& medium) {
             brightest, lightScoreRow(emission + row * 3, sigma + row * 3, w, scores.data() + row));
     }
     if (!(brightest > 0.0f)) return plan;
-    const float threshold = brightest / 64.0f;
+    const float threshold = lightScoreThreshold(brightest);
     // The rays' cost against the canvas's: beyond the budget the gather is off altogether. The
     // lights are among the gathered pixels, so too many of them end it before the stamping.
     const double stepsPerPixel = kNearFieldRays * std::min<double>(reach, std::hypot(w, h));

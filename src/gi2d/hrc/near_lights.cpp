@@ -65,7 +65,7 @@ void NearLightMask::build(const Medium2D& medium) {
     });
     const float brightest = *std::max_element(rowMost.begin(), rowMost.end());
     if (!(brightest > 0.0f)) return;
-    const float threshold = brightest / 64.0f;
+    const float threshold = lightScoreThreshold(brightest);
     static constexpr std::array<std::uint8_t, kFar + 1> kept = keptTable();
     parallelForRange(h, kGrain, [&, w, h, threshold](int y0, int y1) {
         // Per row of [y0 - 2, y1 + 2): the squared distance along the row to the nearest light,
