@@ -20,21 +20,10 @@
 namespace luxel::voxel {
 
 // The share of the light that enters the medium of `m` through a face with outward normal
-// `normal` along `direction`: its transmission lobe weight (0 for opaque materials). Only
-// pathBsdf's transmission, with its operations in its order (the same float; the other lobes,
-// their means and the lobes' probabilities are not needed here), docs/performance.md "Glass
-// entries' transmission alone".
+// `normal` along `direction`: its transmission lobe weight (0 for opaque materials).
 float mediumEntryTransmission(const Material& m, Int3 normal, Vec3d direction,
                               const ShadeOptions& shading) {
-    const float transmission = shading.refraction ? m.transmission : 0.0f;
-    const float dielectric = 1.0f - m.metallic;
-    // (1 - F) is finite and not negative (for a finite direction), so either factor 0 gives
-    // pathBsdf's +0.
-    if (transmission == 0.0f || dielectric == 0.0f) return 0.0f;
-    const double cosView = std::clamp(
-        dot(Vec3d{double(normal.x), double(normal.y), double(normal.z)}, -direction), 0.0, 1.0);
-    const float fresnel = dielectricFresnel(float(cosView), m.ior, shading.fresnel);
-    return dielectric * (1.0f - fresnel) * transmission;
+    return pathBsdf(m, Rgb(1.0f), normal, direction, shading).transmission;
 }
 
 // 1 - F where a straight line leaves the medium through a face with outward normal `outward`:
@@ -266,41 +255,8 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
     return diffuse * perRay * cosines * float(1.0 / kPi) + glossy;
 }
 
-namespace {
-
-// The sun's disk, kept per thread for the last sun asked for: sunDiskAlong is asked at every
-// delta lobe's escape to the sky, and making the disk (a square root, a division and a sine) each
-// time was about a third of a percent of the glass scene's frame (docs/performance.md "Glass
-// entries' transmission alone"). Compared bit for bit, so it is the disk SunDisk::make gives.
-const SunDisk& keptSunDisk(const ShadeOptions& shading) {
-    struct Kept {
-        Vec3 direction{};
-        double angularRadius = 0.0;
-        SunDisk sun;
-        bool made = false;
-    };
-    thread_local Kept kept;
-    const Vec3 d = shading.sunDirection;
-    const bool same =
-        kept.made &&
-        std::bit_cast<std::uint64_t>(kept.angularRadius) ==
-            std::bit_cast<std::uint64_t>(shading.sunAngularRadius) &&
-        std::bit_cast<std::uint32_t>(kept.direction.x) == std::bit_cast<std::uint32_t>(d.x) &&
-        std::bit_cast<std::uint32_t>(kept.direction.y) == std::bit_cast<std::uint32_t>(d.y) &&
-        std::bit_cast<std::uint32_t>(kept.direction.z) == std::bit_cast<std::uint32_t>(d.z);
-    if (!same) {
-        kept.direction = d;
-        kept.angularRadius = shading.sunAngularRadius;
-        kept.sun = SunDisk::make(d, shading.sunAngularRadius);
-        kept.made = true;
-    }
-    return kept.sun;
-}
-
-}  // namespace
-
 Rgb sunDiskAlong(Vec3d direction, const ShadeOptions& shading) {
-    const SunDisk& sun = keptSunDisk(shading);
+    const SunDisk sun = SunDisk::make(shading.sunDirection, shading.sunAngularRadius);
     return sun.contains(direction) ? sun.radiance(shading.sunIrradiance) : Rgb{};
 }
 
