@@ -11,6 +11,7 @@
 #include "luxel/core/parallel.h"
 #include "voxel/cast_stream.h"
 #include "voxel/fast_walk.h"
+#include "voxel/parallel_beam.h"
 #include "voxel/voxel_world_access.h"
 
 namespace luxel::voxel {
@@ -123,8 +124,42 @@ void occludedBatch(const VoxelWorld& world, std::span<const Ray> rays,
         }
         return;
     }
-    streamRays(world, rays, tMax, stepCap,
-               [&](std::size_t i, const shared::VoxelTrace& trace) { occludedOut[i] = trace.hit; });
+    const auto plain = [&](std::size_t first, std::size_t end) {
+        if (first == end) return;
+        streamRays(world, rays.subspan(first, end - first), tMax, stepCap,
+                   [&](std::size_t i, const shared::VoxelTrace& trace) {
+                       occludedOut[first + i] = trace.hit;
+                   });
+    };
+    const Int3 size = world.size();
+    const int cap = resolvedCap(world, stepCap);
+    // Runs of parallel rays with nearby origins (a beam) end their walks at the beam's plane,
+    // past which none of them meets a solid voxel (docs/algorithms/voxel-traversal.md §4.7). The
+    // whole walk may reach a step cap that the shorter one does not (occluded is then false): so
+    // only where the cap cannot end a walk (a walk visits at most sx + sy + sz cells, dda.h).
+    if (!(tMax >= 0.0) || cap < size.x + size.y + size.z) {
+        plain(0, rays.size());
+        return;
+    }
+    stream::BeamScan beams(world);
+    std::size_t pending = 0;  // the first ray not yet cast
+    for (std::size_t i = 0; i < rays.size();) {
+        const std::size_t n = stream::beamLength(world, rays.subspan(i));
+        if (n < stream::kMinBeamRays) {
+            i += std::max<std::size_t>(n, 1);
+            continue;
+        }
+        plain(pending, i);
+        const std::span<const Ray> beam = rays.subspan(i, n);
+        const stream::BeamLimit limit = beams.limit(beam);
+        for (std::size_t j = 0; j < n; ++j) {
+            const double tEnd = std::min(tMax, stream::beamPlaneT(beam[j], limit));
+            occludedOut[i + j] = tEnd >= 0.0 && fast::traverse(world, beam[j], tEnd, cap).hit;
+        }
+        i += n;
+        pending = i;
+    }
+    plain(pending, rays.size());
 }
 
 Hit castRay(const VoxelWorld& world, const Ray& ray, double tMax, int stepCap, ChunkSkip skip) {
