@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "voxel/brick_blocks.h"
 #include "voxel/fast_walk.h"
 
 namespace luxel::voxel::stream {
@@ -44,16 +45,6 @@ bool voxelRange(const Beam& b, int a, double s0, double s1, int size, int& first
     first = from <= 0.0 ? 0 : static_cast<int>(from);
     last = to >= size ? size - 1 : static_cast<int>(to);
     return true;
-}
-
-// The bits of a brick's mask for its local cells [lo, hi] on each axis (bit z * 16 + y * 4 + x).
-std::uint64_t brickBoxBits(const int lo[3], const int hi[3]) {
-    const std::uint64_t row = ((2u << hi[0]) - 1u) & ~((1u << lo[0]) - 1u);
-    std::uint64_t layer = 0;
-    for (int y = lo[1]; y <= hi[1]; ++y) layer |= row << (4 * y);
-    std::uint64_t box = 0;
-    for (int z = lo[2]; z <= hi[2]; ++z) box |= layer << (16 * z);
-    return box;
 }
 
 // Whether the voxels [mFirst, mLast] on m (a chunk, brick or cell slab) hold no solid voxel where
@@ -202,7 +193,7 @@ BeamLimit BeamScan::limit(std::span<const Ray> beam) {
         const int h[3] = {hi[0] & kLast, hi[1] & kLast, hi[2] & kLast};
         const std::uint64_t mask =
             world.brickMask(lo[0] >> kBrickShift, lo[1] >> kBrickShift, lo[2] >> kBrickShift);
-        return (mask & brickBoxBits(l, h)) == 0;
+        return (mask & blocks::boxBits(l, h)) == 0;
     };
     // Slabs from the far face back to lastCell's: chunks, then the bricks of a chunk slab that
     // may hold a solid voxel, then the cells of such a brick slab. The first cell slab that may

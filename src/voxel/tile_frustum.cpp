@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 
+#include "voxel/brick_blocks.h"
 #include "voxel/cast_stream.h"
 
 namespace luxel::voxel::stream {
@@ -18,6 +19,8 @@ namespace {
 struct Frustum {
     double o[3];
     double lo[3], hi[3];
+    // voxelRange's margin at distance u: marginAt0 + u * marginPerU.
+    double marginAt0[3], marginPerU[3];
     int m, sgn;
 };
 
@@ -31,21 +34,23 @@ constexpr double kMaxSlope = 1e6;
 // bound the slab. The margin covers the rounding of these bounds and of the walk's own boundary
 // t's, and the cells the walk visits where the ray touches their face (edge and corner ties).
 bool voxelRange(const Frustum& f, int a, double u0, double u1, int size, int& first, int& last) {
-    const double lo = f.o[a] + std::min(u0 * f.lo[a], u1 * f.lo[a]);
-    const double hi = f.o[a] + std::max(u0 * f.hi[a], u1 * f.hi[a]);
-    const double slope = std::max(std::abs(f.lo[a]), std::abs(f.hi[a]));
-    const double margin = 1e-3 + 1e-9 * (std::abs(f.o[a]) + u1 * (1.0 + slope));
+    // 0 <= u0 <= u1: the lower bound is lo_a * u0 or lo_a * u1, whichever is smaller.
+    const double lo = f.o[a] + (f.lo[a] >= 0.0 ? u0 : u1) * f.lo[a];
+    const double hi = f.o[a] + (f.hi[a] >= 0.0 ? u1 : u0) * f.hi[a];
+    const double margin = f.marginAt0[a] + u1 * f.marginPerU[a];
     const double from = lo - margin, to = hi + margin;
     if (!(to >= 0.0) || !(from < size)) return false;
-    first = from <= 0.0 ? 0 : static_cast<int>(std::floor(from));
-    last = to >= size ? size - 1 : static_cast<int>(std::floor(to));
+    first = from <= 0.0 ? 0 : static_cast<int>(from);  // from > 0: truncation is floor
+    last = to >= size ? size - 1 : static_cast<int>(to);
     return true;
 }
 
 // Whether every cell of side 2^shift (a chunk, a brick or a voxel) that the rays can touch in slab
-// k along m (the cells k << shift .. on m) is empty: `empty(cell index on each axis)` tests one.
+// k along m (the cells k << shift .. on m) is empty: `empty(cell index on each axis)` tests a chunk
+// or a brick; voxels are tested by the masks of the bricks they lie in.
 template <typename Empty>
-bool slabEmpty(const Frustum& f, const Int3& size, int shift, int k, Empty&& empty) {
+bool slabEmpty(const VoxelWorld& world, const Frustum& f, int shift, int k, Empty&& empty) {
+    const Int3 size = world.size();
     const int m = f.m;
     const double nearFace = k << shift;
     const double farFace = std::min((k + 1) << shift, size[m]);
@@ -64,6 +69,26 @@ bool slabEmpty(const Frustum& f, const Int3& size, int shift, int k, Empty&& emp
         cells *= last[a] - first[a] + 1;
     }
     if (cells > kMaxSlabCells) return false;
+    if (shift == 0) {
+        // Cells: the box's cells of each brick it overlaps, tested by the brick's mask.
+        constexpr int kB = VoxelWorld::kBrickShift, kLast = VoxelWorld::kBrickSide - 1;
+        int lo[3], hi[3];
+        const auto clip = [&](int a, int b) {
+            lo[a] = std::max(b << kB, first[a]) & kLast;
+            hi[a] = std::min(((b + 1) << kB) - 1, last[a]) & kLast;
+        };
+        for (int z = first[2] >> kB; z <= last[2] >> kB; ++z) {
+            clip(2, z);
+            for (int y = first[1] >> kB; y <= last[1] >> kB; ++y) {
+                clip(1, y);
+                for (int x = first[0] >> kB; x <= last[0] >> kB; ++x) {
+                    clip(0, x);
+                    if (world.brickMask(x, y, z) & blocks::boxBits(lo, hi)) return false;
+                }
+            }
+        }
+        return true;
+    }
     for (int z = first[2]; z <= last[2]; ++z) {
         for (int y = first[1]; y <= last[1]; ++y) {
             for (int x = first[0]; x <= last[0]; ++x) {
@@ -95,15 +120,23 @@ Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
         if (!(r.origin == first.origin) || !finiteRay(r)) return {};
         const double dm = r.direction[f.m];
         if (!(dm * f.sgn > 0.0)) return {};
+        // One division per ray: d_a * (1 / |d_m|) lies within a few ulps of d_a / |d_m|, far
+        // inside voxelRange's margin.
+        const double perM = 1.0 / std::abs(dm);
         for (int a = 0; a < 3; ++a) {
             if (a == f.m) continue;
-            const double slope = r.direction[a] / std::abs(dm);
+            const double slope = r.direction[a] * perM;
             if (!(std::abs(slope) <= kMaxSlope)) return {};
             f.lo[a] = std::min(f.lo[a], slope);
             f.hi[a] = std::max(f.hi[a], slope);
         }
     }
 
+    for (int a = 0; a < 3; ++a) {
+        const double slope = std::max(std::abs(f.lo[a]), std::abs(f.hi[a]));
+        f.marginAt0[a] = 1e-3 + 1e-9 * std::abs(f.o[a]);
+        f.marginPerU[a] = 1e-9 * (1.0 + slope);
+    }
     const Int3 size = world.size();
     const int m = f.m, sizeM = size[m];
     const double om = f.o[m];
@@ -117,7 +150,6 @@ Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
         return world.chunkSolidCount(x, y, z) == 0;
     };
     const auto brickEmpty = [&](int x, int y, int z) { return world.brickMask(x, y, z) == 0; };
-    const auto cellEmpty = [&](int x, int y, int z) { return !world.solid(x, y, z); };
     // The slab holding the origin, or the world's near face (slabs in front of the origin only).
     // From an origin inside the world the first slab's box begins at the origin's point, so a
     // solid voxel in the origin's own brick ends the walk at a plane behind it: no skip.
@@ -126,14 +158,14 @@ Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
     int plane = f.sgn > 0 ? sizeM : 0;  // no solid cell before the world's far face
     bool found = false;
     for (int kc = originCell >> chunkShift; !found && kc >= 0 && kc < chunksM; kc += f.sgn) {
-        if (slabEmpty(f, size, chunkShift, kc, chunkEmpty)) continue;
+        if (slabEmpty(world, f, chunkShift, kc, chunkEmpty)) continue;
         // Some chunk there holds a solid voxel: the bricks of this chunk slab, in travel order.
         const int perChunk = 1 << (chunkShift - kBrickShift);
         int kb = f.sgn > 0 ? kc * perChunk : std::min((kc + 1) * perChunk, bricksM) - 1;
         const int kbEnd = f.sgn > 0 ? std::min((kc + 1) * perChunk, bricksM) : kc * perChunk - 1;
         if (f.sgn > 0 ? kb < firstBrick : kb > firstBrick) kb = firstBrick;
         for (; !found && kb != kbEnd; kb += f.sgn) {
-            if (slabEmpty(f, size, kBrickShift, kb, brickEmpty)) continue;
+            if (slabEmpty(world, f, kBrickShift, kb, brickEmpty)) continue;
             // Some brick there holds a solid voxel: the cell slabs of this brick slab, in travel
             // order; the near face of the first that holds one in the box ends the walk. The
             // cells' own boxes are tighter than the brick slab's: where all are empty, the walk
@@ -143,7 +175,7 @@ Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
                 f.sgn > 0 ? std::min((kb + 1) << kBrickShift, sizeM) : (kb << kBrickShift) - 1;
             if (f.sgn > 0 ? kv < originCell : kv > originCell) kv = originCell;
             for (; kv != kvEnd; kv += f.sgn) {
-                if (slabEmpty(f, size, 0, kv, cellEmpty)) continue;
+                if (slabEmpty(world, f, 0, kv, brickEmpty)) continue;
                 plane = f.sgn > 0 ? kv : kv + 1;
                 found = true;
                 break;

@@ -43,6 +43,30 @@ TEST(VoxelBrickBlocks, HalfMasksHoldTheirHalves) {
     EXPECT_EQ(blocks::kMaxVisits, 8);
 }
 
+// boxBits holds exactly the cells of its box, for every box of a brick.
+TEST(VoxelBrickBlocks, BoxBitsHoldTheirBox) {
+    int boxes = 0;
+    for (int code = 0; code < 4096; ++code) {
+        int lo[3], hi[3];
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = (code >> (4 * a)) & 3;
+            hi[a] = (code >> (4 * a + 2)) & 3;
+        }
+        if (lo[0] > hi[0] || lo[1] > hi[1] || lo[2] > hi[2]) continue;
+        std::uint64_t expected = 0;
+        for (int z = lo[2]; z <= hi[2]; ++z) {
+            for (int y = lo[1]; y <= hi[1]; ++y) {
+                for (int x = lo[0]; x <= hi[0]; ++x) {
+                    expected |= std::uint64_t{1} << VoxelWorld::brickBit(x, y, z);
+                }
+            }
+        }
+        EXPECT_EQ(blocks::boxBits(lo, hi), expected) << code;
+        ++boxes;
+    }
+    EXPECT_EQ(boxes, 1000);  // (4 + 3 + 2 + 1)^3
+}
+
 // Random voxels of a given density in random bricks, plus ground layers of uneven height: bricks
 // that are partly full, so many visits inside them are in empty halves.
 VoxelWorld randomWorld(Int3 size, std::uint64_t seed) {
