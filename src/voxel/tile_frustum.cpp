@@ -49,17 +49,20 @@ bool voxelRange(const Frustum& f, int a, double u0, double u1, int size, int& fi
 // k along m (the cells k << shift .. on m) is empty: `empty(cell index on each axis)` tests a chunk
 // or a brick; voxels are tested by the masks of the bricks they lie in.
 template <typename Empty>
-bool slabEmpty(const VoxelWorld& world, const Frustum& f, int shift, int k, Empty&& empty) {
+bool slabEmpty(const VoxelWorld& world, const Frustum& f, int shift, int k, Empty&& empty,
+               int kEnd = -1) {
     const Int3 size = world.size();
     const int m = f.m;
+    if (kEnd < k) kEnd = k;
     const double nearFace = k << shift;
-    const double farFace = std::min((k + 1) << shift, size[m]);
+    const double farFace = std::min((kEnd + 1) << shift, size[m]);
     // Distances along m of the slab's faces in front of the origin (the slab may hold it).
     const double uA = (f.sgn > 0 ? nearFace : farFace) - f.o[m];
     const double uB = (f.sgn > 0 ? farFace : nearFace) - f.o[m];
     const double u0 = std::max(0.0, uA * f.sgn), u1 = std::max(0.0, uB * f.sgn);
     int first[3], last[3];
-    first[m] = last[m] = k;
+    first[m] = k;
+    last[m] = kEnd;
     int cells = 1;
     for (int a = 0; a < 3; ++a) {
         if (a == m) continue;
@@ -70,7 +73,8 @@ bool slabEmpty(const VoxelWorld& world, const Frustum& f, int shift, int k, Empt
     }
     if (cells > kMaxSlabCells) return false;
     if (shift == 0) {
-        // Cells: the box's cells of each brick it overlaps, tested by the brick's mask.
+        // Cells: the box's cells of each brick it overlaps, tested by the brick's mask (k and
+        // kEnd: the cell slabs k .. kEnd, one box for them all).
         constexpr int kB = VoxelWorld::kBrickShift, kLast = VoxelWorld::kBrickSide - 1;
         int lo[3], hi[3];
         const auto clip = [&](int a, int b) {
@@ -174,6 +178,12 @@ Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
             const int kvEnd =
                 f.sgn > 0 ? std::min((kb + 1) << kBrickShift, sizeM) : (kb << kBrickShift) - 1;
             if (f.sgn > 0 ? kv < originCell : kv > originCell) kv = originCell;
+            // Its cells ahead in one box first: where they are all empty, so is each cell slab.
+            const int kvLast = kvEnd - f.sgn;
+            if (kv != kvLast &&
+                slabEmpty(world, f, 0, std::min(kv, kvLast), brickEmpty, std::max(kv, kvLast))) {
+                continue;
+            }
             for (; kv != kvEnd; kv += f.sgn) {
                 if (slabEmpty(world, f, 0, kv, brickEmpty)) continue;
                 plane = f.sgn > 0 ? kv : kv + 1;
