@@ -103,16 +103,20 @@ void castCameraRays(const VoxelWorld& world, std::span<const Ray> rays, std::spa
     }
     // Every ray in the one-ray loop: after a skip the walk is mostly voxel steps near the surface,
     // where that loop is faster than the SIMD lanes (docs/algorithms/voxel-traversal.md §4.6).
-    stream::Skip skip;
-    for (std::size_t i = 0; i < rays.size(); ++i) {
-        if (i % kCameraTileRays == 0) {
-            skip = stream::tileSkip(world,
-                                    rays.subspan(i, std::min(kCameraTileRays, rays.size() - i)));
+    const bool walkable = tMax >= 0.0;
+    for (std::size_t first = 0; first < rays.size(); first += kCameraTileRays) {
+        const std::span<const Ray> tile =
+            rays.subspan(first, std::min(kCameraTileRays, rays.size() - first));
+        const stream::Skip skip = stream::tileSkip(world, tile);
+        // A tile with a skip has only finite rays (tileSkip checks them).
+        const bool finite = skip.axis >= 0;
+        for (std::size_t j = 0; j < tile.size(); ++j) {
+            const Ray& ray = tile[j];
+            hits[first + j] =
+                walkable && (finite || finiteRay(ray)) && fast::eligible(world, ray)
+                    ? hitFromTrace(ray, fast::traverse<true>(world, ray, tMax, cap, skip))
+                    : castRay(world, ray, tMax, stepCap);
         }
-        const Ray& ray = rays[i];
-        hits[i] = tMax >= 0.0 && finiteRay(ray) && fast::eligible(world, ray)
-                      ? hitFromTrace(ray, fast::traverse<true>(world, ray, tMax, cap, skip))
-                      : castRay(world, ray, tMax, stepCap);
     }
 }
 
