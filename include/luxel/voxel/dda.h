@@ -76,6 +76,9 @@ bool occluded(const VoxelWorld& world, const Ray& ray, double tMax = kInfinity, 
 // castRay and occluded for many rays on the calling thread, several at a time (one ray per SIMD
 // lane, coherent or not): hits[i] == castRay(world, rays[i], tMax, stepCap) field by field, steps
 // included, and occluded[i] == occluded(world, rays[i], tMax, stepCap). The spans have equal sizes.
+// occludedBatch walks a run of rays with one direction and nearby origins (shadow rays towards the
+// sun from neighbouring points) as one beam, each ray only up to a plane past which none of them
+// meets a solid voxel (docs/algorithms/voxel-traversal.md §4.7): rays in such runs are cheaper.
 void castRayBatch(const VoxelWorld& world, std::span<const Ray> rays, std::span<Hit> hits,
                   double tMax = kInfinity, int stepCap = 0);
 void occludedBatch(const VoxelWorld& world, std::span<const Ray> rays,
