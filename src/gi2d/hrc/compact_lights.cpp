@@ -56,9 +56,9 @@ std::vector<CompactLight> findCompactLights(const Medium2D& medium) {
     float brightest = 0.0f;
     for (int y = 0; y < h; ++y) {
         const std::size_t row = static_cast<std::size_t>(y) * w;
-        brightest = std::max(brightest, lightScoreRow(medium.emission.data() + row * 3,
-                                                      medium.absorption.data() + row * 3, w,
-                                                      scores.data() + row));
+        brightest = std::max(
+            brightest, lightScoreRow(medium.emission.data() + row * 3,
+                                     medium.absorption.data() + row * 3, w, scores.data() + row));
     }
     if (!(brightest > 0.0f)) return lights;
     const float threshold = lightScoreThreshold(brightest);
@@ -118,8 +118,9 @@ std::vector<CompactLight> findCompactLights(const Medium2D& medium) {
         light.radius = std::hypot(hx, hy);
         lights.push_back(std::move(light));
     }
-    std::stable_sort(lights.begin(), lights.end(),
-                     [](const CompactLight& a, const CompactLight& b) { return a.score > b.score; });
+    std::stable_sort(
+        lights.begin(), lights.end(),
+        [](const CompactLight& a, const CompactLight& b) { return a.score > b.score; });
     return lights;
 }
 
@@ -134,7 +135,8 @@ void marchAttributing(const std::vector<float>& sigma, const std::vector<float>&
     const double inf = std::numeric_limits<double>::infinity();
     // Clip to the window.
     double t0 = 0.0, t1 = length;
-    const double o[2] = {origin.x, origin.y}, d[2] = {dir.x, dir.y}, hi[2] = {double(ww), double(wh)};
+    const double o[2] = {origin.x, origin.y}, d[2] = {dir.x, dir.y},
+                 hi[2] = {double(ww), double(wh)};
     for (int a = 0; a < 2; ++a) {
         if (d[a] == 0.0) {
             if (o[a] < 0 || o[a] > hi[a]) return;
@@ -149,9 +151,14 @@ void marchAttributing(const std::vector<float>& sigma, const std::vector<float>&
     int cx = std::clamp(static_cast<int>(std::floor(p.x + dir.x * 1e-9)), 0, ww - 1);
     int cy = std::clamp(static_cast<int>(std::floor(p.y + dir.y * 1e-9)), 0, wh - 1);
     const int stepX = dir.x > 0 ? 1 : -1, stepY = dir.y > 0 ? 1 : -1;
-    double tMaxX = dir.x > 0 ? (cx + 1 - origin.x) / dir.x : dir.x < 0 ? (cx - origin.x) / dir.x : inf;
-    double tMaxY = dir.y > 0 ? (cy + 1 - origin.y) / dir.y : dir.y < 0 ? (cy - origin.y) / dir.y : inf;
-    const double dX = dir.x != 0 ? std::abs(1.0 / dir.x) : inf, dY = dir.y != 0 ? std::abs(1.0 / dir.y) : inf;
+    double tMaxX = dir.x > 0   ? (cx + 1 - origin.x) / dir.x
+                   : dir.x < 0 ? (cx - origin.x) / dir.x
+                               : inf;
+    double tMaxY = dir.y > 0   ? (cy + 1 - origin.y) / dir.y
+                   : dir.y < 0 ? (cy - origin.y) / dir.y
+                               : inf;
+    const double dX = dir.x != 0 ? std::abs(1.0 / dir.x) : inf,
+                 dY = dir.y != 0 ? std::abs(1.0 / dir.y) : inf;
     double t = t0, T[3] = {1, 1, 1};
     while (t < t1) {
         const double exit = std::min(std::min(tMaxX, tMaxY), t1);
@@ -160,7 +167,8 @@ void marchAttributing(const std::vector<float>& sigma, const std::vector<float>&
         if (source >= 0 && exit > t) {
             for (int c = 0; c < 3; ++c) {
                 const double tc = std::exp(-static_cast<double>(sigma[i * 3 + c]) * (exit - t));
-                sums[static_cast<std::size_t>(source) * 3 + c] += T[c] * emission[i * 3 + c] * (1 - tc);
+                sums[static_cast<std::size_t>(source) * 3 + c] +=
+                    T[c] * emission[i * 3 + c] * (1 - tc);
                 T[c] *= tc;
             }
         }

@@ -13,14 +13,14 @@
 
 namespace luxel::gi2d::hrc {
 
-inline constexpr int kCompactLightMaxSize = 12;     // px: the largest bounding box side
+inline constexpr int kCompactLightMaxSize = 12;  // px: the largest bounding box side
 // The share of a light split off falls from 1 to 0 as its emission's RMS radius about its centroid
 // grows from kCompactFullRadius to kCompactNoneRadius: a measure that changes smoothly as a light
 // moves, so that no light pops in and out of the split (a disk of radius r: r / sqrt 2).
 inline constexpr double kCompactFullRadius = 2.5;
 inline constexpr double kCompactNoneRadius = 3.5;
-inline constexpr int kSourceBlock = 1;              // px: a point source per block of pixels
-inline constexpr int kIntensityDirections = 128;    // the intensity table, uniform over 2 pi
+inline constexpr int kSourceBlock = 1;                     // px: a point source per block of pixels
+inline constexpr int kIntensityDirections = 128;           // the intensity table, uniform over 2 pi
 inline constexpr double kIntensityLineSpacing = 1.0 / 32;  // px between the table's parallel lines
 
 struct PointSource {
@@ -32,7 +32,7 @@ struct PointSource {
 };
 
 struct CompactLight {
-    std::vector<std::uint32_t> pixels;  // y * width + x
+    std::vector<std::uint32_t> pixels;   // y * width + x
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // bounding box, inclusive
     Vec2d centre;                        // of the bounding box
     double radius = 0;                   // from the centre to the farthest pixel corner

@@ -24,8 +24,9 @@ inline double angleOf(double y, double x) {
     const double lo = std::min(ax, ay), hi = std::max(ax, ay);
     if (!(hi > 0)) return 0.0;
     const double a = lo / hi, s = a * a;
-    double r = ((((-0.0117212 * s + 0.05265332) * s - 0.11643287) * s + 0.19354346) * s -
-                0.33262347) * s + 0.99997726;
+    double r =
+        ((((-0.0117212 * s + 0.05265332) * s - 0.11643287) * s + 0.19354346) * s - 0.33262347) * s +
+        0.99997726;
     r *= a;
     if (ay > ax) r = std::numbers::pi / 2 - r;
     if (x < 0) r = std::numbers::pi - r;
@@ -39,7 +40,10 @@ struct OwnPixels {
     int x0, y0, w, h;
     std::vector<std::uint8_t> bits;
     OwnPixels(const CompactLight& light, int width)
-        : x0(light.x0), y0(light.y0), w(light.x1 - light.x0 + 1), h(light.y1 - light.y0 + 1),
+        : x0(light.x0),
+          y0(light.y0),
+          w(light.x1 - light.x0 + 1),
+          h(light.y1 - light.y0 + 1),
           bits(static_cast<std::size_t>(w) * h, 0) {
         for (std::uint32_t i : light.pixels) {
             const int x = static_cast<int>(i % width) - x0, y = static_cast<int>(i / width) - y0;
@@ -53,18 +57,17 @@ struct OwnPixels {
 };
 
 // One ray of a fan: the transmittance from the source at 0, 1, 2, ... px (RGB); beyond the last
-// sample it is 0 if the ray faded and the last sample's if it left the canvas.
+// sample it is 0 if the ray faded and the last sample's if it left the canvas, which one more
+// sample at the end holds.
 struct FanRay {
-    std::vector<float> t;
+    std::vector<float> t;  // (samples + 1) x RGB
+    int n = 0;             // samples
     bool open = false;
     int xLo = std::numeric_limits<int>::max(), xHi = -1, yLo = std::numeric_limits<int>::max(),
         yHi = -1;
-    int samples() const { return static_cast<int>(t.size() / 3); }
-    bool dark(int i) const { return !open && i >= samples(); }
-    float at(int i, int c) const {
-        if (i < samples()) return t[static_cast<std::size_t>(i) * 3 + c];
-        return open && !t.empty() ? t[t.size() - 3 + c] : 0.0f;
-    }
+    int samples() const { return n; }
+    bool dark(int i) const { return !open && i >= n; }
+    const float* at(int i) const { return t.data() + static_cast<std::size_t>(std::min(i, n)) * 3; }
 };
 
 FanRay marchFanRay(const Medium2D& medium, const OwnPixels& own, Vec2d origin, double angle) {
@@ -94,9 +97,9 @@ FanRay marchFanRay(const Medium2D& medium, const OwnPixels& own, Vec2d origin, d
         const float sigma[3] = {s.r, s.g, s.b};
         for (; next <= exit; ++next) {
             for (int c = 0; c < 3; ++c) {
-                samples.push_back(sigma[c] > 0 ? T[c] * std::exp(-sigma[c] * static_cast<float>(
-                                                                             next - t))
-                                             : T[c]);
+                samples.push_back(sigma[c] > 0
+                                      ? T[c] * std::exp(-sigma[c] * static_cast<float>(next - t))
+                                      : T[c]);
             }
         }
         for (int c = 0; c < 3; ++c) {
@@ -114,6 +117,8 @@ FanRay marchFanRay(const Medium2D& medium, const OwnPixels& own, Vec2d origin, d
             break;
         }
     }
+    ray.n = static_cast<int>(samples.size() / 3);
+    for (int c = 0; c < 3; ++c) samples.push_back(ray.open ? samples[samples.size() - 3] : 0.0f);
     ray.t.assign(samples.begin(), samples.end());
     return ray;
 }
@@ -151,7 +156,8 @@ Fan marchFan(const Medium2D& medium, const OwnPixels& own, const PointSource& so
     }
     parallelForRange(sectors, 8, [&](int begin, int end) {
         for (int i = begin; i < end; ++i) {
-            if (lit[static_cast<std::size_t>(i)] || lit[static_cast<std::size_t>((i + sectors - 1) % sectors)])
+            if (lit[static_cast<std::size_t>(i)] ||
+                lit[static_cast<std::size_t>((i + sectors - 1) % sectors)])
                 coarse[static_cast<std::size_t>(i)] = marchFanRay(medium, own, o, i * sectorAngle);
         }
     });
@@ -163,8 +169,12 @@ Fan marchFan(const Medium2D& medium, const OwnPixels& own, const PointSource& so
     count.assign(sectors, 0);
     for (int i = 0; i < sectors; ++i) {
         const auto si = static_cast<std::size_t>(i);
-        const int longest = std::max(coarse[si].samples(), coarse[static_cast<std::size_t>((i + 1) % sectors)].samples());
-        count[si] = lit[si] ? std::max(1, static_cast<int>(std::ceil(sectorAngle * longest * kFanRaysPerPx))) : 1;
+        const int longest = std::max(coarse[si].samples(),
+                                     coarse[static_cast<std::size_t>((i + 1) % sectors)].samples());
+        count[si] =
+            lit[si]
+                ? std::max(1, static_cast<int>(std::ceil(sectorAngle * longest * kFanRaysPerPx)))
+                : 1;
         first[si + 1] = first[si] + count[si];
     }
     std::vector<FanRay>& fan = result.rays;
@@ -174,8 +184,8 @@ Fan marchFan(const Medium2D& medium, const OwnPixels& own, const PointSource& so
             const auto si = static_cast<std::size_t>(i);
             fan[static_cast<std::size_t>(first[si])] = std::move(coarse[si]);
             for (int m = 1; m < count[si]; ++m) {
-                fan[static_cast<std::size_t>(first[si] + m)] =
-                    marchFanRay(medium, own, o, (i + static_cast<double>(m) / count[si]) * sectorAngle);
+                fan[static_cast<std::size_t>(first[si] + m)] = marchFanRay(
+                    medium, own, o, (i + static_cast<double>(m) / count[si]) * sectorAngle);
             }
         }
     });
@@ -213,10 +223,13 @@ void gatherFan(const CompactLight& light, const PointSource& source, const Fan& 
                 const double fs = angle / sectorAngle;
                 const int i = std::min(static_cast<int>(fs), sectors - 1);
                 const double fm = (fs - i) * count[static_cast<std::size_t>(i)];
-                const int m = std::min(static_cast<int>(fm), count[static_cast<std::size_t>(i)] - 1);
+                const int m =
+                    std::min(static_cast<int>(fm), count[static_cast<std::size_t>(i)] - 1);
                 const float a = static_cast<float>(fm - m);
                 const int j0 = first[static_cast<std::size_t>(i)] + m;
-                const int j1 = m + 1 < count[static_cast<std::size_t>(i)] ? j0 + 1 : first[static_cast<std::size_t>((i + 1) % sectors)];
+                const int j1 = m + 1 < count[static_cast<std::size_t>(i)]
+                                   ? j0 + 1
+                                   : first[static_cast<std::size_t>((i + 1) % sectors)];
                 const int k = static_cast<int>(d);
                 const float g = static_cast<float>(d - k);
                 const FanRay& r0 = fan[static_cast<std::size_t>(j0)];
@@ -226,10 +239,12 @@ void gatherFan(const CompactLight& light, const PointSource& source, const Fan& 
                 if (!(intensity.r > 0 || intensity.g > 0 || intensity.b > 0)) continue;
                 const float e[3] = {intensity.r, intensity.g, intensity.b};
                 const float scale = share * static_cast<float>(1.0 / (kTwoPi * d));
+                const float *a0 = r0.at(k), *b0 = r0.at(k + 1), *a1 = r1.at(k), *b1 = r1.at(k + 1);
+                float* dst = &out.at(x, y, 0);
                 for (int c = 0; c < 3; ++c) {
-                    const float t0 = r0.at(k, c) + g * (r0.at(k + 1, c) - r0.at(k, c));
-                    const float t1 = r1.at(k, c) + g * (r1.at(k + 1, c) - r1.at(k, c));
-                    out.at(x, y, c) += e[c] * scale * (t0 + a * (t1 - t0));
+                    const float t0 = a0[c] + g * (b0[c] - a0[c]);
+                    const float t1 = a1[c] + g * (b1[c] - a1[c]);
+                    dst[c] += e[c] * scale * (t0 + a * (t1 - t0));
                 }
             }
         }
@@ -295,29 +310,34 @@ DirectLight exactDirectLight(const Medium2D& medium) {
     std::vector<CompactLight> lights = findCompactLights(medium);
     if (lights.empty()) return direct;
     const double pixels = static_cast<double>(w) * h;
-    const double budget = kDirectStepsPerPixel * std::max(pixels, kDirectBudgetFloorPixels);
+    const double budget = kDirectWorkPerPixel * std::max(pixels, kDirectBudgetFloorPixels);
     for (CompactLight& light : lights) {
+        // Brightest first while the budget lasts; a light over it stays with the cascades. Its
+        // work: the near gather's rays at their longest, then each fan's samples and the pixels
+        // its gather visits, counted as the fans are marched (at most one light's fans wasted).
+        const double nearRadius = kDirectNearFactor * light.radius + kDirectNearMargin;
+        double work = std::numbers::pi * nearRadius * nearRadius * kDirectNearRays *
+                      (nearRadius + light.radius + 1.0);
+        if (static_cast<double>(direct.work) + work > budget) break;
         makePointSources(medium, light);
         const OwnPixels own(light, w);
-        const double nearRadius = kDirectNearFactor * light.radius + kDirectNearMargin;
         std::vector<Fan> fans;
-        std::uint64_t steps = 0;
         for (const PointSource& source : light.sources) {
             fans.push_back(marchFan(medium, own, source));
-            steps += fans.back().steps;
+            const Fan& f = fans.back();
+            work +=
+                static_cast<double>(f.steps) +
+                static_cast<double>(std::max(0, f.x1 - f.x0 + 1)) * std::max(0, f.y1 - f.y0 + 1);
+            if (static_cast<double>(direct.work) + work > budget) break;
         }
-        // Brightest first while the budget lasts; a light over it stays with the cascades (the
-        // near gather's rays counted at their longest).
-        const double nearSteps = std::numbers::pi * nearRadius * nearRadius * kDirectNearRays *
-                                 (nearRadius + light.radius + 1.0);
-        if (static_cast<double>(direct.steps + steps) + nearSteps > budget) break;
+        if (static_cast<double>(direct.work) + work > budget) break;
         if (direct.fluence.empty()) direct.fluence = Image(w, h, 3);
         const auto share = static_cast<float>(light.share);
-        steps += addNear(medium, light, nearRadius, share, direct.fluence);
+        addNear(medium, light, nearRadius, share, direct.fluence);
         for (std::size_t k = 0; k < fans.size(); ++k) {
             gatherFan(light, light.sources[k], fans[k], nearRadius, share, direct.fluence);
         }
-        direct.steps += steps;
+        direct.work += static_cast<std::uint64_t>(work);
         for (std::uint32_t i : light.pixels) direct.removed.emplace_back(i, share);
     }
     std::sort(direct.removed.begin(), direct.removed.end());

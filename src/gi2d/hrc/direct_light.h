@@ -8,8 +8,8 @@
 //  - nearer, the mean radiance over kDirectNearRays directions across the cone the light
 //    subtends, marched exactly from the pixel centre through the medium, counting the light's
 //    emission only (the reference solver's quantity for that light).
-// Lights are taken brightest first while the marched pixels stay within a budget; the rest stay
-// in the cascades' medium.
+// Lights are taken brightest first while the work stays within a budget; the rest stay in the
+// cascades' medium.
 #pragma once
 
 #include <cstdint>
@@ -22,20 +22,22 @@
 namespace luxel::gi2d::hrc {
 
 inline constexpr int kDirectNearRays = 64;
-inline constexpr int kFanSectors = 256;         // a fan's first rays, split where they run far
-inline constexpr double kFanRaysPerPx = 1.0;    // rays per px of arc at a sector's longer ray
+inline constexpr int kFanSectors = 256;       // a fan's first rays, split where they run far
+inline constexpr double kFanRaysPerPx = 1.0;  // rays per px of arc at a sector's longer ray
 inline constexpr double kDirectNearFactor = 2.0;
 inline constexpr double kDirectNearMargin = 2.0;
 inline constexpr float kDirectCutoff = 1e-4f;  // a fan ray stops below this T in every channel
-// Marched pixels allowed per canvas pixel (per pixel of a 256 x 256 canvas on smaller ones).
-inline constexpr double kDirectStepsPerPixel = 256;
+// Work (DirectLight::work) allowed per canvas pixel (per pixel of a 256 x 256 canvas on smaller
+// ones).
+inline constexpr double kDirectWorkPerPixel = 128;
 inline constexpr double kDirectBudgetFloorPixels = 256.0 * 256.0;
 
 struct DirectLight {
-    Image fluence;                       // the compact lights' fluence (empty when none)
+    Image fluence;  // the compact lights' fluence (empty when none)
     // y * width + x and the share of its emission the cascades no longer see.
     std::vector<std::pair<std::uint32_t, float>> removed;
-    std::uint64_t steps = 0;             // marched pixels
+    // Marched pixels and pixels gathered from a fan, the budget's unit.
+    std::uint64_t work = 0;
     bool empty() const { return removed.empty(); }
 };
 

@@ -73,7 +73,7 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
             if (!solved) return solved;
             addDirectLight(direct, *solved);
             if (passes != nullptr && !passes->empty()) {
-                passes->push_back({"direct light", ms, direct.steps * 16});
+                passes->push_back({"direct light", ms, direct.work * 12});
             }
             return solved;
         }

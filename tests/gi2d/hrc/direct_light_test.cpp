@@ -111,10 +111,11 @@ TEST(HrcDirectLight, LargeLightsAndTheOptionLeaveTheSolveBitIdentical) {
 TEST(HrcDirectLight, ShareFallsWithTheLightsSize) {
     // RMS radius below kCompactFullRadius: all of it; a disk of radius 4 (RMS about 2.9): part.
     auto shareOf = [](double radius) {
-        const Medium2D m = mediumFrom(R"({"canvas": [48, 48], "shapes": [{"type": "circle",
-            "center": [24.3, 23.8], "radius": )" + std::to_string(radius) +
-                                          R"(, "emission": [1, 1, 1], "opaque": true}]})",
-                                      48);
+        const Medium2D m =
+            mediumFrom(R"({"canvas": [48, 48], "shapes": [{"type": "circle",
+            "center": [24.3, 23.8], "radius": )" +
+                           std::to_string(radius) + R"(, "emission": [1, 1, 1], "opaque": true}]})",
+                       48);
         const auto lights = findCompactLights(m);
         return lights.empty() ? 0.0 : lights[0].share;
     };
@@ -145,10 +146,10 @@ TEST(HrcDirectLight, StaysWithinTheBudget) {
         mediumFrom(R"({"canvas": [128, 128], "shapes": [)" + shapes + "]}", 128);
     const DirectLight direct = exactDirectLight(medium);
     ASSERT_FALSE(direct.empty());
-    const double budget = kDirectStepsPerPixel * kDirectBudgetFloorPixels;
-    std::printf("forty lights: %.1f marched pixels per canvas pixel of 256 x 256\n",
-                static_cast<double>(direct.steps) / kDirectBudgetFloorPixels);
-    EXPECT_LE(static_cast<double>(direct.steps), budget);
+    const double budget = kDirectWorkPerPixel * kDirectBudgetFloorPixels;
+    std::printf("forty lights: work %.1f per canvas pixel of 256 x 256\n",
+                static_cast<double>(direct.work) / kDirectBudgetFloorPixels);
+    EXPECT_LE(static_cast<double>(direct.work), budget);
     std::size_t lightPixels = 0;
     for (const CompactLight& light : findCompactLights(medium)) lightPixels += light.pixels.size();
     EXPECT_EQ(direct.removed.size(), lightPixels);  // every light taken
