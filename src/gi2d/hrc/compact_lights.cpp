@@ -109,6 +109,7 @@ std::vector<CompactLight> findCompactLights(const Medium2D& medium) {
         }
         mx /= weight, my /= weight;
         const double rms = std::sqrt(std::max(0.0, mxx / weight - mx * mx - my * my));
+        light.rmsRadius = rms;
         light.share = std::clamp(
             (kCompactNoneRadius - rms) / (kCompactNoneRadius - kCompactFullRadius), 0.0, 1.0);
         if (!(light.share > 0)) continue;
@@ -165,8 +166,11 @@ void marchAttributing(const std::vector<float>& sigma, const std::vector<float>&
         const std::size_t i = static_cast<std::size_t>(cy) * ww + cx;
         const int source = sourceOf[i];
         if (source >= 0 && exit > t) {
+            const float* sc = &sigma[i * 3];
+            const bool grey = sc[0] == sc[1] && sc[1] == sc[2];  // one exp for all channels
+            const double greyT = std::exp(-static_cast<double>(sc[0]) * (exit - t));
             for (int c = 0; c < 3; ++c) {
-                const double tc = std::exp(-static_cast<double>(sigma[i * 3 + c]) * (exit - t));
+                const double tc = grey ? greyT : std::exp(-static_cast<double>(sc[c]) * (exit - t));
                 sums[static_cast<std::size_t>(source) * 3 + c] +=
                     T[c] * emission[i * 3 + c] * (1 - tc);
                 T[c] *= tc;
@@ -235,13 +239,36 @@ void makePointSources(const Medium2D& medium, CompactLight& light) {
                 static_cast<float>(sums[k * 3 + 2] * kIntensityLineSpacing)};
         }
     }
+    // A light much smaller than a pixel is one point (its emission's centroid) with the sum of
+    // the tables; from kPointFullRadius to kPointNoneRadius of RMS radius the two blend, so that
+    // a growing light does not pop.
+    const double point = std::clamp(
+        (kPointNoneRadius - light.rmsRadius) / (kPointNoneRadius - kPointFullRadius), 0.0, 1.0);
     light.sources.clear();
+    PointSource whole;
+    whole.intensity.assign(kIntensityDirections, Rgb{});
+    double allWeight = 0, allX = 0, allY = 0;
     for (std::size_t k = 0; k < sources; ++k) {
         if (!(weight[k] > 0)) continue;
+        allWeight += weight[k], allX += cx[k], allY += cy[k];
+        for (int m = 0; m < kIntensityDirections; ++m) {
+            const Rgb& e = tables[k][static_cast<std::size_t>(m)];
+            Rgb& sum = whole.intensity[static_cast<std::size_t>(m)];
+            sum = {sum.r + e.r, sum.g + e.g, sum.b + e.b};
+        }
+        if (point >= 1.0) continue;
         PointSource source;
         source.position = {cx[k] / weight[k], cy[k] / weight[k]};
         source.intensity = std::move(tables[k]);
+        const auto keep = static_cast<float>(1.0 - point);
+        for (Rgb& e : source.intensity) e = {e.r * keep, e.g * keep, e.b * keep};
         light.sources.push_back(std::move(source));
+    }
+    if (point > 0.0 && allWeight > 0) {
+        whole.position = {allX / allWeight, allY / allWeight};
+        const auto share = static_cast<float>(point);
+        for (Rgb& e : whole.intensity) e = {e.r * share, e.g * share, e.b * share};
+        light.sources.push_back(std::move(whole));
     }
 }
 

@@ -19,6 +19,10 @@ inline constexpr int kCompactLightMaxSize = 12;  // px: the largest bounding box
 // moves, so that no light pops in and out of the split (a disk of radius r: r / sqrt 2).
 inline constexpr double kCompactFullRadius = 2.5;
 inline constexpr double kCompactNoneRadius = 3.5;
+// A light whose RMS radius is at most kPointFullRadius is one point source; from
+// kPointNoneRadius on, one per pixel (kSourceBlock); in between both, blended.
+inline constexpr double kPointFullRadius = 0.75;
+inline constexpr double kPointNoneRadius = 1.0;
 inline constexpr int kSourceBlock = 1;                     // px: a point source per block of pixels
 inline constexpr int kIntensityDirections = 128;           // the intensity table, uniform over 2 pi
 inline constexpr double kIntensityLineSpacing = 1.0 / 32;  // px between the table's parallel lines
@@ -38,6 +42,7 @@ struct CompactLight {
     double radius = 0;                   // from the centre to the farthest pixel corner
     float score = 0;                     // its brightest pixel's light score
     double share = 0;                    // of its emission split off, in (0, 1]
+    double rmsRadius = 0;                // of its emission about the emission's centroid, px
     std::vector<PointSource> sources;
     bool contains(int x, int y, int width) const;
 };
