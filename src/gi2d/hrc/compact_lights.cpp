@@ -41,12 +41,6 @@ Rgb PointSource::intensityTowards(double angle) const {
     return {p.r + a * (q.r - p.r), p.g + a * (q.g - p.g), p.b + a * (q.b - p.b)};
 }
 
-bool CompactLight::contains(int x, int y, int width) const {
-    if (x < x0 || x > x1 || y < y0 || y > y1) return false;
-    const auto i = static_cast<std::uint32_t>(y * width + x);
-    return std::find(pixels.begin(), pixels.end(), i) != pixels.end();
-}
-
 std::vector<CompactLight> findCompactLights(const Medium2D& medium) {
     const int w = medium.width(), h = medium.height();
     const std::size_t count = static_cast<std::size_t>(w) * h;

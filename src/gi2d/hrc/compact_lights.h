@@ -1,8 +1,8 @@
 // Compact lights (docs/algorithms/holographic-radiance-cascades.md §12.5): the small, connected
 // groups of emitting pixels whose direct light luxel adds exactly instead of letting the cascades
-// carry it. Each is split into point sources (blocks of kSourceBlock x kSourceBlock of its pixels)
-// with a table of radiant intensity per direction, the light its pixels send across parallel lines
-// towards that direction, attenuated by the light's own pixels on the way out.
+// carry it. Each is split into point sources (one per pixel, or one for a light smaller than a
+// pixel) with a table of radiant intensity per direction, the light their pixels send across
+// parallel lines towards that direction, attenuated by the light's own pixels on the way out.
 #pragma once
 
 #include <cstdint>
@@ -44,7 +44,6 @@ struct CompactLight {
     double share = 0;                    // of its emission split off, in (0, 1]
     double rmsRadius = 0;                // of its emission about the emission's centroid, px
     std::vector<PointSource> sources;
-    bool contains(int x, int y, int width) const;
 };
 
 // The 8-connected groups of emitting pixels (E (1 - exp(-sigma)) > 0 in some channel) whose

@@ -1,5 +1,5 @@
 // The compact lights' exact direct light (§12.5): fans from their point sources for the far
-// pixels, a gather across each light's cone for the near ones, under a budget of marched pixels.
+// pixels, a gather across each light's cone for the near ones, under a budget of work.
 #include "gi2d/hrc/direct_light.h"
 
 #include <algorithm>
@@ -253,8 +253,8 @@ void gatherFan(const CompactLight& light, const PointSource& source, const Fan& 
 
 // The pixels within nearRadius of the light's centre: the mean radiance over the light's cone,
 // its emission alone, marched exactly through a window of the medium around it.
-std::uint64_t addNear(const Medium2D& medium, const CompactLight& light, double nearRadius,
-                      float share, Image& out) {
+void addNear(const Medium2D& medium, const CompactLight& light, double nearRadius, float share,
+             Image& out) {
     const int w = medium.width(), h = medium.height();
     const int pad = static_cast<int>(std::ceil(nearRadius + light.radius)) + 1;
     const int wx0 = std::max(0, light.x0 - pad), wy0 = std::max(0, light.y0 - pad);
@@ -298,8 +298,6 @@ std::uint64_t addNear(const Medium2D& medium, const CompactLight& light, double 
             for (int c = 0; c < 3; ++c) out.at(x, y, c) += static_cast<float>(sum[c] * weight);
         }
     });
-    return static_cast<std::uint64_t>(pixels.size()) * kDirectNearRays *
-           static_cast<std::uint64_t>(std::ceil(nearRadius + light.radius + 1.0));
 }
 
 }  // namespace

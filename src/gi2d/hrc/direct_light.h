@@ -3,8 +3,8 @@
 // taken out of the medium the cascades solve and their fluence is added here instead:
 //  - beyond kDirectNearFactor radii (+ kDirectNearMargin px) of a light, each of its point sources
 //    (compact_lights.h) shines as intensity(phi) / (2 pi d) times the transmittance to the pixel,
-//    read from a fan of rays marched from the source, one ray per px of arc at the farthest canvas
-//    corner and a sample per px along each;
+//    read from a fan of rays marched from the source (kFanSectors rays, each sector split into a
+//    ray per px of arc at the length of its longer ray) with a sample per px along each;
 //  - nearer, the mean radiance over kDirectNearRays directions across the cone the light
 //    subtends, marched exactly from the pixel centre through the medium, counting the light's
 //    emission only (the reference solver's quantity for that light).
