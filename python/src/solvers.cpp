@@ -61,6 +61,7 @@ void refuseOthers(const Solve2DArgs& args, Solver2D solver) {
     refuse(args.tracedLevels.has_value(), hrc, "traced_levels", "hrc");
     refuse(args.crossBlur.has_value(), hrc, "cross_blur", "hrc");
     refuse(args.nearField.has_value(), hrc, "near_field", "hrc");
+    refuse(args.directLight.has_value(), hrc, "direct_light", "hrc");
     refuse(args.probeSpacing.has_value(), rc, "probe_spacing", "rc");
     refuse(args.baseRays.has_value(), rc, "base_rays", "rc");
     refuse(args.baseInterval.has_value(), rc, "base_interval", "rc");
@@ -84,6 +85,7 @@ Result<Image> solveOnce(const Medium2D& lit, const SolverChoice& choice, const S
             options.tracedLevels = args.tracedLevels.value_or(options.tracedLevels);
             options.crossBlur = args.crossBlur.value_or(options.crossBlur);
             options.exactNearField = args.nearField.value_or(options.exactNearField);
+            options.exactDirectLight = args.directLight.value_or(options.exactDirectLight);
             options.onProgress = [&](int, int) { relay.advance(); };
             return context ? gi2d::solveHrcOnGpu(*context, lit, options)
                            : gi2d::solveHrc(lit, options);
@@ -207,6 +209,7 @@ std::string Solve2DArgs::firstGiven() const {
         {tracedLevels.has_value(), "traced_levels"},
         {crossBlur.has_value(), "cross_blur"},
         {nearField.has_value(), "near_field"},
+        {directLight.has_value(), "direct_light"},
         {merge.has_value(), "merge"},
         {probeSpacing.has_value(), "probe_spacing"},
         {baseRays.has_value(), "base_rays"},
@@ -236,12 +239,12 @@ void bindSolvers(py::module_& m) {
            std::optional<bool> nearField, std::optional<std::string> merge,
            std::optional<int> probeSpacing, std::optional<int> baseRays,
            std::optional<double> baseInterval, std::optional<int> maxCascades,
-           std::optional<int> jitters, std::string backend, std::string device, int threads,
-           py::object progress) {
-            const Solve2DArgs args{solver,    width,       height,  supersample,
-                                   rays,      seed,        bounces, tracedLevels,
-                                   crossBlur, nearField,   merge,   probeSpacing,
-                                   baseRays,  maxCascades, jitters, baseInterval};
+           std::optional<int> jitters, std::optional<bool> directLight, std::string backend,
+           std::string device, int threads, py::object progress) {
+            const Solve2DArgs args{solver,       width,        height,       supersample, rays,
+                                   seed,         bounces,      tracedLevels, crossBlur,   nearField,
+                                   merge,        probeSpacing, baseRays,     maxCascades, jitters,
+                                   baseInterval, directLight};
             const RenderCommon common{std::move(backend), std::move(device), threads,
                                       std::move(progress)};
             return render(source, args, common);
@@ -254,13 +257,15 @@ void bindSolvers(py::module_& m) {
         py::arg("near_field") = py::none(), py::arg("merge") = py::none(),
         py::arg("probe_spacing") = py::none(), py::arg("base_rays") = py::none(),
         py::arg("base_interval") = py::none(), py::arg("max_cascades") = py::none(),
-        py::arg("jitters") = py::none(), py::arg("backend") = "auto", py::arg("device") = "",
-        py::arg("threads") = 0, py::arg("progress") = py::none(),
+        py::arg("jitters") = py::none(), py::arg("direct_light") = py::none(),
+        py::arg("backend") = "auto", py::arg("device") = "", py::arg("threads") = 0,
+        py::arg("progress") = py::none(),
         R"(Renders a Scene2D or Medium to its fluence, a float32 array (height, width, 3) that owns
 the image (no copy). A VoxelScene goes to render_voxel.
 
 solver: "reference" (default; rays, seed), "hrc" (traced_levels, cross_blur, near_field: the
-exact gather next to lights where fog bounds the rays, on by default), "rc" (merge
+exact gather next to lights where fog bounds the rays, on by default; direct_light: the compact
+lights' direct light added exactly, on by default), "rc" (merge
 "bilinear-fix" or "vanilla", probe_spacing, base_rays, base_interval, max_cascades, jitters) or
 "rc-vanilla". width/height/supersample rasterise a Scene2D at another size. bounces: times the
 fluence is fed back in scenes with albedo (default: the reference converges, hrc and rc bounce

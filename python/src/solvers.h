@@ -23,6 +23,7 @@ struct Solve2DArgs {
     std::optional<std::string> merge;
     std::optional<int> probeSpacing, baseRays, maxCascades, jitters;
     std::optional<double> baseInterval;
+    std::optional<bool> directLight;  // HRC's exact direct light from compact lights (§12.5)
 
     // The first option given, by its Python name ("" when none): voxel scenes refuse them.
     std::string firstGiven() const;

@@ -118,7 +118,8 @@ def test_load_shipped_scene(source_dir):
 
 def test_hrc_near_field_gathers_in_dense_fog_only(source_dir):
     fog = luxel.load_scene(os.path.join(source_dir, "scenes/2d/hard/dense-fog.json"))
-    args = dict(solver="hrc", width=64, height=64, backend="cpu")
+    # The near field alone: at 64 px both lamps are compact lights, whose direct light is exact.
+    args = dict(solver="hrc", width=64, height=64, backend="cpu", direct_light=False)
     gathered, plain = luxel.render(fog, **args), luxel.render(fog, near_field=False, **args)
     assert not np.array_equal(gathered, plain)
     room = luxel.load_scene(os.path.join(source_dir, "scenes/2d/room.json"))
@@ -126,3 +127,13 @@ def test_hrc_near_field_gathers_in_dense_fog_only(source_dir):
     with pytest.raises(luxel.Error, match="near_field applies to solver='hrc'"):
         luxel.render(room, solver="reference", near_field=False, width=16, height=16)
 
+
+def test_hrc_direct_light_splits_compact_lights_only(source_dir):
+    disk = luxel.load_scene(os.path.join(source_dir, "scenes/2d/hard/bright-disk.json"))
+    args = dict(solver="hrc", width=64, height=64, backend="cpu")
+    split, plain = luxel.render(disk, **args), luxel.render(disk, direct_light=False, **args)
+    assert not np.array_equal(split, plain)
+    room = luxel.load_scene(os.path.join(source_dir, "scenes/2d/room.json"))
+    assert np.array_equal(luxel.render(room, **args), luxel.render(room, direct_light=False, **args))
+    with pytest.raises(luxel.Error, match="direct_light applies to solver='hrc'"):
+        luxel.render(room, solver="reference", direct_light=False, width=16, height=16)

@@ -372,16 +372,23 @@ TEST_F(Cli, BenchesVoxelScenes) {
 // The HRC bench times the exact near field in its own column: zero in vacuum, the gather's time
 // in fog dense enough to bound the rays (HRC §12.3).
 TEST_F(Cli, BenchShowsTheNearFieldWhereItActs) {
-    const auto nearColumn = [](const std::string& output, const std::string& size) {
+    // The value in `columns` columns after the size: 8 is near, 9 direct.
+    const auto column = [](const std::string& output, const std::string& size, int columns) {
         std::istringstream table(output.substr(output.find("\n" + size + " ") + 1));
         std::string label;
         double value = -1;
         table >> label;
-        for (int column = 0; column < 8; ++column) table >> value;  // ms .. finish, then near
+        for (int c = 0; c < columns; ++c) table >> value;  // ms .. finish, then near, direct
         return value;
     };
+    const auto nearColumn = [&](const std::string& output, const std::string& size) {
+        return column(output, size, 8);
+    };
+    // At 64 px dense-fog's lamps are compact lights, whose direct light (§12.5) would take them
+    // from the near field: the near field alone.
     const std::string fog = std::string(LUXEL_SOURCE_DIR) + "/scenes/2d/hard/dense-fog.json";
-    RunResult r = runLuxel("bench " + fog + " --backend cpu --sizes 64 --repeat 1");
+    RunResult r =
+        runLuxel("bench " + fog + " --backend cpu --sizes 64 --repeat 1 --no-direct-light");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     ASSERT_NE(r.output.find("      near "), std::string::npos) << r.output;
     EXPECT_GT(nearColumn(r.output, "    64x64"), 0.0) << r.output;
@@ -389,6 +396,16 @@ TEST_F(Cli, BenchShowsTheNearFieldWhereItActs) {
     r = runLuxel("bench " + room + " --backend cpu --sizes 64 --repeat 1");
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_EQ(nearColumn(r.output, "    64x64"), 0.0) << r.output;
+    EXPECT_EQ(column(r.output, "    64x64", 9), 0.0) << r.output;  // no compact light
+    // The compact lights' direct light where there is one, and not with --no-direct-light.
+    const std::string disk = std::string(LUXEL_SOURCE_DIR) + "/scenes/2d/hard/bright-disk.json";
+    r = runLuxel("bench " + disk + " --backend cpu --sizes 64 --repeat 1");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    ASSERT_NE(r.output.find("    direct "), std::string::npos) << r.output;
+    EXPECT_GT(column(r.output, "    64x64", 9), 0.0) << r.output;
+    r = runLuxel("bench " + disk + " --backend cpu --sizes 64 --repeat 1 --no-direct-light");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_EQ(column(r.output, "    64x64", 9), 0.0) << r.output;
 }
 
 TEST_F(Cli, HrcRendersAndRefusesSizesThatDoNotFit) {

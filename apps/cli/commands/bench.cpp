@@ -25,6 +25,7 @@ struct BenchArgs {
     std::string scene = "scenes/2d/room.json", backend = "cpu", device, sizes;
     int repeat = 3;
     int threads = 0;
+    bool noDirectLight = false;
 };
 
 // "merge R3 f0" -> "merge"
@@ -74,9 +75,10 @@ int runBench(const BenchArgs& args) {
                 args.repeat);
     std::printf("%9s %10s %9s", "size", "ms", "Mpix/s");
     // "near": the exact near field of HRC §12.3, 0 where the medium does not bound the rays.
-    const char* kinds[] = {"trace",  "extend", "merge",  "readout",
-                           "finish", "near",   "upload", "download"};
-    const int kindCount = context ? 8 : 6;
+    // "direct": the compact lights' exact direct light of §12.5 (made on the CPU for both).
+    const char* kinds[] = {"trace", "extend", "merge",  "readout", "finish",
+                           "near",  "direct", "upload", "download"};
+    const int kindCount = context ? 9 : 7;
     for (int k = 0; k < kindCount; ++k) std::printf(" %9s", kinds[k]);
     if (!context) std::printf(" %9s", "GB/s");
     std::printf("\n");
@@ -101,8 +103,10 @@ int runBench(const BenchArgs& args) {
             std::vector<gpu::PassTiming> timings;
             std::vector<gi2d::HrcCpuPass> cpuPasses;
             Stopwatch clock;
-            auto result = context ? gi2d::solveHrcOnGpu(*context, *medium, {}, &timings)
-                                  : gi2d::solveHrc(*medium, {}, &cpuPasses);
+            gi2d::HrcOptions options;
+            options.exactDirectLight = !args.noDirectLight;
+            auto result = context ? gi2d::solveHrcOnGpu(*context, *medium, options, &timings)
+                                  : gi2d::solveHrc(*medium, options, &cpuPasses);
             const double ms = clock.milliseconds();
             if (!result) {
                 std::printf("%9s failed: %s\n", label.c_str(), result.error().message().c_str());
@@ -131,13 +135,14 @@ int runBench(const BenchArgs& args) {
     if (context) {
         std::printf(
             "pass columns: GPU time (timestamps) summed over the 4 frustums; near: the exact "
-            "near field where the medium bounds the rays; upload and download are CPU-side "
-            "copies\n");
+            "near field where the medium bounds the rays; direct: the compact lights' direct "
+            "light (CPU); upload and download are CPU-side copies\n");
     } else {
         std::printf(
             "pass columns: wall ms on the calling thread summed over the 4 frustums (waits for "
             "the other threads included); near: the exact near field where the medium bounds "
-            "the rays; GB/s: bytes of intervals, cones, medium and images "
+            "the rays; direct: the compact lights' direct light; GB/s: bytes of intervals, cones, "
+            "medium and images "
             "the passes read and write, per second of the whole solve; memcpy on this machine: "
             "%.1f GB/s (one thread copying 128 MiB)\n",
             measureCopyBandwidth());
@@ -162,6 +167,8 @@ Runner addBenchCommand(CLI::App& app) {
     app.add_option("--threads", args->threads, "CPU worker threads (0 = all cores)")
         ->check(wholeIn(0, 4096))
         ->capture_default_str();
+    app.add_flag("--no-direct-light", args->noDirectLight,
+                 "HRC: let the cascades carry the compact lights' direct light too");
     return [args] { return runBench(*args); };
 }
 

@@ -60,6 +60,7 @@ ImageMetadata metadata2D(const RenderArgs& args, int w, int h, const std::string
             setNumber(m, "luxel.hrc.traced_levels", args.tracedLevels);
             setMetadata(m, "luxel.hrc.cross_blur", args.noBlur ? "no" : "yes");
             setMetadata(m, "luxel.hrc.near_field", args.noNearField ? "no" : "yes");
+            setMetadata(m, "luxel.hrc.direct_light", args.noDirectLight ? "no" : "yes");
             if (!args.frustum.empty()) setMetadata(m, "luxel.hrc.frustum", args.frustum);
             break;
         case gi2d::Solver2D::Rc: {

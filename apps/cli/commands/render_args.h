@@ -42,6 +42,7 @@ struct RenderArgs {
     int tracedLevels = gi2d::HrcOptions{}.tracedLevels;
     bool noBlur = false;
     bool noNearField = false;
+    bool noDirectLight = false;
     std::string frustum;  // debug: one of +x, +y, -x, -y
     int cascade = 0;      // debug: the cascade --view cascade|probes shows (hrc, rc)
     // RC

@@ -81,6 +81,8 @@ Runner addRenderCommand(CLI::App& app) {
     app.add_flag("--no-blur", args->noBlur, "HRC: skip the opacity-gated cross blur (Eq 21)");
     app.add_flag("--no-near-field", args->noNearField,
                  "HRC: skip the exact near field in fog (acts only where every pixel absorbs)");
+    app.add_flag("--no-direct-light", args->noDirectLight,
+                 "HRC: let the cascades carry the compact lights' direct light too");
     app.add_option("--frustum", args->frustum, "HRC debug: only this frustum (+x, +y, -x, -y)");
     app.add_option("--cascade", args->cascade,
                    "debug: the cascade that --view cascade|probes shows")
@@ -192,8 +194,9 @@ Runner addRenderCommand(CLI::App& app) {
         const bool voxelSolver = seeded || args->solverName == "raycast";
         for (const char* name :
              {"--solver", "--rays", "--seed", "--supersample", "--traced-levels", "--no-blur",
-              "--no-near-field", "--frustum", "--cascade", "--merge", "--march", "--probe-spacing",
-              "--base-rays", "--base-interval", "--max-cascades", "--view", "--bounces"}) {
+              "--no-near-field", "--no-direct-light", "--frustum", "--cascade", "--merge",
+              "--march", "--probe-spacing", "--base-rays", "--base-interval", "--max-cascades",
+              "--view", "--bounces"}) {
             // rc names a solver of both kinds; --bounces serves both (runRender sorts them out).
             const bool rcOption =
                 args->solverName == "rc" &&

@@ -103,6 +103,7 @@ Result<Image> solveHrcFor(const RenderArgs& args, const gi2d::Medium2D& medium,
     options.tracedLevels = args.tracedLevels;
     options.crossBlur = !args.noBlur;
     options.exactNearField = !args.noNearField;
+    options.exactDirectLight = !args.noDirectLight;
     options.frustumMask = *mask;
     options.debugCascade = args.view == "cascade" ? std::max(args.cascade, 0) : -1;
     options.onProgress = [&](int, int) { progress.advance(); };

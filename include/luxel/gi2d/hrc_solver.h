@@ -29,6 +29,10 @@ struct HrcOptions {
     // unless those rays would cost more than a budget. Elsewhere (any vacuum or thin medium) it
     // does nothing; off for the debug views and for fewer than four frustums.
     bool exactNearField = true;
+    // The compact lights' direct light added exactly, their emission taken out of the medium the
+    // cascades solve (docs/algorithms/holographic-radiance-cascades.md §12.5), within a budget of
+    // marched pixels; off for the debug views and for fewer than four frustums.
+    bool exactDirectLight = true;
     // Which frustums to sum (bit r: 0 = +x, 1 = +y, 2 = -x, 3 = -y); debug views use one.
     unsigned frustumMask = 0xF;
     // >= 0: instead of the fluence, show cascade n's merged result read at each pixel's next

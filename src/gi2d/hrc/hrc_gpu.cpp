@@ -1,9 +1,12 @@
 // HRC on the GPU: the CPU pass structure (hrc_solver.cpp) as dispatches of the shaders in
 // src/gpu/shaders/gi2d/hrc_*.comp.glsl (built by gpu_passes.h), one submission per frustum.
 #include <algorithm>
+#include <bit>
+#include <chrono>
 #include <string>
 
 #include "gi2d/hrc/cone_merge.h"
+#include "gi2d/hrc/direct_light.h"
 #include "gi2d/hrc/frustum_frame.h"
 #include "gi2d/hrc/gpu_passes.h"
 #include "gi2d/hrc/hrc_geometry.h"
@@ -83,6 +86,24 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
     auto record = [&](const std::string& name, double ms) {
         if (timings) timings->push_back({name, ms});
     };
+    // §12.5: the compact lights' direct light on the CPU, as solveHrc does; the GPU solves the
+    // medium without their emission and the two are summed after the read-back.
+    if (options.exactDirectLight && std::popcount(options.frustumMask & 0xFu) == 4) {
+        const auto start = std::chrono::steady_clock::now();
+        const DirectLight direct = exactDirectLight(medium);
+        if (!direct.empty()) {
+            record("direct light (cpu)", std::chrono::duration<double, std::milli>(
+                                             std::chrono::steady_clock::now() - start)
+                                             .count());
+            HrcOptions rest = options;
+            rest.exactDirectLight = false;
+            Result<Image> solved =
+                solveHrcOnGpu(context, withoutDirectLights(medium, direct), rest, timings);
+            if (!solved) return solved;
+            addDirectLight(direct, *solved);
+            return solved;
+        }
+    }
 
     // Programs.
     using shared::HrcExtendParams, shared::HrcFinishParams, shared::HrcMergeParams,

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <string>
 
+#include "gi2d/hrc/direct_light.h"
 #include "gi2d/hrc/finish.h"
 #include "gi2d/hrc/frustum_frame.h"
 #include "gi2d/hrc/hrc_geometry.h"
@@ -56,6 +57,25 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
         if (options.debugCascade >= levels) {
             return Error("debug cascade " + std::to_string(options.debugCascade) +
                          " does not exist (this size has " + std::to_string(levels) + ")");
+        }
+    }
+    // §12.5: the compact lights' direct light exactly, the cascades on the rest of the emission.
+    if (options.exactDirectLight && !debug && std::popcount(options.frustumMask & 0xFu) == 4) {
+        const auto start = std::chrono::steady_clock::now();
+        const DirectLight direct = exactDirectLight(medium);
+        if (!direct.empty()) {
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
+            HrcOptions rest = options;
+            rest.exactDirectLight = false;
+            Result<Image> solved = solveHrc(withoutDirectLights(medium, direct), rest, passes);
+            if (!solved) return solved;
+            addDirectLight(direct, *solved);
+            if (passes != nullptr && !passes->empty()) {
+                passes->push_back({"direct light", ms, direct.work * 12});
+            }
+            return solved;
         }
     }
     // The sweep's medium window grows with 2^tracedLevels times the distinct lengths inside cells

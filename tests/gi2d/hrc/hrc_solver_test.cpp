@@ -128,6 +128,7 @@ TEST(HrcSolver, FrustumsAddUpAndDebugViewsWork) {
     const Medium2D medium = shippedScene("penumbra.json", 64, 48);
     HrcOptions all;
     all.crossBlur = false;
+    all.exactDirectLight = false;  // single frustums never split (§12.5)
     const Image full = solveHrc(medium, all).value();
     Image sum(64, 48, 3);
     for (unsigned r = 0; r < 4; ++r) {

@@ -1,0 +1,52 @@
+// Exact direct light from compact lights (docs/algorithms/holographic-radiance-cascades.md §12.5).
+// Fluence is linear in emission for a fixed absorption field, so the compact lights' emission is
+// taken out of the medium the cascades solve and their fluence is added here instead:
+//  - beyond kDirectNearFactor radii (+ kDirectNearMargin px) of a light, each of its point sources
+//    (compact_lights.h) shines as intensity(phi) / (2 pi d) times the transmittance to the pixel,
+//    read from a fan of rays marched from the source (kFanSectors rays, each sector split into a
+//    ray per px of arc at the length of its longer ray) with a sample per px along each;
+//  - nearer, the mean radiance over kDirectNearRays directions across the cone the light
+//    subtends, marched exactly from the pixel centre through the medium, counting the light's
+//    emission only (the reference solver's quantity for that light).
+// Lights are taken brightest first while the work stays within a budget; the rest stay in the
+// cascades' medium.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "luxel/core/image.h"
+#include "luxel/gi2d/medium2d.h"
+
+namespace luxel::gi2d::hrc {
+
+inline constexpr int kDirectNearRays = 64;
+inline constexpr int kFanSectors = 256;       // a fan's first rays, split where they run far
+inline constexpr double kFanRaysPerPx = 1.0;  // rays per px of arc at a sector's longer ray
+inline constexpr double kDirectNearFactor = 2.0;
+inline constexpr double kDirectNearMargin = 2.0;
+inline constexpr float kDirectCutoff = 1e-4f;  // a fan ray stops below this T in every channel
+// Work (DirectLight::work) allowed per canvas pixel (per pixel of a 256 x 256 canvas on smaller
+// ones).
+inline constexpr double kDirectWorkPerPixel = 128;
+inline constexpr double kDirectBudgetFloorPixels = 256.0 * 256.0;
+
+struct DirectLight {
+    Image fluence;  // the compact lights' fluence (empty when none)
+    // y * width + x and the share of its emission the cascades no longer see.
+    std::vector<std::pair<std::uint32_t, float>> removed;
+    // Marched pixels and pixels gathered from a fan, the budget's unit.
+    std::uint64_t work = 0;
+    bool empty() const { return removed.empty(); }
+};
+
+DirectLight exactDirectLight(const Medium2D& medium);
+
+// The medium with the removed pixels' emission scaled by 1 - share (absorption unchanged).
+Medium2D withoutDirectLights(const Medium2D& medium, const DirectLight& direct);
+
+// fluence += direct.fluence.
+void addDirectLight(const DirectLight& direct, Image& fluence);
+
+}  // namespace luxel::gi2d::hrc
