@@ -284,6 +284,12 @@ void Mode2D::drawPanel() {
         ImGui::SliderInt("RC probe grids", &view_.rcJitters, 1, 64)) {
         viewChanged();
     }
+    // HRC's exact corrections (renderer_2d.h).
+    if (view_.solver == gi2d::Solver2D::Hrc) {
+        if (ImGui::Checkbox("exact near field", &view_.exactNearField)) viewChanged();
+        ImGui::SameLine();
+        if (ImGui::Checkbox("exact direct light", &view_.exactDirectLight)) viewChanged();
+    }
     const int cascades = cascadeCount(view_);
     if (cascades > 0 && ImGui::SliderInt("cascade (C)", &view_.cascade, -1, cascades - 1,
                                          view_.cascade < 0 ? "fluence" : "cascade %d")) {

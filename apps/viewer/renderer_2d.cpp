@@ -112,7 +112,8 @@ void Renderer2D::setState(State2D&& state) {
     }
     if (mediumDirty_ || a.solver != b.solver || a.merge != b.merge || a.backend != b.backend ||
         a.gi != b.gi || a.cascade != b.cascade || a.device != b.device || a.bounce != b.bounce ||
-        a.bounces != b.bounces || a.rcJitters != b.rcJitters) {
+        a.bounces != b.bounces || a.rcJitters != b.rcJitters ||
+        a.exactNearField != b.exactNearField || a.exactDirectLight != b.exactDirectLight) {
         fluenceDirty_ = true;
     }
     displayDirty_ = true;
@@ -193,6 +194,8 @@ Status Renderer2D::solve(Frame& frame) {
         case gi2d::Solver2D::Hrc: {
             gi2d::HrcOptions options;
             options.debugCascade = view.cascade;
+            options.exactNearField = view.exactNearField;
+            options.exactDirectLight = view.exactDirectLight;
             fluence = gpu ? gi2d::solveHrcOnGpu(*gpu, medium, options, &timings)
                           : gi2d::solveHrc(medium, options);
             break;

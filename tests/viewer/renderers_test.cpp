@@ -64,6 +64,30 @@ TEST(Renderer2D, GiToggleChangesThePictureAndTheWorkSettles) {
     EXPECT_GT(meanOf(lit.picture), 2 * meanOf(dark.picture));
 }
 
+// The panel's exact direct light re-solves: a small lamp's light is HRC's cascades' without it and
+// the exact direct light's with it (holographic-radiance-cascades.md §12.5), so the pictures
+// differ.
+TEST(Renderer2D, DirectLightToggleResolves) {
+    State2D state = stateFor(gi2d::Solver2D::Hrc);
+    auto small = std::make_shared<gi2d::Scene2D>(*state.scene);
+    std::get<gi2d::Circle>(small->shapes[0].geometry).radius = 1.5;
+    state.scene = small;
+    Renderer2D renderer;
+    renderer.setState(State2D(state));
+    const Frame exact = renderer.step();
+    EXPECT_FALSE(renderer.hasMoreWork());
+    state.view.exactDirectLight = false;
+    renderer.setState(State2D(state));
+    ASSERT_TRUE(renderer.hasMoreWork());
+    const Frame cascades = renderer.step();
+    double largest = 0;
+    for (std::size_t i = 0; i < exact.picture.size(); ++i) {
+        largest = std::max(largest, static_cast<double>(std::abs(exact.picture.data()[i] -
+                                                                 cascades.picture.data()[i])));
+    }
+    EXPECT_GT(largest, 1e-3);
+}
+
 // In fog with albedo, each frame adds one bounce until the panel's count, then the work settles.
 TEST(Renderer2D, BounceLightAddsOneBouncePerFrame) {
     State2D state = stateFor(gi2d::Solver2D::Hrc);
