@@ -17,6 +17,7 @@
 #include "cascade_state.h"
 #include "glossy_emitters.h"
 #include "luxel/core/parallel.h"
+#include "luxel/voxel/dda.h"
 #include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/render_image.h"
 #include "luxel/voxel/surface_cast.h"
@@ -95,10 +96,11 @@ void RadianceCascades::setPictureAdaptiveSamples(int adaptiveSamples, double ada
     state_->shading.adaptiveContrast = adaptiveContrast;
 }
 
-Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
+Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng, const Hit* primary) const {
     const VoxelWorld& world = *state_->world;
     const ShadeOptions& shading = state_->shading;
-    const SurfaceHit s = castToSurface(world, state_->textures, ray, shading.stepCap);
+    const SurfaceHit s =
+        castToSurface(world, state_->textures, ray, shading.stepCap, kInfinity, primary);
     if (!s.hit.hit) return skyColor(ray.direction, shading);
     if (s.hit.normal == Int3{}) return {};  // the camera is inside a solid voxel
     // The emitters near the pixel taken exactly at it, the rest of their light (emitterFar)
@@ -163,6 +165,7 @@ Result<Image> RadianceCascades::render(const Camera& camera, int* refinedPixels)
                      std::to_string(height) + " has more than " + std::to_string(kMaxPathPixels) +
                      " pixels");
     }
+    const VoxelWorld& world = *state_->world;
     const ShadeOptions& shading = state_->shading;
     Image out(width, height, 3);
     // Pixel (x, y) from n stratified rays: one random stream per pixel, drawn on through its
@@ -176,8 +179,28 @@ Result<Image> RadianceCascades::render(const Camera& camera, int* refinedPixels)
     };
     const int samples = samplesPerPixel(shading);
     parallelForRange(height, 1, [&](int begin, int end) {
-        for (int y = begin; y < end; ++y)
-            for (int x = 0; x < width; ++x) draw(x, y, samples);
+        if (samples > 1) {
+            for (int y = begin; y < end; ++y)
+                for (int x = 0; x < width; ++x) draw(x, y, samples);
+            return;
+        }
+        // One ray per pixel centre: a row's camera rays cast together first, tiles of them
+        // sharing one frustum walk to where their solids begin (castCameraRays,
+        // docs/algorithms/voxel-traversal.md §4.6; castRay's hits, so the same picture), then
+        // each pixel shaded with its hit.
+        std::vector<Ray> rays(std::size_t(width), Ray{});
+        std::vector<Hit> hits(rays.size());
+        for (int y = begin; y < end; ++y) {
+            for (int x = 0; x < width; ++x)
+                rays[std::size_t(x)] = pixelSampleRay(camera, x, y, 0, 1);
+            castCameraRays(world, rays, hits, kInfinity, shading.stepCap);
+            for (int x = 0; x < width; ++x) {
+                PathRng rng(kReflectionSeed, std::uint64_t(y) * width + x, 0);
+                const Rgb radiance =
+                    pixelRadiance(rays[std::size_t(x)], rng, &hits[std::size_t(x)]);
+                for (int c = 0; c < 3; ++c) out.at(x, y, c) = radiance[c];
+            }
+        }
     });
     // The pixels of strong contrast again with more rays, their mean replacing the first value
     // (the first pass's centre ray is not one of the stratified positions; §4.2).
