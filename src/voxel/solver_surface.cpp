@@ -97,7 +97,7 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
     Rgb out = surface.emission +
               solverSunLobes(world, textures, s.hit, b.diffuse,
                              glossy && !b.mirror() ? &specular : nullptr, shading, light.sunRays,
-                             light.sunRayMap) +
+                             light.sunRayMap, light.sunRaysShareMedia) +
               b.diffuse * light.diffuseRadiance;
     if (b.transmission > 0.0f && b.cosView > 0.0) {
         out += transmitted(world, s, b, shading, light, rng);

@@ -96,6 +96,9 @@ struct SolverLight {
     // light reflected back inside the medium is dropped (the radiance cascades' picture, whose
     // later exits carry F of it and cost a chain of rays each; kMaxMediumExits: none dropped).
     int mediumAirExits = kMaxMediumExits;
+    // The sun's rays take the first one's transmittance where it passed glass or water
+    // (solverSunLobes' shareMedia; the radiance cascades' picture).
+    bool sunRaysShareMedia = false;
 };
 
 // The radiance leaving the surface `s` towards the camera ray `ray` (s.hit.normal non-zero).

@@ -137,6 +137,8 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng, const Hit* pri
                       },
                       kPictureSunRays, kPictureSpecularRays, &state_->sunRayMap};
     light.mediumAirExits = kPictureCameraAirExits;
+    // The disk's rays share one walk through glass (§4.2, "Sun rays through glass").
+    light.sunRaysShareMedia = true;
     if (!faces.nearOffset.empty() || glossy.ray.lamps) {
         if (!faces.nearOffset.empty()) {
             light.nearHighlight = [this, &nearRays](const PathBsdf& specular) {
