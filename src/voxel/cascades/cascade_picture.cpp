@@ -4,7 +4,8 @@
 // render.adaptive_samples rays (adaptive_samples.h), the sun by sky visibility's shadow rays over
 // its disk, the faces' irradiance interpolated; cascade_picture_gpu.cpp draws the same on the GPU.
 // (Casting rows several rays at a time, castRayBatch and occludedBatch, measured no faster here:
-// 45-47 ms against 40-46 ms of CPU at 640x360.)
+// 45-47 ms against 40-46 ms of CPU at 640x360; castCameraRays' frustum walk from outside the
+// world does pay, docs/performance.md "The glass frame at the goal's edge".)
 #include "cascade_picture.h"
 
 #include <algorithm>
