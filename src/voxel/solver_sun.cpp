@@ -213,7 +213,7 @@ bool sunRaysStopAtSolids(const TextureSet* textures, const ShadeOptions& shading
 
 Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
                    const PathBsdf* specular, const ShadeOptions& shading, int sunRays,
-                   const SunRayMap* map) {
+                   const SunRayMap* map, bool shareMedia) {
     if (!(shading.sunIrradiance.maxComponent() > 0.0f)) return {};
     if (!(diffuse.maxComponent() > 0.0f) && !specular) return {};
     const SunSpiral& spiral = sunSpiral(shading, sunRays);
@@ -229,6 +229,10 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
     const bool shareBlockers = sunRaysStopAtSolids(textures, shading);
     const bool mapped = map && map->startsClear(world, hit);
     ShadowBlockers blockers;
+    // With shareMedia, the first ray's transmittance where it passed glass or water, which the
+    // rays after it take without their walks (docs/algorithms/voxel-radiance-cascades.md §4.2,
+    // "Sun rays through glass"; negative: none).
+    Rgb throughMedia(-1.0f);
     for (int i = 0; i < rays; ++i) {
         const Vec3d& l = spiral.directions[std::size_t(i)];
         const double cosSun = dot(n, l);
@@ -236,8 +240,11 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
         if (!(cosSun > 0.0)) continue;
         const Ray ray{hit.point, l};
         Rgb t(1.0f);
-        const SunRayProof proof = map ? map->prove(hit, l, mapped) : SunRayProof::None;
-        if (proof == SunRayProof::Open) {
+        const bool shared = throughMedia.r >= 0.0f;
+        const SunRayProof proof = map && !shared ? map->prove(hit, l, mapped) : SunRayProof::None;
+        if (shared) {
+            t = throughMedia;
+        } else if (proof == SunRayProof::Open) {
             // Proven to reach the sky: transmittance 1, as the walk finds it.
         } else if (shareBlockers) {
             // The same answer as sunRayTransmittance's walk, which the map or an earlier ray's
@@ -246,6 +253,10 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
             if (blockers.blocked(world, textures, ray, shading.stepCap)) continue;
         } else {
             t = sunRayTransmittance(world, textures, ray, shading);
+            // Strictly between none and all: the line passed a medium (its Fresnel factors).
+            if (shareMedia && i == 0 && t.maxComponent() > 0.0f && t.maxComponent() < 1.0f) {
+                throughMedia = t;
+            }
             if (!(t.maxComponent() > 0.0f)) continue;
         }
         cosines += t * float(cosSun);

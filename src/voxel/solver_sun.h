@@ -73,10 +73,15 @@ bool sunRaysStopAtSolids(const TextureSet* textures, const ShadeOptions& shading
 // lit by the sun's disk over `sunRays` rays of its spiral (one for a delta sun). No rays when
 // neither lobe can reflect. A ray that `map` proves open (its spiral's directions mapped) takes
 // transmittance 1 without being walked, and one it proves blocked (while sunRaysStopAtSolids)
-// none: the walk's answers.
+// none: the walk's answers. With `shareMedia`, when the spiral's first ray is walked and passes
+// glass or water (a transmittance strictly between 0 and 1), the other rays take its
+// transmittance without their walks: the disk is a fraction of a degree wide, so they cross the
+// same medium (docs/algorithms/voxel-radiance-cascades.md §4.2, "Sun rays through glass"; the
+// radiance cascades' camera surface, as on the GPU).
 Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hit& hit, Rgb diffuse,
                    const PathBsdf* specular, const ShadeOptions& shading,
-                   int sunRays = kSunDiskRays, const SunRayMap* map = nullptr);
+                   int sunRays = kSunDiskRays, const SunRayMap* map = nullptr,
+                   bool shareMedia = false);
 
 // The radiance of the sun's disk along a unit direction that escapes to the sky after a delta lobe
 // (a mirror, a refraction), as the path tracer adds it: 0 outside the disk and for a delta sun.

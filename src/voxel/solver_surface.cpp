@@ -97,7 +97,7 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
     Rgb out = surface.emission +
               solverSunLobes(world, textures, s.hit, b.diffuse,
                              glossy && !b.mirror() ? &specular : nullptr, shading, light.sunRays,
-                             light.sunRayMap) +
+                             light.sunRayMap, light.sunRaysShareMedia) +
               b.diffuse * light.diffuseRadiance;
     if (b.transmission > 0.0f && b.cosView > 0.0) {
         out += transmitted(world, s, b, shading, light, rng);
@@ -116,7 +116,10 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
     Rgb weighted, lamps;
     double weights = 0.0;
     const GgxSampler ggx(specular);
-    for (int k = 0; k < light.specularRays; ++k) {
+    const int rays = light.sharpLobeOneRay && b.alpha <= kSolverSharpAlpha
+                         ? std::min(light.specularRays, 1)
+                         : light.specularRays;
+    for (int k = 0; k < rays; ++k) {
         const BsdfSample sample = ggx.sample(rng);
         if (sample.lobe != BsdfSample::Lobe::Specular) continue;
         const double w = sample.weight.r;
@@ -133,12 +136,12 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
                 lamps += g.lamp * float(w) *
                          (lobePdf * gpu::shared::glossyBalance(float(g.lightDensity), lobePdf,
                                                                float(LUXEL_GLOSSY_LIGHT_SAMPLES),
-                                                               float(light.specularRays)));
+                                                               float(rays)));
             }
         }
         weights += w;
     }
-    if (light.glossyLamps) out += light.glossyLamps(lobe, light.specularRays, rng);
+    if (light.glossyLamps) out += light.glossyLamps(lobe, rays, rng);
     out += b.specular * lamps;
     if (!(weights > 0.0)) return out;
     const double albedo = directionalAlbedoGgx(b.cosView, b.alpha);

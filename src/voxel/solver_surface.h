@@ -44,6 +44,11 @@ inline constexpr int kSolverFollowDepth = 2;
 inline constexpr int kMaxMediumExits = 8;
 // Metals at most this rough are followed: their reflection is sharp.
 inline constexpr float kSolverFollowRoughness = 0.1f;
+// A GGX lobe at most this sharp (alpha, roughness 0.05: its reflection directions lie within a
+// few tenths of a degree, a pixel or two of a 640x360 picture) takes one direction where
+// SolverLight::sharpLobeOneRay is set: a second lands where the first did
+// (docs/algorithms/voxel-radiance-cascades.md §4.2, "Sharp lobes take one ray").
+inline constexpr float kSolverSharpAlpha = 0.0025f;
 
 // Whether a ray that meets a voxel of material `m` follows it with shadeSolverSurface rather than
 // taking its face as opaque and Lambertian: glass and water (a transmission lobe, with
@@ -96,6 +101,12 @@ struct SolverLight {
     // light reflected back inside the medium is dropped (the radiance cascades' picture, whose
     // later exits carry F of it and cost a chain of rays each; kMaxMediumExits: none dropped).
     int mediumAirExits = kMaxMediumExits;
+    // The sun's rays take the first one's transmittance where it passed glass or water
+    // (solverSunLobes' shareMedia; the radiance cascades' picture).
+    bool sunRaysShareMedia = false;
+    // A lobe at most kSolverSharpAlpha sharp takes one of the specularRays directions (the
+    // radiance cascades' picture).
+    bool sharpLobeOneRay = false;
 };
 
 // The radiance leaving the surface `s` towards the camera ray `ray` (s.hit.normal non-zero).

@@ -216,6 +216,21 @@ TEST(CascadesPictureGpu, GlassMirrorAndMetalMatchTheCpuPicture) {
     }
 }
 
+// The glass room's mirror made a polished metal of roughness 0.03 (GGX alpha 0.0009): a sharp
+// lobe, which takes one GGX direction at the camera's surface on both backends (§4.2, "Sharp
+// lobes take one ray"), its lamp light-sampled against that one ray.
+TEST(CascadesPictureGpu, SharpMetalMatchesTheCpuPicture) {
+    REQUIRE_CONTEXT(context);
+    GlassRoom room;
+    EXPECT_TRUE(room.o.materials.setSlot(1, metal(0.03f, Rgb(0.95f))).ok());
+    const Camera mirror = *Camera::lookAt({12.0, 4.0, 12.0}, {1.0, 3.0, 8.0}, 50.0, 64, 36);
+    std::vector<Pictures> drawn;
+    drawBoth(*context, room.world, nullptr, room.o, {mirror}, &drawn);
+    ASSERT_EQ(drawn.size(), 1u);
+    expectWithin(compare(drawn[0].cpu, drawn[0].gpu), boundsFor(*context),
+                 "glass room in a sharp metal");
+}
+
 // A closed 14^3 white room with a lamp on the floor and a glass voxel and a white block beside it
 // (lampRoomLight's materials); with `floorVoxel` the floor is that voxel instead.
 VoxelWorld lampRoom(const Voxel* floorVoxel) {

@@ -275,4 +275,72 @@ TEST(SolverGlass, MirrorAndGlassShowTheSunsDisk) {
     EXPECT_NEAR(q.rc.at(2, 2, 0), through, 2e-3 * through);
 }
 
+// The cascades' camera surface shares the disk's walk through glass (solverSunLobes' shareMedia;
+// docs/algorithms/voxel-radiance-cascades.md §4.2, "Sun rays through glass"): where the spiral's
+// first ray passes the slab, every ray takes its transmittance; where it reaches the sky, each
+// ray is walked as before; without media nothing is shared.
+TEST(SolverGlass, SunRaysShareTheFirstRaysWalkThroughGlass) {
+    SlabScene scene;
+    scene.o.sunAngularRadius = 0.05;  // about 3 degrees, so the rays part visibly
+    const SunDisk sun = SunDisk::make(scene.o.sunDirection, scene.o.sunAngularRadius);
+    const int rays = 4;
+    const auto floorAt = [](double x, double z) {
+        Hit h;
+        h.hit = true;
+        h.voxel = {int(x), 0, int(z)};
+        h.normal = {0, 1, 0};
+        h.point = {x, 1.0, z};
+        return h;
+    };
+    const auto lobes = [&](const Hit& h, bool share, const ShadeOptions& o) {
+        return solverSunLobes(scene.world, nullptr, h, Rgb(0.5f), nullptr, o, rays, nullptr, share);
+    };
+    const auto transmittance = [&](const Hit& h, int i, const ShadeOptions& o) {
+        return sunRayTransmittance(scene.world, nullptr, {h.point, sun.spiral(i, rays)}, o);
+    };
+    // Under the slab's middle: the first ray's transmittance for all, within 2e-3 of each ray's own
+    // (the rays cross the slab at angles up to 6 degrees apart, their paths inside differing a
+    // little).
+    const Hit middle = floorAt(12.3, 11.7);
+    const Rgb first = transmittance(middle, 0, scene.o);
+    ASSERT_GT(first.g, 0.1f);
+    ASSERT_LT(first.g, 0.9f);
+    double cosines = 0.0;
+    for (int i = 0; i < rays; ++i) cosines += sun.spiral(i, rays).y;
+    const Rgb perRay = sun.radianceOverPdf(scene.o.sunIrradiance) * float(1.0 / rays);
+    const Rgb shared = lobes(middle, true, scene.o);
+    EXPECT_NEAR(shared.g, 0.5 * perRay.g * first.g * cosines / kPi, 1e-6 * shared.g);
+    EXPECT_NEAR(shared.g, lobes(middle, false, scene.o).g, 2e-3 * shared.g);
+    // Along the slab's edge: where the first ray is open and another passes the slab, the rays
+    // are each walked; where the first passes it and another is open, the open one is dimmed.
+    int openFirst = 0, sharedEdge = 0;
+    for (double x = 18.0; x < 21.0; x += 0.002) {
+        const Hit h = floorAt(x, 12.5);
+        const float t0 = transmittance(h, 0, scene.o).g;
+        bool anyOpen = false, anyMedium = false;
+        for (int i = 1; i < rays; ++i) {
+            const float t = transmittance(h, i, scene.o).g;
+            anyOpen = anyOpen || t == 1.0f;
+            anyMedium = anyMedium || (t > 0.0f && t < 1.0f);
+        }
+        if (t0 == 1.0f && anyMedium) {
+            ++openFirst;
+            EXPECT_EQ(lobes(h, true, scene.o).g, lobes(h, false, scene.o).g) << x;
+        }
+        if (t0 < 1.0f && anyOpen) {
+            ++sharedEdge;
+            EXPECT_LT(lobes(h, true, scene.o).g, lobes(h, false, scene.o).g) << x;
+        }
+    }
+    EXPECT_GT(openFirst, 0);
+    EXPECT_GT(sharedEdge, 0);
+    // Glass opaque (refraction off): 0 or 1 per ray, nothing shared, the same to the bit.
+    ShadeOptions opaque = scene.o;
+    opaque.refraction = false;
+    for (double x = 2.0; x < 22.0; x += 0.01) {
+        const Hit h = floorAt(x, 12.5);
+        EXPECT_EQ(lobes(h, true, opaque).g, lobes(h, false, opaque).g) << x;
+    }
+}
+
 }  // namespace

@@ -146,8 +146,9 @@ class RadianceCascades {
     // back in glossy->lamp instead, for multiple importance sampling (cascade_picture.cpp).
     Rgb reflectedLight(const Ray& r, bool delta, int depth, PathRng& rng,
                        cascades::GlossyRay* glossy = nullptr) const;
-    // The picture's radiance along one camera ray.
-    Rgb pixelRadiance(const Ray& ray, PathRng& rng) const;
+    // The picture's radiance along one camera ray; `primary`, when given, is castRay's hit of
+    // it made already (castCameraRays, cascade_picture.cpp).
+    Rgb pixelRadiance(const Ray& ray, PathRng& rng, const Hit* primary = nullptr) const;
     std::unique_ptr<State> state_;
 };
 

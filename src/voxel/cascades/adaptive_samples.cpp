@@ -19,15 +19,18 @@ std::vector<std::uint32_t> adaptivePixels(const Image& picture, double contrast,
     const int width = picture.width(), height = picture.height();
     const std::size_t count = std::size_t(width) * std::size_t(height);
     if (count == 0 || picture.channels() < 3 || !(contrast >= 0.0)) return {};
-    // Luminance per pixel, a non-finite one as black; the mean summed in pixel order.
+    // Luminance per pixel, a non-finite one as black, rows in parallel (the picture's other
+    // thread would wait for this one); the mean summed in pixel order.
     std::vector<float> luminance(count);
+    parallelForRange(height, 8, [&](int begin, int end) {
+        for (std::size_t i = std::size_t(begin) * width; i < std::size_t(end) * width; ++i) {
+            const float* p = picture.data() + i * std::size_t(picture.channels());
+            const double y = pathLuminance(Rgb(p[0], p[1], p[2]));
+            luminance[i] = std::isfinite(y) ? float(y) : 0.0f;
+        }
+    });
     double sum = 0.0;
-    for (std::size_t i = 0; i < count; ++i) {
-        const float* p = picture.data() + i * std::size_t(picture.channels());
-        const double y = pathLuminance(Rgb(p[0], p[1], p[2]));
-        luminance[i] = std::isfinite(y) ? float(y) : 0.0f;
-        sum += luminance[i];
-    }
+    for (const float y : luminance) sum += y;
     const double mean = sum / double(count);
     if (!(mean > 0.0)) return {};
     const float threshold = float(contrast * mean);

@@ -4,7 +4,8 @@
 // render.adaptive_samples rays (adaptive_samples.h), the sun by sky visibility's shadow rays over
 // its disk, the faces' irradiance interpolated; cascade_picture_gpu.cpp draws the same on the GPU.
 // (Casting rows several rays at a time, castRayBatch and occludedBatch, measured no faster here:
-// 45-47 ms against 40-46 ms of CPU at 640x360.)
+// 45-47 ms against 40-46 ms of CPU at 640x360; castCameraRays' frustum walk from outside the
+// world does pay, docs/performance.md "The glass frame at the goal's edge".)
 #include "cascade_picture.h"
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include "cascade_state.h"
 #include "glossy_emitters.h"
 #include "luxel/core/parallel.h"
+#include "luxel/voxel/dda.h"
 #include "luxel/voxel/path_trace.h"
 #include "luxel/voxel/render_image.h"
 #include "luxel/voxel/surface_cast.h"
@@ -95,10 +97,11 @@ void RadianceCascades::setPictureAdaptiveSamples(int adaptiveSamples, double ada
     state_->shading.adaptiveContrast = adaptiveContrast;
 }
 
-Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
+Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng, const Hit* primary) const {
     const VoxelWorld& world = *state_->world;
     const ShadeOptions& shading = state_->shading;
-    const SurfaceHit s = castToSurface(world, state_->textures, ray, shading.stepCap);
+    const SurfaceHit s =
+        castToSurface(world, state_->textures, ray, shading.stepCap, kInfinity, primary);
     if (!s.hit.hit) return skyColor(ray.direction, shading);
     if (s.hit.normal == Int3{}) return {};  // the camera is inside a solid voxel
     // The emitters near the pixel taken exactly at it, the rest of their light (emitterFar)
@@ -135,6 +138,11 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng) const {
                       },
                       kPictureSunRays, kPictureSpecularRays, &state_->sunRayMap};
     light.mediumAirExits = kPictureCameraAirExits;
+    // The disk's rays share one walk through glass (§4.2, "Sun rays through glass").
+    light.sunRaysShareMedia = true;
+    // A polished metal's or glass's sharp GGX lobe takes one direction (§4.2, "Sharp lobes take
+    // one ray").
+    light.sharpLobeOneRay = true;
     if (!faces.nearOffset.empty() || glossy.ray.lamps) {
         if (!faces.nearOffset.empty()) {
             light.nearHighlight = [this, &nearRays](const PathBsdf& specular) {
@@ -163,6 +171,7 @@ Result<Image> RadianceCascades::render(const Camera& camera, int* refinedPixels)
                      std::to_string(height) + " has more than " + std::to_string(kMaxPathPixels) +
                      " pixels");
     }
+    const VoxelWorld& world = *state_->world;
     const ShadeOptions& shading = state_->shading;
     Image out(width, height, 3);
     // Pixel (x, y) from n stratified rays: one random stream per pixel, drawn on through its
@@ -175,9 +184,34 @@ Result<Image> RadianceCascades::render(const Camera& camera, int* refinedPixels)
         for (int c = 0; c < 3; ++c) out.at(x, y, c) = radiance[c];
     };
     const int samples = samplesPerPixel(shading);
+    const Vec3d eye = camera.position();
+    const Int3 size = world.size();
+    const bool fromOutside = !(eye.x >= 0.0 && eye.y >= 0.0 && eye.z >= 0.0 && eye.x <= size.x &&
+                               eye.y <= size.y && eye.z <= size.z);
     parallelForRange(height, 1, [&](int begin, int end) {
-        for (int y = begin; y < end; ++y)
-            for (int x = 0; x < width; ++x) draw(x, y, samples);
+        if (samples > 1 || !fromOutside) {
+            for (int y = begin; y < end; ++y)
+                for (int x = 0; x < width; ++x) draw(x, y, samples);
+            return;
+        }
+        // One ray per pixel centre from outside the world: a row's camera rays cast together
+        // first, tiles of them sharing one frustum walk to where their solids begin
+        // (castCameraRays, docs/algorithms/voxel-traversal.md §4.6; castRay's hits, so the same
+        // picture), then each pixel shaded with its hit. From inside (thin-walls' closed room)
+        // the frustum walk measured no faster.
+        std::vector<Ray> rays(std::size_t(width), Ray{});
+        std::vector<Hit> hits(rays.size());
+        for (int y = begin; y < end; ++y) {
+            for (int x = 0; x < width; ++x)
+                rays[std::size_t(x)] = pixelSampleRay(camera, x, y, 0, 1);
+            castCameraRays(world, rays, hits, kInfinity, shading.stepCap);
+            for (int x = 0; x < width; ++x) {
+                PathRng rng(kReflectionSeed, std::uint64_t(y) * width + x, 0);
+                const Rgb radiance =
+                    pixelRadiance(rays[std::size_t(x)], rng, &hits[std::size_t(x)]);
+                for (int c = 0; c < 3; ++c) out.at(x, y, c) = radiance[c];
+            }
+        }
     });
     // The pixels of strong contrast again with more rays, their mean replacing the first value
     // (the first pass's centre ray is not one of the stratified positions; §4.2).

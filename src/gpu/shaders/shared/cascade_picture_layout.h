@@ -36,6 +36,9 @@ LUXEL_SHARED_BEGIN
 #define LUXEL_PICTURE_FOLLOWED_AIR_EXITS 1
 // Metals at most this rough are followed (kSolverFollowRoughness).
 #define LUXEL_PICTURE_FOLLOW_ROUGHNESS 0.1
+// A GGX lobe at most this sharp (alpha; roughness 0.05) takes one reflection direction
+// (kSolverSharpAlpha, solver_surface.h).
+#define LUXEL_PICTURE_SHARP_ALPHA 0.0025
 // The GGX albedo table's nodes per side (cosView, alpha; ggx_albedo.cpp).
 #define LUXEL_PICTURE_ALBEDO_SIDE 24
 #define LUXEL_PICTURE_EMPTY_SLOT 0xFFFFFFFFu

@@ -40,7 +40,9 @@ vec3 sunRayTransmittance(vec3 origin, vec3 direction) {
 }
 
 // solverSunLobes (solver_sun.h): the diffuse lobe and, when `glossy`, the smooth lobes of
-// `specular` lit by the sun's disk over `sunRays` rays of its spiral (one for a delta sun).
+// `specular` lit by the sun's disk over `sunRays` rays of its spiral (one for a delta sun). The
+// rays take the first one's transmittance where it passed glass or water (its shareMedia, which
+// the cascades' picture sets; the followed surfaces cast one ray).
 vec3 solverSunLobes(Hit hit, vec3 diffuse, bool glossy, PathBsdf specular, int sunRays) {
     const vec3 irradiance = sunIrradiance();
     if (!(maxComponent(irradiance) > 0.0)) return vec3(0.0);
@@ -53,6 +55,9 @@ vec3 solverSunLobes(Hit hit, vec3 diffuse, bool glossy, PathBsdf specular, int s
     const vec3 bitangent = vec3(path.sunBitangentX, path.sunBitangentY, path.sunBitangentZ);
     const float golden = LUXEL_PATH_PI * (3.0 - sqrt(5.0));
     vec3 cosines = vec3(0.0), light = vec3(0.0);
+    // The first ray's transmittance through a medium, shared by the rays after it (negative:
+    // none).
+    vec3 throughMedia = vec3(-1.0);
     for (int i = 0; i < rays; ++i) {
         // SunDisk::spiral: area-uniform rings turned by the golden angle.
         const vec3 l = delta ? sunAxis()
@@ -62,7 +67,11 @@ vec3 solverSunLobes(Hit hit, vec3 diffuse, bool glossy, PathBsdf specular, int s
                                                  golden * float(i));
         const float cosSun = dot(n, l);
         if (!(cosSun > 0.0)) continue;
-        const vec3 t = sunRayTransmittance(hit.point, l);
+        vec3 t = throughMedia;
+        if (!(throughMedia.x >= 0.0)) {
+            t = sunRayTransmittance(hit.point, l);
+            if (i == 0 && maxComponent(t) > 0.0 && maxComponent(t) < 1.0) throughMedia = t;
+        }
         if (!(maxComponent(t) > 0.0)) continue;
         cosines += t * cosSun;
         if (glossy) light += pathBsdfLight(specular, l, perRay, 0.0) * t;

@@ -69,7 +69,11 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
     // Then the reflection: one mirror ray, or GGX directions weighted by their sampling weights.
     specular.specular = vec3(1.0);
     specular.pSpecular = 1.0;
-    int reflections = glossy ? (mirror ? 1 : specularRays) : 0;
+    // A sharp lobe takes one GGX direction (kSolverSharpAlpha, SolverLight::sharpLobeOneRay: the
+    // picture sets it at the camera's surface, whose level alone casts more than one).
+    const int lobeRays =
+        b.alpha <= LUXEL_PICTURE_SHARP_ALPHA ? min(specularRays, 1) : specularRays;
+    int reflections = glossy ? (mirror ? 1 : lobeRays) : 0;
     const vec3 n = vec3(s.hit.normal);
     vec3 weighted = vec3(0.0);
     float weights = 0.0;
@@ -147,7 +151,7 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
                 lamps += pictureLampEmission * ggxWeight *
                          (lobePdf * glossyBalance(pictureLampDensity, lobePdf,
                                                   float(LUXEL_GLOSSY_LIGHT_SAMPLES),
-                                                  float(specularRays)));
+                                                  float(lobeRays)));
             }
 #endif
         }
@@ -155,7 +159,7 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
 #ifdef LUXEL_SOLVER_NEAR
     if (glossy && !mirror) {
         result += nearHighlight;
-        result += glossyLampLight(s.hit, lobe, specularRays, rng);
+        result += glossyLampLight(s.hit, lobe, lobeRays, rng);
         result += b.specular * lamps;
     }
 #endif
