@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <random>
 #include <string>
 
 #include "gi2d/hrc/compact_lights.h"
@@ -189,6 +190,50 @@ TEST(HrcDirectLight, SubpixelLightsBetweenWallsNearTheReference) {
     EXPECT_LT(after.relativeL1, 0.02);
     EXPECT_LT(after.rmseOfMean, 0.04);
     EXPECT_LT(after.rmseOfMean, 0.6 * before.rmseOfMean);
+}
+
+TEST(HrcDirectLight, VacuumSectorsMatchTheDenseFan) {
+    // Random compact lights among random occluders and a patch of thin fog: fans whose vacuum
+    // sectors are not split give the dense fans' light to rounding, for much less work.
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::uint64_t denseWork = 0, sparseWork = 0;
+    for (int scene = 0; scene < 6; ++scene) {
+        std::string shapes = R"({"type": "circle", "center": [)" +
+                             std::to_string(20 + 40 * u(rng)) + ", " +
+                             std::to_string(20 + 40 * u(rng)) + R"(], "radius": )" +
+                             std::to_string(0.3 + 2.2 * u(rng)) +
+                             R"(, "emission": [1, 0.8, 0.6], "intensity": 30, "opaque": true})";
+        for (int k = 0; k < 5; ++k) {
+            shapes += R"(, {"type": "box", "center": [)" + std::to_string(80 * u(rng)) + ", " +
+                      std::to_string(80 * u(rng)) + R"(], "size": [)" +
+                      std::to_string(1 + 8 * u(rng)) + ", " + std::to_string(1 + 8 * u(rng)) +
+                      R"(], "angle": )" + std::to_string(90 * u(rng)) + R"(, "opaque": true})";
+        }
+        if (scene % 2 == 1) {
+            shapes += R"(, {"type": "circle", "center": [)" + std::to_string(80 * u(rng)) + ", " +
+                      std::to_string(80 * u(rng)) + R"(], "radius": 9, "absorption": 0.05})";
+        }
+        const Medium2D medium =
+            mediumFrom(R"({"canvas": [80, 80], "shapes": [)" + shapes + "]}", 80);
+        DirectLightOptions dense;
+        dense.vacuumSectors = false;
+        const DirectLight a = exactDirectLight(medium, dense);
+        const DirectLight b = exactDirectLight(medium);
+        ASSERT_FALSE(a.empty());
+        ASSERT_EQ(a.removed, b.removed);
+        double most = 0, differs = 0;
+        for (std::size_t i = 0; i < a.fluence.size(); ++i) {
+            most = std::max(most, static_cast<double>(a.fluence.data()[i]));
+            differs = std::max(
+                differs, std::abs(static_cast<double>(a.fluence.data()[i] - b.fluence.data()[i])));
+        }
+        EXPECT_LE(differs, 1e-6 * most) << "scene " << scene;
+        denseWork += a.work, sparseWork += b.work;
+    }
+    std::printf("vacuum sectors: work %.2f of the dense fans'\n",
+                static_cast<double>(sparseWork) / static_cast<double>(denseWork));
+    EXPECT_LT(static_cast<double>(sparseWork), 0.7 * static_cast<double>(denseWork));
 }
 
 }  // namespace
