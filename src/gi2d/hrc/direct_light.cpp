@@ -154,9 +154,12 @@ struct FanRay {
         yHi = -1;
     int samples() const { return n; }
     bool dark(int i) const { return !open && i >= n; }
-    const float* at(int i) const { return t.data() + static_cast<std::size_t>(std::min(i, n)) * 3; }
-    // Left the canvas with nothing absorbed on the way.
-    bool clear() const { return open && at(n)[0] == 1 && at(n)[1] == 1 && at(n)[2] == 1; }
+    // Left the canvas with nothing absorbed on the way: T = 1 all along, no samples stored.
+    bool clear = false;
+    const float* at(int i) const {
+        static constexpr float kOnes[3] = {1, 1, 1};
+        return clear ? kOnes : t.data() + static_cast<std::size_t>(std::min(i, n)) * 3;
+    }
 };
 
 FanRay marchFanRay(const Medium2D& medium, const OwnPixels& own, Vec2d origin, double angle) {
@@ -207,6 +210,8 @@ FanRay marchFanRay(const Medium2D& medium, const OwnPixels& own, Vec2d origin, d
         }
     }
     ray.n = static_cast<int>(samples.size() / 3);
+    ray.clear = ray.open && T[0] == 1 && T[1] == 1 && T[2] == 1;
+    if (ray.clear) return ray;
     for (int c = 0; c < 3; ++c) samples.push_back(ray.open ? samples[samples.size() - 3] : 0.0f);
     ray.t.assign(samples.begin(), samples.end());
     return ray;
@@ -258,8 +263,8 @@ Fan marchFan(const Medium2D& medium, const OwnPixels& own, const PointSource& so
         parallelForRange(sectors, 8, [&](int begin, int end) {
             for (int i = begin; i < end; ++i) {
                 const auto si = static_cast<std::size_t>(i);
-                vacuum[si] = lit[si] && coarse[si].clear() &&
-                             coarse[static_cast<std::size_t>((i + 1) % sectors)].clear() &&
+                vacuum[si] = lit[si] && coarse[si].clear &&
+                             coarse[static_cast<std::size_t>((i + 1) % sectors)].clear &&
                              absorbers->vacuumWedge(o, i * sectorAngle, (i + 1) * sectorAngle);
             }
         });
@@ -341,8 +346,12 @@ void gatherFan(const CompactLight& light, const PointSource& source, const Fan& 
                 if (!(intensity.r > 0 || intensity.g > 0 || intensity.b > 0)) continue;
                 const float e[3] = {intensity.r, intensity.g, intensity.b};
                 const float scale = share * static_cast<float>(1.0 / (kTwoPi * d));
-                const float *a0 = r0.at(k), *b0 = r0.at(k + 1), *a1 = r1.at(k), *b1 = r1.at(k + 1);
                 float* dst = &out.at(x, y, 0);
+                if (r0.clear && r1.clear) {  // T = 1
+                    for (int c = 0; c < 3; ++c) dst[c] += e[c] * scale;
+                    continue;
+                }
+                const float *a0 = r0.at(k), *b0 = r0.at(k + 1), *a1 = r1.at(k), *b1 = r1.at(k + 1);
                 for (int c = 0; c < 3; ++c) {
                     const float t0 = a0[c] + g * (b0[c] - a0[c]);
                     const float t1 = a1[c] + g * (b1[c] - a1[c]);
