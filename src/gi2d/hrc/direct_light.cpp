@@ -187,15 +187,25 @@ FanRay marchFanRay(const Medium2D& medium, const OwnPixels& own, Vec2d origin, d
         const double exit = std::min(tMaxX, tMaxY);
         const Rgb s = own.has(cx, cy) ? Rgb{} : medium.absorption.rgb(cx, cy);
         const float sigma[3] = {s.r, s.g, s.b};
-        for (; next <= exit; ++next) {
-            for (int c = 0; c < 3; ++c) {
-                samples.push_back(sigma[c] > 0
-                                      ? T[c] * std::exp(-sigma[c] * static_cast<float>(next - t))
-                                      : T[c]);
+        if (s.r > 0 && s.r == s.g && s.g == s.b) {
+            // Grey (fog, walls): one exp for the three channels, the same values.
+            for (; next <= exit; ++next) {
+                const float e = std::exp(-sigma[0] * static_cast<float>(next - t));
+                for (float v : T) samples.push_back(v * e);
             }
-        }
-        for (int c = 0; c < 3; ++c) {
-            if (sigma[c] > 0) T[c] *= std::exp(-sigma[c] * static_cast<float>(exit - t));
+            const float e = std::exp(-sigma[0] * static_cast<float>(exit - t));
+            for (float& v : T) v *= e;
+        } else {
+            for (; next <= exit; ++next) {
+                for (int c = 0; c < 3; ++c) {
+                    samples.push_back(
+                        sigma[c] > 0 ? T[c] * std::exp(-sigma[c] * static_cast<float>(next - t))
+                                     : T[c]);
+                }
+            }
+            for (int c = 0; c < 3; ++c) {
+                if (sigma[c] > 0) T[c] *= std::exp(-sigma[c] * static_cast<float>(exit - t));
+            }
         }
         t = exit;
         if (std::max(T[0], std::max(T[1], T[2])) < kDirectCutoff) break;
@@ -223,6 +233,9 @@ struct Fan {
     std::vector<int> first, count;  // sector i: rays first[i] .. first[i] + count[i] - 1
     int x0 = 0, x1 = -1, y0 = 0, y1 = -1;
     std::uint64_t steps = 0;
+    // No ray left the canvas: every ray is dark from `reach` px on (its longest ray's samples).
+    bool closed = true;
+    int reach = 0;
 };
 
 // The fan starts with kFanSectors rays and splits each sector
@@ -299,6 +312,8 @@ Fan marchFan(const Medium2D& medium, const OwnPixels& own, const PointSource& so
     result.x0 = w, result.y0 = h;
     for (const FanRay& r : fan) {
         result.steps += static_cast<std::uint64_t>(r.samples());
+        result.closed = result.closed && !r.open;
+        result.reach = std::max(result.reach, r.samples());
         if (r.samples() == 0) continue;
         result.x0 = std::min(result.x0, r.xLo), result.x1 = std::max(result.x1, r.xHi);
         result.y0 = std::min(result.y0, r.yLo), result.y1 = std::max(result.y1, r.yHi);
@@ -320,7 +335,17 @@ void gatherFan(const CompactLight& light, const PointSource& source, const Fan& 
     if (x1 < x0) return;
     parallelForRange(y1 - y0 + 1, 4, [&](int begin, int end) {
         for (int y = y0 + begin; y < y0 + end; ++y) {
-            for (int x = x0; x <= x1; ++x) {
+            // A closed fan lights nothing from `reach` px on (both rays dark there): the row's
+            // pixels within it, a pixel of margin (what fades in fog, the corners of its box).
+            int xa = x0, xb = x1;
+            if (fan_.closed) {
+                const double dy = y + 0.5 - o.y, r = fan_.reach + 1.0;
+                if (dy * dy >= r * r) continue;
+                const double half = std::sqrt(r * r - dy * dy);
+                xa = std::max(x0, static_cast<int>(std::floor(o.x - half - 0.5)));
+                xb = std::min(x1, static_cast<int>(std::ceil(o.x + half - 0.5)));
+            }
+            for (int x = xa; x <= xb; ++x) {
                 const double px = x + 0.5, py = y + 0.5;
                 const double cx = px - light.centre.x, cy = py - light.centre.y;
                 if (cx * cx + cy * cy < nearRadius * nearRadius) continue;

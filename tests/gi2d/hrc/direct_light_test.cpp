@@ -250,5 +250,34 @@ TEST(HrcDirectLight, VacuumSectorsMatchTheDenseFan) {
     EXPECT_LT(ratio, 0.85);
 }
 
+TEST(HrcDirectLight, GreyFogMarchesAsEachChannel) {
+    // The fans share one exp over the three channels where the absorption is grey: the light
+    // through grey fog matches the same fog with its blue a float's step denser (each channel's
+    // own exp), to 10^-5 of its maximum; and the fans in the fog stop short of the canvas edge.
+    Medium2D grey = mediumFrom(kLightAndOccluder, 96);
+    Medium2D tinted = grey;
+    for (int y = 0; y < 96; ++y) {
+        for (int x = 0; x < 96; ++x) {
+            const Rgb s = grey.absorption.rgb(x, y);
+            if (s.r > 0) continue;  // the light and the occluder stay
+            grey.absorption.setRgb(x, y, {0.2f, 0.2f, 0.2f});
+            tinted.absorption.setRgb(x, y, {0.2f, 0.2f, std::nextafter(0.2f, 1.0f)});
+        }
+    }
+    const DirectLight a = exactDirectLight(grey), b = exactDirectLight(tinted);
+    ASSERT_FALSE(a.empty());
+    ASSERT_EQ(a.removed, b.removed);
+    double most = 0, differs = 0;
+    for (std::size_t i = 0; i < a.fluence.size(); ++i) {
+        most = std::max(most, static_cast<double>(a.fluence.data()[i]));
+        differs = std::max(
+            differs, std::abs(static_cast<double>(a.fluence.data()[i] - b.fluence.data()[i])));
+    }
+    EXPECT_GT(most, 0.0);
+    EXPECT_LE(differs, 1e-5 * most);
+    // 0.2 per px: the fans fade (T < 1e-4) within 47 px; the far corner, 84 px off, gets nothing.
+    EXPECT_EQ(a.fluence.at(95, 95, 0), 0.0f);
+}
+
 }  // namespace
 }  // namespace luxel::gi2d::hrc
