@@ -28,19 +28,6 @@ float emitted(const Medium2D& medium, int x, int y) {
 
 }  // namespace
 
-Rgb PointSource::intensityTowards(double angle) const {
-    // angle in [0, 2 pi) (callers' atan2 shifted); entry m sits at 2 pi (m + 1/2) / n.
-    const int n = static_cast<int>(intensity.size());
-    double f = angle * (n / (2.0 * std::numbers::pi)) - 0.5;
-    if (f < 0) f += n;
-    const int i0 = std::min(static_cast<int>(f), n - 1);
-    const int i1 = i0 + 1 < n ? i0 + 1 : 0;
-    const float a = static_cast<float>(f - i0);
-    const Rgb& p = intensity[static_cast<std::size_t>(i0)];
-    const Rgb& q = intensity[static_cast<std::size_t>(i1)];
-    return {p.r + a * (q.r - p.r), p.g + a * (q.g - p.g), p.b + a * (q.b - p.b)};
-}
-
 std::vector<CompactLight> findCompactLights(const Medium2D& medium) {
     const int w = medium.width(), h = medium.height();
     const std::size_t count = static_cast<std::size_t>(w) * h;

@@ -5,7 +5,9 @@
 // parallel lines towards that direction, attenuated by the light's own pixels on the way out.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <numbers>
 #include <vector>
 
 #include "luxel/core/vec.h"
@@ -32,7 +34,20 @@ struct PointSource {
     // Radiant intensity towards 2 pi (m + 1/2) / kIntensityDirections: the integral over the
     // lines' offset of the radiance they carry away from the source's pixels (radiance x px).
     std::vector<Rgb> intensity;
-    Rgb intensityTowards(double angle) const;  // linear between the table's directions
+    // Linear between the table's directions; angle in [0, 2 pi) (callers' atan2 shifted). Inline:
+    // the fans' gather calls it once a pixel and source.
+    Rgb intensityTowards(double angle) const {
+        // Entry m sits at 2 pi (m + 1/2) / n.
+        const int n = static_cast<int>(intensity.size());
+        double f = angle * (n / (2.0 * std::numbers::pi)) - 0.5;
+        if (f < 0) f += n;
+        const int i0 = std::min(static_cast<int>(f), n - 1);
+        const int i1 = i0 + 1 < n ? i0 + 1 : 0;
+        const float a = static_cast<float>(f - i0);
+        const Rgb& p = intensity[static_cast<std::size_t>(i0)];
+        const Rgb& q = intensity[static_cast<std::size_t>(i1)];
+        return {p.r + a * (q.r - p.r), p.g + a * (q.g - p.g), p.b + a * (q.b - p.b)};
+    }
 };
 
 struct CompactLight {

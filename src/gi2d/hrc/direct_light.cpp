@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "gi2d/hrc/compact_lights.h"
 #include "luxel/core/parallel.h"
@@ -56,6 +57,92 @@ struct OwnPixels {
     }
 };
 
+// Counts of absorbing pixels (sigma > 0 in some channel, as the fan rays see them: the light's
+// own pixels left out) over any box in O(1): a summed-area table of the canvas, less one of the
+// light's bounding box. A fan sector whose wedge holds none has T = 1 everywhere in it, which its
+// two bounding rays already read exactly (§12.5, vacuum sectors).
+class Absorbers {
+  public:
+    explicit Absorbers(const Medium2D& medium)
+        : w_(medium.width()),
+          h_(medium.height()),
+          canvas_(static_cast<std::size_t>(w_ + 1) * (h_ + 1), 0) {
+        for (int y = 0; y < h_; ++y) {
+            std::uint32_t row = 0;
+            for (int x = 0; x < w_; ++x) {
+                row += absorbing(medium.absorption.rgb(x, y)) ? 1u : 0u;
+                canvas_[index(x + 1, y + 1, w_)] = canvas_[index(x + 1, y, w_)] + row;
+            }
+        }
+    }
+    static bool absorbing(const Rgb& s) { return s.r > 0 || s.g > 0 || s.b > 0; }
+    // The light's own absorbing pixels, subtracted from every count.
+    void setOwn(const Medium2D& medium, const OwnPixels& own) {
+        own_ = &own;
+        ownCounts_.assign(static_cast<std::size_t>(own.w + 1) * (own.h + 1), 0);
+        for (int y = 0; y < own.h; ++y) {
+            std::uint32_t row = 0;
+            for (int x = 0; x < own.w; ++x) {
+                row += own.has(own.x0 + x, own.y0 + y) &&
+                               absorbing(medium.absorption.rgb(own.x0 + x, own.y0 + y))
+                           ? 1u
+                           : 0u;
+                ownCounts_[index(x + 1, y + 1, own.w)] = ownCounts_[index(x + 1, y, own.w)] + row;
+            }
+        }
+    }
+    // Absorbing pixels in [x0, x1] x [y0, y1] (inclusive, clamped to the canvas), own ones out.
+    std::uint32_t count(int x0, int y0, int x1, int y1) const {
+        x0 = std::max(x0, 0), y0 = std::max(y0, 0), x1 = std::min(x1, w_ - 1),
+        y1 = std::min(y1, h_ - 1);
+        if (x0 > x1 || y0 > y1) return 0;
+        std::uint32_t n = sum(canvas_, w_, x0, y0, x1, y1);
+        if (own_ != nullptr) {
+            const int ox0 = std::max(x0, own_->x0) - own_->x0,
+                      oy0 = std::max(y0, own_->y0) - own_->y0;
+            const int ox1 = std::min(x1, own_->x0 + own_->w - 1) - own_->x0,
+                      oy1 = std::min(y1, own_->y0 + own_->h - 1) - own_->y0;
+            if (ox0 <= ox1 && oy0 <= oy1) n -= sum(ownCounts_, own_->w, ox0, oy0, ox1, oy1);
+        }
+        return n;
+    }
+    // Whether the wedge from o between angles a0 < a1 holds no absorbing pixel on the canvas:
+    // boxes around its pieces, each as long as the wedge is wide there (2 px at least).
+    bool vacuumWedge(Vec2d o, double a0, double a1) const {
+        const double c0 = std::cos(a0), s0 = std::sin(a0), c1 = std::cos(a1), s1 = std::sin(a1);
+        const double far = std::hypot(std::max(o.x, w_ - o.x), std::max(o.y, h_ - o.y)) + 1.0;
+        // The arc bulges past the chord by r (a1 - a0)^2 / 8: under the pad for any canvas here.
+        constexpr double pad = 0.5;
+        for (double r = 0.0; r < far;) {
+            const double next = r + std::max(2.0, r * (a1 - a0));
+            const double xs[4] = {o.x + r * c0, o.x + r * c1, o.x + next * c0, o.x + next * c1};
+            const double ys[4] = {o.y + r * s0, o.y + r * s1, o.y + next * s0, o.y + next * s1};
+            const auto [xl, xh] = std::minmax_element(xs, xs + 4);
+            const auto [yl, yh] = std::minmax_element(ys, ys + 4);
+            if (count(static_cast<int>(std::floor(*xl - pad)),
+                      static_cast<int>(std::floor(*yl - pad)),
+                      static_cast<int>(std::floor(*xh + pad)),
+                      static_cast<int>(std::floor(*yh + pad))) > 0)
+                return false;
+            r = next;
+        }
+        return true;
+    }
+
+  private:
+    static std::size_t index(int x, int y, int w) {
+        return static_cast<std::size_t>(y) * (w + 1) + x;
+    }
+    static std::uint32_t sum(const std::vector<std::uint32_t>& t, int w, int x0, int y0, int x1,
+                             int y1) {
+        return t[index(x1 + 1, y1 + 1, w)] - t[index(x0, y1 + 1, w)] - t[index(x1 + 1, y0, w)] +
+               t[index(x0, y0, w)];
+    }
+    int w_, h_;
+    std::vector<std::uint32_t> canvas_, ownCounts_;
+    const OwnPixels* own_ = nullptr;
+};
+
 // One ray of a fan: the transmittance from the source at 0, 1, 2, ... px (RGB); beyond the last
 // sample it is 0 if the ray faded and the last sample's if it left the canvas, which one more
 // sample at the end holds.
@@ -67,7 +154,12 @@ struct FanRay {
         yHi = -1;
     int samples() const { return n; }
     bool dark(int i) const { return !open && i >= n; }
-    const float* at(int i) const { return t.data() + static_cast<std::size_t>(std::min(i, n)) * 3; }
+    // Left the canvas with nothing absorbed on the way: T = 1 all along, no samples stored.
+    bool clear = false;
+    const float* at(int i) const {
+        static constexpr float kOnes[3] = {1, 1, 1};
+        return clear ? kOnes : t.data() + static_cast<std::size_t>(std::min(i, n)) * 3;
+    }
 };
 
 FanRay marchFanRay(const Medium2D& medium, const OwnPixels& own, Vec2d origin, double angle) {
@@ -95,15 +187,25 @@ FanRay marchFanRay(const Medium2D& medium, const OwnPixels& own, Vec2d origin, d
         const double exit = std::min(tMaxX, tMaxY);
         const Rgb s = own.has(cx, cy) ? Rgb{} : medium.absorption.rgb(cx, cy);
         const float sigma[3] = {s.r, s.g, s.b};
-        for (; next <= exit; ++next) {
-            for (int c = 0; c < 3; ++c) {
-                samples.push_back(sigma[c] > 0
-                                      ? T[c] * std::exp(-sigma[c] * static_cast<float>(next - t))
-                                      : T[c]);
+        if (s.r > 0 && s.r == s.g && s.g == s.b) {
+            // Grey (fog, walls): one exp for the three channels, the same values.
+            for (; next <= exit; ++next) {
+                const float e = std::exp(-sigma[0] * static_cast<float>(next - t));
+                for (float v : T) samples.push_back(v * e);
             }
-        }
-        for (int c = 0; c < 3; ++c) {
-            if (sigma[c] > 0) T[c] *= std::exp(-sigma[c] * static_cast<float>(exit - t));
+            const float e = std::exp(-sigma[0] * static_cast<float>(exit - t));
+            for (float& v : T) v *= e;
+        } else {
+            for (; next <= exit; ++next) {
+                for (int c = 0; c < 3; ++c) {
+                    samples.push_back(
+                        sigma[c] > 0 ? T[c] * std::exp(-sigma[c] * static_cast<float>(next - t))
+                                     : T[c]);
+                }
+            }
+            for (int c = 0; c < 3; ++c) {
+                if (sigma[c] > 0) T[c] *= std::exp(-sigma[c] * static_cast<float>(exit - t));
+            }
         }
         t = exit;
         if (std::max(T[0], std::max(T[1], T[2])) < kDirectCutoff) break;
@@ -118,6 +220,8 @@ FanRay marchFanRay(const Medium2D& medium, const OwnPixels& own, Vec2d origin, d
         }
     }
     ray.n = static_cast<int>(samples.size() / 3);
+    ray.clear = ray.open && T[0] == 1 && T[1] == 1 && T[2] == 1;
+    if (ray.clear) return ray;
     for (int c = 0; c < 3; ++c) samples.push_back(ray.open ? samples[samples.size() - 3] : 0.0f);
     ray.t.assign(samples.begin(), samples.end());
     return ray;
@@ -129,12 +233,17 @@ struct Fan {
     std::vector<int> first, count;  // sector i: rays first[i] .. first[i] + count[i] - 1
     int x0 = 0, x1 = -1, y0 = 0, y1 = -1;
     std::uint64_t steps = 0;
+    // No ray left the canvas: every ray is dark from `reach` px on (its longest ray's samples).
+    bool closed = true;
+    int reach = 0;
 };
 
 // The fan starts with kFanSectors rays and splits each sector
 // between two of them into as many rays as the longer of the two is long in px of arc there
-// (a sector the source does not shine into keeps its two rays).
-Fan marchFan(const Medium2D& medium, const OwnPixels& own, const PointSource& source) {
+// (a sector the source does not shine into keeps its two rays). With `absorbers`, a sector
+// whose wedge holds no absorbing pixel keeps its two rays too: T = 1 all over it.
+Fan marchFan(const Medium2D& medium, const OwnPixels& own, const PointSource& source,
+             const Absorbers* absorbers) {
     const int w = medium.width(), h = medium.height();
     const Vec2d o = source.position;
     constexpr int sectors = kFanSectors;
@@ -162,6 +271,17 @@ Fan marchFan(const Medium2D& medium, const OwnPixels& own, const PointSource& so
         }
     });
     // Sector i holds rays first[i] .. first[i] + count[i] - 1, the first the coarse ray i.
+    std::vector<std::uint8_t> vacuum(sectors, 0);
+    if (absorbers != nullptr) {
+        parallelForRange(sectors, 8, [&](int begin, int end) {
+            for (int i = begin; i < end; ++i) {
+                const auto si = static_cast<std::size_t>(i);
+                vacuum[si] = lit[si] && coarse[si].clear &&
+                             coarse[static_cast<std::size_t>((i + 1) % sectors)].clear &&
+                             absorbers->vacuumWedge(o, i * sectorAngle, (i + 1) * sectorAngle);
+            }
+        });
+    }
     Fan result;
     std::vector<int>& first = result.first;
     std::vector<int>& count = result.count;
@@ -172,7 +292,7 @@ Fan marchFan(const Medium2D& medium, const OwnPixels& own, const PointSource& so
         const int longest = std::max(coarse[si].samples(),
                                      coarse[static_cast<std::size_t>((i + 1) % sectors)].samples());
         count[si] =
-            lit[si]
+            lit[si] && !vacuum[si]
                 ? std::max(1, static_cast<int>(std::ceil(sectorAngle * longest * kFanRaysPerPx)))
                 : 1;
         first[si + 1] = first[si] + count[si];
@@ -192,6 +312,8 @@ Fan marchFan(const Medium2D& medium, const OwnPixels& own, const PointSource& so
     result.x0 = w, result.y0 = h;
     for (const FanRay& r : fan) {
         result.steps += static_cast<std::uint64_t>(r.samples());
+        result.closed = result.closed && !r.open;
+        result.reach = std::max(result.reach, r.samples());
         if (r.samples() == 0) continue;
         result.x0 = std::min(result.x0, r.xLo), result.x1 = std::max(result.x1, r.xHi);
         result.y0 = std::min(result.y0, r.yLo), result.y1 = std::max(result.y1, r.yHi);
@@ -213,7 +335,17 @@ void gatherFan(const CompactLight& light, const PointSource& source, const Fan& 
     if (x1 < x0) return;
     parallelForRange(y1 - y0 + 1, 4, [&](int begin, int end) {
         for (int y = y0 + begin; y < y0 + end; ++y) {
-            for (int x = x0; x <= x1; ++x) {
+            // A closed fan lights nothing from `reach` px on (both rays dark there): the row's
+            // pixels within it, a pixel of margin (what fades in fog, the corners of its box).
+            int xa = x0, xb = x1;
+            if (fan_.closed) {
+                const double dy = y + 0.5 - o.y, r = fan_.reach + 1.0;
+                if (dy * dy >= r * r) continue;
+                const double half = std::sqrt(r * r - dy * dy);
+                xa = std::max(x0, static_cast<int>(std::floor(o.x - half - 0.5)));
+                xb = std::min(x1, static_cast<int>(std::ceil(o.x + half - 0.5)));
+            }
+            for (int x = xa; x <= xb; ++x) {
                 const double px = x + 0.5, py = y + 0.5;
                 const double cx = px - light.centre.x, cy = py - light.centre.y;
                 if (cx * cx + cy * cy < nearRadius * nearRadius) continue;
@@ -239,8 +371,12 @@ void gatherFan(const CompactLight& light, const PointSource& source, const Fan& 
                 if (!(intensity.r > 0 || intensity.g > 0 || intensity.b > 0)) continue;
                 const float e[3] = {intensity.r, intensity.g, intensity.b};
                 const float scale = share * static_cast<float>(1.0 / (kTwoPi * d));
-                const float *a0 = r0.at(k), *b0 = r0.at(k + 1), *a1 = r1.at(k), *b1 = r1.at(k + 1);
                 float* dst = &out.at(x, y, 0);
+                if (r0.clear && r1.clear) {  // T = 1
+                    for (int c = 0; c < 3; ++c) dst[c] += e[c] * scale;
+                    continue;
+                }
+                const float *a0 = r0.at(k), *b0 = r0.at(k + 1), *a1 = r1.at(k), *b1 = r1.at(k + 1);
                 for (int c = 0; c < 3; ++c) {
                     const float t0 = a0[c] + g * (b0[c] - a0[c]);
                     const float t1 = a1[c] + g * (b1[c] - a1[c]);
@@ -302,13 +438,15 @@ void addNear(const Medium2D& medium, const CompactLight& light, double nearRadiu
 
 }  // namespace
 
-DirectLight exactDirectLight(const Medium2D& medium) {
+DirectLight exactDirectLight(const Medium2D& medium, const DirectLightOptions& options) {
     DirectLight direct;
     const int w = medium.width(), h = medium.height();
     std::vector<CompactLight> lights = findCompactLights(medium);
     if (lights.empty()) return direct;
     const double pixels = static_cast<double>(w) * h;
     const double budget = kDirectWorkPerPixel * std::max(pixels, kDirectBudgetFloorPixels);
+    std::optional<Absorbers> absorbers;
+    if (options.vacuumSectors) absorbers.emplace(medium);
     for (CompactLight& light : lights) {
         // Brightest first while the budget lasts; a light over it stays with the cascades. Its
         // work: the near gather's rays at their longest, then each fan's samples and the pixels
@@ -319,9 +457,10 @@ DirectLight exactDirectLight(const Medium2D& medium) {
         if (static_cast<double>(direct.work) + work > budget) break;
         makePointSources(medium, light);
         const OwnPixels own(light, w);
+        if (absorbers) absorbers->setOwn(medium, own);
         std::vector<Fan> fans;
         for (const PointSource& source : light.sources) {
-            fans.push_back(marchFan(medium, own, source));
+            fans.push_back(marchFan(medium, own, source, absorbers ? &*absorbers : nullptr));
             const Fan& f = fans.back();
             work +=
                 static_cast<double>(f.steps) +
