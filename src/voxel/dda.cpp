@@ -110,6 +110,21 @@ void castCameraRays(const VoxelWorld& world, std::span<const Ray> rays, std::spa
         const stream::Skip skip = stream::tileSkip(world, tile);
         // A tile with a skip has only finite rays (tileSkip checks them).
         const bool finite = skip.axis >= 0;
+        if (skip.clear) {
+            // No solid voxel in the tile's frustum: every ray misses, its walk one jump out of
+            // the world where it enters it (§4.6 "Clear tiles"), none where it does not.
+            for (std::size_t j = 0; j < tile.size(); ++j) {
+                const Ray& ray = tile[j];
+                Hit& hit = hits[first + j];
+                if (!walkable || !fast::eligible(world, ray)) {
+                    hit = castRay(world, ray, tMax, stepCap);
+                    continue;
+                }
+                hit = Hit{};
+                hit.steps = fast::entersWorld(ray, size, tMax) ? 1 : 0;
+            }
+            continue;
+        }
         for (std::size_t j = 0; j < tile.size(); ++j) {
             const Ray& ray = tile[j];
             hits[first + j] =

@@ -194,7 +194,7 @@ Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
     }
     // No plane in front of where the rays enter the world's span on m: nothing to skip.
     if (f.sgn > 0 ? plane <= std::max(om, 0.0) : plane >= std::min(om, double(sizeM))) return {};
-    return {m, plane};
+    return {m, plane, !found};
 }
 
 }  // namespace luxel::voxel::stream

@@ -16,6 +16,8 @@ namespace luxel::voxel::stream {
 struct Skip {
     int axis = -1;
     int plane = 0;
+    // The plane is the world's far face: no ray of the tile meets a solid voxel in the world.
+    bool clear = false;
 };
 
 // The skip shared by every ray of `tile`, or none where the tile does not qualify: the rays
