@@ -24,6 +24,8 @@ struct Skip {
 // must share one origin, be finite, and move the same way along one axis; from inside the world
 // the slabs are walked from the origin's own (§4.6 "From inside").
 // Conservative: every cell that any of the rays visits before the plane is empty.
-Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile);
+// With `from` (a skip of a tile that holds these rays), the walk begins at that skip's plane: the
+// cells before it are empty for every ray of that tile.
+Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile, Skip from = {});
 
 }  // namespace luxel::voxel::stream

@@ -260,6 +260,54 @@ TEST(VoxelCameraTiles, NoRayOfATileVisitsASolidCellBeforeItsPlane) {
     EXPECT_GT(planes, 100);
 }
 
+// Sub-tiles (§4.6 "Sub-tiles from outside"): the frustum walk of 16 rays of a tile begun at the
+// tile's plane finds a plane at or past it before which none of its rays meets a solid cell (the
+// loop without jumps as the judge), and calls the sub-tile clear only where none meets one at all.
+TEST(VoxelCameraTiles, SubTilesFromTheTilesPlane) {
+    const VoxelWorld w = world();
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int further = 0, clear = 0;
+    for (int i = 0; i < 30; ++i) {
+        const Vec3d position{-100 + unit(rng) * 350, 95 + unit(rng) * 100, -100 + unit(rng) * 330};
+        const Vec3d target{unit(rng) * 150, unit(rng) * 90, unit(rng) * 134};
+        const Camera camera = Camera::lookAt(position, target, 20 + unit(rng) * 60, 64, 24).value();
+        for (const bool squares : {false, true}) {
+            const std::vector<Ray> rays = cameraRays(camera, squares);
+            for (std::size_t first = 0; first < rays.size(); first += kCameraTileRays) {
+                const std::span<const Ray> tile(rays.data() + first, kCameraTileRays);
+                const stream::Skip whole = stream::tileSkip(w, tile);
+                if (whole.axis < 0 || whole.clear) continue;
+                for (std::size_t sub = 0; sub < kCameraTileRays; sub += 16) {
+                    const std::span<const Ray> part = tile.subspan(sub, 16);
+                    const stream::Skip skip = stream::tileSkip(w, part, whole);
+                    if (skip.axis != whole.axis) continue;
+                    const int sgn = part.front().direction[skip.axis] > 0 ? 1 : -1;
+                    EXPECT_GE(skip.plane * sgn, whole.plane * sgn);
+                    further += skip.plane != whole.plane;
+                    clear += skip.clear;
+                    for (const Ray& r : part) {
+                        const Hit hit = castRay(w, r, kInfinity, 0, ChunkSkip::Disabled);
+                        if (skip.clear) {
+                            EXPECT_FALSE(hit.hit);
+                        }
+                        if (!hit.hit) continue;
+                        const int c = hit.voxel[skip.axis];
+                        if (sgn > 0) {
+                            EXPECT_GE(c, skip.plane);
+                        } else {
+                            EXPECT_LT(c, skip.plane);
+                        }
+                    }
+                }
+            }
+            expectSameAsCastRay(w, rays);
+        }
+    }
+    EXPECT_GT(further, 100);
+    EXPECT_GT(clear, 10);
+}
+
 // The lowest empty y above column (x, z)'s highest solid voxel.
 int groundY(const VoxelWorld& w, int x, int z) {
     for (int y = w.size().y - 1; y >= 0; --y)
