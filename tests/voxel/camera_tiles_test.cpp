@@ -5,7 +5,8 @@
 // tMax cutting rays short; cameras inside the world (first-person over the ground, in a cave and
 // under overhangs, on cell, brick and chunk planes, near the world's faces, inside solid voxels);
 // and the skip's frustum walk against a brute-force check of the cells the tile's rays visit
-// before its plane.
+// before its plane, for tiles and for sub-tiles walked on from their tile's plane; clear tiles
+// (no solid voxel in the frustum) against castRay, `steps` included.
 #include <gtest/gtest.h>
 
 #include <algorithm>
