@@ -19,6 +19,17 @@ namespace shared = gpu::shared;
 
 namespace {
 
+// Rays of a camera tile from outside the world that walk their own frustum on from the tile's
+// plane (further planes, clear sub-tiles); from inside, the tile's plane lies near the origin and
+// the sub-tiles' walks cost more than they save (docs/algorithms/voxel-traversal.md §4.6
+// "Sub-tiles from outside").
+constexpr std::size_t kSubTileRays = 16;
+
+bool outsideWorld(const Vec3d& o, const Int3& size) {
+    return !(o.x >= 0.0 && o.y >= 0.0 && o.z >= 0.0 && o.x < size.x && o.y < size.y &&
+             o.z < size.z);
+}
+
 int resolvedCap(const VoxelWorld& world, int stepCap) {
     const Int3 size = world.size();
     return stepCap > 0 ? stepCap : 3 * (size.x + size.y + size.z);
@@ -107,15 +118,41 @@ void castCameraRays(const VoxelWorld& world, std::span<const Ray> rays, std::spa
     for (std::size_t first = 0; first < rays.size(); first += kCameraTileRays) {
         const std::span<const Ray> tile =
             rays.subspan(first, std::min(kCameraTileRays, rays.size() - first));
-        const stream::Skip skip = stream::tileSkip(world, tile);
-        // A tile with a skip has only finite rays (tileSkip checks them).
-        const bool finite = skip.axis >= 0;
-        for (std::size_t j = 0; j < tile.size(); ++j) {
-            const Ray& ray = tile[j];
-            hits[first + j] =
-                walkable && (finite || finiteRay(ray)) && fast::eligible(world, ray)
-                    ? hitFromTrace(ray, fast::traverse<true>(world, ray, tMax, cap, skip))
-                    : castRay(world, ray, tMax, stepCap);
+        const stream::Skip whole = stream::tileSkip(world, tile);
+        for (std::size_t sub = 0; sub < tile.size(); sub += kSubTileRays) {
+            const std::span<const Ray> part =
+                tile.subspan(sub, std::min(kSubTileRays, tile.size() - sub));
+            stream::Skip skip = whole;
+            if (whole.axis >= 0 && !whole.clear && part.size() == kSubTileRays &&
+                outsideWorld(tile.front().origin, size)) {
+                const stream::Skip own = stream::tileSkip(world, part, whole);
+                if (own.axis >= 0) skip = own;
+            }
+            const std::size_t at = first + sub;
+            // A tile with a skip has only finite rays (tileSkip checks them).
+            const bool finite = skip.axis >= 0;
+            if (skip.clear) {
+                // No solid voxel in the tile's frustum: every ray misses, its walk one jump out of
+                // the world where it enters it (§4.6 "Clear tiles"), none where it does not.
+                for (std::size_t j = 0; j < part.size(); ++j) {
+                    const Ray& ray = part[j];
+                    Hit& hit = hits[at + j];
+                    if (!walkable || !fast::eligible(world, ray)) {
+                        hit = castRay(world, ray, tMax, stepCap);
+                        continue;
+                    }
+                    hit = Hit{};
+                    hit.steps = fast::entersWorld(ray, size, tMax) ? 1 : 0;
+                }
+                continue;
+            }
+            for (std::size_t j = 0; j < part.size(); ++j) {
+                const Ray& ray = part[j];
+                hits[at + j] =
+                    walkable && (finite || finiteRay(ray)) && fast::eligible(world, ray)
+                        ? hitFromTrace(ray, fast::traverse<true>(world, ray, tMax, cap, skip))
+                        : castRay(world, ray, tMax, stepCap);
+            }
         }
     }
 }

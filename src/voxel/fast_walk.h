@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <limits>
+#include <utility>
 
 #include "voxel/skip_jump.h"
 #include "voxel/voxel_world_access.h"
@@ -88,6 +89,28 @@ inline void startDeepInside(shared::VoxelWalk& w) {
     }
     if (!(best >= 0.0)) w.axis = -1;
     w.t = 0.0;
+}
+
+// voxelStart's answer alone, without the start cell: whether the ray meets the world before tMax
+// (its slab clip and miss test, the same operations in the same order). A ray of a camera tile
+// whose frustum holds no solid voxel ends there: its walk would be one jump out of the world
+// (docs/algorithms/voxel-traversal.md §4.6 "Clear tiles").
+inline bool entersWorld(const Ray& ray, const Int3& size, double tMax) {
+    double tEnter = -kInf, tExit = kInf;
+    for (int a = 0; a < 3; ++a) {
+        const double o = ray.origin[a], d = ray.direction[a];
+        if (d == 0.0) {
+            if (!(o >= 0.0 && o < double(size[a]))) return false;
+            continue;
+        }
+        const double inv = 1.0 / d;
+        double t0 = (0.0 - o) * inv, t1 = (double(size[a]) - o) * inv;
+        if (t0 > t1) std::swap(t0, t1);
+        tEnter = std::max(tEnter, t0);
+        tExit = std::min(tExit, t1);
+    }
+    const double t0 = std::max(tEnter, 0.0);
+    return !(tEnter > tExit || tExit < t0 || (tExit == t0 && tEnter < t0) || t0 > tMax);
 }
 
 // The shared kernel's voxelTraverse(jumps = true, reachCurrent = true) for an eligible ray

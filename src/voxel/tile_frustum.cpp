@@ -105,7 +105,7 @@ bool slabEmpty(const VoxelWorld& world, const Frustum& f, int shift, int k, Empt
 
 }  // namespace
 
-Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
+Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile, Skip from) {
     if (tile.empty() || !world.emptySpaceCurrent()) return {};
     const Ray& first = tile.front();
     if (!finiteRay(first)) return {};
@@ -157,7 +157,9 @@ Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
     // The slab holding the origin, or the world's near face (slabs in front of the origin only).
     // From an origin inside the world the first slab's box begins at the origin's point, so a
     // solid voxel in the origin's own brick ends the walk at a plane behind it: no skip.
-    const int originCell = static_cast<int>(std::floor(std::clamp(om, 0.0, sizeM - 0.5)));
+    int originCell = static_cast<int>(std::floor(std::clamp(om, 0.0, sizeM - 0.5)));
+    // From an enclosing tile's plane: its first cell slab (the rays' main axis is that tile's).
+    if (from.axis == m) originCell = f.sgn > 0 ? from.plane : from.plane - 1;
     const int firstBrick = originCell >> kBrickShift;
     int plane = f.sgn > 0 ? sizeM : 0;  // no solid cell before the world's far face
     bool found = false;
@@ -194,7 +196,7 @@ Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile) {
     }
     // No plane in front of where the rays enter the world's span on m: nothing to skip.
     if (f.sgn > 0 ? plane <= std::max(om, 0.0) : plane >= std::min(om, double(sizeM))) return {};
-    return {m, plane};
+    return {m, plane, !found};
 }
 
 }  // namespace luxel::voxel::stream

@@ -16,12 +16,16 @@ namespace luxel::voxel::stream {
 struct Skip {
     int axis = -1;
     int plane = 0;
+    // The plane is the world's far face: no ray of the tile meets a solid voxel in the world.
+    bool clear = false;
 };
 
 // The skip shared by every ray of `tile`, or none where the tile does not qualify: the rays
 // must share one origin, be finite, and move the same way along one axis; from inside the world
 // the slabs are walked from the origin's own (§4.6 "From inside").
 // Conservative: every cell that any of the rays visits before the plane is empty.
-Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile);
+// With `from` (a skip of a tile that holds these rays), the walk begins at that skip's plane: the
+// cells before it are empty for every ray of that tile.
+Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile, Skip from = {});
 
 }  // namespace luxel::voxel::stream

@@ -5,7 +5,8 @@
 // tMax cutting rays short; cameras inside the world (first-person over the ground, in a cave and
 // under overhangs, on cell, brick and chunk planes, near the world's faces, inside solid voxels);
 // and the skip's frustum walk against a brute-force check of the cells the tile's rays visit
-// before its plane.
+// before its plane, for tiles and for sub-tiles walked on from their tile's plane; clear tiles
+// (no solid voxel in the frustum) against castRay, `steps` included.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,7 +20,9 @@
 #include "luxel/voxel/camera.h"
 #include "luxel/voxel/dda.h"
 #include "terrain_with_blocks.h"
+#include "voxel/fast_walk.h"
 #include "voxel/tile_frustum.h"
+#include "voxel/walk_access.h"
 
 namespace luxel::voxel {
 namespace {
@@ -258,6 +261,54 @@ TEST(VoxelCameraTiles, NoRayOfATileVisitsASolidCellBeforeItsPlane) {
     EXPECT_GT(planes, 100);
 }
 
+// Sub-tiles (§4.6 "Sub-tiles from outside"): the frustum walk of 16 rays of a tile begun at the
+// tile's plane finds a plane at or past it before which none of its rays meets a solid cell (the
+// loop without jumps as the judge), and calls the sub-tile clear only where none meets one at all.
+TEST(VoxelCameraTiles, SubTilesFromTheTilesPlane) {
+    const VoxelWorld w = world();
+    std::mt19937_64 rng(9);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int further = 0, clear = 0;
+    for (int i = 0; i < 30; ++i) {
+        const Vec3d position{-100 + unit(rng) * 350, 95 + unit(rng) * 100, -100 + unit(rng) * 330};
+        const Vec3d target{unit(rng) * 150, unit(rng) * 90, unit(rng) * 134};
+        const Camera camera = Camera::lookAt(position, target, 20 + unit(rng) * 60, 64, 24).value();
+        for (const bool squares : {false, true}) {
+            const std::vector<Ray> rays = cameraRays(camera, squares);
+            for (std::size_t first = 0; first < rays.size(); first += kCameraTileRays) {
+                const std::span<const Ray> tile(rays.data() + first, kCameraTileRays);
+                const stream::Skip whole = stream::tileSkip(w, tile);
+                if (whole.axis < 0 || whole.clear) continue;
+                for (std::size_t sub = 0; sub < kCameraTileRays; sub += 16) {
+                    const std::span<const Ray> part = tile.subspan(sub, 16);
+                    const stream::Skip skip = stream::tileSkip(w, part, whole);
+                    if (skip.axis != whole.axis) continue;
+                    const int sgn = part.front().direction[skip.axis] > 0 ? 1 : -1;
+                    EXPECT_GE(skip.plane * sgn, whole.plane * sgn);
+                    further += skip.plane != whole.plane;
+                    clear += skip.clear;
+                    for (const Ray& r : part) {
+                        const Hit hit = castRay(w, r, kInfinity, 0, ChunkSkip::Disabled);
+                        if (skip.clear) {
+                            EXPECT_FALSE(hit.hit);
+                        }
+                        if (!hit.hit) continue;
+                        const int c = hit.voxel[skip.axis];
+                        if (sgn > 0) {
+                            EXPECT_GE(c, skip.plane);
+                        } else {
+                            EXPECT_LT(c, skip.plane);
+                        }
+                    }
+                }
+            }
+            expectSameAsCastRay(w, rays);
+        }
+    }
+    EXPECT_GT(further, 100);
+    EXPECT_GT(clear, 10);
+}
+
 // The lowest empty y above column (x, z)'s highest solid voxel.
 int groundY(const VoxelWorld& w, int x, int z) {
     for (int y = w.size().y - 1; y >= 0; --y)
@@ -402,6 +453,100 @@ TEST(VoxelCameraTiles, InsideNoRayOfATileVisitsASolidCellBeforeItsPlane) {
     }
     EXPECT_GT(planes, 100);
     EXPECT_GT(solidOrigins, 0);
+}
+
+// Clear tiles (§4.6 "Clear tiles"): a tile whose frustum holds no solid voxel settles its rays as
+// misses without walking them. Every field as castRay's, and `steps` what the walk would have
+// counted: one jump out of the world for a ray that enters it, none for one that does not.
+TEST(VoxelCameraTiles, ClearTilesMissAndCountOneJump) {
+    const VoxelWorld w = world();
+    std::vector<Camera> cameras = {
+        // Above the blocks looking up and out, past the world's top edge and corners.
+        Camera::lookAt({75, 95, -40}, {75, 200, 300}, 70, 96, 64).value(),
+        Camera::lookAt({-60, 100, -60}, {75, 90, 67}, 60, 80, 60).value(),
+        Camera::lookAt({300, 150, 250}, {150, 90, 134}, 40, 64, 64).value(),
+        // Inside, over the blocks, looking up.
+        Camera::create({75.5, 88.5, 67.5}, 10, 60, 90, 64, 48).value(),
+        // Far away, the world's corner inside tiles.
+        Camera::lookAt({2e5, 7e4, -1.3e5}, {150, 90, 134}, 0.05, 48, 40).value(),
+    };
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    for (int i = 0; i < 20; ++i) {
+        const Vec3d position{-200.0 + unit(rng) * 550.0, 92.0 + unit(rng) * 200.0,
+                             -200.0 + unit(rng) * 550.0};
+        const Vec3d target{unit(rng) * 150, 60 + unit(rng) * 100, unit(rng) * 134};
+        cameras.push_back(
+            Camera::lookAt(position, target, 5.0 + unit(rng) * 100.0, 40, 32).value());
+    }
+    long clearRays = 0, entering = 0;
+    for (const Camera& camera : cameras) {
+        for (const bool squares : {false, true}) {
+            const std::vector<Ray> rays = cameraRays(camera, squares);
+            for (const double tMax : {kInfinity, 0.0, 30.0, 150.0}) {
+                expectSameAsCastRay(w, rays, tMax);
+                std::vector<Hit> hits(rays.size());
+                castCameraRays(w, rays, hits, tMax, 0);
+                for (std::size_t first = 0; first + kCameraTileRays <= rays.size();
+                     first += kCameraTileRays) {
+                    const std::span<const Ray> tile(rays.data() + first, kCameraTileRays);
+                    if (!stream::tileSkip(w, tile).clear) continue;
+                    for (std::size_t j = 0; j < kCameraTileRays; ++j) {
+                        const Hit reference = castRay(w, tile[j], tMax);
+                        ASSERT_FALSE(reference.hit);
+                        EXPECT_EQ(hits[first + j].steps, reference.steps > 0 ? 1 : 0);
+                        ++clearRays;
+                        entering += reference.steps > 0;
+                    }
+                }
+            }
+        }
+    }
+    // Both kinds of clear rays: entering the world and passing it by (or ended by tMax).
+    EXPECT_GT(entering, 1000);
+    EXPECT_GT(clearRays - entering, 1000);
+}
+
+// The clip test of a clear tile's rays against castRay's start (steps > 0 exactly where the ray
+// meets the world before tMax): rays on the world's faces, edges and corners, along them, with
+// signed zeros, and random rays from around the world.
+TEST(VoxelCameraTiles, EntersWorldIsCastRaysStart) {
+    const VoxelWorld w = world();
+    const Int3 size = w.size();
+    std::vector<Ray> rays;
+    const double faces[] = {-0.0, 0.0, 1e-300, 20.0, 89.99999999999999, 90.0, 150.0, 134.0, -1.0};
+    const double dirs[] = {-0.0, 0.0, 1.0, -1.0, 0.5, -2.0, 1e-300, 3.0};
+    for (const double ox : faces)
+        for (const double oy : faces)
+            for (const double oz : {-0.0, 0.0, 67.0, 134.0, -3.0})
+                for (const double dx : dirs)
+                    for (const double dy : dirs)
+                        for (const double dz : {-1.0, 0.0, 1.0, -0.0, 0.25})
+                            rays.push_back({{ox, oy, oz}, {dx, dy, dz}});
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int i = 0; i < 20000; ++i) {
+        const Vec3d o{75 + 200 * unit(rng), 45 + 150 * unit(rng), 67 + 200 * unit(rng)};
+        // Aim at the world's edges and corners: targets on its box, a little off.
+        Vec3d target{75 + 75 * std::round(unit(rng)), 45 + 45 * std::round(unit(rng)),
+                     67 + 67 * std::round(unit(rng))};
+        target[i % 3] += 1e-12 * unit(rng);
+        rays.push_back({o, target - o});
+    }
+    long entering = 0;
+    for (const Ray& ray : rays) {
+        // A clear tile's rays: finite, eligible for the one-ray loop, moving (tileSkip).
+        if (!finiteRay(ray) || !fast::eligible(w, ray)) continue;
+        for (const double tMax : {kInfinity, 0.0, 100.0}) {
+            const Hit reference = castRay(w, ray, tMax);
+            ASSERT_EQ(fast::entersWorld(ray, size, tMax), reference.steps > 0)
+                << ray.origin.x << " " << ray.origin.y << " " << ray.origin.z << " / "
+                << ray.direction.x << " " << ray.direction.y << " " << ray.direction.z << " tMax "
+                << tMax;
+            entering += reference.steps > 0;
+        }
+    }
+    EXPECT_GT(entering, 10000);
 }
 
 }  // namespace

@@ -87,12 +87,14 @@ void occludedBatch(const VoxelWorld& world, std::span<const Ray> rays,
 // castRayBatch for camera rays: rays from one origin, in tiles of kCameraTileRays consecutive
 // rays (a run of an image row, or a square of pixels), each tile a thin frustum. Where the
 // origin lies outside the world, each tile's frustum is walked once to a plane before which none
-// of its rays meets a solid voxel, and each ray's walk begins with one jump to that plane
+// of its rays meets a solid voxel (from outside, each 16 rays of a tile walk on to a plane of
+// their own), and each ray's walk begins with one jump to that plane
 // (docs/algorithms/voxel-traversal.md §4.6). hits[i] equals castRay(world, rays[i], tMax,
 // stepCap) field by field except `steps`, which counts the iterations this walk makes (the jump
-// to the plane is one; the frustum walk is not counted); rays of tiles without a plane keep
-// castRay's steps. Every ray takes castRay's one-ray loop; with a step cap below the world's
-// sx + sy + sz, or the brick reach stale, this is castRayBatch.
+// to the plane is one; the frustum walk is not counted; a ray of a frustum with no solid voxel
+// counts that one jump out of the world where it enters it, 0 where it does not); rays of tiles
+// without a plane keep castRay's steps. Every ray takes castRay's one-ray loop; with a step cap
+// below the world's sx + sy + sz, or the brick reach stale, this is castRayBatch.
 inline constexpr std::size_t kCameraTileRays = 64;
 void castCameraRays(const VoxelWorld& world, std::span<const Ray> rays, std::span<Hit> hits,
                     double tMax = kInfinity, int stepCap = 0);
