@@ -34,9 +34,10 @@ struct View2D {
     // cascade 0 shifted differently (gi2d::rcJitterShift) to a running mean; 1 = one fixed grid.
     // Not while bounce light is being fed back.
     int rcJitters = 16;
-    // HRC's exact corrections (holographic-radiance-cascades.md §12.3, §12.5): the near field in
-    // fog and the compact lights' direct light. Accurate, but the direct light can cost several
-    // solves' time on the CPU where lights are many or large: the panel can turn them off.
+    // HRC's exact corrections (docs/algorithms/holographic-radiance-cascades.md §12.3, §12.5):
+    // the near field in fog and the compact lights' direct light. Accurate, but the direct light
+    // can cost several solves' time on the CPU where lights are many or large, so the panel can
+    // turn them off.
     bool exactNearField = true;
     bool exactDirectLight = true;
     int width = 256, height = 256;  // internal resolution

@@ -65,8 +65,8 @@ TEST(Renderer2D, GiToggleChangesThePictureAndTheWorkSettles) {
 }
 
 // The panel's exact direct light re-solves: a small lamp's light is HRC's cascades' without it and
-// the exact direct light's with it (holographic-radiance-cascades.md §12.5), so the pictures
-// differ.
+// the exact direct light's with it (docs/algorithms/holographic-radiance-cascades.md §12.5), so
+// the pictures differ.
 TEST(Renderer2D, DirectLightToggleResolves) {
     State2D state = stateFor(gi2d::Solver2D::Hrc);
     auto small = std::make_shared<gi2d::Scene2D>(*state.scene);
