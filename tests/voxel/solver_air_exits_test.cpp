@@ -10,9 +10,7 @@
 #include <vector>
 
 #include "gpu/shaders/shared/optics.h"
-#include "luxel/voxel/surface_cast.h"
-#include "voxel/plain_light_worlds.h"
-#include "voxel/solver_surface.h"
+#include "voxel/shaded_pane.h"
 
 namespace {
 
@@ -20,33 +18,15 @@ using namespace luxel;
 using namespace luxel::voxel;
 using namespace luxel::voxel::test;
 
-struct Shaded {
-    Rgb radiance;
-    std::vector<Ray> rays;  // the rays whose light was asked for, in order
-};
-
 // The pane of paneOverAFloor (clear glass, no absorption) seen along `direction` from above, every
 // ray leaving it bringing radiance 1, with at most `airExits` exits into the air.
-Shaded shadePane(Vec3d direction, int airExits) {
-    const VoxelWorld world = paneOverAFloor();
+ShadedPane shadePane(Vec3d direction, int airExits) {
     ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
     EXPECT_TRUE(o.materials.setSlot(0, glass()).ok());
     o.fresnel = ShadeOptions::FresnelModel::Exact;
-    const Ray camera{Vec3d{12.0, 7.5, 12.0} - direction * 1.0, direction};
-    const SurfaceHit s = castToSurface(world, nullptr, camera, o.stepCap);
-    EXPECT_TRUE(s.hit.hit);
-    EXPECT_EQ(s.hit.normal, (Int3{0, 1, 0}));
-    Shaded out;
-    SolverLight light{Rgb(0.0f),
-                      [&out](const Ray& r, bool) {
-                          out.rays.push_back(r);
-                          return Rgb(1.0f);
-                      },
-                      1, 1};
-    light.mediumAirExits = airExits;
-    PathRng rng(1, 0, 0);
-    out.radiance = shadeSolverSurface(world, nullptr, s, camera, o, light, rng);
-    return out;
+    return shadePaneTop(
+        o, direction, 1, [](const Ray&) { return Rgb(1.0f); },
+        [airExits](SolverLight& light) { light.mediumAirExits = airExits; }, PathRng(1, 0, 0));
 }
 
 TEST(SolverAirExits, EachExitTakenAddsTheNextTermOfTheSeries) {
@@ -56,8 +36,8 @@ TEST(SolverAirExits, EachExitTakenAddsTheNextTermOfTheSeries) {
         // The pane's faces are parallel: R is the same at every interface, inside and out.
         const double r = gpu::shared::fresnelDielectricExact(float(cosIn), 1.0f, 1.5f);
         const double entered = 1.0 - r;  // the transmission lobe's weight
-        const Shaded one = shadePane(d, 1), two = shadePane(d, 2), three = shadePane(d, 3);
-        const Shaded all = shadePane(d, kMaxMediumExits);
+        const ShadedPane one = shadePane(d, 1), two = shadePane(d, 2), three = shadePane(d, 3);
+        const ShadedPane all = shadePane(d, kMaxMediumExits);
         // One ray per exit taken, then the mirror's.
         EXPECT_EQ(one.rays.size(), 2u);
         EXPECT_EQ(two.rays.size(), 3u);
@@ -84,8 +64,8 @@ TEST(SolverAirExits, EachExitTakenAddsTheNextTermOfTheSeries) {
 // every caller that does not set it are as they were.
 TEST(SolverAirExits, TheDefaultDropsNothing) {
     const Vec3d d = normalize(Vec3d{0.6, -0.7, 0.1});
-    const Shaded byDefault = shadePane(d, SolverLight{}.mediumAirExits);
-    const Shaded unlimited = shadePane(d, 1 << 20);
+    const ShadedPane byDefault = shadePane(d, SolverLight{}.mediumAirExits);
+    const ShadedPane unlimited = shadePane(d, 1 << 20);
     EXPECT_EQ(byDefault.rays.size(), unlimited.rays.size());
     EXPECT_EQ(byDefault.radiance.r, unlimited.radiance.r);
     EXPECT_EQ(byDefault.radiance.g, unlimited.radiance.g);

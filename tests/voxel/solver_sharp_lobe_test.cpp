@@ -7,9 +7,7 @@
 
 #include <vector>
 
-#include "luxel/voxel/surface_cast.h"
-#include "voxel/plain_light_worlds.h"
-#include "voxel/solver_surface.h"
+#include "voxel/shaded_pane.h"
 
 namespace {
 
@@ -17,34 +15,18 @@ using namespace luxel;
 using namespace luxel::voxel;
 using namespace luxel::voxel::test;
 
-struct Shaded {
-    Rgb radiance;
-    std::vector<Ray> rays;  // the rays whose light was asked for, in order
-};
-
 // The top of paneOverAFloor's pane, a metal of `roughness`, seen obliquely from above, the light
 // along each ray leaving it depending on its direction.
-Shaded shadeMetal(float roughness, int specularRays, bool sharpOneRay) {
-    const VoxelWorld world = paneOverAFloor();
+ShadedPane shadeMetal(float roughness, int specularRays, bool sharpOneRay) {
     ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
     EXPECT_TRUE(o.materials.setSlot(0, metal(roughness, Rgb(0.9f, 0.8f, 0.7f))).ok());
-    const Vec3d d = normalize(Vec3d{0.5, -0.8, 0.2});
-    const Ray camera{Vec3d{12.0, 7.5, 12.0} - d * 1.0, d};
-    const SurfaceHit s = castToSurface(world, nullptr, camera, o.stepCap);
-    EXPECT_TRUE(s.hit.hit);
-    EXPECT_EQ(s.hit.normal, (Int3{0, 1, 0}));
-    Shaded out;
-    SolverLight light{Rgb(0.0f),
-                      [&out](const Ray& r, bool) {
-                          out.rays.push_back(r);
-                          return Rgb(float(1.0 + 3.0 * r.direction.x), 1.0f,
-                                     float(1.0 + 5.0 * r.direction.z));
-                      },
-                      1, specularRays};
-    light.sharpLobeOneRay = sharpOneRay;
-    PathRng rng(7, 3, 0);
-    out.radiance = shadeSolverSurface(world, nullptr, s, camera, o, light, rng);
-    return out;
+    return shadePaneTop(
+        o, normalize(Vec3d{0.5, -0.8, 0.2}), specularRays,
+        [](const Ray& r) {
+            return Rgb(float(1.0 + 3.0 * r.direction.x), 1.0f, float(1.0 + 5.0 * r.direction.z));
+        },
+        [sharpOneRay](SolverLight& light) { light.sharpLobeOneRay = sharpOneRay; },
+        PathRng(7, 3, 0));
 }
 
 void expectSame(const Rgb& a, const Rgb& b) {
@@ -55,9 +37,9 @@ void expectSame(const Rgb& a, const Rgb& b) {
 
 TEST(SolverSharpLobe, ASharpLobeTakesOneDirection) {
     // Roughness 0.03: alpha 0.0009, under kSolverSharpAlpha.
-    const Shaded sharp = shadeMetal(0.03f, 2, true);
-    const Shaded one = shadeMetal(0.03f, 1, false);
-    const Shaded two = shadeMetal(0.03f, 2, false);
+    const ShadedPane sharp = shadeMetal(0.03f, 2, true);
+    const ShadedPane one = shadeMetal(0.03f, 1, false);
+    const ShadedPane two = shadeMetal(0.03f, 2, false);
     ASSERT_EQ(sharp.rays.size(), 1u);
     EXPECT_EQ(two.rays.size(), 2u);
     // The same direction as the first of two, and the same light as one ray asked for.
@@ -71,7 +53,7 @@ TEST(SolverSharpLobe, ASharpLobeTakesOneDirection) {
 
 TEST(SolverSharpLobe, RougherLobesAndOtherCallersKeepEveryDirection) {
     // Roughness 0.3 (alpha 0.09): the flag changes nothing.
-    const Shaded rough = shadeMetal(0.3f, 2, true), roughBefore = shadeMetal(0.3f, 2, false);
+    const ShadedPane rough = shadeMetal(0.3f, 2, true), roughBefore = shadeMetal(0.3f, 2, false);
     EXPECT_EQ(rough.rays.size(), 2u);
     expectSame(rough.radiance, roughBefore.radiance);
     // Not set (sky visibility, the default): a sharp lobe keeps its directions.

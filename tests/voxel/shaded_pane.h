@@ -1,0 +1,44 @@
+// The top face of paneOverAFloor's pane shaded by shadeSolverSurface, seen from above: the tests
+// of the solver's surface rules (air exits, sharp lobes) set the material and the light along
+// each ray, and read the radiance and the rays whose light was asked for.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <vector>
+
+#include "luxel/voxel/surface_cast.h"
+#include "voxel/plain_light_worlds.h"
+#include "voxel/solver_surface.h"
+
+namespace luxel::voxel::test {
+
+struct ShadedPane {
+    Rgb radiance;
+    std::vector<Ray> rays;  // the rays whose light was asked for, in order
+};
+
+// `direction`: the camera's unit direction, downwards onto the pane; `lightAlong`: the radiance
+// arriving along each ray leaving the face; `configure` sets the SolverLight's switches.
+inline ShadedPane shadePaneTop(const ShadeOptions& options, Vec3d direction, int specularRays,
+                               const std::function<Rgb(const Ray&)>& lightAlong,
+                               const std::function<void(SolverLight&)>& configure, PathRng rng) {
+    const VoxelWorld world = paneOverAFloor();
+    const Ray camera{Vec3d{12.0, 7.5, 12.0} - direction * 1.0, direction};
+    const SurfaceHit s = castToSurface(world, nullptr, camera, options.stepCap);
+    EXPECT_TRUE(s.hit.hit);
+    EXPECT_EQ(s.hit.normal, (Int3{0, 1, 0}));
+    ShadedPane out;
+    SolverLight light{Rgb(0.0f),
+                      [&out, &lightAlong](const Ray& r, bool) {
+                          out.rays.push_back(r);
+                          return lightAlong(r);
+                      },
+                      1, specularRays};
+    configure(light);
+    out.radiance = shadeSolverSurface(world, nullptr, s, camera, options, light, rng);
+    return out;
+}
+
+}  // namespace luxel::voxel::test
