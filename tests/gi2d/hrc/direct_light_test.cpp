@@ -10,6 +10,7 @@
 #include <cstring>
 #include <random>
 #include <string>
+#include <utility>
 
 #include "gi2d/hrc/compact_lights.h"
 #include "gi2d/medium_from_json.h"
@@ -35,6 +36,16 @@ Errors errors(const Image& image, const Image& truth) {
     }
     const double n = static_cast<double>(truth.size());
     return {absolute / sum, std::sqrt(squared / n) / (sum / n)};
+}
+
+// The largest value of `a` and the largest |a - b|, to bound two fluences' difference relatively.
+std::pair<double, double> largestAndDifference(const Image& a, const Image& b) {
+    double most = 0, differs = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        most = std::max(most, static_cast<double>(a.data()[i]));
+        differs = std::max(differs, std::abs(static_cast<double>(a.data()[i] - b.data()[i])));
+    }
+    return {most, differs};
 }
 
 bool sameBits(const Image& a, const Image& b) {
@@ -227,12 +238,7 @@ TEST(HrcDirectLight, VacuumSectorsMatchTheDenseFan) {
         const DirectLight b = exactDirectLight(medium);
         ASSERT_FALSE(a.empty()) << "scene " << scene;
         ASSERT_EQ(a.removed, b.removed);
-        double most = 0, differs = 0;
-        for (std::size_t i = 0; i < a.fluence.size(); ++i) {
-            most = std::max(most, static_cast<double>(a.fluence.data()[i]));
-            differs = std::max(
-                differs, std::abs(static_cast<double>(a.fluence.data()[i] - b.fluence.data()[i])));
-        }
+        const auto [most, differs] = largestAndDifference(a.fluence, b.fluence);
         EXPECT_LE(differs, 1e-6 * most) << "scene " << scene;
         denseWork += a.work, sparseWork += b.work;
     }
@@ -267,12 +273,7 @@ TEST(HrcDirectLight, GreyFogMarchesAsEachChannel) {
     const DirectLight a = exactDirectLight(grey), b = exactDirectLight(tinted);
     ASSERT_FALSE(a.empty());
     ASSERT_EQ(a.removed, b.removed);
-    double most = 0, differs = 0;
-    for (std::size_t i = 0; i < a.fluence.size(); ++i) {
-        most = std::max(most, static_cast<double>(a.fluence.data()[i]));
-        differs = std::max(
-            differs, std::abs(static_cast<double>(a.fluence.data()[i] - b.fluence.data()[i])));
-    }
+    const auto [most, differs] = largestAndDifference(a.fluence, b.fluence);
     EXPECT_GT(most, 0.0);
     EXPECT_LE(differs, 1e-5 * most);
     // 0.2 per px: the fans fade (T < 1e-4) within 47 px; the far corner, 84 px off, gets nothing.
