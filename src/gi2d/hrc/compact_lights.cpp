@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "gi2d/hrc/light_scores.h"
+#include "luxel/core/parallel.h"
 
 namespace luxel::gi2d::hrc {
 
@@ -26,6 +27,15 @@ float emitted(const Medium2D& medium, int x, int y) {
     return most;
 }
 
+// emitted(medium, x, y) > 0, without its exponentials where no channel's emission and absorption
+// have one sign (a product that is not positive then), as in most pixels of a canvas.
+bool emits(const Medium2D& medium, int x, int y) {
+    const Rgb e = medium.emission.rgb(x, y), s = medium.absorption.rgb(x, y);
+    const auto sameSign = [](float a, float b) { return (a > 0 && b > 0) || (a < 0 && b < 0); };
+    if (!sameSign(e.r, s.r) && !sameSign(e.g, s.g) && !sameSign(e.b, s.b)) return false;
+    return emitted(medium, x, y) > 0.0f;
+}
+
 }  // namespace
 
 std::vector<CompactLight> findCompactLights(const Medium2D& medium) {
@@ -33,24 +43,27 @@ std::vector<CompactLight> findCompactLights(const Medium2D& medium) {
     const std::size_t count = static_cast<std::size_t>(w) * h;
     std::vector<CompactLight> lights;
     if (count == 0) return lights;
-    std::vector<float> scores(count);
+    // The scores and the emitting pixels, by rows on every thread: every solve of a canvas with
+    // lights pays this pass, most of them finding no compact light (a room's walls).
+    std::vector<float> scores(count), rowBrightest(static_cast<std::size_t>(h), 0.0f);
+    // 0: no emission, 1: emitting and not yet labelled, 2: labelled.
+    std::vector<std::uint8_t> state(count, 0);
+    parallelForRange(h, 16, [&](int begin, int end) {
+        for (int y = begin; y < end; ++y) {
+            const std::size_t row = static_cast<std::size_t>(y) * w;
+            rowBrightest[static_cast<std::size_t>(y)] =
+                lightScoreRow(medium.emission.data() + row * 3, medium.absorption.data() + row * 3,
+                              w, scores.data() + row);
+            for (int x = 0; x < w; ++x) {
+                if (emits(medium, x, y)) state[row + x] = 1;
+            }
+        }
+    });
     float brightest = 0.0f;
-    for (int y = 0; y < h; ++y) {
-        const std::size_t row = static_cast<std::size_t>(y) * w;
-        brightest = std::max(
-            brightest, lightScoreRow(medium.emission.data() + row * 3,
-                                     medium.absorption.data() + row * 3, w, scores.data() + row));
-    }
+    for (const float b : rowBrightest) brightest = std::max(brightest, b);
     if (!(brightest > 0.0f)) return lights;
     const float threshold = lightScoreThreshold(brightest);
 
-    // 0: no emission, 1: emitting and not yet labelled, 2: labelled.
-    std::vector<std::uint8_t> state(count, 0);
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            if (emitted(medium, x, y) > 0.0f) state[static_cast<std::size_t>(y) * w + x] = 1;
-        }
-    }
     std::vector<std::uint32_t> stack;
     for (std::size_t seed = 0; seed < count; ++seed) {
         if (state[seed] != 1) continue;
