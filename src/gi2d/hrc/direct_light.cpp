@@ -7,9 +7,12 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <string>
 
 #include "gi2d/hrc/compact_lights.h"
+#include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
+#include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/ray_march.h"
 
 namespace luxel::gi2d::hrc {
@@ -479,6 +482,14 @@ DirectLight exactDirectLight(const Medium2D& medium, const DirectLightOptions& o
     }
     std::sort(direct.removed.begin(), direct.removed.end());
     return direct;
+}
+
+Status checkDirectLightMemory(int width, int height) {
+    const std::uint64_t pixels = static_cast<std::uint64_t>(width) * height;
+    return checkMemory(
+        mediumBytes(width, height) + estimateHrcMemory(width, height).output +
+            pixels * (sizeof(float) + sizeof(std::uint8_t)),
+        "HRC's direct light at " + std::to_string(width) + "x" + std::to_string(height));
 }
 
 Medium2D withoutDirectLights(const Medium2D& medium, const DirectLight& direct) {

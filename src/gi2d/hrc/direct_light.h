@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "luxel/core/error.h"
 #include "luxel/core/image.h"
 #include "luxel/gi2d/medium2d.h"
 
@@ -48,6 +49,11 @@ struct DirectLightOptions {
 };
 
 DirectLight exactDirectLight(const Medium2D& medium, const DirectLightOptions& options = {});
+
+// Whether the split's memory fits, checked before any of it is allocated: the search's score and
+// label a pixel, the direct fluence and the reduced medium's copy (the solve of the reduced
+// medium checks its own on top of them).
+Status checkDirectLightMemory(int width, int height);
 
 // The medium with the removed pixels' emission scaled by 1 - share (absorption unchanged).
 Medium2D withoutDirectLights(const Medium2D& medium, const DirectLight& direct);

@@ -89,6 +89,9 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
     // §12.5: the compact lights' direct light on the CPU, as solveHrc does; the GPU solves the
     // medium without their emission and the two are summed after the read-back.
     if (options.exactDirectLight && std::popcount(options.frustumMask & 0xFu) == 4) {
+        if (Status s = checkDirectLightMemory(medium.width(), medium.height()); !s) {
+            return s.error();
+        }
         const auto start = std::chrono::steady_clock::now();
         const DirectLight direct = exactDirectLight(medium);
         if (!direct.empty()) {

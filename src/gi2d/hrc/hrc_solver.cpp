@@ -61,6 +61,7 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
     }
     // §12.5: the compact lights' direct light exactly, the cascades on the rest of the emission.
     if (options.exactDirectLight && !debug && std::popcount(options.frustumMask & 0xFu) == 4) {
+        if (Status s = checkDirectLightMemory(w, h); !s) return s.error();
         const auto start = std::chrono::steady_clock::now();
         const DirectLight direct = exactDirectLight(medium);
         if (!direct.empty()) {

@@ -14,6 +14,7 @@
 
 #include "gi2d/hrc/compact_lights.h"
 #include "gi2d/medium_from_json.h"
+#include "luxel/core/memory.h"
 #include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/reference_solver.h"
 
@@ -281,4 +282,16 @@ TEST(HrcDirectLight, GreyFogMarchesAsEachChannel) {
 }
 
 }  // namespace
+// The split's memory is checked before any of it is allocated: 10^10 pixels' reduced medium,
+// direct fluence and search buffers (some 400 GB) are refused with the size named.
+TEST(HrcDirectLight, RefusesASplitThatDoesNotFit) {
+    if (availableMemoryBytes() == 0) GTEST_SKIP() << "this machine does not say what is available";
+    EXPECT_TRUE(checkDirectLightMemory(256, 256).ok());
+    const Status huge = checkDirectLightMemory(100000, 100000);
+    ASSERT_FALSE(huge.ok());
+    EXPECT_NE(huge.error().message().find("HRC's direct light at 100000x100000 needs"),
+              std::string::npos)
+        << huge.error().message();
+}
+
 }  // namespace luxel::gi2d::hrc
