@@ -3,6 +3,7 @@
 #include "gi2d/hrc/direct_light.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -507,6 +508,26 @@ void addDirectLight(const DirectLight& direct, Image& fluence) {
     float* out = fluence.data();
     const float* add = direct.fluence.data();
     for (std::size_t i = 0; i < fluence.size(); ++i) out[i] += add[i];
+}
+
+std::optional<Result<Image>> solveSplittingDirectLight(
+    const Medium2D& medium, const HrcOptions& options,
+    const std::function<Result<Image>(const Medium2D&, const HrcOptions&)>& solveRest,
+    const std::function<void(const DirectLightSplit&)>& onSplit) {
+    if (Status s = checkDirectLightMemory(medium.width(), medium.height()); !s) {
+        return Result<Image>(s.error());
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const DirectLight direct = exactDirectLight(medium);
+    if (direct.empty()) return std::nullopt;
+    onSplit({std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                 .count(),
+             direct.work});
+    HrcOptions rest = options;
+    rest.exactDirectLight = false;
+    Result<Image> solved = solveRest(withoutDirectLights(medium, direct), rest);
+    if (solved) addDirectLight(direct, *solved);
+    return solved;
 }
 
 }  // namespace luxel::gi2d::hrc

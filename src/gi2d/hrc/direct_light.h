@@ -13,11 +13,14 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
 #include "luxel/core/error.h"
 #include "luxel/core/image.h"
+#include "luxel/gi2d/hrc_solver.h"
 #include "luxel/gi2d/medium2d.h"
 
 namespace luxel::gi2d::hrc {
@@ -60,5 +63,21 @@ Medium2D withoutDirectLights(const Medium2D& medium, const DirectLight& direct);
 
 // fluence += direct.fluence.
 void addDirectLight(const DirectLight& direct, Image& fluence);
+
+// The direct light's CPU time and work (DirectLight::work), for the callers' pass timings.
+struct DirectLightSplit {
+    double milliseconds = 0;
+    std::uint64_t work = 0;
+};
+
+// The split of §12.5 around a solve, for both backends. Where a compact light qualifies, `onSplit`
+// is told the direct light's time and work, `solveRest` solves the medium without the lights'
+// emission with `options` less the direct light, and their direct light is added to what it
+// returns. std::nullopt where none qualifies: the caller solves the medium as it is. The split's
+// memory is checked first (an error where it does not fit).
+std::optional<Result<Image>> solveSplittingDirectLight(
+    const Medium2D& medium, const HrcOptions& options,
+    const std::function<Result<Image>(const Medium2D&, const HrcOptions&)>& solveRest,
+    const std::function<void(const DirectLightSplit&)>& onSplit);
 
 }  // namespace luxel::gi2d::hrc

@@ -2,7 +2,6 @@
 // src/gpu/shaders/gi2d/hrc_*.comp.glsl (built by gpu_passes.h), one submission per frustum.
 #include <algorithm>
 #include <bit>
-#include <chrono>
 #include <string>
 
 #include "gi2d/hrc/cone_merge.h"
@@ -89,23 +88,13 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
     // §12.5: the compact lights' direct light on the CPU, as solveHrc does; the GPU solves the
     // medium without their emission and the two are summed after the read-back.
     if (options.exactDirectLight && std::popcount(options.frustumMask & 0xFu) == 4) {
-        if (Status s = checkDirectLightMemory(medium.width(), medium.height()); !s) {
-            return s.error();
-        }
-        const auto start = std::chrono::steady_clock::now();
-        const DirectLight direct = exactDirectLight(medium);
-        if (!direct.empty()) {
-            record("direct light (cpu)", std::chrono::duration<double, std::milli>(
-                                             std::chrono::steady_clock::now() - start)
-                                             .count());
-            HrcOptions rest = options;
-            rest.exactDirectLight = false;
-            Result<Image> solved =
-                solveHrcOnGpu(context, withoutDirectLights(medium, direct), rest, timings);
-            if (!solved) return solved;
-            addDirectLight(direct, *solved);
-            return solved;
-        }
+        std::optional<Result<Image>> solved = solveSplittingDirectLight(
+            medium, options,
+            [&](const Medium2D& rest, const HrcOptions& o) {
+                return solveHrcOnGpu(context, rest, o, timings);
+            },
+            [&](const DirectLightSplit& s) { record("direct light (cpu)", s.milliseconds); });
+        if (solved) return std::move(*solved);
     }
 
     // Programs.

@@ -61,22 +61,19 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
     }
     // §12.5: the compact lights' direct light exactly, the cascades on the rest of the emission.
     if (options.exactDirectLight && !debug && std::popcount(options.frustumMask & 0xFu) == 4) {
-        if (Status s = checkDirectLightMemory(w, h); !s) return s.error();
-        const auto start = std::chrono::steady_clock::now();
-        const DirectLight direct = exactDirectLight(medium);
-        if (!direct.empty()) {
-            const double ms =
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                    .count();
-            HrcOptions rest = options;
-            rest.exactDirectLight = false;
-            Result<Image> solved = solveHrc(withoutDirectLights(medium, direct), rest, passes);
-            if (!solved) return solved;
-            addDirectLight(direct, *solved);
-            if (passes != nullptr && !passes->empty()) {
-                passes->push_back({"direct light", ms, direct.work * 12});
+        DirectLightSplit split;
+        std::optional<Result<Image>> solved = solveSplittingDirectLight(
+            medium, options,
+            [passes](const Medium2D& rest, const HrcOptions& o) {
+                return solveHrc(rest, o, passes);
+            },
+            [&split](const DirectLightSplit& s) { split = s; });
+        if (solved) {
+            // After the rest's solve, which begins the pass list anew.
+            if (*solved && passes != nullptr && !passes->empty()) {
+                passes->push_back({"direct light", split.milliseconds, split.work * 12});
             }
-            return solved;
+            return std::move(*solved);
         }
     }
     // The sweep's medium window grows with 2^tracedLevels times the distinct lengths inside cells
