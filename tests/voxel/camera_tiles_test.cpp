@@ -201,24 +201,35 @@ TEST(VoxelCameraTiles, AxisParallelSignedZerosAndTies) {
     expectHandMadeTiles(w, rays, {10.0, 45.0, 50.0});
 }
 
-// Many random cameras around the world, at random distances, looking at random points.
-TEST(VoxelCameraTiles, RandomCameras) {
+// 40 cameras at the positions `positionOf(rng, unit)` draws, each looking at a random point of the
+// world with a random field of view, checked by expectCamera; a quarter of their rays or more hit,
+// and the tiles save steps.
+template <class Position>
+void expectRandomCameras(std::uint64_t seed, Position&& positionOf) {
     const VoxelWorld w = world();
-    std::mt19937_64 rng(31);
+    std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> unit(0.0, 1.0);
     Totals all;
     for (int i = 0; i < 40; ++i) {
-        Vec3d position;
-        do {
-            for (int a = 0; a < 3; ++a) position[a] = -200.0 + unit(rng) * 550.0;
-        } while (position.x >= 0 && position.y >= 0 && position.z >= 0 && position.x < 150 &&
-                 position.y < 90 && position.z < 134);
+        const Vec3d position = positionOf(rng, unit);
         const Vec3d target{unit(rng) * 150, unit(rng) * 90, unit(rng) * 134};
         const double fov = 5.0 + unit(rng) * 100.0;
         all = add(all, expectCamera(w, Camera::lookAt(position, target, fov, 40, 30).value()));
     }
     EXPECT_GT(all.hits, all.rays / 4);
     EXPECT_LT(all.skippedSteps, all.castRaySteps);
+}
+
+// Many random cameras around the world, at random distances, looking at random points.
+TEST(VoxelCameraTiles, RandomCameras) {
+    expectRandomCameras(31, [](std::mt19937_64& rng, auto& unit) {
+        Vec3d position;
+        do {
+            for (int a = 0; a < 3; ++a) position[a] = -200.0 + unit(rng) * 550.0;
+        } while (position.x >= 0 && position.y >= 0 && position.z >= 0 && position.x < 150 &&
+                 position.y < 90 && position.z < 134);
+        return position;
+    });
 }
 
 // Checks every tile of `rays` that gets a skip against the loop without jumps, which reports the
@@ -416,18 +427,9 @@ TEST(VoxelCameraTiles, InsideHandMadeTiles) {
 
 // Random cameras anywhere inside the world (empty or solid cells), looking anywhere.
 TEST(VoxelCameraTiles, RandomCamerasInside) {
-    const VoxelWorld w = world();
-    std::mt19937_64 rng(47);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    Totals all;
-    for (int i = 0; i < 40; ++i) {
-        const Vec3d position{unit(rng) * 150, unit(rng) * 90, unit(rng) * 134};
-        const Vec3d target{unit(rng) * 150, unit(rng) * 90, unit(rng) * 134};
-        const double fov = 5.0 + unit(rng) * 100.0;
-        all = add(all, expectCamera(w, Camera::lookAt(position, target, fov, 40, 30).value()));
-    }
-    EXPECT_GT(all.hits, all.rays / 4);
-    EXPECT_LT(all.skippedSteps, all.castRaySteps);
+    expectRandomCameras(47, [](std::mt19937_64& rng, auto& unit) {
+        return Vec3d{unit(rng) * 150, unit(rng) * 90, unit(rng) * 134};
+    });
 }
 
 // The frustum walk alone from inside: no ray of a tile meets a solid cell before its plane, and a
