@@ -12,6 +12,7 @@
 #include "voxel/cast_stream.h"
 #include "voxel/fast_walk.h"
 #include "voxel/parallel_beam.h"
+#include "voxel/tile_start.h"
 #include "voxel/voxel_world_access.h"
 
 namespace luxel::voxel {
@@ -118,15 +119,32 @@ void castCameraRays(const VoxelWorld& world, std::span<const Ray> rays, std::spa
     for (std::size_t first = 0; first < rays.size(); first += kCameraTileRays) {
         const std::span<const Ray> tile =
             rays.subspan(first, std::min(kCameraTileRays, rays.size() - first));
-        const stream::Skip whole = stream::tileSkip(world, tile);
+        // The rays are read once: each sub-tile's bounds about the tile's main axis, the tile's
+        // their union (the same bounds as reading the tile whole).
+        stream::TileRays parts[kCameraTileRays / kSubTileRays];
+        const std::size_t partCount = (tile.size() + kSubTileRays - 1) / kSubTileRays;
+        const bool outside = outsideWorld(tile.front().origin, size);
+        // From inside, no sub-tiles: the tile's bounds alone.
+        stream::TileRays all = outside ? stream::TileRays{} : stream::tileRays(tile);
+        for (std::size_t k = 0; outside && k < partCount; ++k) {
+            const std::span<const Ray> part = tile.subspan(
+                k * kSubTileRays, std::min(kSubTileRays, tile.size() - k * kSubTileRays));
+            parts[k] = k == 0 ? stream::tileRays(part) : stream::tileRays(part, all.m, all.sgn);
+            all = k == 0 ? parts[0] : stream::mergeTileRays(all, parts[k]);
+            if (!all.ok) break;
+        }
+        const stream::Skip whole = stream::tileSkip(world, all);
         for (std::size_t sub = 0; sub < tile.size(); sub += kSubTileRays) {
             const std::span<const Ray> part =
                 tile.subspan(sub, std::min(kSubTileRays, tile.size() - sub));
             stream::Skip skip = whole;
-            if (whole.axis >= 0 && !whole.clear && part.size() == kSubTileRays &&
-                outsideWorld(tile.front().origin, size)) {
-                const stream::Skip own = stream::tileSkip(world, part, whole);
-                if (own.axis >= 0) skip = own;
+            if (whole.axis >= 0 && !whole.clear && part.size() == kSubTileRays && outside) {
+                // A sub-tile whose first ray has another main axis walks about its own.
+                const stream::TileRays& own = parts[sub / kSubTileRays];
+                const stream::Skip ownSkip = stream::mainAxis(part.front().direction) == own.m
+                                                 ? stream::tileSkip(world, own, whole)
+                                                 : stream::tileSkip(world, part, whole);
+                if (ownSkip.axis >= 0) skip = ownSkip;
             }
             const std::size_t at = first + sub;
             // A tile with a skip has only finite rays (tileSkip checks them).
@@ -146,12 +164,40 @@ void castCameraRays(const VoxelWorld& world, std::span<const Ray> rays, std::spa
                 }
                 continue;
             }
+            const auto one = [&](const Ray& ray) {
+                return walkable && (finite || finiteRay(ray)) && fast::eligible(world, ray)
+                           ? hitFromTrace(ray, fast::traverse<true>(world, ray, tMax, cap, skip))
+                           : castRay(world, ray, tMax, stepCap);
+            };
+            // From inside the world every ray starts in its origin's cell: the one-ray start.
+            if (!finite || !walkable || !outside) {
+                for (std::size_t j = 0; j < part.size(); ++j) hits[at + j] = one(part[j]);
+                continue;
+            }
+            // The rays' starts and jumps to the plane in SIMD lanes, then each ray's walk on from
+            // there in the one-ray loop (§4.6 "Starts in lanes").
+            shared::VoxelWalk walks[kSubTileRays];
+            stream::PlaneStart starts[kSubTileRays];
+            stream::startAtPlane(world, part, skip, tMax, walks, starts);
             for (std::size_t j = 0; j < part.size(); ++j) {
                 const Ray& ray = part[j];
-                hits[at + j] =
-                    walkable && (finite || finiteRay(ray)) && fast::eligible(world, ray)
-                        ? hitFromTrace(ray, fast::traverse<true>(world, ray, tMax, cap, skip))
-                        : castRay(world, ray, tMax, stepCap);
+                Hit& hit = hits[at + j];
+                switch (starts[j]) {
+                    case stream::PlaneStart::StartMissed:
+                    case stream::PlaneStart::JumpMissed:
+                        hit = Hit{};
+                        hit.steps = starts[j] == stream::PlaneStart::JumpMissed ? 1 : 0;
+                        break;
+                    case stream::PlaneStart::Jumped:
+                    case stream::PlaneStart::NotTaken:
+                        hit = hitFromTrace(
+                            ray, fast::walkFrom(world, walks[j], tMax, cap,
+                                                starts[j] == stream::PlaneStart::Jumped ? 1 : 0));
+                        break;
+                    case stream::PlaneStart::OneRay:
+                        hit = one(ray);
+                        break;
+                }
             }
         }
     }

@@ -113,32 +113,12 @@ inline bool entersWorld(const Ray& ray, const Int3& size, double tMax) {
     return !(tEnter > tExit || tExit < t0 || (tExit == t0 && tEnter < t0) || t0 > tMax);
 }
 
-// The shared kernel's voxelTraverse(jumps = true, reachCurrent = true) for an eligible ray
-// (finite, non-zero direction). With kSkip, the walk begins with a jump to a camera tile's skip
-// plane (skip_jump.h, §4.6): the same result but for `steps`, which counts that jump as one.
-template <bool kSkip = false>
-inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, double tMax, int cap,
-                                   stream::Skip skip = {}) {
-    shared::VoxelWalk w;
-    w.o = toShared(ray.origin);
-    w.d = toShared(ray.direction);
-    w.inv = shared::dvec3(1.0 / w.d.x, 1.0 / w.d.y, 1.0 / w.d.z);
+// traverse's loop from the walk state `w` (voxelStart's, or the state after a skip's jump) with
+// `steps` iterations already counted.
+[[gnu::always_inline]] inline shared::VoxelTrace walkFrom(const VoxelWorld& world,
+                                                          const shared::VoxelWalk& w, double tMax,
+                                                          int cap, int steps) {
     const Int3 size = world.size();
-    w.size = shared::ivec3(size.x, size.y, size.z);
-    if (deepInside(w)) {
-        startDeepInside(w);
-    } else if (!shared::voxelStart(w, tMax)) {
-        return shared::voxelMiss(0, false);
-    }
-    int steps = 0;
-    if constexpr (kSkip) {
-        if (skip.axis >= 0) {
-            const stream::SkipResult jumped = stream::jumpToPlane(w, skip, size, tMax);
-            if (jumped == stream::SkipResult::Missed) return shared::voxelMiss(1, false);
-            if (jumped == stream::SkipResult::Jumped) steps = 1;
-        }
-    }
-
     Axis x{w.o.x, w.d.x, w.inv.x, w.stp[0], size.x, w.cell.x, w.next[0]};
     Axis y{w.o.y, w.d.y, w.inv.y, w.stp[1], size.y, w.cell.y, w.next[1]};
     Axis z{w.o.z, w.d.z, w.inv.z, w.stp[2], size.z, w.cell.z, w.next[2]};
@@ -275,6 +255,34 @@ inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, doub
         if (a == 1) y.next = y.exitAt(y.cell);
         if (a == 2) z.next = z.exitAt(z.cell);
     }
+}
+
+// The shared kernel's voxelTraverse(jumps = true, reachCurrent = true) for an eligible ray
+// (finite, non-zero direction). With kSkip, the walk begins with a jump to a camera tile's skip
+// plane (skip_jump.h, §4.6): the same result but for `steps`, which counts that jump as one.
+template <bool kSkip = false>
+inline shared::VoxelTrace traverse(const VoxelWorld& world, const Ray& ray, double tMax, int cap,
+                                   stream::Skip skip = {}) {
+    shared::VoxelWalk w;
+    w.o = toShared(ray.origin);
+    w.d = toShared(ray.direction);
+    w.inv = shared::dvec3(1.0 / w.d.x, 1.0 / w.d.y, 1.0 / w.d.z);
+    const Int3 size = world.size();
+    w.size = shared::ivec3(size.x, size.y, size.z);
+    if (deepInside(w)) {
+        startDeepInside(w);
+    } else if (!shared::voxelStart(w, tMax)) {
+        return shared::voxelMiss(0, false);
+    }
+    int steps = 0;
+    if constexpr (kSkip) {
+        if (skip.axis >= 0) {
+            const stream::SkipResult jumped = stream::jumpToPlane(w, skip, size, tMax);
+            if (jumped == stream::SkipResult::Missed) return shared::voxelMiss(1, false);
+            if (jumped == stream::SkipResult::Jumped) steps = 1;
+        }
+    }
+    return walkFrom(world, w, tMax, cap, steps);
 }
 
 // voxelTraverse with jumps: the loop above for an eligible ray, the shared kernel for the others.

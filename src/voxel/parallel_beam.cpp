@@ -9,6 +9,7 @@
 
 #include "voxel/brick_blocks.h"
 #include "voxel/fast_walk.h"
+#include "voxel/tile_frustum.h"
 
 namespace luxel::voxel::stream {
 
@@ -26,11 +27,6 @@ struct Beam {
 // The most cells (chunks or bricks) one slab may test: a slab box wider than that counts as
 // holding a solid voxel (stopping the scan early is always safe).
 constexpr int kMaxSlabCells = 64;
-
-int mainAxis(const Vec3d& d) {
-    const double x = std::abs(d.x), y = std::abs(d.y), z = std::abs(d.z);
-    return x >= y && x >= z ? 0 : (y >= z ? 1 : 2);
-}
 
 // The voxels [first, last] on axis a that the rays can touch between s0 and s1 on m (s0 < s1, both
 // in [0, size on m]), or false when they all lie outside the world there. The bounds are linear in

@@ -8,6 +8,7 @@
 
 #include "voxel/brick_blocks.h"
 #include "voxel/cast_stream.h"
+#include "voxel/walk_access.h"
 
 namespace luxel::voxel::stream {
 
@@ -105,35 +106,73 @@ bool slabEmpty(const VoxelWorld& world, const Frustum& f, int shift, int k, Empt
 
 }  // namespace
 
-Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile, Skip from) {
-    if (tile.empty() || !world.emptySpaceCurrent()) return {};
-    const Ray& first = tile.front();
-    if (!finiteRay(first)) return {};
-    Frustum f;
+TileRays tileRays(std::span<const Ray> rays, int m, int sgn) {
+    TileRays t;
+    if (rays.empty()) return t;
+    const Ray& first = rays.front();
+    if (!finiteRay(first)) return t;
     const Vec3d& d0 = first.direction;
-    f.m = std::abs(d0.x) >= std::abs(d0.y) && std::abs(d0.x) >= std::abs(d0.z)
-              ? 0
-              : (std::abs(d0.y) >= std::abs(d0.z) ? 1 : 2);
-    f.sgn = d0[f.m] > 0.0 ? 1 : -1;
-    for (int a = 0; a < 3; ++a) {
-        f.o[a] = first.origin[a];
-        f.lo[a] = kInfinity;
-        f.hi[a] = -kInfinity;
+    if (m < 0) {
+        m = mainAxis(d0);
+        sgn = d0[m] > 0.0 ? 1 : -1;
     }
-    for (const Ray& r : tile) {
-        if (!(r.origin == first.origin) || !finiteRay(r)) return {};
-        const double dm = r.direction[f.m];
-        if (!(dm * f.sgn > 0.0)) return {};
+    t.m = m;
+    t.sgn = sgn;
+    const int a1 = m == 0 ? 1 : 0, a2 = m == 2 ? 1 : 2;
+    double lo1 = kInfinity, hi1 = -kInfinity, lo2 = kInfinity, hi2 = -kInfinity;
+    // Every test folded into one flag (no early exits: the rays are read once either way).
+    bool ok = true;
+    for (const Ray& r : rays) {
+        ok = ok && r.origin == first.origin && finiteRay(r);
+        const double dm = r.direction[m];
+        ok = ok && dm * sgn > 0.0;
         // One division per ray: d_a * (1 / |d_m|) lies within a few ulps of d_a / |d_m|, far
         // inside voxelRange's margin.
         const double perM = 1.0 / std::abs(dm);
-        for (int a = 0; a < 3; ++a) {
-            if (a == f.m) continue;
-            const double slope = r.direction[a] * perM;
-            if (!(std::abs(slope) <= kMaxSlope)) return {};
-            f.lo[a] = std::min(f.lo[a], slope);
-            f.hi[a] = std::max(f.hi[a], slope);
-        }
+        const double s1 = r.direction[a1] * perM, s2 = r.direction[a2] * perM;
+        ok = ok && std::abs(s1) <= kMaxSlope && std::abs(s2) <= kMaxSlope;
+        lo1 = std::min(lo1, s1);
+        hi1 = std::max(hi1, s1);
+        lo2 = std::min(lo2, s2);
+        hi2 = std::max(hi2, s2);
+    }
+    if (!ok) return t;
+    t.ok = true;
+    for (int a = 0; a < 3; ++a) t.o[a] = first.origin[a];
+    t.lo[a1] = lo1;
+    t.hi[a1] = hi1;
+    t.lo[a2] = lo2;
+    t.hi[a2] = hi2;
+    return t;
+}
+
+TileRays mergeTileRays(const TileRays& a, const TileRays& b) {
+    TileRays t = a;
+    if (!a.ok || !b.ok || a.m != b.m || a.sgn != b.sgn || !(a.o[0] == b.o[0]) ||
+        !(a.o[1] == b.o[1]) || !(a.o[2] == b.o[2])) {
+        t.ok = false;
+        return t;
+    }
+    for (int k = 0; k < 3; ++k) {
+        t.lo[k] = std::min(a.lo[k], b.lo[k]);
+        t.hi[k] = std::max(a.hi[k], b.hi[k]);
+    }
+    return t;
+}
+
+Skip tileSkip(const VoxelWorld& world, std::span<const Ray> tile, Skip from) {
+    return tileSkip(world, tileRays(tile), from);
+}
+
+Skip tileSkip(const VoxelWorld& world, const TileRays& rays, Skip from) {
+    if (!rays.ok || !world.emptySpaceCurrent()) return {};
+    Frustum f;
+    f.m = rays.m;
+    f.sgn = rays.sgn;
+    for (int a = 0; a < 3; ++a) {
+        f.o[a] = rays.o[a];
+        f.lo[a] = rays.lo[a];
+        f.hi[a] = rays.hi[a];
     }
 
     for (int a = 0; a < 3; ++a) {
