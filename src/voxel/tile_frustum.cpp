@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include "voxel/brick_blocks.h"
 #include "voxel/cast_stream.h"
@@ -106,6 +108,53 @@ bool slabEmpty(const VoxelWorld& world, const Frustum& f, int shift, int k, Empt
 
 }  // namespace
 
+namespace {
+
+// tileRays' pass over the rays for main axis M (a template argument: the components are named,
+// not indexed at run time). Every test is folded into one flag without branches. The first ray's
+// origin is finite, so an equal origin is too; a direction is finite with dm finite and non-zero
+// in the rays' direction (0 < dm sgn <= DBL_MAX) and its slopes within the limit (an infinite or
+// NaN component fails that).
+template <int M>
+bool readRays(std::span<const Ray> rays, int sgn, double (&lo)[3], double (&hi)[3]) {
+    constexpr int a1 = M == 0 ? 1 : 0, a2 = M == 2 ? 1 : 2;
+    const Vec3d o = rays.front().origin;
+    const double s = sgn;
+    double lo1 = kInfinity, hi1 = -kInfinity, lo2 = kInfinity, hi2 = -kInfinity;
+    bool ok = true;
+    for (const Ray& r : rays) {
+        // The rays a tile further on (callers pass consecutive tiles of one array): read here
+        // first, the rays come from memory, and this loop leaves too few loads in flight to
+        // hide it (docs/algorithms/voxel-traversal.md §4.6, "Starts in lanes"). A prefetch past
+        // the array's end is harmless.
+        __builtin_prefetch(reinterpret_cast<const void*>(reinterpret_cast<std::uintptr_t>(&r) +
+                                                         kCameraTileRays * sizeof(Ray)));
+        const Vec3d& d = r.direction;
+        const double dm = M == 0 ? d.x : (M == 1 ? d.y : d.z);
+        const double d1 = a1 == 0 ? d.x : d.y;
+        const double d2 = a2 == 1 ? d.y : d.z;
+        const double along = dm * s;
+        // One division per ray: d_a * (1 / |d_m|) lies within a few ulps of d_a / |d_m|, far
+        // inside voxelRange's margin.
+        const double perM = 1.0 / along;
+        const double s1 = d1 * perM, s2 = d2 * perM;
+        ok &= (r.origin.x == o.x) & (r.origin.y == o.y) & (r.origin.z == o.z);
+        ok &= (along > 0.0) & (along <= std::numeric_limits<double>::max());
+        ok &= (std::abs(s1) <= kMaxSlope) & (std::abs(s2) <= kMaxSlope);
+        lo1 = std::min(lo1, s1);
+        hi1 = std::max(hi1, s1);
+        lo2 = std::min(lo2, s2);
+        hi2 = std::max(hi2, s2);
+    }
+    lo[a1] = lo1;
+    hi[a1] = hi1;
+    lo[a2] = lo2;
+    hi[a2] = hi2;
+    return ok;
+}
+
+}  // namespace
+
 TileRays tileRays(std::span<const Ray> rays, int m, int sgn) {
     TileRays t;
     if (rays.empty()) return t;
@@ -118,31 +167,12 @@ TileRays tileRays(std::span<const Ray> rays, int m, int sgn) {
     }
     t.m = m;
     t.sgn = sgn;
-    const int a1 = m == 0 ? 1 : 0, a2 = m == 2 ? 1 : 2;
-    double lo1 = kInfinity, hi1 = -kInfinity, lo2 = kInfinity, hi2 = -kInfinity;
-    // Every test folded into one flag (no early exits: the rays are read once either way).
-    bool ok = true;
-    for (const Ray& r : rays) {
-        ok = ok && r.origin == first.origin && finiteRay(r);
-        const double dm = r.direction[m];
-        ok = ok && dm * sgn > 0.0;
-        // One division per ray: d_a * (1 / |d_m|) lies within a few ulps of d_a / |d_m|, far
-        // inside voxelRange's margin.
-        const double perM = 1.0 / std::abs(dm);
-        const double s1 = r.direction[a1] * perM, s2 = r.direction[a2] * perM;
-        ok = ok && std::abs(s1) <= kMaxSlope && std::abs(s2) <= kMaxSlope;
-        lo1 = std::min(lo1, s1);
-        hi1 = std::max(hi1, s1);
-        lo2 = std::min(lo2, s2);
-        hi2 = std::max(hi2, s2);
-    }
+    const bool ok = m == 0   ? readRays<0>(rays, sgn, t.lo, t.hi)
+                    : m == 1 ? readRays<1>(rays, sgn, t.lo, t.hi)
+                             : readRays<2>(rays, sgn, t.lo, t.hi);
     if (!ok) return t;
     t.ok = true;
     for (int a = 0; a < 3; ++a) t.o[a] = first.origin[a];
-    t.lo[a1] = lo1;
-    t.hi[a1] = hi1;
-    t.lo[a2] = lo2;
-    t.hi[a2] = hi2;
     return t;
 }
 
