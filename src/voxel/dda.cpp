@@ -159,19 +159,20 @@ void castCameraRays(const VoxelWorld& world, std::span<const Ray> rays, std::spa
                         hit = castRay(world, ray, tMax, stepCap);
                         continue;
                     }
-                    hit = Hit{};
-                    hit.steps = fast::entersWorld(ray, size, tMax) ? 1 : 0;
+                    writeMiss(hit, fast::entersWorld(ray, size, tMax) ? 1 : 0);
                 }
                 continue;
             }
-            const auto one = [&](const Ray& ray) {
-                return walkable && (finite || finiteRay(ray)) && fast::eligible(world, ray)
-                           ? hitFromTrace(ray, fast::traverse<true>(world, ray, tMax, cap, skip))
-                           : castRay(world, ray, tMax, stepCap);
+            const auto one = [&](Hit& hit, const Ray& ray) {
+                if (walkable && (finite || finiteRay(ray)) && fast::eligible(world, ray)) {
+                    writeHit(hit, ray, fast::traverse<true>(world, ray, tMax, cap, skip));
+                } else {
+                    hit = castRay(world, ray, tMax, stepCap);
+                }
             };
             // From inside the world every ray starts in its origin's cell: the one-ray start.
             if (!finite || !walkable || !outside) {
-                for (std::size_t j = 0; j < part.size(); ++j) hits[at + j] = one(part[j]);
+                for (std::size_t j = 0; j < part.size(); ++j) one(hits[at + j], part[j]);
                 continue;
             }
             // The rays' starts and jumps to the plane in SIMD lanes, then each ray's walk on from
@@ -185,17 +186,16 @@ void castCameraRays(const VoxelWorld& world, std::span<const Ray> rays, std::spa
                 switch (starts[j]) {
                     case stream::PlaneStart::StartMissed:
                     case stream::PlaneStart::JumpMissed:
-                        hit = Hit{};
-                        hit.steps = starts[j] == stream::PlaneStart::JumpMissed ? 1 : 0;
+                        writeMiss(hit, starts[j] == stream::PlaneStart::JumpMissed ? 1 : 0);
                         break;
                     case stream::PlaneStart::Jumped:
                     case stream::PlaneStart::NotTaken:
-                        hit = hitFromTrace(
-                            ray, fast::walkFrom(world, walks[j], tMax, cap,
+                        writeHit(hit, ray,
+                                 fast::walkFrom(world, walks[j], tMax, cap,
                                                 starts[j] == stream::PlaneStart::Jumped ? 1 : 0));
                         break;
                     case stream::PlaneStart::OneRay:
-                        hit = one(ray);
+                        one(hit, ray);
                         break;
                 }
             }

@@ -52,4 +52,38 @@ inline Hit hitFromTrace(const Ray& ray, const gpu::shared::VoxelTrace& trace) {
     return hit;
 }
 
+// hitFromTrace and a miss with `steps` stored into `out` field by field: a Hit built on the stack
+// and copied is written there in pieces and read back in other pieces, which stalls each copy on
+// store forwarding (docs/algorithms/voxel-traversal.md §4.6, "Starts in lanes").
+inline void writeMiss(Hit& out, int steps, bool capped = false) {
+    out.hit = false;
+    out.capped = capped;
+    out.voxel = {0, 0, 0};
+    out.normal = {0, 0, 0};
+    out.t = kInfinity;
+    out.point = {0.0, 0.0, 0.0};
+    out.u = 0.0f;
+    out.v = 0.0f;
+    out.steps = steps;
+}
+
+inline void writeHit(Hit& out, const Ray& ray, const gpu::shared::VoxelTrace& trace) {
+    if (!trace.hit) {
+        writeMiss(out, trace.steps, trace.capped);
+        return;
+    }
+    out.hit = true;
+    out.capped = trace.capped;
+    out.voxel = {trace.cell.x, trace.cell.y, trace.cell.z};
+    out.normal = {0, 0, 0};
+    if (trace.axis >= 0) out.normal[trace.axis] = -trace.stp[trace.axis];
+    out.t = trace.t;
+    const gpu::shared::VoxelSurface surface =
+        gpu::shared::voxelSurface(toShared(ray.origin), toShared(ray.direction), trace);
+    out.point = {surface.point.x, surface.point.y, surface.point.z};
+    out.u = surface.u;
+    out.v = surface.v;
+    out.steps = trace.steps;
+}
+
 }  // namespace luxel::voxel
