@@ -1,5 +1,6 @@
 // tileSkip: the frustum of a tile of camera rays walked slab by slab along its main axis, chunks
-// first, then bricks, then cells (docs/algorithms/voxel-traversal.md §4.6).
+// first, then bricks, then cells; tileRays: the frustum's bounds, the tile's rays read once
+// (docs/algorithms/voxel-traversal.md §4.6, "Starts in lanes").
 #include "voxel/tile_frustum.h"
 
 #include <algorithm>
@@ -105,10 +106,6 @@ bool slabEmpty(const VoxelWorld& world, const Frustum& f, int shift, int k, Empt
     }
     return true;
 }
-
-}  // namespace
-
-namespace {
 
 // tileRays' pass over the rays for main axis M (a template argument: the components are named,
 // not indexed at run time). Every test is folded into one flag without branches. The first ray's

@@ -93,8 +93,9 @@ void occludedBatch(const VoxelWorld& world, std::span<const Ray> rays,
 // stepCap) field by field except `steps`, which counts the iterations this walk makes (the jump
 // to the plane is one; the frustum walk is not counted; a ray of a frustum with no solid voxel
 // counts that one jump out of the world where it enters it, 0 where it does not); rays of tiles
-// without a plane keep castRay's steps. Every ray takes castRay's one-ray loop; with a step cap
-// below the world's sx + sy + sz, or the brick reach stale, this is castRayBatch.
+// without a plane keep castRay's steps. Every ray takes castRay's one-ray loop (from outside, the
+// rays of 16 start and jump to their plane together in SIMD lanes first, §4.6 "Starts in lanes");
+// with a step cap below the world's sx + sy + sz, or the brick reach stale, this is castRayBatch.
 inline constexpr std::size_t kCameraTileRays = 64;
 void castCameraRays(const VoxelWorld& world, std::span<const Ray> rays, std::span<Hit> hits,
                     double tMax = kInfinity, int stepCap = 0);
