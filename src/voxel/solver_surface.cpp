@@ -116,9 +116,14 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
     Rgb weighted, lamps;
     double weights = 0.0;
     const GgxSampler ggx(specular);
-    const int rays = light.sharpLobeOneRay && b.alpha <= kSolverSharpAlpha
+    const int rays = (light.sharpLobeOneRay && b.alpha <= kSolverSharpAlpha) ||
+                             (light.roughLobeOneRay && b.alpha >= kSolverRoughAlpha)
                          ? std::min(light.specularRays, 1)
                          : light.specularRays;
+    // A sharp lobe's light samples of the lamps would almost all fall outside it and count
+    // nothing: its GGX direction finds a lamp alone, weighed against no light sample.
+    const bool lampSamples = light.glossyLamps && !(b.alpha <= kSolverSharpAlpha);
+    const float lightSamples = lampSamples ? float(LUXEL_GLOSSY_LIGHT_SAMPLES) : 0.0f;
     for (int k = 0; k < rays; ++k) {
         const BsdfSample sample = ggx.sample(rng);
         if (sample.lobe != BsdfSample::Lobe::Specular) continue;
@@ -135,13 +140,12 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
                 const float lobePdf = float(ggxDensity(specular, sample.direction));
                 lamps += g.lamp * float(w) *
                          (lobePdf * gpu::shared::glossyBalance(float(g.lightDensity), lobePdf,
-                                                               float(LUXEL_GLOSSY_LIGHT_SAMPLES),
-                                                               float(rays)));
+                                                               lightSamples, float(rays)));
             }
         }
         weights += w;
     }
-    if (light.glossyLamps) out += light.glossyLamps(lobe, rays, rng);
+    if (lampSamples) out += light.glossyLamps(lobe, rays, rng);
     out += b.specular * lamps;
     if (!(weights > 0.0)) return out;
     const double albedo = directionalAlbedoGgx(b.cosView, b.alpha);

@@ -49,6 +49,11 @@ inline constexpr float kSolverFollowRoughness = 0.1f;
 // SolverLight::sharpLobeOneRay is set: a second lands where the first did
 // (docs/algorithms/voxel-radiance-cascades.md §4.2, "Sharp lobes take one ray").
 inline constexpr float kSolverSharpAlpha = 0.0025f;
+// A GGX lobe at least this rough (alpha; roughness 0.71, rougher than the default 0.7) takes one
+// direction where SolverLight::roughLobeOneRay is set: its specular share is small and spread
+// wide, and the picture's 8 x 8 blocks average a second direction's difference away
+// (docs/algorithms/voxel-radiance-cascades.md §4.2, "Very rough lobes take one ray").
+inline constexpr float kSolverRoughAlpha = 0.5f;
 
 // Whether a ray that meets a voxel of material `m` follows it with shadeSolverSurface rather than
 // taking its face as opaque and Lambertian: glass and water (a transmission lobe, with
@@ -93,7 +98,9 @@ struct SolverLight {
     // along its GGX directions in place of radianceAlong(ray, false), which counts those
     // emitters' emission only by the share the highlight leaves and hands back the lamps the
     // light samples could find; and those light samples (`lobeRays`: the GGX directions they
-    // are weighed against), drawn after the GGX directions.
+    // are weighed against), drawn after the GGX directions. A lobe at most kSolverSharpAlpha
+    // sharp takes no light samples: its GGX direction alone finds a lamp, which it counts in full
+    // (§4.2, "Sharp lobes take no lamp samples").
     std::function<Rgb(const PathBsdf& specular)> nearHighlight = nullptr;
     std::function<GlossyAlong(const Ray&)> glossyAlong = nullptr;
     std::function<Rgb(const PathBsdf& specular, int lobeRays, PathRng& rng)> glossyLamps = nullptr;
@@ -107,6 +114,9 @@ struct SolverLight {
     // A lobe at most kSolverSharpAlpha sharp takes one of the specularRays directions (the
     // radiance cascades' picture).
     bool sharpLobeOneRay = false;
+    // A lobe at least kSolverRoughAlpha rough takes one of them too (the radiance cascades'
+    // picture).
+    bool roughLobeOneRay = false;
 };
 
 // The radiance leaving the surface `s` towards the camera ray `ray` (s.hit.normal non-zero).

@@ -218,7 +218,7 @@ TEST(CascadesPictureGpu, GlassMirrorAndMetalMatchTheCpuPicture) {
 
 // The glass room's mirror made a polished metal of roughness 0.03 (GGX alpha 0.0009): a sharp
 // lobe, which takes one GGX direction at the camera's surface on both backends (§4.2, "Sharp
-// lobes take one ray"), its lamp light-sampled against that one ray.
+// lobes take one ray"), and no light sample of its lamp ("Sharp lobes take no lamp samples").
 TEST(CascadesPictureGpu, SharpMetalMatchesTheCpuPicture) {
     REQUIRE_CONTEXT(context);
     GlassRoom room;
@@ -331,6 +331,26 @@ TEST(CascadesPictureGpu, FarLampOnGlossyWallsMatchesTheCpuPicture) {
             expectWithin(compare(drawn[i].cpu, drawn[i].gpu), bounds,
                          i == 0 ? "far glossy wall" : "glossy ceiling");
         }
+    }
+}
+
+// GlossyWallsRoom with walls and ceiling of roughness 0.8 (GGX alpha 0.64): a very rough lobe,
+// which takes one GGX direction at the camera's surface on both backends (§4.2, "Very rough
+// lobes take one ray"), the far lamp light-sampled against that one.
+TEST(CascadesPictureGpu, FarLampOnVeryRoughWallsMatchesTheCpuPicture) {
+    REQUIRE_CONTEXT(context);
+    GlossyWallsRoom room;
+    Material rough = polishedFloor(0.1f);
+    rough.roughness = 0.8f;
+    ASSERT_TRUE(room.o.materials.setSlot(1, rough).ok());
+    Bounds bounds = boundsFor(*context);
+    bounds.lowFrequency = std::max(bounds.lowFrequency, 1e-5);  // as for the far lamp above
+    for (int samples : {1, 4}) {
+        room.o.samplesPerPixel = samples;
+        std::vector<Pictures> drawn;
+        drawBoth(*context, room.world, nullptr, room.o, {farWallView(64, 48)}, &drawn);
+        ASSERT_EQ(drawn.size(), 1u);
+        expectWithin(compare(drawn[0].cpu, drawn[0].gpu), bounds, "very rough far wall");
     }
 }
 

@@ -2,7 +2,9 @@
 // docs/algorithms/voxel-radiance-cascades.md §4.2, "Sharp lobes take one ray"): a polished metal
 // whose GGX alpha is at most kSolverSharpAlpha asks for the light along one GGX direction where
 // the radiance cascades' picture would cast two, and shades as with one; rougher lobes, and
-// callers that do not set it, keep every direction.
+// callers that do not set it, keep every direction. A sharp lobe draws no light samples of the
+// lamps ("Sharp lobes take no lamp samples"): its GGX direction counts the lamp it meets weighed
+// against none.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -59,6 +61,43 @@ TEST(SolverSharpLobe, RougherLobesAndOtherCallersKeepEveryDirection) {
     // Not set (sky visibility, the default): a sharp lobe keeps its directions.
     EXPECT_FALSE(SolverLight{}.sharpLobeOneRay);
     EXPECT_EQ(shadeMetal(0.03f, 4, false).rays.size(), 4u);
+}
+
+// The pane's top, a metal of `roughness`, whose GGX directions each meet a lamp (emission 5) that
+// the light samples find with density `lightDensity`; `samples` counts the light samples drawn
+// (each bringing 0.25).
+Rgb shadeWithALamp(float roughness, double lightDensity, int* samples) {
+    ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
+    EXPECT_TRUE(o.materials.setSlot(0, metal(roughness, Rgb(0.9f, 0.8f, 0.7f))).ok());
+    return shadePaneTop(
+               o, normalize(Vec3d{0.5, -0.8, 0.2}), 2, [](const Ray&) { return Rgb(1.0f); },
+               [lightDensity, samples](SolverLight& light) {
+                   light.sharpLobeOneRay = true;
+                   light.glossyAlong = [lightDensity](const Ray&) {
+                       return GlossyAlong{Rgb(1.0f), Rgb(5.0f), lightDensity};
+                   };
+                   light.glossyLamps = [samples](const PathBsdf&, int, PathRng&) {
+                       ++*samples;
+                       return Rgb(0.25f);
+                   };
+               },
+               PathRng(7, 3, 0))
+        .radiance;
+}
+
+TEST(SolverSharpLobe, ASharpLobeTakesNoLampSamples) {
+    int samples = 0;
+    // Roughness 0.03: no light sample drawn, and the lamp its direction meets weighed against
+    // none, whatever their density would have been.
+    const Rgb sparse = shadeWithALamp(0.03f, 1.0, &samples);
+    const Rgb dense = shadeWithALamp(0.03f, 1000.0, &samples);
+    EXPECT_EQ(samples, 0);
+    expectSame(sparse, dense);
+    // Roughness 0.3: one light sample each, and a denser one leaves the GGX directions less.
+    const Rgb roughSparse = shadeWithALamp(0.3f, 1.0, &samples);
+    const Rgb roughDense = shadeWithALamp(0.3f, 1000.0, &samples);
+    EXPECT_EQ(samples, 2);
+    EXPECT_GT(roughSparse.r, roughDense.r);
 }
 
 }  // namespace

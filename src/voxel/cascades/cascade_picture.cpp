@@ -141,8 +141,9 @@ Rgb RadianceCascades::pixelRadiance(const Ray& ray, PathRng& rng, const Hit* pri
     // The disk's rays share one walk through glass (§4.2, "Sun rays through glass").
     light.sunRaysShareMedia = true;
     // A polished metal's or glass's sharp GGX lobe takes one direction (§4.2, "Sharp lobes take
-    // one ray").
+    // one ray"), and so does a very rough one ("Very rough lobes take one ray").
     light.sharpLobeOneRay = true;
+    light.roughLobeOneRay = true;
     if (!faces.nearOffset.empty() || glossy.ray.lamps) {
         if (!faces.nearOffset.empty()) {
             light.nearHighlight = [this, &nearRays](const PathBsdf& specular) {

@@ -30,6 +30,7 @@ static_assert(LUXEL_PICTURE_FOLLOW_DEPTH == kSolverFollowDepth,
               "cascades_picture.comp.glsl unrolls the solver's follow depth");
 static_assert(float(LUXEL_PICTURE_FOLLOW_ROUGHNESS) == kSolverFollowRoughness);
 static_assert(float(LUXEL_PICTURE_SHARP_ALPHA) == kSolverSharpAlpha);
+static_assert(float(LUXEL_PICTURE_ROUGH_ALPHA) == kSolverRoughAlpha);
 static_assert(LUXEL_PICTURE_CAMERA_AIR_EXITS == kPictureCameraAirExits &&
               LUXEL_PICTURE_FOLLOWED_AIR_EXITS == kPictureFollowedAirExits);
 // path_surface.glsl reads the picture's flags as the path tracer's.

@@ -65,14 +65,19 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
     const PathBsdf lobe = specular;
     if (glossy && !mirror) glossyLampsChoose(s.hit);
     vec3 lamps = vec3(0.0);
+    // A sharp lobe takes no light samples: its GGX direction finds a lamp alone (as the CPU).
+    const bool lampSamples = !(b.alpha <= LUXEL_PICTURE_SHARP_ALPHA);
 #endif
     // Then the reflection: one mirror ray, or GGX directions weighted by their sampling weights.
     specular.specular = vec3(1.0);
     specular.pSpecular = 1.0;
-    // A sharp lobe takes one GGX direction (kSolverSharpAlpha, SolverLight::sharpLobeOneRay: the
-    // picture sets it at the camera's surface, whose level alone casts more than one).
+    // A sharp or a very rough lobe takes one GGX direction (kSolverSharpAlpha, kSolverRoughAlpha,
+    // SolverLight::sharpLobeOneRay and roughLobeOneRay: the picture sets them at the camera's
+    // surface, whose level alone casts more than one).
     const int lobeRays =
-        b.alpha <= LUXEL_PICTURE_SHARP_ALPHA ? min(specularRays, 1) : specularRays;
+        b.alpha <= LUXEL_PICTURE_SHARP_ALPHA || b.alpha >= LUXEL_PICTURE_ROUGH_ALPHA
+            ? min(specularRays, 1)
+            : specularRays;
     int reflections = glossy ? (mirror ? 1 : lobeRays) : 0;
     const vec3 n = vec3(s.hit.normal);
     vec3 weighted = vec3(0.0);
@@ -150,7 +155,8 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
                 const float lobePdf = pathGgxPdf(specular, ray);
                 lamps += pictureLampEmission * ggxWeight *
                          (lobePdf * glossyBalance(pictureLampDensity, lobePdf,
-                                                  float(LUXEL_GLOSSY_LIGHT_SAMPLES),
+                                                  lampSamples ? float(LUXEL_GLOSSY_LIGHT_SAMPLES)
+                                                              : 0.0,
                                                   float(lobeRays)));
             }
 #endif
@@ -159,7 +165,7 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
 #ifdef LUXEL_SOLVER_NEAR
     if (glossy && !mirror) {
         result += nearHighlight;
-        result += glossyLampLight(s.hit, lobe, lobeRays, rng);
+        if (lampSamples) result += glossyLampLight(s.hit, lobe, lobeRays, rng);
         result += b.specular * lamps;
     }
 #endif
