@@ -39,30 +39,29 @@ bool emits(const Medium2D& medium, int x, int y) {
 }  // namespace
 
 std::vector<CompactLight> findCompactLights(const Medium2D& medium) {
+    return findCompactLights(medium, LightScores::of(medium));
+}
+
+std::vector<CompactLight> findCompactLights(const Medium2D& medium, const LightScores& scores) {
     const int w = medium.width(), h = medium.height();
     const std::size_t count = static_cast<std::size_t>(w) * h;
     std::vector<CompactLight> lights;
     if (count == 0) return lights;
-    // The scores and the emitting pixels, by rows on every thread: every solve of a canvas with
-    // lights pays this pass, most of them finding no compact light (a room's walls).
-    std::vector<float> scores(count), rowBrightest(static_cast<std::size_t>(h), 0.0f);
+    const float brightest = scores.brightest();
+    if (!(brightest > 0.0f)) return lights;
+    const float threshold = lightScoreThreshold(brightest);
+    // The emitting pixels, by rows on every thread: every solve of a canvas with lights pays this
+    // pass, most of them finding no compact light (a room's walls).
     // 0: no emission, 1: emitting and not yet labelled, 2: labelled.
     std::vector<std::uint8_t> state(count, 0);
     parallelForRange(h, 16, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {
             const std::size_t row = static_cast<std::size_t>(y) * w;
-            rowBrightest[static_cast<std::size_t>(y)] =
-                lightScoreRow(medium.emission.data() + row * 3, medium.absorption.data() + row * 3,
-                              w, scores.data() + row);
             for (int x = 0; x < w; ++x) {
                 if (emits(medium, x, y)) state[row + x] = 1;
             }
         }
     });
-    float brightest = 0.0f;
-    for (const float b : rowBrightest) brightest = std::max(brightest, b);
-    if (!(brightest > 0.0f)) return lights;
-    const float threshold = lightScoreThreshold(brightest);
 
     std::vector<std::uint32_t> stack;
     for (std::size_t seed = 0; seed < count; ++seed) {
@@ -82,7 +81,7 @@ std::vector<CompactLight> findCompactLights(const Medium2D& medium) {
             small = small && light.x1 - light.x0 < kCompactLightMaxSize &&
                     light.y1 - light.y0 < kCompactLightMaxSize;
             if (small) light.pixels.push_back(i);
-            light.score = std::max(light.score, scores[i]);
+            light.score = std::max(light.score, scores.at(i));
             for (int dy = -1; dy <= 1; ++dy) {
                 for (int dx = -1; dx <= 1; ++dx) {
                     const int nx = x + dx, ny = y + dy;

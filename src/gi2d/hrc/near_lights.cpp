@@ -37,33 +37,24 @@ std::uint64_t NearLightMask::hostBytesFor(int width, int height) {
 }
 
 NearLightMask NearLightMask::fromMedium(const Medium2D& medium) {
+    return fromScores(LightScores::of(medium));
+}
+
+NearLightMask NearLightMask::fromScores(const LightScores& scores) {
     NearLightMask mask;
-    mask.build(medium);
+    mask.build(scores);
     return mask;
 }
 
-void NearLightMask::build(const Medium2D& medium) {
+void NearLightMask::build(const LightScores& scores) {
     NearLightMask& mask = *this;
-    const int w = medium.width(), h = medium.height();
+    const int w = scores.width(), h = scores.height();
     mask.width_ = w;
     mask.height_ = h;
     mask.bytes_.assign(bytesFor(w, h), 64);
     mask.columnNear_.assign(static_cast<std::size_t>(w), 0);
     mask.rowNear_.assign(static_cast<std::size_t>(h), 0);
-    const float* emission = medium.emission.data();
-    const float* sigma = medium.absorption.data();
-    // What a pixel emits towards a ray crossing it, per channel at most E min(sigma, 1)
-    // (lightScoreRow).
-    std::vector<float> rowMost(static_cast<std::size_t>(h), 0.0f);
-    parallelForRange(h, kGrain, [&](int y0, int y1) {
-        std::vector<float> scores(static_cast<std::size_t>(w));
-        for (int y = y0; y < y1; ++y) {
-            const std::size_t base = static_cast<std::size_t>(y) * w * 3;
-            rowMost[static_cast<std::size_t>(y)] =
-                lightScoreRow(emission + base, sigma + base, w, scores.data());
-        }
-    });
-    const float brightest = *std::max_element(rowMost.begin(), rowMost.end());
+    const float brightest = scores.brightest();
     if (!(brightest > 0.0f)) return;
     const float threshold = lightScoreThreshold(brightest);
     static constexpr std::array<std::uint8_t, kFar + 1> kept = keptTable();
@@ -72,18 +63,15 @@ void NearLightMask::build(const Medium2D& medium) {
         // capped at 9. The byte loops run through raw pointers and copies of the sizes: a byte
         // store may alias anything reached by reference (a vector's own pointer, the width),
         // which kept the compiler from vectorising them.
-        auto lit = [&](int y) { return rowMost[static_cast<std::size_t>(y)] >= threshold; };
+        auto lit = [&](int y) { return scores.rowBrightest(y) >= threshold; };
         const int r0 = std::max(0, y0 - 2), r1 = std::min(h, y1 + 2);
         std::vector<std::uint8_t> along(static_cast<std::size_t>(r1 - r0) * w, kFar);
-        std::vector<float> scores(static_cast<std::size_t>(w));
         std::vector<std::uint8_t> lights(static_cast<std::size_t>(w) + 4, 0);  // 2 unlit each side
         for (int y = r0; y < r1; ++y) {
             if (!lit(y)) continue;
             std::uint8_t* row = along.data() + static_cast<std::size_t>(y - r0) * w;
-            const std::size_t base = static_cast<std::size_t>(y) * w * 3;
-            lightScoreRow(emission + base, sigma + base, w, scores.data());
             std::uint8_t* const l = lights.data() + 2;
-            const float* const score = scores.data();
+            const float* const score = scores.row(y);
             for (int x = 0; x < w; ++x) l[x] = score[x] >= threshold ? 1 : 0;
             // The distance to the nearest light in the row, capped at 3, squared.
             for (int x = 0; x < w; ++x) {
