@@ -5,9 +5,11 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <memory>
 #include <numbers>
 #include <utility>
 
+#include "gi2d/hrc/emitting_pixels.h"
 #include "gi2d/hrc/light_scores.h"
 #include "luxel/core/parallel.h"
 
@@ -51,14 +53,21 @@ std::vector<CompactLight> findCompactLights(const Medium2D& medium, const LightS
     if (!(brightest > 0.0f)) return lights;
     const float threshold = lightScoreThreshold(brightest);
     // The emitting pixels, by rows on every thread: every solve of a canvas with lights pays this
-    // pass, most of them finding no compact light (a room's walls).
+    // pass, most of them finding no compact light (a room's walls). Vectors tell the sure ones
+    // and the ones that surely do not; the exponentials the few others.
     // 0: no emission, 1: emitting and not yet labelled, 2: labelled.
-    std::vector<std::uint8_t> state(count, 0);
+    // Not zeroed first: the rows' passes write every byte, each row's pages on its thread.
+    const auto state = std::make_unique_for_overwrite<std::uint8_t[]>(count);
     parallelForRange(h, 16, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {
             const std::size_t row = static_cast<std::size_t>(y) * w;
+            std::uint8_t* const out = state.get() + row;
+            if (emittingRow(medium.emission.data() + row * 3, medium.absorption.data() + row * 3, w,
+                            out) == 0) {
+                continue;
+            }
             for (int x = 0; x < w; ++x) {
-                if (emits(medium, x, y)) state[row + x] = 1;
+                if (out[x] == 2) out[x] = emits(medium, x, y) ? 1 : 0;
             }
         }
     });

@@ -110,8 +110,7 @@ TEST(HrcLightScores, SplitHandsTheRestItsOwnScores) {
             EXPECT_NE(fresh.brightest(), LightScores::of(medium).brightest());
             EXPECT_EQ(restScores.brightest(), fresh.brightest());
             for (int y = 0; y < 64; ++y) {
-                EXPECT_EQ(std::memcmp(restScores.row(y), fresh.row(y), 64 * sizeof(float)), 0)
-                    << y;
+                EXPECT_EQ(std::memcmp(restScores.row(y), fresh.row(y), 64 * sizeof(float)), 0) << y;
             }
             return Image(64, 64, 3);
         },
