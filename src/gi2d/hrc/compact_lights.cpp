@@ -70,10 +70,11 @@ void labelConnected(std::uint8_t* state, int w, int h, std::vector<Span>& spans)
 }  // namespace
 
 std::vector<CompactLight> findCompactLights(const Medium2D& medium) {
-    return findCompactLights(medium, LightScores::of(medium));
+    LightScores scores = LightScores::of(medium, true);
+    return findCompactLights(medium, scores);
 }
 
-std::vector<CompactLight> findCompactLights(const Medium2D& medium, const LightScores& scores) {
+std::vector<CompactLight> findCompactLights(const Medium2D& medium, LightScores& scores) {
     const int w = medium.width(), h = medium.height();
     const std::size_t count = static_cast<std::size_t>(w) * h;
     std::vector<CompactLight> lights;
@@ -83,18 +84,21 @@ std::vector<CompactLight> findCompactLights(const Medium2D& medium, const LightS
     const float threshold = lightScoreThreshold(brightest);
     // The emitting pixels, by rows on every thread: every solve of a canvas with lights pays this
     // pass, most of them finding no compact light (a room's walls). Vectors tell the sure ones
-    // and the ones that surely do not; the exponentials the few others.
+    // and the ones that surely do not (with the scores, where they came with them); the
+    // exponentials the few others.
     // 0: no emission, 1: emitting and not yet labelled, 2: labelled.
+    std::unique_ptr<std::uint8_t[]> state = scores.takeEmitting();
+    const bool coded = state != nullptr;
     // Not zeroed first: the rows' passes write every byte, each row's pages on its thread.
-    const auto state = std::make_unique_for_overwrite<std::uint8_t[]>(count);
+    if (!coded) state = std::make_unique_for_overwrite<std::uint8_t[]>(count);
     parallelForRange(h, 16, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {
             const std::size_t row = static_cast<std::size_t>(y) * w;
             std::uint8_t* const out = state.get() + row;
-            if (emittingRow(medium.emission.data() + row * 3, medium.absorption.data() + row * 3, w,
-                            out) == 0) {
-                continue;
-            }
+            const bool unsure = coded ? std::memchr(out, 2, static_cast<std::size_t>(w)) != nullptr
+                                      : emittingRow(medium.emission.data() + row * 3,
+                                                    medium.absorption.data() + row * 3, w, out) > 0;
+            if (!unsure) continue;
             for (int x = 0; x < w; ++x) {
                 if (out[x] == 2) out[x] = emits(medium, x, y) ? 1 : 0;
             }

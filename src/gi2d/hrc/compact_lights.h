@@ -67,8 +67,9 @@ struct CompactLight {
 // least lightScoreThreshold of the brightest) and whose share is above 0, brightest first.
 // Intensity tables not yet made.
 std::vector<CompactLight> findCompactLights(const Medium2D& medium);
-// The same with the solve's light scores of `medium`.
-std::vector<CompactLight> findCompactLights(const Medium2D& medium, const LightScores& scores);
+// The same with the solve's light scores of `medium`, taking their emitting codes where they
+// have them (LightScores::of with `emitting`).
+std::vector<CompactLight> findCompactLights(const Medium2D& medium, LightScores& scores);
 
 // Fills light.sources: the point sources and their intensity tables.
 void makePointSources(const Medium2D& medium, CompactLight& light);

@@ -443,10 +443,11 @@ void addNear(const Medium2D& medium, const CompactLight& light, double nearRadiu
 }  // namespace
 
 DirectLight exactDirectLight(const Medium2D& medium, const DirectLightOptions& options) {
-    return exactDirectLight(medium, LightScores::of(medium), options);
+    LightScores scores = LightScores::of(medium, true);
+    return exactDirectLight(medium, scores, options);
 }
 
-DirectLight exactDirectLight(const Medium2D& medium, const LightScores& scores,
+DirectLight exactDirectLight(const Medium2D& medium, LightScores& scores,
                              const DirectLightOptions& options) {
     DirectLight direct;
     const int w = medium.width(), h = medium.height();
@@ -491,10 +492,9 @@ DirectLight exactDirectLight(const Medium2D& medium, const LightScores& scores,
 }
 
 Status checkDirectLightMemory(int width, int height) {
-    const std::uint64_t pixels = static_cast<std::uint64_t>(width) * height;
     return checkMemory(
         mediumBytes(width, height) + estimateHrcMemory(width, height).output +
-            LightScores::bytesFor(width, height) + pixels * sizeof(std::uint8_t),
+            LightScores::bytesFor(width, height, true),
         "HRC's direct light at " + std::to_string(width) + "x" + std::to_string(height));
 }
 

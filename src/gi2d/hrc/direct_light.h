@@ -53,8 +53,8 @@ struct DirectLightOptions {
 };
 
 DirectLight exactDirectLight(const Medium2D& medium, const DirectLightOptions& options = {});
-// The same with the solve's light scores of `medium`.
-DirectLight exactDirectLight(const Medium2D& medium, const LightScores& scores,
+// The same with the solve's light scores of `medium` (their emitting codes taken, where made).
+DirectLight exactDirectLight(const Medium2D& medium, LightScores& scores,
                              const DirectLightOptions& options = {});
 
 // Whether the split's memory fits, checked before the search allocates: the solve's light scores
@@ -79,8 +79,8 @@ struct DirectLightSplit {
 // emission with `options` less the direct light, and their direct light is added to what it
 // returns. std::nullopt where none qualifies: the caller solves the medium as it is. The split's
 // memory is checked first (an error where it does not fit). `scores` are the medium's
-// (LightScores::of); where the split happens they become the reduced medium's, as `solveRest`
-// is given them (the rows of the removed pixels scored again).
+// (LightScores::of, with the emitting codes for the search); where the split happens they become
+// the reduced medium's, as `solveRest` is given them (the rows of the removed pixels scored again).
 std::optional<Result<Image>> solveSplittingDirectLight(
     const Medium2D& medium, LightScores& scores, const HrcOptions& options,
     const std::function<Result<Image>(const Medium2D&, LightScores&, const HrcOptions&)>& solveRest,

@@ -249,16 +249,18 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
         if (timings) timings->push_back({name, ms});
     };
     // The light scores once on the CPU, as solveHrc makes them (§12.3, §12.5).
+    const bool splitting =
+        options.exactDirectLight && std::popcount(options.frustumMask & 0xFu) == 4;
     if (Status s =
-            checkMemory(LightScores::bytesFor(w, h),
+            checkMemory(LightScores::bytesFor(w, h, splitting),
                         "HRC's light scores at " + std::to_string(w) + "x" + std::to_string(h));
         !s) {
         return s.error();
     }
-    LightScores scores = LightScores::of(medium);
+    LightScores scores = LightScores::of(medium, splitting);
     // §12.5: the compact lights' direct light on the CPU, as solveHrc does; the GPU solves the
     // medium without their emission and the two are summed after the read-back.
-    if (options.exactDirectLight && std::popcount(options.frustumMask & 0xFu) == 4) {
+    if (splitting) {
         std::optional<Result<Image>> solved = solveSplittingDirectLight(
             medium, scores, options,
             [&](const Medium2D& rest, LightScores& restScores, const HrcOptions& o) {

@@ -133,15 +133,17 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
     }
     // The light scores, once for the compact lights' search, the near-light mask and the near
     // field's plan (§12.3, §12.5); the first of the solve's buffers.
+    const bool splitting =
+        options.exactDirectLight && !debug && std::popcount(options.frustumMask & 0xFu) == 4;
     if (Status s =
-            checkMemory(LightScores::bytesFor(w, h),
+            checkMemory(LightScores::bytesFor(w, h, splitting),
                         "HRC's light scores at " + std::to_string(w) + "x" + std::to_string(h));
         !s) {
         return s.error();
     }
-    LightScores scores = LightScores::of(medium);
+    LightScores scores = LightScores::of(medium, splitting);
     // §12.5: the compact lights' direct light exactly, the cascades on the rest of the emission.
-    if (options.exactDirectLight && !debug && std::popcount(options.frustumMask & 0xFu) == 4) {
+    if (splitting) {
         DirectLightSplit split;
         std::optional<Result<Image>> solved = solveSplittingDirectLight(
             medium, scores, options,

@@ -80,6 +80,7 @@ LightScoreRowScan LightScoreRowImpl(const float* emission, const float* sigma, i
 HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
+#include "gi2d/hrc/emitting_pixels.h"
 #include "luxel/core/parallel.h"
 
 namespace luxel::gi2d::hrc {
@@ -91,16 +92,28 @@ LightScoreRowScan lightScoreRow(const float* emission, const float* sigma, int w
     return HWY_DYNAMIC_DISPATCH(LightScoreRowImpl)(emission, sigma, width, scores);
 }
 
-LightScores LightScores::of(const Medium2D& medium) {
+LightScores LightScores::of(const Medium2D& medium, bool emitting) {
     LightScores scores;
-    scores.width_ = medium.width();
-    scores.height_ = medium.height();
-    // Not zeroed first: the rows' scans write every score, each row's pages on the thread that
-    // scans it.
-    scores.scores_ = std::make_unique_for_overwrite<float[]>(
-        static_cast<std::size_t>(scores.width_) * scores.height_);
-    scores.rows_.resize(static_cast<std::size_t>(scores.height_));
-    scores.rescoreRows(medium, 0, scores.height_);
+    const int w = medium.width(), h = medium.height();
+    scores.width_ = w;
+    scores.height_ = h;
+    // Not zeroed first: the rows' scans write every score and code, each row's pages on the
+    // thread that scans it.
+    const std::size_t pixels = static_cast<std::size_t>(w) * h;
+    scores.scores_ = std::make_unique_for_overwrite<float[]>(pixels);
+    if (emitting) scores.emitting_ = std::make_unique_for_overwrite<std::uint8_t[]>(pixels);
+    scores.rows_.resize(static_cast<std::size_t>(h));
+    const float* e = medium.emission.data();
+    const float* sigma = medium.absorption.data();
+    std::uint8_t* const codes = scores.emitting_.get();
+    parallelForRange(h, 16, [&](int begin, int end) {
+        for (int y = begin; y < end; ++y) {
+            const std::size_t base = static_cast<std::size_t>(y) * w;
+            scores.rows_[static_cast<std::size_t>(y)] =
+                lightScoreRow(e + base * 3, sigma + base * 3, w, scores.scores_.get() + base);
+            if (codes != nullptr) emittingRow(e + base * 3, sigma + base * 3, w, codes + base);
+        }
+    });
     return scores;
 }
 
@@ -118,6 +131,7 @@ void LightScores::rescoreRows(const Medium2D& medium, int y0, int y1) {
 
 void LightScores::release() {
     scores_.reset();
+    emitting_.reset();  // where no search took them (a canvas without lights)
 }
 
 float LightScores::brightest() const {
@@ -133,8 +147,8 @@ float LightScores::leastAbsorption() const {
     return least;
 }
 
-std::uint64_t LightScores::bytesFor(int width, int height) {
-    return static_cast<std::uint64_t>(width) * height * sizeof(float) +
+std::uint64_t LightScores::bytesFor(int width, int height, bool emitting) {
+    return static_cast<std::uint64_t>(width) * height * (sizeof(float) + (emitting ? 1 : 0)) +
            static_cast<std::uint64_t>(height) * sizeof(LightScoreRowScan);
 }
 

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "luxel/gi2d/medium2d.h"
@@ -33,12 +34,17 @@ inline float lightScoreThreshold(float brightest) {
 // Every pixel's score, once per solve (rows in parallel), and what the rows' scans found.
 class LightScores {
   public:
-    static LightScores of(const Medium2D& medium);
+    // With `emitting`, each pixel's emittingRow code too (emitting_pixels.h), for the compact
+    // lights' search (§12.5), made row by row right after the scores, while the row's medium is
+    // still in the cache.
+    static LightScores of(const Medium2D& medium, bool emitting = false);
     // Scores rows [y0, y1) again from `medium`, whose emission changed there alone (the split of
     // §12.5 hands the cascades a medium without the compact lights' emission).
     void rescoreRows(const Medium2D& medium, int y0, int y1);
     // Frees the scores once the mask and the plan are made (the sweep's rings come after).
     void release();
+    // The emitting codes, a byte per pixel, handed over (null where not made or taken already).
+    std::unique_ptr<std::uint8_t[]> takeEmitting() { return std::move(emitting_); }
 
     int width() const { return width_; }
     int height() const { return height_; }
@@ -50,11 +56,13 @@ class LightScores {
     // (then nothing bounds a ray, §12.3's near field).
     float leastAbsorption() const;
 
-    static std::uint64_t bytesFor(int width, int height);
+    // Bytes of the scores, and of the emitting codes with them where `emitting`.
+    static std::uint64_t bytesFor(int width, int height, bool emitting = false);
 
   private:
     int width_ = 0, height_ = 0;
     std::unique_ptr<float[]> scores_;  // written by the rows' scans before any read
+    std::unique_ptr<std::uint8_t[]> emitting_;
     std::vector<LightScoreRowScan> rows_;
 };
 

@@ -28,9 +28,10 @@ std::vector<Group> bruteForceGroups(const Medium2D& m, const LightScores& scores
     std::vector<int> label(static_cast<std::size_t>(w) * h, -1);
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
-            const Rgb e = m.emission.rgb(x, y);
-            if (e.r > 0 || e.g > 0 || e.b > 0)
-                label[static_cast<std::size_t>(y) * w + x] = y * w + x;
+            const Rgb e = m.emission.rgb(x, y), t = m.absorption.rgb(x, y);
+            bool emits = false;  // E (1 - exp(-sigma)) > 0 in some channel
+            for (int c = 0; c < 3; ++c) emits = emits || e[c] * (1.0f - std::exp(-t[c])) > 0.0f;
+            if (emits) label[static_cast<std::size_t>(y) * w + x] = y * w + x;
         }
     }
     for (bool changed = true; changed;) {
@@ -95,6 +96,14 @@ TEST(HrcCompactLights, GroupsMatchABruteForceLabelling) {
                 y += static_cast<int>(rng.next() % 3) - 1;
             }
         }
+        // Pixels whose emission only the exponentials tell: sigma 1e-8 (exp rounds to 1, so they
+        // do not emit) and 1e-7 (they do), some inside blobs, some bridging them.
+        for (int k = 0; k < 200; ++k) {
+            const int x = static_cast<int>(rng.next() % w), y = static_cast<int>(rng.next() % h);
+            const float tiny = k % 2 == 0 ? 1e-8f : 1e-7f;
+            m.absorption.setRgb(x, y, {tiny, tiny, tiny});
+            if (m.emission.at(x, y, 0) == 0.0f) m.emission.setRgb(x, y, {2.0f, 2.0f, 2.0f});
+        }
         const LightScores scores = LightScores::of(m);
         const float threshold = lightScoreThreshold(scores.brightest());
         std::vector<Group> expected;
@@ -118,14 +127,19 @@ TEST(HrcCompactLights, GroupsMatchABruteForceLabelling) {
         }
         std::stable_sort(expected.begin(), expected.end(),
                          [](const Group& a, const Group& b) { return a.score > b.score; });
-        const std::vector<CompactLight> found = findCompactLights(m, scores);
         EXPECT_GT(large, 2) << seed;  // the snakes made some
-        ASSERT_EQ(found.size(), expected.size()) << seed;
-        for (std::size_t k = 0; k < found.size(); ++k) {
-            EXPECT_EQ(found[k].pixels, expected[k].pixels) << seed << " " << k;
-            EXPECT_EQ(found[k].x0, expected[k].x0);
-            EXPECT_EQ(found[k].y1, expected[k].y1);
-            EXPECT_EQ(found[k].score, expected[k].score);
+        // The emitting pixels told by the search itself, and taken from the scores' codes.
+        for (const bool coded : {false, true}) {
+            LightScores given = LightScores::of(m, coded);
+            const std::vector<CompactLight> found = findCompactLights(m, given);
+            EXPECT_EQ(given.takeEmitting(), nullptr);  // taken by the search, where made
+            ASSERT_EQ(found.size(), expected.size()) << seed << " " << coded;
+            for (std::size_t k = 0; k < found.size(); ++k) {
+                EXPECT_EQ(found[k].pixels, expected[k].pixels) << seed << " " << k;
+                EXPECT_EQ(found[k].x0, expected[k].x0);
+                EXPECT_EQ(found[k].y1, expected[k].y1);
+                EXPECT_EQ(found[k].score, expected[k].score);
+            }
         }
     }
 }
