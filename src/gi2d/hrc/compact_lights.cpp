@@ -3,11 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <map>
+#include <memory>
 #include <numbers>
 #include <utility>
 
+#include "gi2d/hrc/emitting_pixels.h"
 #include "gi2d/hrc/light_scores.h"
 #include "luxel/core/parallel.h"
 
@@ -36,37 +39,79 @@ bool emits(const Medium2D& medium, int x, int y) {
     return emitted(medium, x, y) > 0.0f;
 }
 
+// Pixels [x0, x1] of row y, labelled.
+struct Span {
+    int y, x0, x1;
+};
+
+// Labels every emitting pixel 8-connected to the spans (labelled already), a maximal span of
+// emitting pixels at a time: the rest of a group found too large to be a compact light, where
+// the order of its pixels no longer matters. Each pixel is labelled once and each span's three
+// rows scanned once, which is much less than a pixel's eight neighbours each.
+void labelConnected(std::uint8_t* state, int w, int h, std::vector<Span>& spans) {
+    while (!spans.empty()) {
+        const Span s = spans.back();
+        spans.pop_back();
+        for (int ny = std::max(0, s.y - 1); ny <= std::min(h - 1, s.y + 1); ++ny) {
+            std::uint8_t* const row = state + static_cast<std::size_t>(ny) * w;
+            for (int x = std::max(0, s.x0 - 1); x <= std::min(w - 1, s.x1 + 1); ++x) {
+                if (row[x] != 1) continue;
+                int a = x, b = x;
+                while (a > 0 && row[a - 1] == 1) --a;
+                while (b + 1 < w && row[b + 1] == 1) ++b;
+                std::fill(row + a, row + b + 1, std::uint8_t{2});
+                spans.push_back({ny, a, b});
+                x = b;
+            }
+        }
+    }
+}
+
 }  // namespace
 
 std::vector<CompactLight> findCompactLights(const Medium2D& medium) {
+    LightScores scores = LightScores::of(medium, true);
+    return findCompactLights(medium, scores);
+}
+
+std::vector<CompactLight> findCompactLights(const Medium2D& medium, LightScores& scores) {
     const int w = medium.width(), h = medium.height();
     const std::size_t count = static_cast<std::size_t>(w) * h;
     std::vector<CompactLight> lights;
     if (count == 0) return lights;
-    // The scores and the emitting pixels, by rows on every thread: every solve of a canvas with
-    // lights pays this pass, most of them finding no compact light (a room's walls).
-    std::vector<float> scores(count), rowBrightest(static_cast<std::size_t>(h), 0.0f);
+    const float brightest = scores.brightest();
+    if (!(brightest > 0.0f)) return lights;
+    const float threshold = lightScoreThreshold(brightest);
+    // The emitting pixels, by rows on every thread: every solve of a canvas with lights pays this
+    // pass, most of them finding no compact light (a room's walls). Vectors tell the sure ones
+    // and the ones that surely do not (with the scores, where they came with them); the
+    // exponentials the few others.
     // 0: no emission, 1: emitting and not yet labelled, 2: labelled.
-    std::vector<std::uint8_t> state(count, 0);
+    std::unique_ptr<std::uint8_t[]> state = scores.takeEmitting();
+    const bool coded = state != nullptr;
+    // Not zeroed first: the rows' passes write every byte, each row's pages on its thread.
+    if (!coded) state = std::make_unique_for_overwrite<std::uint8_t[]>(count);
     parallelForRange(h, 16, [&](int begin, int end) {
         for (int y = begin; y < end; ++y) {
             const std::size_t row = static_cast<std::size_t>(y) * w;
-            rowBrightest[static_cast<std::size_t>(y)] =
-                lightScoreRow(medium.emission.data() + row * 3, medium.absorption.data() + row * 3,
-                              w, scores.data() + row);
+            std::uint8_t* const out = state.get() + row;
+            const bool unsure = coded ? std::memchr(out, 2, static_cast<std::size_t>(w)) != nullptr
+                                      : emittingRow(medium.emission.data() + row * 3,
+                                                    medium.absorption.data() + row * 3, w, out) > 0;
+            if (!unsure) continue;
             for (int x = 0; x < w; ++x) {
-                if (emits(medium, x, y)) state[row + x] = 1;
+                if (out[x] == 2) out[x] = emits(medium, x, y) ? 1 : 0;
             }
         }
     });
-    float brightest = 0.0f;
-    for (const float b : rowBrightest) brightest = std::max(brightest, b);
-    if (!(brightest > 0.0f)) return lights;
-    const float threshold = lightScoreThreshold(brightest);
 
     std::vector<std::uint32_t> stack;
+    std::vector<Span> spans;
     for (std::size_t seed = 0; seed < count; ++seed) {
-        if (state[seed] != 1) continue;
+        // The next emitting pixel not yet labelled, the least index of its group.
+        const void* next = std::memchr(state.get() + seed, 1, count - seed);
+        if (next == nullptr) break;
+        seed = static_cast<std::size_t>(static_cast<const std::uint8_t*>(next) - state.get());
         CompactLight light;
         light.x0 = light.x1 = static_cast<int>(seed % w);
         light.y0 = light.y1 = static_cast<int>(seed / w);
@@ -81,8 +126,20 @@ std::vector<CompactLight> findCompactLights(const Medium2D& medium) {
             light.y0 = std::min(light.y0, y), light.y1 = std::max(light.y1, y);
             small = small && light.x1 - light.x0 < kCompactLightMaxSize &&
                     light.y1 - light.y0 < kCompactLightMaxSize;
-            if (small) light.pixels.push_back(i);
-            light.score = std::max(light.score, scores[i]);
+            if (!small) {
+                // Too large: the rest of the group labelled by spans, from this pixel and the
+                // labelled ones whose neighbours are not yet looked at.
+                spans.assign(1, {y, x, x});
+                for (const std::uint32_t j : stack) {
+                    spans.push_back({static_cast<int>(j / w), static_cast<int>(j % w),
+                                     static_cast<int>(j % w)});
+                }
+                stack.clear();
+                labelConnected(state.get(), w, h, spans);
+                break;
+            }
+            light.pixels.push_back(i);
+            light.score = std::max(light.score, scores.at(i));
             for (int dy = -1; dy <= 1; ++dy) {
                 for (int dx = -1; dx <= 1; ++dx) {
                     const int nx = x + dx, ny = y + dy;

@@ -10,6 +10,7 @@
 #include <numbers>
 #include <vector>
 
+#include "gi2d/hrc/light_scores.h"
 #include "luxel/core/vec.h"
 #include "luxel/gi2d/medium2d.h"
 
@@ -66,6 +67,9 @@ struct CompactLight {
 // least lightScoreThreshold of the brightest) and whose share is above 0, brightest first.
 // Intensity tables not yet made.
 std::vector<CompactLight> findCompactLights(const Medium2D& medium);
+// The same with the solve's light scores of `medium`, taking their emitting codes where they
+// have them (LightScores::of with `emitting`).
+std::vector<CompactLight> findCompactLights(const Medium2D& medium, LightScores& scores);
 
 // Fills light.sources: the point sources and their intensity tables.
 void makePointSources(const Medium2D& medium, CompactLight& light);

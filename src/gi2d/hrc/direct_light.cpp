@@ -443,9 +443,15 @@ void addNear(const Medium2D& medium, const CompactLight& light, double nearRadiu
 }  // namespace
 
 DirectLight exactDirectLight(const Medium2D& medium, const DirectLightOptions& options) {
+    LightScores scores = LightScores::of(medium, true);
+    return exactDirectLight(medium, scores, options);
+}
+
+DirectLight exactDirectLight(const Medium2D& medium, LightScores& scores,
+                             const DirectLightOptions& options) {
     DirectLight direct;
     const int w = medium.width(), h = medium.height();
-    std::vector<CompactLight> lights = findCompactLights(medium);
+    std::vector<CompactLight> lights = findCompactLights(medium, scores);
     if (lights.empty()) return direct;
     const double pixels = static_cast<double>(w) * h;
     const double budget = kDirectWorkPerPixel * std::max(pixels, kDirectBudgetFloorPixels);
@@ -486,10 +492,9 @@ DirectLight exactDirectLight(const Medium2D& medium, const DirectLightOptions& o
 }
 
 Status checkDirectLightMemory(int width, int height) {
-    const std::uint64_t pixels = static_cast<std::uint64_t>(width) * height;
     return checkMemory(
         mediumBytes(width, height) + estimateHrcMemory(width, height).output +
-            pixels * (sizeof(float) + sizeof(std::uint8_t)),
+            LightScores::bytesFor(width, height, true),
         "HRC's direct light at " + std::to_string(width) + "x" + std::to_string(height));
 }
 
@@ -511,21 +516,33 @@ void addDirectLight(const DirectLight& direct, Image& fluence) {
 }
 
 std::optional<Result<Image>> solveSplittingDirectLight(
-    const Medium2D& medium, const HrcOptions& options,
-    const std::function<Result<Image>(const Medium2D&, const HrcOptions&)>& solveRest,
+    const Medium2D& medium, LightScores& scores, const HrcOptions& options,
+    const std::function<Result<Image>(const Medium2D&, LightScores&, const HrcOptions&)>& solveRest,
     const std::function<void(const DirectLightSplit&)>& onSplit) {
     if (Status s = checkDirectLightMemory(medium.width(), medium.height()); !s) {
         return Result<Image>(s.error());
     }
     const auto start = std::chrono::steady_clock::now();
-    const DirectLight direct = exactDirectLight(medium);
+    const DirectLight direct = exactDirectLight(medium, scores);
     if (direct.empty()) return std::nullopt;
     onSplit({std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                  .count(),
              direct.work});
     HrcOptions rest = options;
     rest.exactDirectLight = false;
-    Result<Image> solved = solveRest(withoutDirectLights(medium, direct), rest);
+    const Medium2D reduced = withoutDirectLights(medium, direct);
+    // The removed pixels' rows, ascending with them, scored again run by run.
+    const int w = medium.width();
+    for (std::size_t k = 0; k < direct.removed.size();) {
+        const int y0 = static_cast<int>(direct.removed[k].first / w);
+        int y1 = y0 + 1;
+        while (k < direct.removed.size() && static_cast<int>(direct.removed[k].first / w) <= y1) {
+            y1 = static_cast<int>(direct.removed[k].first / w) + 1;
+            ++k;
+        }
+        scores.rescoreRows(reduced, y0, y1);
+    }
+    Result<Image> solved = solveRest(reduced, scores, rest);
     if (solved) addDirectLight(direct, *solved);
     return solved;
 }

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "gi2d/hrc/light_scores.h"
 #include "luxel/core/error.h"
 #include "luxel/core/image.h"
 #include "luxel/gi2d/hrc_solver.h"
@@ -52,10 +53,13 @@ struct DirectLightOptions {
 };
 
 DirectLight exactDirectLight(const Medium2D& medium, const DirectLightOptions& options = {});
+// The same with the solve's light scores of `medium` (their emitting codes taken, where made).
+DirectLight exactDirectLight(const Medium2D& medium, LightScores& scores,
+                             const DirectLightOptions& options = {});
 
-// Whether the split's memory fits, checked before any of it is allocated: the search's score and
-// label a pixel, the direct fluence and the reduced medium's copy (the solve of the reduced
-// medium checks its own on top of them).
+// Whether the split's memory fits, checked before the search allocates: the solve's light scores
+// (held through it), the search's label a pixel, the direct fluence and the reduced medium's copy
+// (the solve of the reduced medium checks its own on top of them).
 Status checkDirectLightMemory(int width, int height);
 
 // The medium with the removed pixels' emission scaled by 1 - share (absorption unchanged).
@@ -74,10 +78,12 @@ struct DirectLightSplit {
 // is told the direct light's time and work, `solveRest` solves the medium without the lights'
 // emission with `options` less the direct light, and their direct light is added to what it
 // returns. std::nullopt where none qualifies: the caller solves the medium as it is. The split's
-// memory is checked first (an error where it does not fit).
+// memory is checked first (an error where it does not fit). `scores` are the medium's
+// (LightScores::of, with the emitting codes for the search); where the split happens they become
+// the reduced medium's, as `solveRest` is given them (the rows of the removed pixels scored again).
 std::optional<Result<Image>> solveSplittingDirectLight(
-    const Medium2D& medium, const HrcOptions& options,
-    const std::function<Result<Image>(const Medium2D&, const HrcOptions&)>& solveRest,
+    const Medium2D& medium, LightScores& scores, const HrcOptions& options,
+    const std::function<Result<Image>(const Medium2D&, LightScores&, const HrcOptions&)>& solveRest,
     const std::function<void(const DirectLightSplit&)>& onSplit);
 
 }  // namespace luxel::gi2d::hrc

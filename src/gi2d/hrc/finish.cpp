@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "gi2d/hrc/finish_rows.h"
 #include "gpu/shaders/shared/hrc_kernels.h"
 #include "luxel/core/check.h"
 #include "luxel/core/parallel.h"
@@ -63,7 +64,7 @@ void finishFluenceInPlace(const Medium2D& medium, Image& fluence, int frustums, 
         }
     }
     parallelForRange(bands, 1, [&](int begin, int end) {
-        std::vector<float> previous(rowFloats), current(rowFloats);
+        std::vector<float> previous(rowFloats), current(rowFloats), transmittance(rowFloats);
         std::vector<float> opacityAbove, opacityHere, opacityBelow;
         for (int b = begin; b < end; ++b) {
             const int y0 = b * kBandRows, y1 = std::min(h, y0 + kBandRows);
@@ -83,39 +84,32 @@ void finishFluenceInPlace(const Medium2D& medium, Image& fluence, int frustums, 
                 }
                 const float* sigma =
                     medium.absorption.data() + static_cast<std::size_t>(y) * rowFloats;
-                const float* emission =
-                    medium.emission.data() + static_cast<std::size_t>(y) * rowFloats;
-                float* out = row(y);
-                // T of the run of equal sigma the pixel is in (as in opacityRow).
+                // T per pixel, its exp once per run of equal sigma (as in opacityRow).
                 shared::vec3 lastSigma = vec3At(sigma);
                 shared::vec3 t = shared::hrcFinishTransmittance(lastSigma);
                 for (int x = 0; x < w; ++x) {
                     const std::size_t i = static_cast<std::size_t>(x) * 3;
-                    shared::vec3 arriving = vec3At(&current[i]);
-                    if (blur) {
-                        // Centre weight 4, neighbours 1 where the opacity gate lets them in.
-                        const float centre = opacityHere[x];
-                        shared::vec3 sum = arriving * 4.0f;
-                        float weight = 4.0f;
-                        auto take = [&](const float* pixel, float opacity) {
-                            if (!shared::hrcBlurTakes(centre, opacity)) return;
-                            sum += vec3At(pixel);
-                            weight += 1.0f;
-                        };
-                        if (x > 0) take(&current[i - 3], opacityHere[x - 1]);
-                        if (x + 1 < w) take(&current[i + 3], opacityHere[x + 1]);
-                        if (y > 0) take(&previous[i], opacityAbove[x]);
-                        if (next != nullptr) take(next + i, opacityBelow[x]);
-                        arriving = sum * (1.0f / weight);
-                    }
                     if (!sameSigma(sigma + i, lastSigma)) {
                         lastSigma = vec3At(sigma + i);
                         t = shared::hrcFinishTransmittance(lastSigma);
                     }
-                    const shared::vec3 f = shared::hrcFinishPixelThrough(
-                        t, vec3At(emission + i), arriving, static_cast<float>(frustums));
-                    out[i] = f.x, out[i + 1] = f.y, out[i + 2] = f.z;
+                    transmittance[i] = t.x, transmittance[i + 1] = t.y, transmittance[i + 2] = t.z;
                 }
+                FinishRow pass;
+                pass.current = current.data();
+                if (blur) {
+                    pass.above = y > 0 ? previous.data() : nullptr;
+                    pass.below = next;
+                    pass.opacityAbove = opacityAbove.data();
+                    pass.opacityHere = opacityHere.data();
+                    pass.opacityBelow = opacityBelow.data();
+                }
+                pass.transmittance = transmittance.data();
+                pass.emission = medium.emission.data() + static_cast<std::size_t>(y) * rowFloats;
+                pass.width = w;
+                pass.frustums = static_cast<float>(frustums);
+                pass.blur = blur;
+                finishRow(pass, row(y));
                 if (blur) {
                     previous.swap(current);
                     opacityAbove.swap(opacityHere);

@@ -67,35 +67,24 @@ std::uint64_t estimateHrcGpuMemory(int width, int height) {
     return bytes;
 }
 
-Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
-                            const HrcOptions& options, std::vector<gpu::PassTiming>* timings) {
+namespace {
+
+// solveHrcOnGpu without the split of §12.5, on a medium whose light scores are `scores`: the
+// near-light mask and the near field's plan are made from them, then they are freed.
+Result<Image> solveCascadesOnGpu(gpu::Context& context, const Medium2D& medium, LightScores& scores,
+                                 const HrcOptions& options, std::vector<gpu::PassTiming>* timings) {
     const int w = medium.width(), h = medium.height();
-    if (options.tracedLevels < 1) {
-        return Error("HRC traced levels must be >= 1, got " + std::to_string(options.tracedLevels));
-    }
-    if ((options.frustumMask & 0xFu) == 0) return Error("HRC frustum mask selects no frustum");
-    if (options.debugCascade >= 0)
-        return Error("the HRC cascade view runs on the CPU backend only");
-    const std::uint64_t needed = estimateHrcGpuMemory(w, h);
-    if (context.device().deviceLocalBytes > 0 && needed > context.device().deviceLocalBytes) {
-        return Error("HRC at " + std::to_string(w) + "x" + std::to_string(h) + " needs " +
-                     formatBytes(needed) + " of device memory, the device has " +
-                     formatBytes(context.device().deviceLocalBytes));
-    }
     auto record = [&](const std::string& name, double ms) {
         if (timings) timings->push_back({name, ms});
     };
-    // §12.5: the compact lights' direct light on the CPU, as solveHrc does; the GPU solves the
-    // medium without their emission and the two are summed after the read-back.
-    if (options.exactDirectLight && std::popcount(options.frustumMask & 0xFu) == 4) {
-        std::optional<Result<Image>> solved = solveSplittingDirectLight(
-            medium, options,
-            [&](const Medium2D& rest, const HrcOptions& o) {
-                return solveHrcOnGpu(context, rest, o, timings);
-            },
-            [&](const DirectLightSplit& s) { record("direct light (cpu)", s.milliseconds); });
-        if (solved) return std::move(*solved);
-    }
+    // Where the lights are (§12.3), told once on the CPU and read by cascade 0's merge, and the
+    // exact near field's pixels where the medium bounds the rays, as solveHrc does.
+    const NearLightMask mask = NearLightMask::fromScores(scores);
+    const NearFieldPlan nearField =
+        options.exactNearField && std::popcount(options.frustumMask & 0xFu) == 4
+            ? planNearField(scores)
+            : NearFieldPlan{};
+    scores.release();
 
     // Programs.
     using shared::HrcExtendParams, shared::HrcFinishParams, shared::HrcMergeParams,
@@ -135,8 +124,6 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
     auto transposedMedium = context.createBuffer(pixels * 24);
     auto beyond = context.createBuffer(pixels * 12);
     auto fluence = context.createBuffer(pixels * 12);
-    // Where the lights are (§12.3), told once on the CPU and read by cascade 0's merge.
-    const NearLightMask mask = NearLightMask::fromMedium(medium);
     auto nearLights = context.createBuffer(mask.bytes().size());
     for (auto* b : {&canvasMedium, &transposedMedium, &beyond, &fluence, &nearLights}) {
         if (!*b) return b->error();
@@ -213,9 +200,6 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
     std::vector<gpu::Dispatch> last = {makeFinishDispatch(*finish, canvasMedium->get(),
                                                           beyond->get(), fluence->get(), w, h,
                                                           frustums, options.crossBlur)};
-    // The exact near field of §12.3 where the medium bounds the rays, as solveHrc does.
-    const NearFieldPlan nearField =
-        options.exactNearField && frustums == 4 ? planNearField(medium) : NearFieldPlan{};
     std::shared_ptr<gpu::Buffer> nearPixels;
     if (!nearField.empty()) {
         auto b = context.createBuffer(nearField.pixels.size() * 4);
@@ -242,6 +226,50 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
     }
     record("download fluence (CPU)", download.milliseconds());
     return result;
+}
+
+}  // namespace
+
+Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
+                            const HrcOptions& options, std::vector<gpu::PassTiming>* timings) {
+    const int w = medium.width(), h = medium.height();
+    if (options.tracedLevels < 1) {
+        return Error("HRC traced levels must be >= 1, got " + std::to_string(options.tracedLevels));
+    }
+    if ((options.frustumMask & 0xFu) == 0) return Error("HRC frustum mask selects no frustum");
+    if (options.debugCascade >= 0)
+        return Error("the HRC cascade view runs on the CPU backend only");
+    const std::uint64_t needed = estimateHrcGpuMemory(w, h);
+    if (context.device().deviceLocalBytes > 0 && needed > context.device().deviceLocalBytes) {
+        return Error("HRC at " + std::to_string(w) + "x" + std::to_string(h) + " needs " +
+                     formatBytes(needed) + " of device memory, the device has " +
+                     formatBytes(context.device().deviceLocalBytes));
+    }
+    auto record = [&](const std::string& name, double ms) {
+        if (timings) timings->push_back({name, ms});
+    };
+    // The light scores once on the CPU, as solveHrc makes them (§12.3, §12.5).
+    const bool splitting =
+        options.exactDirectLight && std::popcount(options.frustumMask & 0xFu) == 4;
+    if (Status s =
+            checkMemory(LightScores::bytesFor(w, h, splitting),
+                        "HRC's light scores at " + std::to_string(w) + "x" + std::to_string(h));
+        !s) {
+        return s.error();
+    }
+    LightScores scores = LightScores::of(medium, splitting);
+    // §12.5: the compact lights' direct light on the CPU, as solveHrc does; the GPU solves the
+    // medium without their emission and the two are summed after the read-back.
+    if (splitting) {
+        std::optional<Result<Image>> solved = solveSplittingDirectLight(
+            medium, scores, options,
+            [&](const Medium2D& rest, LightScores& restScores, const HrcOptions& o) {
+                return solveCascadesOnGpu(context, rest, restScores, o, timings);
+            },
+            [&](const DirectLightSplit& s) { record("direct light (cpu)", s.milliseconds); });
+        if (solved) return std::move(*solved);
+    }
+    return solveCascadesOnGpu(context, medium, scores, options, timings);
 }
 
 }  // namespace luxel::gi2d

@@ -13,7 +13,9 @@
 #include "gi2d/hrc/frustum_frame.h"
 #include "gi2d/hrc/hrc_geometry.h"
 #include "gi2d/hrc/level_by_level.h"
+#include "gi2d/hrc/light_scores.h"
 #include "gi2d/hrc/near_field.h"
+#include "gi2d/hrc/near_lights.h"
 #include "gi2d/hrc/sweep_solver.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/thread_team.h"
@@ -39,50 +41,21 @@ HrcMemory estimateHrcMemory(int width, int height) {
     return m;
 }
 
-Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
-                       std::vector<HrcCpuPass>* passes) {
+namespace {
+
+// solveHrc without the split of §12.5, on a medium whose light scores are `scores`: they make the
+// near field's plan and the near-light mask, then are freed before the sweep allocates its rings.
+Result<Image> solveCascades(const Medium2D& medium, LightScores& scores, const HrcOptions& options,
+                            std::vector<HrcCpuPass>* passes) {
     const int w = medium.width(), h = medium.height();
-    if (options.tracedLevels < 1) {
-        return Error("HRC traced levels must be >= 1, got " + std::to_string(options.tracedLevels));
-    }
-    if ((options.frustumMask & 0xFu) == 0) return Error("HRC frustum mask selects no frustum");
-    if (static_cast<std::uint64_t>(w) * h > RayMarcher::kMaxPixels) {
-        return Error("HRC supports at most 2^28 pixels, got " + std::to_string(w) + "x" +
-                     std::to_string(h));
-    }
     const bool debug = options.debugCascade >= 0;
-    for (int r = 0; r < 4 && debug; ++r) {
-        if (!(options.frustumMask & (1u << r))) continue;
-        const int levels = cascadeCount(makeFrame(static_cast<Frustum>(r), w, h).length);
-        if (options.debugCascade >= levels) {
-            return Error("debug cascade " + std::to_string(options.debugCascade) +
-                         " does not exist (this size has " + std::to_string(levels) + ")");
-        }
-    }
-    // §12.5: the compact lights' direct light exactly, the cascades on the rest of the emission.
-    if (options.exactDirectLight && !debug && std::popcount(options.frustumMask & 0xFu) == 4) {
-        DirectLightSplit split;
-        std::optional<Result<Image>> solved = solveSplittingDirectLight(
-            medium, options,
-            [passes](const Medium2D& rest, const HrcOptions& o) {
-                return solveHrc(rest, o, passes);
-            },
-            [&split](const DirectLightSplit& s) { split = s; });
-        if (solved) {
-            // After the rest's solve, which begins the pass list anew.
-            if (*solved && passes != nullptr && !passes->empty()) {
-                passes->push_back({"direct light", split.milliseconds, split.work * 12});
-            }
-            return std::move(*solved);
-        }
-    }
     // The sweep's medium window grows with 2^tracedLevels times the distinct lengths inside cells
     // (3 for the paper's 3 traced cascades): many traced cascades go cascade by cascade instead.
     const int frustums = std::popcount(options.frustumMask & 0xFu);
     const bool levelByLevel = debug || options.tracedLevels > kSweepMaxTracedLevels;
     // The exact near field of §12.3 after the finish, for the whole fluence only.
     const NearFieldPlan nearField =
-        options.exactNearField && !debug && frustums == 4 ? planNearField(medium) : NearFieldPlan{};
+        options.exactNearField && !debug && frustums == 4 ? planNearField(scores) : NearFieldPlan{};
     const std::uint64_t needed =
         (nearField.empty() ? 0 : RayMarcher::bytesFor(w, h)) +
         (levelByLevel ? levelByLevelBytes(w, h) + mediumBytes(w, h) / 2
@@ -95,14 +68,17 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
 
     if (levelByLevel) {
         if (passes != nullptr) passes->clear();
-        Image beyond = levelByLevelBeyond(medium, options);
+        NearLightMask mask;
+        mask.build(scores);
+        scores.release();
+        Image beyond = levelByLevelBeyond(medium, options, mask);
         finishFluenceInPlace(medium, beyond, frustums, options.crossBlur && !debug);
         gatherNearFieldInPlace(medium, nearField, beyond);
         return beyond;
     }
     SweepTimes times;
     Image beyond(w, h, 3);
-    sweepFrustums(medium, options, ThreadTeam::defaultSize(), beyond,
+    sweepFrustums(medium, std::move(scores), options, ThreadTeam::defaultSize(), beyond,
                   passes != nullptr ? &times : nullptr);
     const auto start = std::chrono::steady_clock::now();
     finishFluenceInPlace(medium, beyond, frustums, options.crossBlur);
@@ -131,6 +107,59 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
         }
     }
     return beyond;
+}
+
+}  // namespace
+
+Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
+                       std::vector<HrcCpuPass>* passes) {
+    const int w = medium.width(), h = medium.height();
+    if (options.tracedLevels < 1) {
+        return Error("HRC traced levels must be >= 1, got " + std::to_string(options.tracedLevels));
+    }
+    if ((options.frustumMask & 0xFu) == 0) return Error("HRC frustum mask selects no frustum");
+    if (static_cast<std::uint64_t>(w) * h > RayMarcher::kMaxPixels) {
+        return Error("HRC supports at most 2^28 pixels, got " + std::to_string(w) + "x" +
+                     std::to_string(h));
+    }
+    const bool debug = options.debugCascade >= 0;
+    for (int r = 0; r < 4 && debug; ++r) {
+        if (!(options.frustumMask & (1u << r))) continue;
+        const int levels = cascadeCount(makeFrame(static_cast<Frustum>(r), w, h).length);
+        if (options.debugCascade >= levels) {
+            return Error("debug cascade " + std::to_string(options.debugCascade) +
+                         " does not exist (this size has " + std::to_string(levels) + ")");
+        }
+    }
+    // The light scores, once for the compact lights' search, the near-light mask and the near
+    // field's plan (§12.3, §12.5); the first of the solve's buffers.
+    const bool splitting =
+        options.exactDirectLight && !debug && std::popcount(options.frustumMask & 0xFu) == 4;
+    if (Status s =
+            checkMemory(LightScores::bytesFor(w, h, splitting),
+                        "HRC's light scores at " + std::to_string(w) + "x" + std::to_string(h));
+        !s) {
+        return s.error();
+    }
+    LightScores scores = LightScores::of(medium, splitting);
+    // §12.5: the compact lights' direct light exactly, the cascades on the rest of the emission.
+    if (splitting) {
+        DirectLightSplit split;
+        std::optional<Result<Image>> solved = solveSplittingDirectLight(
+            medium, scores, options,
+            [passes](const Medium2D& rest, LightScores& restScores, const HrcOptions& o) {
+                return solveCascades(rest, restScores, o, passes);
+            },
+            [&split](const DirectLightSplit& s) { split = s; });
+        if (solved) {
+            // After the rest's solve, which begins the pass list anew.
+            if (*solved && passes != nullptr && !passes->empty()) {
+                passes->push_back({"direct light", split.milliseconds, split.work * 12});
+            }
+            return std::move(*solved);
+        }
+    }
+    return solveCascades(medium, scores, options, passes);
 }
 
 }  // namespace luxel::gi2d

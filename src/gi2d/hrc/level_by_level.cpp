@@ -33,13 +33,17 @@ std::uint64_t levelByLevelBytes(int width, int height) {
 }
 
 Image levelByLevelBeyond(const Medium2D& medium, const HrcOptions& options) {
+    return levelByLevelBeyond(medium, options, NearLightMask::fromMedium(medium));
+}
+
+Image levelByLevelBeyond(const Medium2D& medium, const HrcOptions& options,
+                         const NearLightMask& nearLights) {
     const int w = medium.width(), h = medium.height();
     Image beyond(w, h, 3);
     RayTables tables;
     ConeBuffer buffers[2];
     const int frustums = std::popcount(options.frustumMask & 0xFu);
     int done = 0;
-    const NearLightMask nearLights = NearLightMask::fromMedium(medium);
     for (int r = 0; r < 4; ++r) {
         if (!(options.frustumMask & (1u << r))) continue;
         const FrustumFrame frame = makeFrame(static_cast<Frustum>(r), w, h);

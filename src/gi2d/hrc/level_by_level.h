@@ -4,6 +4,7 @@
 // and as the check of the streaming solver (sweep_solver.h).
 #pragma once
 
+#include "gi2d/hrc/near_lights.h"
 #include "luxel/core/image.h"
 #include "luxel/gi2d/hrc_solver.h"
 
@@ -12,6 +13,9 @@ namespace luxel::gi2d::hrc {
 // The angular fluence arriving at every pixel's read-out plane, summed over the frustums of
 // `options.frustumMask` (before finishFluence).
 Image levelByLevelBeyond(const Medium2D& medium, const HrcOptions& options);
+// The same with the medium's near-light mask (§12.3) made already.
+Image levelByLevelBeyond(const Medium2D& medium, const HrcOptions& options,
+                         const NearLightMask& nearLights);
 
 // Bytes levelByLevelBeyond holds for a canvas of this size.
 std::uint64_t levelByLevelBytes(int width, int height);

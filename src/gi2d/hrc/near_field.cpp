@@ -13,30 +13,23 @@
 namespace luxel::gi2d::hrc {
 
 NearFieldPlan planNearField(const Medium2D& medium) {
+    return planNearField(LightScores::of(medium));
+}
+
+NearFieldPlan planNearField(const LightScores& scores) {
     NearFieldPlan plan;
-    const int w = medium.width(), h = medium.height();
+    const int w = scores.width(), h = scores.height();
     const std::size_t pixels = static_cast<std::size_t>(w) * h;
     if (pixels == 0) return plan;
-    // The least sigma over every pixel and channel bounds every ray; NaN or 0 bound nothing, so
-    // the first such value ends the scan (at once on a canvas in vacuum: every solve plans).
-    const float* sigma = medium.absorption.data();
-    float least = sigma[0];
-    for (std::size_t i = 0; i < pixels * 3; ++i) {
-        if (!(sigma[i] > 0.0f)) return plan;
-        least = std::min(least, sigma[i]);
-    }
+    // The least sigma over every pixel and channel bounds every ray; NaN or 0 bound nothing (the
+    // rows' scans found it: a canvas in vacuum plans nothing more).
+    const float least = scores.leastAbsorption();
+    if (!(least > 0.0f)) return plan;
     const float reach = std::log(1.0f / kNearFieldCutoff) / least;
     if (!(reach <= kNearFieldMaxReach)) return plan;
 
     // Lights as NearLightMask tells them, then every pixel within kNearFieldRadius of one.
-    const float* emission = medium.emission.data();
-    std::vector<float> scores(pixels);
-    float brightest = 0.0f;
-    for (int y = 0; y < h; ++y) {
-        const std::size_t row = static_cast<std::size_t>(y) * w;
-        brightest = std::max(
-            brightest, lightScoreRow(emission + row * 3, sigma + row * 3, w, scores.data() + row));
-    }
+    const float brightest = scores.brightest();
     if (!(brightest > 0.0f)) return plan;
     const float threshold = lightScoreThreshold(brightest);
     // The rays' cost against the canvas's: beyond the budget the gather is off altogether. The
@@ -44,14 +37,20 @@ NearFieldPlan planNearField(const Medium2D& medium) {
     const double stepsPerPixel = kNearFieldRays * std::min<double>(reach, std::hypot(w, h));
     const double budget = kNearFieldStepsPerPixel *
                           std::max(static_cast<double>(pixels), kNearFieldBudgetFloorPixels);
-    const auto lights =
-        std::count_if(scores.begin(), scores.end(), [&](float s) { return s >= threshold; });
+    std::size_t lights = 0;
+    for (int y = 0; y < h; ++y) {
+        if (!(scores.rowBrightest(y) >= threshold)) continue;
+        const float* row = scores.row(y);
+        for (int x = 0; x < w; ++x) lights += row[x] >= threshold ? 1 : 0;
+    }
     if (static_cast<double>(lights) * stepsPerPixel > budget) return plan;
     constexpr int r = kNearFieldRadius;
     std::vector<std::uint8_t> near(pixels, 0);
     for (int y = 0; y < h; ++y) {
+        if (!(scores.rowBrightest(y) >= threshold)) continue;
+        const float* row = scores.row(y);
         for (int x = 0; x < w; ++x) {
-            if (!(scores[static_cast<std::size_t>(y) * w + x] >= threshold)) continue;
+            if (!(row[x] >= threshold)) continue;
             for (int dy = std::max(-r, -y); dy <= std::min(r, h - 1 - y); ++dy) {
                 for (int dx = std::max(-r, -x); dx <= std::min(r, w - 1 - x); ++dx) {
                     if (dx * dx + dy * dy <= r * r)

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "gi2d/hrc/light_scores.h"
 #include "gpu/shaders/shared/hrc_layout.h"
 #include "luxel/core/image.h"
 #include "luxel/gi2d/medium2d.h"
@@ -36,6 +37,8 @@ struct NearFieldPlan {
 // when the rays would cost more than the budget above.
 // Lights are those of NearLightMask: max_c E_c min(sigma_c, 1) at least 1/64 of the brightest.
 NearFieldPlan planNearField(const Medium2D& medium);
+// The same from the solve's light scores of `medium`.
+NearFieldPlan planNearField(const LightScores& scores);
 
 // Mean radiance over kNearFieldRays directions 2 pi (k + 1/2) / N from the centre of (x, y),
 // each marched for at most `reach` px (a plan's reach: beyond it T is below the cutoff anyway).

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "gi2d/hrc/light_scores.h"
 #include "luxel/gi2d/medium2d.h"
 
 namespace luxel::gi2d::hrc {
@@ -20,8 +21,11 @@ class NearLightMask {
     // none within 1 px, the whole from 3 px, linear between (near_lights.cpp). A canvas without
     // emission keeps the whole blend everywhere.
     static NearLightMask fromMedium(const Medium2D& medium);
-    // The same in place, keeping the allocations of a mask of the same size.
-    void build(const Medium2D& medium);
+    // From the solve's light scores of the medium.
+    static NearLightMask fromScores(const LightScores& scores);
+    // The same from the solve's light scores, in place, keeping the allocations of a mask of the
+    // same size.
+    void build(const LightScores& scores);
 
     int width() const { return width_; }
     int height() const { return height_; }

@@ -536,8 +536,8 @@ void FrustumSweep::run(ThreadTeam& team, int member, SweepTimes* times) {
 
 }  // namespace
 
-void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int threads, Image& beyondSum,
-                   SweepTimes* times) {
+void sweepFrustums(const Medium2D& medium, LightScores scores, const HrcOptions& options,
+                   int threads, Image& beyondSum, SweepTimes* times) {
     LUXEL_CHECK(medium.absorption.channels() == 3 && medium.emission.channels() == 3 &&
                 beyondSum.channels() == 3);
     const int frustums = std::popcount(options.frustumMask & 0xFu);
@@ -547,7 +547,8 @@ void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int thread
     thread_local SweepBuffers kept;
     SweepBuffers buffers = std::move(kept);
     kept = {};
-    buffers.nearLights.build(medium);
+    buffers.nearLights.build(scores);
+    scores.release();
     const NearLightMask& nearLights = buffers.nearLights;
     for (int r = 0; r < 4; ++r) {
         if (!(options.frustumMask & (1u << r))) continue;

@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "gi2d/hrc/frustum_frame.h"
+#include "gi2d/hrc/light_scores.h"
 #include "luxel/core/image.h"
 #include "luxel/core/thread_team.h"
 #include "luxel/gi2d/hrc_solver.h"
@@ -30,9 +31,10 @@ inline constexpr int kSweepChunk = 16;
 inline constexpr int kSweepMaxTracedLevels = 5;
 
 // Adds the angular fluence each pixel's read-out plane receives in every frustum of `mask` into
-// `beyondSum` (canvas space), using `threads` threads.
-void sweepFrustums(const Medium2D& medium, const HrcOptions& options, int threads, Image& beyondSum,
-                   SweepTimes* times);
+// `beyondSum` (canvas space), using `threads` threads. `scores` (the medium's) make the near-light
+// mask and are freed before the rings are allocated.
+void sweepFrustums(const Medium2D& medium, LightScores scores, const HrcOptions& options,
+                   int threads, Image& beyondSum, SweepTimes* times);
 
 // Bytes of sweepFrustums' buffers for a canvas of this size on `threads` threads: each the larger
 // of the ±x and ±y frames', since the buffers keep their allocations from frame to frame.

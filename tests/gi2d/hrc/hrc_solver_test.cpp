@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "gi2d/analytic_disk.h"
+#include "gi2d/hrc/light_scores.h"
 #include "gi2d/hrc/sweep_buffers.h"
 #include "gi2d/hrc/sweep_solver.h"
 #include "gi2d/shipped_scenes.h"
@@ -202,6 +203,10 @@ TEST(HrcSolver, MemoryEstimatesAndRefusal) {
     const std::uint64_t at8k = estimateHrcMemory(8192, 8192).total();
     EXPECT_LT(at8k + mediumBytes(8192, 8192), 4.5 * gib);
     EXPECT_LT(at8k, 3.5 * image8k);  // the solver's own share: 3.36 RGB float images on 2 threads
+    // The light scores (§12.3, §12.5) live beside the output and the near-light mask only, and are
+    // freed before the rings are allocated: they never raise the peak.
+    const HrcMemory parts = estimateHrcMemory(8192, 8192);
+    EXPECT_LT(hrc::LightScores::bytesFor(8192, 8192), parts.rayIntervals + parts.cones);
     const std::uint64_t huge = estimateHrcMemory(16384, 16384).total();
     EXPECT_LT(huge + mediumBytes(16384, 16384), 17 * gib);
     if (availableMemoryBytes() > huge) GTEST_SKIP() << "this machine has the memory";
