@@ -41,4 +41,11 @@ inline ShadedPane shadePaneTop(const ShadeOptions& options, Vec3d direction, int
     return out;
 }
 
+// The same radiance to the bit, channel by channel.
+inline void expectSameRgb(const Rgb& a, const Rgb& b) {
+    EXPECT_EQ(a.r, b.r);
+    EXPECT_EQ(a.g, b.g);
+    EXPECT_EQ(a.b, b.b);
+}
+
 }  // namespace luxel::voxel::test

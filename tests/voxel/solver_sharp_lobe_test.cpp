@@ -31,12 +31,6 @@ ShadedPane shadeMetal(float roughness, int specularRays, bool sharpOneRay) {
         PathRng(7, 3, 0));
 }
 
-void expectSame(const Rgb& a, const Rgb& b) {
-    EXPECT_EQ(a.r, b.r);
-    EXPECT_EQ(a.g, b.g);
-    EXPECT_EQ(a.b, b.b);
-}
-
 TEST(SolverSharpLobe, ASharpLobeTakesOneDirection) {
     // Roughness 0.03: alpha 0.0009, under kSolverSharpAlpha.
     const ShadedPane sharp = shadeMetal(0.03f, 2, true);
@@ -46,7 +40,7 @@ TEST(SolverSharpLobe, ASharpLobeTakesOneDirection) {
     EXPECT_EQ(two.rays.size(), 2u);
     // The same direction as the first of two, and the same light as one ray asked for.
     EXPECT_EQ(sharp.rays[0].direction.x, two.rays[0].direction.x);
-    expectSame(sharp.radiance, one.radiance);
+    expectSameRgb(sharp.radiance, one.radiance);
     EXPECT_NE(sharp.radiance.r, two.radiance.r);
     // Two directions of so sharp a lobe lie within about a tenth of a degree: their mean light
     // is within 0.2% of one's.
@@ -57,7 +51,7 @@ TEST(SolverSharpLobe, RougherLobesAndOtherCallersKeepEveryDirection) {
     // Roughness 0.3 (alpha 0.09): the flag changes nothing.
     const ShadedPane rough = shadeMetal(0.3f, 2, true), roughBefore = shadeMetal(0.3f, 2, false);
     EXPECT_EQ(rough.rays.size(), 2u);
-    expectSame(rough.radiance, roughBefore.radiance);
+    expectSameRgb(rough.radiance, roughBefore.radiance);
     // Not set (sky visibility, the default): a sharp lobe keeps its directions.
     EXPECT_FALSE(SolverLight{}.sharpLobeOneRay);
     EXPECT_EQ(shadeMetal(0.03f, 4, false).rays.size(), 4u);
@@ -92,7 +86,7 @@ TEST(SolverSharpLobe, ASharpLobeTakesNoLampSamples) {
     const Rgb sparse = shadeWithALamp(0.03f, 1.0, &samples);
     const Rgb dense = shadeWithALamp(0.03f, 1000.0, &samples);
     EXPECT_EQ(samples, 0);
-    expectSame(sparse, dense);
+    expectSameRgb(sparse, dense);
     // Roughness 0.3: one light sample each, and a denser one leaves the GGX directions less.
     const Rgb roughSparse = shadeWithALamp(0.3f, 1.0, &samples);
     const Rgb roughDense = shadeWithALamp(0.3f, 1000.0, &samples);

@@ -29,12 +29,6 @@ ShadedPane shadeRough(float roughness, int specularRays, bool roughOneRay) {
         PathRng(7, 3, 0));
 }
 
-void expectSame(const Rgb& a, const Rgb& b) {
-    EXPECT_EQ(a.r, b.r);
-    EXPECT_EQ(a.g, b.g);
-    EXPECT_EQ(a.b, b.b);
-}
-
 TEST(SolverVeryRoughLobe, AVeryRoughLobeTakesOneDirection) {
     // Roughness 0.8 (the glass scene's stone): alpha 0.64, over kSolverRoughAlpha.
     const ShadedPane rough = shadeRough(0.8f, 2, true);
@@ -44,7 +38,7 @@ TEST(SolverVeryRoughLobe, AVeryRoughLobeTakesOneDirection) {
     ASSERT_EQ(two.rays.size(), 2u);
     // The same direction as the first of two, and the same light as one ray asked for.
     EXPECT_EQ(rough.rays[0].direction.x, two.rays[0].direction.x);
-    expectSame(rough.radiance, one.radiance);
+    expectSameRgb(rough.radiance, one.radiance);
     EXPECT_NE(rough.radiance.r, two.radiance.r);
 }
 
@@ -53,7 +47,7 @@ TEST(SolverVeryRoughLobe, TheDefaultRoughnessAndOtherCallersKeepEveryDirection) 
     for (const float roughness : {0.7f, 0.3f}) {
         const ShadedPane flagged = shadeRough(roughness, 2, true);
         EXPECT_EQ(flagged.rays.size(), 2u) << roughness;
-        expectSame(flagged.radiance, shadeRough(roughness, 2, false).radiance);
+        expectSameRgb(flagged.radiance, shadeRough(roughness, 2, false).radiance);
     }
     // Not set (sky visibility, the default): a very rough lobe keeps its directions.
     EXPECT_FALSE(SolverLight{}.roughLobeOneRay);

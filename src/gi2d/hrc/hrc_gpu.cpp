@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <string>
+#include <utility>
 
 #include "gi2d/hrc/cone_merge.h"
 #include "gi2d/hrc/direct_light.h"
@@ -251,13 +252,9 @@ Result<Image> solveHrcOnGpu(gpu::Context& context, const Medium2D& medium,
     // The light scores once on the CPU, as solveHrc makes them (§12.3, §12.5).
     const bool splitting =
         options.exactDirectLight && std::popcount(options.frustumMask & 0xFu) == 4;
-    if (Status s =
-            checkMemory(LightScores::bytesFor(w, h, splitting),
-                        "HRC's light scores at " + std::to_string(w) + "x" + std::to_string(h));
-        !s) {
-        return s.error();
-    }
-    LightScores scores = LightScores::of(medium, splitting);
+    Result<LightScores> checkedScores = LightScores::checkedOf(medium, splitting);
+    if (!checkedScores) return checkedScores.error();
+    LightScores scores = std::move(*checkedScores);
     // §12.5: the compact lights' direct light on the CPU, as solveHrc does; the GPU solves the
     // medium without their emission and the two are summed after the read-back.
     if (splitting) {

@@ -7,6 +7,7 @@
 #include <bit>
 #include <chrono>
 #include <string>
+#include <utility>
 
 #include "gi2d/hrc/direct_light.h"
 #include "gi2d/hrc/finish.h"
@@ -135,13 +136,9 @@ Result<Image> solveHrc(const Medium2D& medium, const HrcOptions& options,
     // field's plan (§12.3, §12.5); the first of the solve's buffers.
     const bool splitting =
         options.exactDirectLight && !debug && std::popcount(options.frustumMask & 0xFu) == 4;
-    if (Status s =
-            checkMemory(LightScores::bytesFor(w, h, splitting),
-                        "HRC's light scores at " + std::to_string(w) + "x" + std::to_string(h));
-        !s) {
-        return s.error();
-    }
-    LightScores scores = LightScores::of(medium, splitting);
+    Result<LightScores> checkedScores = LightScores::checkedOf(medium, splitting);
+    if (!checkedScores) return checkedScores.error();
+    LightScores scores = std::move(*checkedScores);
     // §12.5: the compact lights' direct light exactly, the cascades on the rest of the emission.
     if (splitting) {
         DirectLightSplit split;

@@ -81,6 +81,7 @@ HWY_AFTER_NAMESPACE();
 
 #if HWY_ONCE
 #include "gi2d/hrc/emitting_pixels.h"
+#include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
 
 namespace luxel::gi2d::hrc {
@@ -90,6 +91,17 @@ HWY_EXPORT(LightScoreRowImpl);
 LightScoreRowScan lightScoreRow(const float* emission, const float* sigma, int width,
                                 float* scores) {
     return HWY_DYNAMIC_DISPATCH(LightScoreRowImpl)(emission, sigma, width, scores);
+}
+
+Result<LightScores> LightScores::checkedOf(const Medium2D& medium, bool emitting) {
+    const int w = medium.width(), h = medium.height();
+    if (Status s =
+            checkMemory(bytesFor(w, h, emitting),
+                        "HRC's light scores at " + std::to_string(w) + "x" + std::to_string(h));
+        !s) {
+        return s.error();
+    }
+    return of(medium, emitting);
 }
 
 LightScores LightScores::of(const Medium2D& medium, bool emitting) {

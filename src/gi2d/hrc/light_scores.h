@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "luxel/core/error.h"
 #include "luxel/gi2d/medium2d.h"
 
 namespace luxel::gi2d::hrc {
@@ -38,6 +39,8 @@ class LightScores {
     // lights' search (§12.5), made row by row right after the scores, while the row's medium is
     // still in the cache.
     static LightScores of(const Medium2D& medium, bool emitting = false);
+    // `of`, after checking that its bytes fit in memory (a solve's first buffer, on both backends).
+    static Result<LightScores> checkedOf(const Medium2D& medium, bool emitting);
     // Scores rows [y0, y1) again from `medium`, whose emission changed there alone (the split of
     // §12.5 hands the cascades a medium without the compact lights' emission).
     void rescoreRows(const Medium2D& medium, int y0, int y1);
