@@ -243,7 +243,8 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
         const Ray ray{hit.point, l};
         Rgb t(1.0f);
         const bool shared = throughMedia.r >= 0.0f;
-        const SunRayProof proof = map && !shared ? map->prove(world, hit, l, mapped) : SunRayProof::None;
+        const SunRayProof proof =
+            map && !shared ? map->prove(world, hit, l, mapped) : SunRayProof::None;
         if (shared) {
             t = throughMedia;
         } else if (proof == SunRayProof::Open) {
