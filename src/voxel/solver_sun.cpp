@@ -227,7 +227,9 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
     // Whether the disk's shadow rays may share blockers (ShadowBlockers) and take the map's
     // proofs of blocked rays.
     const bool shareBlockers = sunRaysStopAtSolids(textures, shading);
-    const bool mapped = map && map->startsClear(world, hit);
+    // Whether the rays' start cells are empty, found when a map's proof of an open ray first
+    // needs it (-1: not yet).
+    int mapped = -1;
     ShadowBlockers blockers;
     // With shareMedia, the first ray's transmittance where it passed glass or water, which the
     // rays after it take without their walks (docs/algorithms/voxel-radiance-cascades.md §4.2,
@@ -241,7 +243,8 @@ Rgb solverSunLobes(const VoxelWorld& world, const TextureSet* textures, const Hi
         const Ray ray{hit.point, l};
         Rgb t(1.0f);
         const bool shared = throughMedia.r >= 0.0f;
-        const SunRayProof proof = map && !shared ? map->prove(hit, l, mapped) : SunRayProof::None;
+        const SunRayProof proof =
+            map && !shared ? map->prove(world, hit, l, mapped) : SunRayProof::None;
         if (shared) {
             t = throughMedia;
         } else if (proof == SunRayProof::Open) {

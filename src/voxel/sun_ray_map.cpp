@@ -246,17 +246,21 @@ constexpr double kAheadSlack = 1e-2;
 
 }  // namespace
 
-SunRayProof SunRayMap::prove(const Hit& hit, const Vec3d& direction, bool startsClear) const {
-    const View* view = viewOf(direction);
+namespace {
+
+// SunRayMap::prove's answer, with `startsClear()` asked only where the open ray's proof needs it.
+template <typename View, typename StartsClear>
+SunRayProof proveIn(const View* view, const Hit& hit, const Vec3d& direction,
+                    StartsClear startsClear) {
     if (!view) return SunRayProof::None;
     const std::int64_t texel = texelOf(*view, hit.point);
     if (texel < 0) return SunRayProof::None;
     const int n = normalIndex(hit.normal), axis = n / 2;
-    if (startsClear && view->on[std::size_t(n)]) {
+    if (view->on[std::size_t(n)]) {
         // The voxels beyond the face's plane, which the ray may enter.
         const int plane = n % 2 == 0 ? hit.voxel[axis] + 1 : hit.voxel[axis];
         const int threshold = n % 2 == 0 ? plane : 1 - plane;
-        if (int(view->key[std::size_t(n)][std::size_t(texel)]) < threshold) {
+        if (int(view->key[std::size_t(n)][std::size_t(texel)]) < threshold && startsClear()) {
             return SunRayProof::Open;
         }
     }
@@ -265,6 +269,20 @@ SunRayProof SunRayMap::prove(const Hit& hit, const Vec3d& direction, bool starts
         return SunRayProof::Blocked;
     }
     return SunRayProof::None;
+}
+
+}  // namespace
+
+SunRayProof SunRayMap::prove(const Hit& hit, const Vec3d& direction, bool startsClear) const {
+    return proveIn(viewOf(direction), hit, direction, [&] { return startsClear; });
+}
+
+SunRayProof SunRayMap::prove(const VoxelWorld& world, const Hit& hit, const Vec3d& direction,
+                             int& clear) const {
+    return proveIn(viewOf(direction), hit, direction, [&] {
+        if (clear < 0) clear = startsClear(world, hit) ? 1 : 0;
+        return clear == 1;
+    });
 }
 
 bool SunRayMap::rayOpen(const Hit& hit, const Vec3d& direction) const {

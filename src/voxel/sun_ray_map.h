@@ -67,6 +67,12 @@ class SunRayMap {
     // rayOpen (when `startsClear`) and rayBlocked at once, the texel found once: Open, Blocked
     // or None.
     SunRayProof prove(const Hit& hit, const Vec3d& direction, bool startsClear) const;
+    // prove(hit, direction, startsClear(world, hit)), with startsClear asked only where a proof
+    // of an open ray needs it: `clear` is -1 until it is found, then its answer, kept for the
+    // hit's next rays. The same answers; a ray whose texel a voxel beyond the face marks (every
+    // ray of a closed room) reads no cell around its start.
+    SunRayProof prove(const VoxelWorld& world, const Hit& hit, const Vec3d& direction,
+                      int& clear) const;
     int directions() const { return int(views_.size()); }
     std::uint64_t bytes() const;
 

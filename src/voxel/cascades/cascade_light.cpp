@@ -70,12 +70,12 @@ Rgb sunPassing(const RadianceCascades::State& state, const Face& face, const Sun
         from.voxel = face.voxel;
         from.normal = n;
         from.point = faceQuarterCentre(face, i);
-        const bool mapped = map.startsClear(*state.world, from);
+        int mapped = -1;  // startsClear, found when a proof first needs it
         for (int j = 0; j < perQuarter; ++j) {
             const Vec3d l = sun.spiral(4 * j + i, 4 * perQuarter);
             // A ray proven to reach the sky (sun_ray_map.h) passes whole, one proven blocked
             // adds nothing, as walked.
-            const SunRayProof proof = map.prove(from, l, mapped);
+            const SunRayProof proof = map.prove(*state.world, from, l, mapped);
             if (proof == SunRayProof::Open) {
                 passing += Rgb(1.0f);
             } else if (proof != SunRayProof::Blocked) {
