@@ -26,11 +26,6 @@ namespace {
 // "Sub-tiles from outside").
 constexpr std::size_t kSubTileRays = 16;
 
-bool outsideWorld(const Vec3d& o, const Int3& size) {
-    return !(o.x >= 0.0 && o.y >= 0.0 && o.z >= 0.0 && o.x < size.x && o.y < size.y &&
-             o.z < size.z);
-}
-
 int resolvedCap(const VoxelWorld& world, int stepCap) {
     const Int3 size = world.size();
     return stepCap > 0 ? stepCap : 3 * (size.x + size.y + size.z);
@@ -123,7 +118,7 @@ void castCameraRays(const VoxelWorld& world, std::span<const Ray> rays, std::spa
         // their union (the same bounds as reading the tile whole).
         stream::TileRays parts[kCameraTileRays / kSubTileRays];
         const std::size_t partCount = (tile.size() + kSubTileRays - 1) / kSubTileRays;
-        const bool outside = outsideWorld(tile.front().origin, size);
+        const bool outside = !stream::startsInside(world, tile.front());
         // From inside, no sub-tiles: the tile's bounds alone.
         stream::TileRays all = outside ? stream::TileRays{} : stream::tileRays(tile);
         for (std::size_t k = 0; outside && k < partCount; ++k) {

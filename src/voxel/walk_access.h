@@ -34,26 +34,9 @@ inline gpu::shared::dvec3 toShared(const Vec3d& v) {
     return {v.x, v.y, v.z};
 }
 
-// The Hit of a finished walk: cell, entry t and face, the point snapped onto the face, and (u, v).
-inline Hit hitFromTrace(const Ray& ray, const gpu::shared::VoxelTrace& trace) {
-    Hit hit;
-    hit.steps = trace.steps;
-    hit.capped = trace.capped;
-    if (!trace.hit) return hit;
-    hit.hit = true;
-    hit.voxel = {trace.cell.x, trace.cell.y, trace.cell.z};
-    hit.t = trace.t;
-    if (trace.axis >= 0) hit.normal[trace.axis] = -trace.stp[trace.axis];
-    const gpu::shared::VoxelSurface surface =
-        gpu::shared::voxelSurface(toShared(ray.origin), toShared(ray.direction), trace);
-    hit.point = {surface.point.x, surface.point.y, surface.point.z};
-    hit.u = surface.u;
-    hit.v = surface.v;
-    return hit;
-}
-
-// hitFromTrace and a miss with `steps` stored into `out` field by field: a Hit built on the stack
-// and copied is written there in pieces and read back in other pieces, which stalls each copy on
+// A miss with `steps`, and the Hit of a finished walk (cell, entry t and face, the point snapped
+// onto the face, and (u, v)), stored into `out` field by field: a Hit built on the stack and
+// copied is written there in pieces and read back in other pieces, which stalls each copy on
 // store forwarding (docs/algorithms/voxel-traversal.md §4.6, "Starts in lanes").
 inline void writeMiss(Hit& out, int steps, bool capped = false) {
     out.hit = false;
@@ -84,6 +67,13 @@ inline void writeHit(Hit& out, const Ray& ray, const gpu::shared::VoxelTrace& tr
     out.u = surface.u;
     out.v = surface.v;
     out.steps = trace.steps;
+}
+
+// writeHit into a new Hit.
+inline Hit hitFromTrace(const Ray& ray, const gpu::shared::VoxelTrace& trace) {
+    Hit hit;
+    writeHit(hit, ray, trace);
+    return hit;
 }
 
 }  // namespace luxel::voxel

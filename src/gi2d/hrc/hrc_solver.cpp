@@ -69,8 +69,7 @@ Result<Image> solveCascades(const Medium2D& medium, LightScores& scores, const H
 
     if (levelByLevel) {
         if (passes != nullptr) passes->clear();
-        NearLightMask mask;
-        mask.build(scores);
+        const NearLightMask mask = NearLightMask::fromScores(scores);
         scores.release();
         Image beyond = levelByLevelBeyond(medium, options, mask);
         finishFluenceInPlace(medium, beyond, frustums, options.crossBlur && !debug);
