@@ -147,6 +147,16 @@ Rgb shadeSolverSurface(const VoxelWorld& world, const TextureSet* textures, cons
     }
     if (lampSamples) out += light.glossyLamps(lobe, rays, rng);
     out += b.specular * lamps;
+    // One direction of a rough lobe: the split sum's mean of one direction, S A L, leans towards
+    // what GGX sampling favours, as w = G2 / G1 is smaller at grazing angles. It is counted
+    // unbiased, S (A C + w (L - C)): the mean of w is A, so any constant C keeps the mean at the
+    // lobe's light, and C = E / pi, the light the diffuse lobe sees, takes most of L's
+    // variation with it (a control variate; §4.2, "Very rough lobes take one ray").
+    if (rays == 1 && b.alpha >= kSolverRoughAlpha) {
+        const Rgb& c = light.diffuseRadiance;
+        const float albedo = float(directionalAlbedoGgx(b.cosView, b.alpha));
+        return out + b.specular * (c * albedo + weighted - c * float(weights));
+    }
     if (!(weights > 0.0)) return out;
     const double albedo = directionalAlbedoGgx(b.cosView, b.alpha);
     return out + b.specular * weighted * float(albedo / weights);

@@ -49,11 +49,14 @@ inline constexpr float kSolverFollowRoughness = 0.1f;
 // SolverLight::sharpLobeOneRay is set: a second lands where the first did
 // (docs/algorithms/voxel-radiance-cascades.md §4.2, "Sharp lobes take one ray").
 inline constexpr float kSolverSharpAlpha = 0.0025f;
-// A GGX lobe at least this rough (alpha; roughness 0.71, rougher than the default 0.7) takes one
+// A GGX lobe at least this rough (alpha; roughness 0.67, so the default 0.7 is one) takes one
 // direction where SolverLight::roughLobeOneRay is set: its specular share is small and spread
-// wide, and the picture's 8 x 8 blocks average a second direction's difference away
-// (docs/algorithms/voxel-radiance-cascades.md §4.2, "Very rough lobes take one ray").
-inline constexpr float kSolverRoughAlpha = 0.5f;
+// wide, and the picture's 8 x 8 blocks average a second direction's difference away. A rough lobe
+// with one direction counts its light unbiased, with the diffuse light E / pi as a control
+// variate, rather than by the split sum's weighted mean, which for one direction is that
+// direction's radiance alone (docs/algorithms/voxel-radiance-cascades.md §4.2, "Very rough lobes
+// take one ray").
+inline constexpr float kSolverRoughAlpha = 0.45f;
 
 // Whether a ray that meets a voxel of material `m` follows it with shadeSolverSurface rather than
 // taking its face as opaque and Lambertian: glass and water (a transmission lobe, with

@@ -39,9 +39,9 @@ LUXEL_SHARED_BEGIN
 // A GGX lobe at most this sharp (alpha; roughness 0.05) takes one reflection direction
 // (kSolverSharpAlpha, solver_surface.h).
 #define LUXEL_PICTURE_SHARP_ALPHA 0.0025
-// A GGX lobe at least this rough (alpha; roughness 0.71) takes one reflection direction too
-// (kSolverRoughAlpha, solver_surface.h).
-#define LUXEL_PICTURE_ROUGH_ALPHA 0.5
+// A GGX lobe at least this rough (alpha; roughness 0.67) takes one reflection direction too,
+// counted unbiased (kSolverRoughAlpha, solver_surface.h).
+#define LUXEL_PICTURE_ROUGH_ALPHA 0.45
 // The GGX albedo table's nodes per side (cosView, alpha; ggx_albedo.cpp).
 #define LUXEL_PICTURE_ALBEDO_SIDE 24
 #define LUXEL_PICTURE_EMPTY_SLOT 0xFFFFFFFFu

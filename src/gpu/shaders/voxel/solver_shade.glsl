@@ -169,6 +169,13 @@ vec3 LUXEL_SOLVER_SHADE(SurfaceHit s, vec3 rayDirection, vec3 diffuseRadiance, i
         result += b.specular * lamps;
     }
 #endif
+    // One direction of a rough lobe, unbiased: S (A C + w (L - C)), C = E / pi
+    // (shadeSolverSurface).
+    if (lobeRays == 1 && b.alpha >= LUXEL_PICTURE_ROUGH_ALPHA) {
+        const float albedo = directionalAlbedoGgx(b.cosView, b.alpha);
+        return result +
+               b.specular * (diffuseRadiance * albedo + weighted - diffuseRadiance * weights);
+    }
     if (!(weights > 0.0)) return result;
     // Split sum: S A(cos_v, alpha) times the weighted mean radiance of the GGX directions.
     return result + b.specular * weighted * (directionalAlbedoGgx(b.cosView, b.alpha) / weights);
