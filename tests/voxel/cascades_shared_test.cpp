@@ -23,8 +23,10 @@ using namespace luxel::voxel::test;
 // The pass as it was before the shared codes: every entry merged from its codes.
 void clearShared(RadianceCascades::State& state) {
     state.faces.shared.clear();
+    state.faces.mixed.clear();
     for (LevelData& level : state.levels) {
         level.shared.clear();
+        level.mixed.clear();
         level.sharedStart.clear();
     }
 }

@@ -107,8 +107,8 @@ Rgb mergeCorners(const std::uint32_t* codes, const Corners& corners, std::uint32
 }
 
 // mergeCorners for an entry whose live corners share the code `shared` (cascade_shared.h): the
-// same sums in the same order, without reading the entry's codes (kMixed: read them) and with a
-// chain through glass walked once for all the corners.
+// same sums in the same order, without reading the entry's codes and with a chain through glass
+// walked once for all the corners.
 template <typename Next>
 Rgb mergeShared(std::uint32_t shared, const std::uint32_t* codes, const Corners& corners,
                 std::uint32_t live, const std::vector<Passage>& passages,
@@ -126,9 +126,7 @@ Rgb mergeShared(std::uint32_t shared, const std::uint32_t* codes, const Corners&
         return weight > 0.0f ? sum * (1.0f / weight) : Rgb{};
     }
     Rgb radiance;  // what the shared chain brings, the same at every corner
-    if (shared == kMixed) {
-        return mergeCorners(codes, corners, live, passages, outgoing, sky, next);
-    } else if (!isPassage(shared)) {
+    if (!isPassage(shared)) {
         radiance = codeRadiance(shared, outgoing, sky, Rgb{});
     } else {
         const PassageWalk walk = walkPassages(shared, passages, outgoing);
@@ -146,14 +144,20 @@ Rgb mergeShared(std::uint32_t shared, const std::uint32_t* codes, const Corners&
     return weight > 0.0f ? sum * (1.0f / weight) : Rgb{};
 }
 
-// The merge of an entry: from its shared code where the stream has one (`shared`, advanced past
-// it), else from its codes.
+// The merge of an entry: from its shared code where the stream has one, from its codes in the
+// mixed stream where they differ (both cursors advanced past it), else from `codes`.
 template <typename Next>
-Rgb mergeEntry(const std::uint32_t*& shared, const std::uint32_t* codes, const Corners& corners,
+Rgb mergeEntry(SharedCursor& at, const std::uint32_t* codes, const Corners& corners,
                std::uint32_t live, const std::vector<Passage>& passages,
                const std::vector<Rgb>& outgoing, Rgb sky, Next&& next) {
-    if (!shared) return mergeCorners(codes, corners, live, passages, outgoing, sky, next);
-    return mergeShared(*shared++, codes, corners, live, passages, outgoing, sky, next);
+    if (!at.shared) return mergeCorners(codes, corners, live, passages, outgoing, sky, next);
+    const std::uint32_t shared = *at.shared++;
+    if (shared == kMixed) {
+        const std::uint32_t* mixed = at.mixed;
+        at.mixed += 8;
+        return mergeCorners(mixed, corners, live, passages, outgoing, sky, next);
+    }
+    return mergeShared(shared, codes, corners, live, passages, outgoing, sky, next);
 }
 
 // Merges level k's demanded entries (cascade_demand.h), the levels above already merged: on
@@ -169,17 +173,17 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
     const LevelData* upper = data.level.top ? nullptr : &state.levels[k + 1];
     // What bin b of probe p (its weighted corners `live`) brings: the top level's own segment, or
     // the weighted mean over the corners of what each chain reaches.
-    // `shared` walks the level's shared codes (null: none, read the codes).
+    // `at` walks the level's shared codes (none: read the codes).
     const bool hasShared =
         upper && !data.sharedStart.empty() && data.sharedStart.size() == data.demandProbes.size();
-    const auto binRadiance = [&](int p, std::uint32_t live, const std::uint32_t*& shared, int b) {
+    const auto binRadiance = [&](int p, std::uint32_t live, SharedCursor& at, int b) {
         if (!upper) {
             return chainRadiance(data.codes[std::size_t(p) * bins + b], passages, outgoing,
                                  data.sky[b], [] { return Rgb{}; });
         }
         const Corners& corners = data.corners[p];
-        return mergeEntry(shared, &data.codes[(std::size_t(p) * bins + b) * 8], corners, live,
-                          passages, outgoing, data.sky[b], [&](int c) {
+        return mergeEntry(at, &data.codes[(std::size_t(p) * bins + b) * 8], corners, live, passages,
+                          outgoing, data.sky[b], [&](int c) {
                               return upper->childMean[std::size_t(corners.probe[c]) * bins + b];
                           });
     };
@@ -191,12 +195,15 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
         for (int i = begin; i < end; ++i) {
             const int p = demanded[i];
             const std::uint32_t live = upper ? weightedCorners(data.corners[p]) : 0;
-            const std::uint32_t* shared =
-                hasShared ? &data.shared[data.sharedStart[std::size_t(i)]] : nullptr;
+            SharedCursor at;
+            if (hasShared) {
+                const LevelData::SharedStart& start = data.sharedStart[std::size_t(i)];
+                at = {data.shared.data() + start.shared, data.mixed.data() + start.mixed};
+            }
             Rgb* row = &out[std::size_t(p) * entries];
             forEachDemanded(&data.demand[std::size_t(p) * words], words, [&](int e) {
                 if (!below) {
-                    row[e] = binRadiance(p, live, shared, e);
+                    row[e] = binRadiance(p, live, at, e);
                     return;
                 }
                 // The solid-angle mean of bin e's children here.
@@ -204,7 +211,7 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
                 double area = 0.0;
                 for (const int child : below->children(e)) {
                     const double a = data.bins.solidAngle[child];
-                    sum += binRadiance(p, live, shared, child) * float(a);
+                    sum += binRadiance(p, live, at, child) * float(a);
                     area += a;
                 }
                 row[e] = sum * float(1.0 / area);
@@ -328,13 +335,16 @@ double lightingPass(RadianceCascades::State& state) {
             const std::uint32_t* codes = &faces.codes[faces.codeOffset[f]];
             const Corners& corners = faces.corners[f];
             const std::uint32_t live = weightedCorners(corners);
-            const std::uint32_t* shared =
-                faces.shared.empty() ? nullptr : &faces.shared[faces.codeOffset[f] / 8];
+            SharedCursor at;
+            if (!faces.shared.empty()) {
+                at = {&faces.shared[faces.codeOffset[f] / 8],
+                      faces.mixed.data() + faces.mixedStart[f]};
+            }
             Rgb irradiance;
             for (std::size_t i = 0; i < seen.bin.size(); ++i) {
                 const int b = seen.bin[i];
                 const Rgb incoming =
-                    mergeEntry(shared, codes + i * 8, corners, live, state.passages, faces.outgoing,
+                    mergeEntry(at, codes + i * 8, corners, live, state.passages, faces.outgoing,
                                faces.sky[b], [&](int c) {
                                    return level0.radiance[std::size_t(corners.probe[c]) * bins + b];
                                });

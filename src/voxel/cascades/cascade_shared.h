@@ -3,9 +3,10 @@
 // bin's segment meets something its eight corners take one code (cascade_segments.cpp), and in
 // the open all weighted corners continue: on the glass scene 65-90% of the entries a pass merges.
 // A pass reads that one code from a dense stream instead of the entry's eight scattered codes,
-// and a chain through glass is walked once for all the corners. The stream follows the codes
-// and the demand, fixed while the cascades live, so it is found once per cast (CPU only: the GPU
-// merges from the codes).
+// and a chain through glass is walked once for all the corners; the other entries' eight codes
+// follow in a second stream, so the pass reads its codes in order, not scattered over the levels.
+// The stream follows the codes and the demand, fixed while the cascades live, so it is found once
+// per cast (CPU only: the GPU merges from the codes).
 #pragma once
 
 #include <bit>
@@ -38,9 +39,16 @@ inline std::uint32_t weightedCorners(const Corners& corners) {
     return live;
 }
 
-// Fills each level's `shared` and `sharedStart` and the faces' `shared` (cascade_state.h) from
-// the codes, corners and demand (after findDemand; castSegments calls it). Clearing them makes
-// the pass merge from the codes alone, as it did before.
+// Fills each level's `shared`, `mixed` and `sharedStart` and the faces' `shared`, `mixed` and
+// `mixedStart` (cascade_state.h) from the codes, corners and demand (after findDemand;
+// castSegments calls it). Clearing them makes the pass merge from the codes alone, as it did
+// before.
 void findSharedCodes(RadianceCascades::State& state);
+
+// Where a merge reads the next entry's shared code and, for a kMixed one, its eight codes.
+struct SharedCursor {
+    const std::uint32_t* shared = nullptr;  // null: no stream, the merge reads the codes
+    const std::uint32_t* mixed = nullptr;
+};
 
 }  // namespace luxel::voxel::cascades

@@ -63,10 +63,14 @@ struct LevelData {
     std::vector<std::int32_t> demandProbes;
     // The code each merged entry's weighted corners share, or kMixed (cascade_shared.h), in the
     // order a pass merges them (per demanded probe its demanded entries, above level 0 each
-    // entry's four children); sharedStart[i] is where demandProbes[i]'s begin. Empty on the top
-    // level and where cleared: the pass then reads the codes.
-    std::vector<std::uint32_t> shared;
-    std::vector<std::size_t> sharedStart;
+    // entry's four children); `mixed`, the eight codes of each kMixed entry, in the same order;
+    // sharedStart[i] is where demandProbes[i]'s begin in both. Empty on the top level and where
+    // cleared: the pass then reads the codes.
+    std::vector<std::uint32_t> shared, mixed;
+    struct SharedStart {
+        std::size_t shared = 0, mixed = 0;
+    };
+    std::vector<SharedStart> sharedStart;
 };
 
 struct FaceData {
@@ -77,8 +81,9 @@ struct FaceData {
     std::vector<std::uint32_t> codes;       // per face, its normal's cosine bins x 8 corners
     std::vector<std::uint32_t> codeOffset;  // per face
     // Per face and bin (at codeOffset / 8 + bin): the code its weighted corners share, or kMixed
-    // (cascade_shared.h); empty where cleared.
-    std::vector<std::uint32_t> shared;
+    // (cascade_shared.h); `mixed`, the eight codes of each kMixed bin, face by face (face f's from
+    // mixedStart[f]). Empty where cleared.
+    std::vector<std::uint32_t> shared, mixed, mixedStart;
     std::vector<Rgb> albedo, emission;
     // Mean transmittance of the face's rays over the sun's disk (0 blocked, 1 open, a colour
     // through glass: sunRayTransmittance, solver_sun.h).
