@@ -175,7 +175,7 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
     // the weighted mean over the corners of what each chain reaches.
     // `at` walks the level's shared codes (none: read the codes).
     const bool hasShared =
-        upper && !data.sharedStart.empty() && data.sharedStart.size() == data.demandProbes.size();
+        upper && !data.shared.empty() && data.sharedStart.size() == data.demandProbes.size();
     const auto binRadiance = [&](int p, std::uint32_t live, SharedCursor& at, int b) {
         if (!upper) {
             return chainRadiance(data.codes[std::size_t(p) * bins + b], passages, outgoing,
