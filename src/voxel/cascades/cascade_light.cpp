@@ -171,11 +171,11 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
     const int bins = data.bins.count(), entries = demandBins(state, k), words = entries / 64;
     const std::size_t probes = std::size_t(data.level.probeCount());
     const LevelData* upper = data.level.top ? nullptr : &state.levels[k + 1];
-    // What bin b of probe p (its weighted corners `live`) brings: the top level's own segment, or
-    // the weighted mean over the corners of what each chain reaches.
-    // `at` walks the level's shared codes (none: read the codes).
+    // Whether the level's shared codes are there (cascade_shared.h; none: read the codes).
     const bool hasShared =
         upper && !data.shared.empty() && data.sharedStart.size() == data.demandProbes.size();
+    // What bin b of probe p (its weighted corners `live`) brings: the top level's own segment, or
+    // the weighted mean over the corners of what each chain reaches (`at` walks the shared codes).
     const auto binRadiance = [&](int p, std::uint32_t live, SharedCursor& at, int b) {
         if (!upper) {
             return chainRadiance(data.codes[std::size_t(p) * bins + b], passages, outgoing,
