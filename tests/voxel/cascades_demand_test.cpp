@@ -15,6 +15,7 @@
 #include "luxel/voxel/voxel_scene.h"
 #include "voxel/cascade_states.h"
 #include "voxel/cascades/cascade_demand.h"
+#include "voxel/cascades/cascade_shared.h"
 #include "voxel/cascades/cascade_state.h"
 #include "voxel/plain_light_worlds.h"
 
@@ -34,6 +35,7 @@ void demandEverything(RadianceCascades::State& state) {
         level.demandProbes.resize(std::size_t(level.level.probeCount()));
         std::iota(level.demandProbes.begin(), level.demandProbes.end(), 0);
     }
+    findSharedCodes(state);  // the merge's stream follows the demand
 }
 
 // Demanded entries over all entries, over the levels.

@@ -117,12 +117,16 @@ void updateStats(RadianceCascades::State& state) {
     stats.probes = 0;
     stats.segments = std::int64_t(state.faces.codes.size());
     stats.passages = std::int64_t(state.passages.size());
-    stats.bytes = state.faces.table.bytes() + state.faces.codes.size() * 4 +
+    stats.bytes = state.faces.table.bytes() +
+                  (state.faces.codes.size() + state.faces.shared.size() + state.faces.mixed.size() +
+                   state.faces.mixedStart.size()) *
+                      4 +
                   state.passages.size() * sizeof(Passage) + state.sunRayMap.bytes();
     for (const LevelData& level : state.levels) {
         stats.probes += level.level.probeCount();
         stats.segments += std::int64_t(level.codes.size());
-        stats.bytes += level.codes.size() * 4 +
+        stats.bytes += (level.codes.size() + level.shared.size() + level.mixed.size()) * 4 +
+                       level.sharedStart.size() * sizeof(LevelData::SharedStart) +
                        std::uint64_t(level.level.probeCount()) * level.bins.count() * 15;
     }
 }

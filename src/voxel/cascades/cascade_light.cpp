@@ -11,6 +11,7 @@
 #include "../sun_disk.h"
 #include "cascade_demand.h"
 #include "cascade_picture.h"
+#include "cascade_shared.h"
 #include "cascade_state.h"
 #include "luxel/core/parallel.h"
 #include "luxel/voxel/surface_cast.h"
@@ -87,14 +88,6 @@ Rgb sunPassing(const RadianceCascades::State& state, const Face& face, const Sun
     return passing * (1.0f / float(4 * perQuarter));
 }
 
-// The corners with a weight, as bits: hidden corners have none (§3.2), and near a floor or a wall
-// that is often half of them, so the merges skip them once per probe or face, not per bin.
-std::uint32_t weightedCorners(const Corners& corners) {
-    std::uint32_t live = 0;
-    for (int c = 0; c < 8; ++c) live |= std::uint32_t(corners.weight[c] != 0.0f) << c;
-    return live;
-}
-
 // The trilinear mean over the weighted corners (`live`, weightedCorners) whose segments do not
 // start inside a solid.
 template <typename Next>
@@ -113,6 +106,60 @@ Rgb mergeCorners(const std::uint32_t* codes, const Corners& corners, std::uint32
     return weight > 0.0f ? sum * (1.0f / weight) : Rgb{};
 }
 
+// mergeCorners for an entry whose live corners share the code `shared` (cascade_shared.h): the
+// same sums in the same order, without reading the entry's codes and with a chain through glass
+// walked once for all the corners.
+template <typename Next>
+Rgb mergeShared(std::uint32_t shared, const std::uint32_t* codes, const Corners& corners,
+                std::uint32_t live, const std::vector<Passage>& passages,
+                const std::vector<Rgb>& outgoing, Rgb sky, Next&& next) {
+    if (shared == kVoid) return Rgb{};
+    Rgb sum;
+    float weight = 0.0f;
+    if (shared == kContinue) {
+        for (; live != 0; live &= live - 1) {
+            const int c = std::countr_zero(live);
+            const float w = corners.weight[c];
+            sum += next(c) * w;
+            weight += w;
+        }
+        return weight > 0.0f ? sum * (1.0f / weight) : Rgb{};
+    }
+    Rgb radiance;  // what the shared chain brings, the same at every corner
+    if (!isPassage(shared)) {
+        radiance = codeRadiance(shared, outgoing, sky, Rgb{});
+    } else {
+        const PassageWalk walk = walkPassages(shared, passages, outgoing);
+        // A chain into the level above brings each corner's own light.
+        if (walk.end == kContinue) {
+            return mergeCorners(codes, corners, live, passages, outgoing, sky, next);
+        }
+        radiance = walk.light + walk.through * codeRadiance(walk.end, outgoing, sky, Rgb{});
+    }
+    for (; live != 0; live &= live - 1) {
+        const float w = corners.weight[std::countr_zero(live)];
+        sum += radiance * w;
+        weight += w;
+    }
+    return weight > 0.0f ? sum * (1.0f / weight) : Rgb{};
+}
+
+// The merge of an entry: from its shared code where the stream has one, from its codes in the
+// mixed stream where they differ (both cursors advanced past it), else from `codes`.
+template <typename Next>
+Rgb mergeEntry(SharedCursor& at, const std::uint32_t* codes, const Corners& corners,
+               std::uint32_t live, const std::vector<Passage>& passages,
+               const std::vector<Rgb>& outgoing, Rgb sky, Next&& next) {
+    if (!at.shared) return mergeCorners(codes, corners, live, passages, outgoing, sky, next);
+    const std::uint32_t shared = *at.shared++;
+    if (shared == kMixed) {
+        const std::uint32_t* mixed = at.mixed;
+        at.mixed += 8;
+        return mergeCorners(mixed, corners, live, passages, outgoing, sky, next);
+    }
+    return mergeShared(shared, codes, corners, live, passages, outgoing, sky, next);
+}
+
 // Merges level k's demanded entries (cascade_demand.h), the levels above already merged: on
 // level 0 its radiance, which the faces gather; above it only the child means that the level
 // below reads, each found from its four children as they are merged (kept in registers, not
@@ -124,18 +171,21 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
     const int bins = data.bins.count(), entries = demandBins(state, k), words = entries / 64;
     const std::size_t probes = std::size_t(data.level.probeCount());
     const LevelData* upper = data.level.top ? nullptr : &state.levels[k + 1];
+    // Whether the level's shared codes are there (cascade_shared.h; none: read the codes).
+    const bool hasShared =
+        upper && !data.shared.empty() && data.sharedStart.size() == data.demandProbes.size();
     // What bin b of probe p (its weighted corners `live`) brings: the top level's own segment, or
-    // the weighted mean over the corners of what each chain reaches.
-    const auto binRadiance = [&](int p, std::uint32_t live, int b) {
+    // the weighted mean over the corners of what each chain reaches (`at` walks the shared codes).
+    const auto binRadiance = [&](int p, std::uint32_t live, SharedCursor& at, int b) {
         if (!upper) {
             return chainRadiance(data.codes[std::size_t(p) * bins + b], passages, outgoing,
                                  data.sky[b], [] { return Rgb{}; });
         }
         const Corners& corners = data.corners[p];
-        return mergeCorners(&data.codes[(std::size_t(p) * bins + b) * 8], corners, live, passages,
-                            outgoing, data.sky[b], [&](int c) {
-                                return upper->childMean[std::size_t(corners.probe[c]) * bins + b];
-                            });
+        return mergeEntry(at, &data.codes[(std::size_t(p) * bins + b) * 8], corners, live, passages,
+                          outgoing, data.sky[b], [&](int c) {
+                              return upper->childMean[std::size_t(corners.probe[c]) * bins + b];
+                          });
     };
     std::vector<Rgb>& out = k == 0 ? data.radiance : data.childMean;
     out.resize(probes * entries);
@@ -145,10 +195,15 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
         for (int i = begin; i < end; ++i) {
             const int p = demanded[i];
             const std::uint32_t live = upper ? weightedCorners(data.corners[p]) : 0;
+            SharedCursor at;
+            if (hasShared) {
+                const LevelData::SharedStart& start = data.sharedStart[std::size_t(i)];
+                at = {data.shared.data() + start.shared, data.mixed.data() + start.mixed};
+            }
             Rgb* row = &out[std::size_t(p) * entries];
             forEachDemanded(&data.demand[std::size_t(p) * words], words, [&](int e) {
                 if (!below) {
-                    row[e] = binRadiance(p, live, e);
+                    row[e] = binRadiance(p, live, at, e);
                     return;
                 }
                 // The solid-angle mean of bin e's children here.
@@ -156,7 +211,7 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
                 double area = 0.0;
                 for (const int child : below->children(e)) {
                     const double a = data.bins.solidAngle[child];
-                    sum += binRadiance(p, live, child) * float(a);
+                    sum += binRadiance(p, live, at, child) * float(a);
                     area += a;
                 }
                 row[e] = sum * float(1.0 / area);
@@ -280,14 +335,19 @@ double lightingPass(RadianceCascades::State& state) {
             const std::uint32_t* codes = &faces.codes[faces.codeOffset[f]];
             const Corners& corners = faces.corners[f];
             const std::uint32_t live = weightedCorners(corners);
+            SharedCursor at;
+            if (!faces.shared.empty()) {
+                at = {&faces.shared[faces.codeOffset[f] / 8],
+                      faces.mixed.data() + faces.mixedStart[f]};
+            }
             Rgb irradiance;
             for (std::size_t i = 0; i < seen.bin.size(); ++i) {
                 const int b = seen.bin[i];
-                const Rgb incoming = mergeCorners(
-                    codes + i * 8, corners, live, state.passages, faces.outgoing, faces.sky[b],
-                    [&](int c) {
-                        return level0.radiance[std::size_t(corners.probe[c]) * bins + b];
-                    });
+                const Rgb incoming =
+                    mergeEntry(at, codes + i * 8, corners, live, state.passages, faces.outgoing,
+                               faces.sky[b], [&](int c) {
+                                   return level0.radiance[std::size_t(corners.probe[c]) * bins + b];
+                               });
                 irradiance += incoming * seen.weight[i];
             }
             gathered[f] = irradiance;

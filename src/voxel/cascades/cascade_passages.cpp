@@ -218,6 +218,7 @@ bool PassageWriter::reserveFor(std::size_t more) {
 std::uint32_t PassageWriter::codeOf(const SegmentTrace& trace) {
     if (trace.runs == 0) return trace.end;
     const std::lock_guard<std::mutex> hold(lock_);
+    // The codes stay below kVoid - 1, which names a mixed entry (kMixed, cascade_shared.h).
     if (passages_.size() + std::size_t(trace.runs) >= std::size_t(kVoid - kPassage)) return kBlack;
     if (refused() || !reserveFor(std::size_t(trace.runs))) return kBlack;
     std::uint32_t next = trace.end;

@@ -12,6 +12,7 @@
 
 #include "cascade_demand.h"
 #include "cascade_passages.h"
+#include "cascade_shared.h"
 #include "cascade_state.h"
 #include "luxel/core/memory.h"
 #include "luxel/core/parallel.h"
@@ -179,6 +180,7 @@ Status castSegments(RadianceCascades::State& state, const std::string& hint) {
     if (!passages.refused()) castFaces(state, passages);
     // What the passes merge follows from the codes; a refused cast's too (they read what it left).
     findDemand(state);
+    findSharedCodes(state);
     if (passages.refused()) {
         state.passagesRefusedAt = passages.reached();
         return Error(

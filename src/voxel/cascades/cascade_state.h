@@ -61,6 +61,16 @@ struct LevelData {
     // [probe][bin] on level 0, [probe][bin of the level below] above; and the probes with any.
     std::vector<std::uint64_t> demand;
     std::vector<std::int32_t> demandProbes;
+    // The code each merged entry's weighted corners share, or kMixed (cascade_shared.h), in the
+    // order a pass merges them (per demanded probe its demanded entries, above level 0 each
+    // entry's four children); `mixed`, the eight codes of each kMixed entry, in the same order;
+    // sharedStart[i] is where demandProbes[i]'s begin in both. Empty on the top level and where
+    // cleared: the pass then reads the codes.
+    std::vector<std::uint32_t> shared, mixed;
+    struct SharedStart {
+        std::size_t shared = 0, mixed = 0;
+    };
+    std::vector<SharedStart> sharedStart;
 };
 
 struct FaceData {
@@ -70,6 +80,10 @@ struct FaceData {
     std::vector<Corners> corners;           // per face: level 0's probes around it
     std::vector<std::uint32_t> codes;       // per face, its normal's cosine bins x 8 corners
     std::vector<std::uint32_t> codeOffset;  // per face
+    // Per face and bin (at codeOffset / 8 + bin): the code its weighted corners share, or kMixed
+    // (cascade_shared.h); `mixed`, the eight codes of each kMixed bin, face by face (face f's from
+    // mixedStart[f]). Empty where cleared.
+    std::vector<std::uint32_t> shared, mixed, mixedStart;
     std::vector<Rgb> albedo, emission;
     // Mean transmittance of the face's rays over the sun's disk (0 blocked, 1 open, a colour
     // through glass: sunRayTransmittance, solver_sun.h).
