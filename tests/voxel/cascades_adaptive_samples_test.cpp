@@ -9,9 +9,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 #include "luxel/post/gi_measures.h"
+#include "luxel/voxel/path_trace_sums.h"
 #include "luxel/voxel/radiance_cascades.h"
 #include "luxel/voxel/render_image.h"
 #include "luxel/voxel/surface_cast.h"
@@ -91,6 +93,78 @@ TEST(AdaptiveSamples, TheCapKeepsTheLargestDifferences) {
               (std::vector<std::uint32_t>{0, 1, 2, 3, 4, 5, 6}));
     // The default cap: a share of the pixels.
     EXPECT_EQ(adaptivePixels(board, 1.0).size(), std::size_t(256 * cascades::kAdaptiveMaxShare));
+}
+
+// The rule as written in adaptive_samples.h, pixel by pixel: every neighbour looked up with a
+// bounds test, the cap by a sort of all the candidates.
+std::vector<std::uint32_t> adaptivePixelsByTheRule(const Image& picture, double contrast,
+                                                   double maxShare) {
+    const int width = picture.width(), height = picture.height();
+    const auto luminance = [&](int x, int y) {
+        const double l =
+            pathLuminance(Rgb(picture.at(x, y, 0), picture.at(x, y, 1), picture.at(x, y, 2)));
+        return std::isfinite(l) ? float(l) : 0.0f;
+    };
+    double sum = 0.0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) sum += luminance(x, y);
+    const double mean = sum / (double(width) * height);
+    if (!(mean > 0.0)) return {};
+    std::vector<std::pair<float, std::uint32_t>> over;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            float largest = 0.0f;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
+                    largest = std::max(largest, std::abs(luminance(x, y) - luminance(nx, ny)));
+                }
+            if (largest > float(contrast * mean)) {
+                over.push_back({largest, std::uint32_t(std::size_t(y) * width + x)});
+            }
+        }
+    const std::size_t cap = std::size_t(maxShare * double(width) * height);
+    if (over.size() > cap) {
+        std::sort(over.begin(), over.end(), [](const auto& a, const auto& b) {
+            return a.first != b.first ? a.first > b.first : a.second < b.second;
+        });
+        over.resize(cap);
+    }
+    std::vector<std::uint32_t> out;
+    for (const auto& [difference, pixel] : over) out.push_back(pixel);
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+TEST(AdaptiveSamples, MatchesTheRulePixelByPixelOnRandomImages) {
+    // Sizes down to one pixel and one row or column (every pixel on an edge), random levels with
+    // repeated values (ties at the cap), a few non-finite pixels (black to the rule), contrasts
+    // that refine few or many and caps that bind or not.
+    std::uint32_t state = 12345u;
+    const auto next = [&state] {
+        state = state * 1664525u + 1013904223u;
+        return state >> 8;
+    };
+    const int sizes[][2] = {{1, 1}, {1, 9}, {9, 1}, {2, 2}, {3, 5}, {37, 23}, {64, 48}};
+    for (const auto& size : sizes) {
+        for (const double contrast : {0.0, 0.5, 2.0}) {
+            for (const double maxShare : {1.0, 1.0 / 32.0, 0.2}) {
+                Image image(size[0], size[1], 3);
+                for (int y = 0; y < size[1]; ++y)
+                    for (int x = 0; x < size[0]; ++x) {
+                        for (int c = 0; c < 3; ++c) {
+                            image.at(x, y, c) = float(next() % 5) * 0.25f;
+                        }
+                        if (next() % 97 == 0) image.at(x, y, next() % 3) = std::nanf("");
+                        if (next() % 89 == 0) image.at(x, y, 0) = INFINITY;
+                    }
+                EXPECT_EQ(adaptivePixels(image, contrast, maxShare),
+                          adaptivePixelsByTheRule(image, contrast, maxShare))
+                    << size[0] << "x" << size[1] << " contrast " << contrast << " cap " << maxShare;
+            }
+        }
+    }
 }
 
 TEST(AdaptiveSamples, OnlyWhenMoreThanTheFirstPass) {
