@@ -28,4 +28,23 @@ inline std::unique_ptr<RadianceCascades::State> buildCascadeState(
     return state;
 }
 
+// Runs `passes` lighting passes on two states of one world that differ in how a pass reads them
+// (its demand, its shared codes) and expects the same irradiance to the bit, in a world mostly
+// lit.
+inline void expectSameLightAfterPasses(RadianceCascades::State& a, RadianceCascades::State& b,
+                                       int passes) {
+    for (int i = 0; i < passes; ++i) {
+        cascades::lightingPass(a);
+        cascades::lightingPass(b);
+    }
+    ASSERT_EQ(a.faces.irradiance.size(), b.faces.irradiance.size());
+    int lit = 0;
+    for (std::size_t f = 0; f < b.faces.irradiance.size(); ++f) {
+        for (int c = 0; c < 3; ++c)
+            ASSERT_EQ(a.faces.irradiance[f][c], b.faces.irradiance[f][c]) << f;
+        lit += b.faces.irradiance[f][0] > 0.0f;
+    }
+    EXPECT_GT(lit, int(b.faces.irradiance.size()) / 2);  // not a dark world
+}
+
 }  // namespace luxel::voxel::test

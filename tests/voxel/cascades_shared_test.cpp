@@ -52,23 +52,6 @@ Kinds kindsOf(const RadianceCascades::State& state) {
     return kinds;
 }
 
-// Runs `passes` passes on both states and expects the same irradiance to the bit.
-void expectSameLight(RadianceCascades::State& shared, RadianceCascades::State& plain, int passes) {
-    for (int i = 0; i < passes; ++i) {
-        lightingPass(shared);
-        lightingPass(plain);
-    }
-    ASSERT_EQ(shared.faces.irradiance.size(), plain.faces.irradiance.size());
-    int lit = 0;
-    for (std::size_t f = 0; f < plain.faces.irradiance.size(); ++f) {
-        for (int c = 0; c < 3; ++c) {
-            ASSERT_EQ(shared.faces.irradiance[f][c], plain.faces.irradiance[f][c]) << f;
-        }
-        lit += plain.faces.irradiance[f][0] > 0.0f;
-    }
-    EXPECT_GT(lit, int(plain.faces.irradiance.size()) / 2);  // not a dark world
-}
-
 // New sun and sky, as RadianceCascades::setLight sets them when no segment changes.
 void newLight(RadianceCascades::State& state, const ShadeOptions& shading) {
     state.shading = shading;
@@ -88,14 +71,14 @@ TEST(CascadesShared, SharedCodesGiveTheLightOfEveryCodeOnTheCottage) {
     EXPECT_GT(kinds.face, 0);
     EXPECT_GT(kinds.passage, 0);  // a window's chain, walked once for all its corners
     clearShared(*plain);
-    expectSameLight(*shared, *plain, 3);
+    expectSameLightAfterPasses(*shared, *plain, 3);
 
     ShadeOptions evening = scene->shading;
     evening.sunDirection = {-0.7f, 0.35f, 0.2f};
     evening.skyTop = evening.skyTop * 0.5f;
     newLight(*shared, evening);
     newLight(*plain, evening);
-    expectSameLight(*shared, *plain, 2);
+    expectSameLightAfterPasses(*shared, *plain, 2);
 }
 
 TEST(CascadesShared, SharedCodesGiveTheLightOfEveryCodeUnderGlass) {
@@ -109,14 +92,14 @@ TEST(CascadesShared, SharedCodesGiveTheLightOfEveryCodeUnderGlass) {
     EXPECT_GT(shared->passages.size(), 0u);
     EXPECT_GT(kindsOf(*shared).passage, 0);
     clearShared(*plain);
-    expectSameLight(*shared, *plain, 3);
+    expectSameLightAfterPasses(*shared, *plain, 3);
 
     ShadeOptions low = shading;
     low.sunDirection = {-0.5f, 0.3f, 0.6f};
     low.skyModel = ShadeOptions::SkyModel::Preetham;
     newLight(*shared, low);
     newLight(*plain, low);
-    expectSameLight(*shared, *plain, 3);
+    expectSameLightAfterPasses(*shared, *plain, 3);
 }
 
 }  // namespace
