@@ -102,4 +102,41 @@ TEST(CascadesShared, SharedCodesGiveTheLightOfEveryCodeUnderGlass) {
     expectSameLightAfterPasses(*shared, *plain, 3);
 }
 
+TEST(CascadesShared, StreamsThatWouldPassTheMemoryLimitAreNotMade) {
+    auto scene =
+        loadVoxelScene(std::string(LUXEL_SOURCE_DIR) + "/scenes/voxel/cottage.json", 64, 36);
+    ASSERT_TRUE(scene.ok()) << scene.error().message();
+    auto shared = buildCascadeState(scene->world, &scene->textures, scene->shading);
+    auto tight = buildCascadeState(scene->world, &scene->textures, scene->shading);
+    ASSERT_FALSE(tight->faces.shared.empty());
+    // (Each state numbers its passages as its cast found them: the streams are compared with the
+    // state's own.)
+    const std::vector<std::uint32_t> faceShared = tight->faces.shared,
+                                     faceMixed = tight->faces.mixed;
+    std::vector<std::vector<std::uint32_t>> levelShared, levelMixed;
+    for (const LevelData& level : tight->levels) {
+        levelShared.push_back(level.shared);
+        levelMixed.push_back(level.mixed);
+    }
+    // No room beside the estimate and the passages: none made, the old ones freed.
+    tight->memoryLimit = tight->plannedBytes + tight->passages.size() * sizeof(Passage);
+    EXPECT_FALSE(findSharedCodes(*tight));
+    EXPECT_TRUE(tight->faces.shared.empty() && tight->faces.mixed.empty());
+    EXPECT_EQ(tight->faces.shared.capacity(), 0u);
+    for (const LevelData& level : tight->levels) {
+        EXPECT_TRUE(level.shared.empty() && level.mixed.empty() && level.sharedStart.empty());
+    }
+    // The pass merges from the codes: the same light.
+    expectSameLightAfterPasses(*shared, *tight, 2);
+    // With room again they are made, the same as at the build.
+    tight->memoryLimit = shared->memoryLimit;
+    EXPECT_TRUE(findSharedCodes(*tight));
+    EXPECT_EQ(tight->faces.shared, faceShared);
+    EXPECT_EQ(tight->faces.mixed, faceMixed);
+    for (std::size_t k = 0; k < tight->levels.size(); ++k) {
+        EXPECT_EQ(tight->levels[k].shared, levelShared[k]) << k;
+        EXPECT_EQ(tight->levels[k].mixed, levelMixed[k]) << k;
+    }
+}
+
 }  // namespace

@@ -41,9 +41,10 @@ inline std::uint32_t weightedCorners(const Corners& corners) {
 
 // Fills each level's `shared`, `mixed` and `sharedStart` and the faces' `shared`, `mixed` and
 // `mixedStart` (cascade_state.h) from the codes, corners and demand (after findDemand;
-// castSegments calls it). Clearing them makes the pass merge from the codes alone, as it did
-// before.
-void findSharedCodes(RadianceCascades::State& state);
+// castSegments calls it). Counts them first: where they would take the cascades past
+// State::memoryLimit beside State::plannedBytes and the passages, leaves them empty and returns
+// false, and the pass merges from the codes alone, as it did before (the same light, slower).
+bool findSharedCodes(RadianceCascades::State& state);
 
 // Where a merge reads the next entry's shared code and, for a kMixed one, its eight codes.
 struct SharedCursor {
