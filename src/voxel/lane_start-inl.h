@@ -16,6 +16,7 @@
 
 #include "voxel/cast_stream.h"
 #include "voxel/fast_walk.h"
+#include "voxel/lane_clip-inl.h"
 #include "voxel/lane_state-inl.h"
 
 HWY_BEFORE_NAMESPACE();
@@ -76,7 +77,6 @@ HWY_INLINE std::size_t StartRays(D d, const Walk& walk, const Ray* rays, std::si
     V o[3], dir[3], inv[3];
     M flat[3];
     M reject = hn::Lt(hn::Load(d, ray[kRay]), zero);
-    V tEnter = hn::Neg(inf), tExit = inf, enterAxis = minusOne;
     for (int a = 0; a < 3; ++a) {
         o[a] = hn::Load(d, ray[kOx + a]);
         dir[a] = hn::Load(d, ray[kDx + a]);
@@ -84,17 +84,9 @@ HWY_INLINE std::size_t StartRays(D d, const Walk& walk, const Ray* rays, std::si
         flat[a] = hn::Eq(dir[a], zero);
         const M inside = hn::And(hn::Ge(o[a], zero), hn::Lt(o[a], sizes[a]));
         reject = hn::Or(reject, hn::AndNot(inside, flat[a]));
-        V t0 = hn::Mul(hn::Sub(zero, o[a]), inv[a]);
-        V t1 = hn::Mul(hn::Sub(sizes[a], o[a]), inv[a]);
-        const M swap = hn::Gt(t0, t1);
-        const V near = hn::IfThenElse(swap, t1, t0);
-        t1 = hn::IfThenElse(swap, t0, t1);
-        t0 = near;
-        const M enter = hn::AndNot(flat[a], hn::Ge(t0, tEnter));
-        tEnter = hn::IfThenElse(enter, t0, tEnter);
-        enterAxis = hn::IfThenElse(enter, hn::Set(d, a), enterAxis);
-        tExit = hn::IfThenElse(hn::AndNot(flat[a], hn::Lt(t1, tExit)), t1, tExit);
     }
+    V tEnter, tExit, enterAxis;
+    ClipToWorld(d, o, inv, sizes, flat, tEnter, tExit, enterAxis);
     const V t0 = hn::IfThenElse(hn::Lt(tEnter, zero), zero, tEnter);  // max(tEnter, 0)
     reject = hn::Or(reject, hn::Or(hn::Gt(tEnter, tExit), hn::Lt(tExit, t0)));
     reject = hn::Or(reject, hn::And(hn::Eq(tExit, t0), hn::Lt(tEnter, t0)));

@@ -14,8 +14,8 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 
+#include "voxel/lane_clip-inl.h"
 #include "voxel/tile_start.h"
 
 // The rays are read as six consecutive doubles each: origin, then direction.
@@ -37,7 +37,6 @@ void StartAtPlane(const VoxelWorld& world, const Ray* rays, std::size_t count, S
     constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
     const Int3 size = world.size();
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0), minusOne = hn::Set(d, -1.0);
-    const V inf = hn::Set(d, std::numeric_limits<double>::infinity());
     const V vtMax = hn::Set(d, tMax);
     // 1 / d overflows for 0 < |d| <= 2^-1024 (fast::eligible): such lanes and zero components
     // are left to the one-ray walk.
@@ -61,20 +60,11 @@ void StartAtPlane(const VoxelWorld& world, const Ray* rays, std::size_t count, S
             inv[a] = hn::Div(one, dir[a]);
             oneRay = hn::Or(oneRay, hn::Not(hn::Gt(hn::Abs(dir[a]), smallest)));
         }
-        // voxelStart's slab clip (no zero components here).
-        V tEnter = hn::Neg(inf), tExit = inf, enterAxis = minusOne;
-        for (int a = 0; a < 3; ++a) {
-            V t0 = hn::Mul(hn::Sub(zero, o[a]), inv[a]);
-            V t1 = hn::Mul(hn::Sub(sizes[a], o[a]), inv[a]);
-            const M swap = hn::Gt(t0, t1);
-            const V near = hn::IfThenElse(swap, t1, t0);
-            t1 = hn::IfThenElse(swap, t0, t1);
-            t0 = near;
-            const M enter = hn::Ge(t0, tEnter);
-            tEnter = hn::IfThenElse(enter, t0, tEnter);
-            enterAxis = hn::IfThenElse(enter, hn::Set(d, a), enterAxis);
-            tExit = hn::IfThenElse(hn::Lt(t1, tExit), t1, tExit);  // min(tExit, t1)
-        }
+        // voxelStart's slab clip (no zero components here: those lanes take the one-ray walk).
+        const M none = hn::Lt(zero, zero);
+        const M flat[3] = {none, none, none};
+        V tEnter, tExit, enterAxis;
+        ClipToWorld(d, o, inv, sizes, flat, tEnter, tExit, enterAxis);
         const V t0 = hn::IfThenElse(hn::Lt(tEnter, zero), zero, tEnter);  // max(tEnter, 0)
         M missed = hn::Or(hn::Gt(tEnter, tExit), hn::Lt(tExit, t0));
         missed = hn::Or(missed, hn::And(hn::Eq(tExit, t0), hn::Lt(tEnter, t0)));
