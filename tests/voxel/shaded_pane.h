@@ -41,6 +41,20 @@ inline ShadedPane shadePaneTop(const ShadeOptions& options, Vec3d direction, int
     return out;
 }
 
+// No light but what the test hands the pane's rays, the pane a metal of `roughness` (texture slot
+// 0 of paneOverAFloor's pane).
+inline ShadeOptions metalPaneOptions(float roughness) {
+    ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
+    EXPECT_TRUE(o.materials.setSlot(0, metal(roughness, Rgb(0.9f, 0.8f, 0.7f))).ok());
+    return o;
+}
+
+// Light along a ray that depends on its direction, differently in each channel: a surface's
+// rays bring different light, so which rays were taken shows in the radiance.
+inline Rgb lightVaryingWithDirection(const Ray& r) {
+    return Rgb(float(1.0 + 3.0 * r.direction.x), 1.0f, float(1.0 + 5.0 * r.direction.z));
+}
+
 // The same radiance to the bit, channel by channel.
 inline void expectSameRgb(const Rgb& a, const Rgb& b) {
     EXPECT_EQ(a.r, b.r);

@@ -20,13 +20,9 @@ using namespace luxel::voxel::test;
 // The top of paneOverAFloor's pane, a metal of `roughness`, seen obliquely from above, the light
 // along each ray leaving it depending on its direction.
 ShadedPane shadeMetal(float roughness, int specularRays, bool sharpOneRay) {
-    ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
-    EXPECT_TRUE(o.materials.setSlot(0, metal(roughness, Rgb(0.9f, 0.8f, 0.7f))).ok());
     return shadePaneTop(
-        o, normalize(Vec3d{0.5, -0.8, 0.2}), specularRays,
-        [](const Ray& r) {
-            return Rgb(float(1.0 + 3.0 * r.direction.x), 1.0f, float(1.0 + 5.0 * r.direction.z));
-        },
+        metalPaneOptions(roughness), normalize(Vec3d{0.5, -0.8, 0.2}), specularRays,
+        lightVaryingWithDirection,
         [sharpOneRay](SolverLight& light) { light.sharpLobeOneRay = sharpOneRay; },
         PathRng(7, 3, 0));
 }
@@ -61,10 +57,9 @@ TEST(SolverSharpLobe, RougherLobesAndOtherCallersKeepEveryDirection) {
 // the light samples find with density `lightDensity`; `samples` counts the light samples drawn
 // (each bringing 0.25).
 Rgb shadeWithALamp(float roughness, double lightDensity, int* samples) {
-    ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
-    EXPECT_TRUE(o.materials.setSlot(0, metal(roughness, Rgb(0.9f, 0.8f, 0.7f))).ok());
     return shadePaneTop(
-               o, normalize(Vec3d{0.5, -0.8, 0.2}), 2, [](const Ray&) { return Rgb(1.0f); },
+               metalPaneOptions(roughness), normalize(Vec3d{0.5, -0.8, 0.2}), 2,
+               [](const Ray&) { return Rgb(1.0f); },
                [lightDensity, samples](SolverLight& light) {
                    light.sharpLobeOneRay = true;
                    light.glossyAlong = [lightDensity](const Ray&) {

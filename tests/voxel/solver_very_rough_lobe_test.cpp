@@ -23,13 +23,9 @@ using namespace luxel::voxel::test;
 // its GGX directions leave above the face), the light along each ray leaving it depending on its
 // direction.
 ShadedPane shadeRough(float roughness, int specularRays, bool roughOneRay) {
-    ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
-    EXPECT_TRUE(o.materials.setSlot(0, metal(roughness, Rgb(0.9f, 0.8f, 0.7f))).ok());
     return shadePaneTop(
-        o, normalize(Vec3d{0.1, -1.0, 0.05}), specularRays,
-        [](const Ray& r) {
-            return Rgb(float(1.0 + 3.0 * r.direction.x), 1.0f, float(1.0 + 5.0 * r.direction.z));
-        },
+        metalPaneOptions(roughness), normalize(Vec3d{0.1, -1.0, 0.05}), specularRays,
+        lightVaryingWithDirection,
         [roughOneRay](SolverLight& light) { light.roughLobeOneRay = roughOneRay; },
         PathRng(7, 3, 0));
 }
@@ -90,12 +86,6 @@ OneDirection oneDirectionOver(const ShadeOptions& o, Vec3d direction, const Ligh
             std::sqrt(squares - mean[0] * mean[0])};
 }
 
-ShadeOptions defaultRoughMetal() {
-    ShadeOptions o = plainLight(0.5f, Rgb(0.0f), Rgb(0.0f));
-    EXPECT_TRUE(o.materials.setSlot(0, metal(0.7f, Rgb(0.9f, 0.8f, 0.7f))).ok());
-    return o;
-}
-
 TEST(SolverVeryRoughLobe, OneDirectionsMeanIsTheLobesLight) {
     // Grey light growing towards the horizon, where GGX's sampling weight w = G2 / G1 is
     // smallest: the mean of one direction, with no control variate and with one, against the
@@ -104,7 +94,7 @@ TEST(SolverVeryRoughLobe, OneDirectionsMeanIsTheLobesLight) {
         const double up = 1.0 - r.direction.y;
         return Rgb(float(1.0 + 8.0 * up * up));
     };
-    const ShadeOptions o = defaultRoughMetal();
+    const ShadeOptions o = metalPaneOptions(0.7f);
     const Vec3d direction = normalize(Vec3d{0.6, -1.0, 0.2});
     const OneDirection plain = oneDirectionOver(o, direction, lightAlong, 0.0f);
     const OneDirection varied = oneDirectionOver(o, direction, lightAlong, 1.5f);
@@ -150,7 +140,7 @@ TEST(SolverVeryRoughLobe, TheDiffuseLightNarrowsOneDirectionsSpread) {
     // Light that varies little (a sky), where the spread of one direction is mostly that of w:
     // E / pi near L takes it away, and the mean stays.
     const auto lightAlong = [](const Ray& r) { return Rgb(float(2.0 + 0.5 * r.direction.x)); };
-    const ShadeOptions o = defaultRoughMetal();
+    const ShadeOptions o = metalPaneOptions(0.7f);
     const Vec3d direction = normalize(Vec3d{0.6, -1.0, 0.2});
     const OneDirection plain = oneDirectionOver(o, direction, lightAlong, 0.0f);
     const OneDirection varied = oneDirectionOver(o, direction, lightAlong, 2.0f);
