@@ -121,7 +121,8 @@ void updateStats(RadianceCascades::State& state) {
                   (state.faces.codes.size() + state.faces.shared.size() + state.faces.mixed.size() +
                    state.faces.mixedStart.size()) *
                       4 +
-                  state.passages.size() * sizeof(Passage) + state.sunRayMap.bytes();
+                  state.faces.skyOnly.size() + state.passages.size() * sizeof(Passage) +
+                  state.sunRayMap.bytes();
     for (const LevelData& level : state.levels) {
         stats.probes += level.level.probeCount();
         stats.segments += std::int64_t(level.codes.size());

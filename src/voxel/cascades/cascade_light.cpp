@@ -160,6 +160,37 @@ Rgb mergeEntry(SharedCursor& at, const std::uint32_t* codes, const Corners& corn
     return mergeShared(shared, codes, corners, live, passages, outgoing, sky, next);
 }
 
+// A face's weighted corners as rows of level 0's radiance, in mergeShared's order, and the
+// normaliser of the bins where they all continue: such a bin's mean without reading the corners'
+// probes and weights again, the same sums in the same order (the same bits).
+class CornerRows {
+  public:
+    CornerRows() = default;
+    CornerRows(const Corners& corners, std::uint32_t live, const std::vector<Rgb>& radiance,
+               int bins) {
+        float weight = 0.0f;
+        for (; live != 0; live &= live - 1) {
+            const int c = std::countr_zero(live);
+            row_[count_] = radiance.data() + std::size_t(corners.probe[c]) * bins;
+            weight_[count_++] = corners.weight[c];
+            weight += corners.weight[c];
+        }
+        inverse_ = weight > 0.0f ? 1.0f / weight : 0.0f;
+    }
+    // mergeShared's mean for a bin `b` where every weighted corner continues.
+    Rgb mean(int b) const {
+        Rgb sum;
+        for (int j = 0; j < count_; ++j) sum += row_[j][b] * weight_[j];
+        return sum * inverse_;
+    }
+
+  private:
+    const Rgb* row_[8];
+    float weight_[8];
+    int count_ = 0;
+    float inverse_ = 0.0f;
+};
+
 // Merges level k's demanded entries (cascade_demand.h), the levels above already merged: on
 // level 0 its radiance, which the faces gather; above it only the child means that the level
 // below reads, each found from its four children as they are merged (kept in registers, not
@@ -176,10 +207,15 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
         upper && !data.shared.empty() && data.sharedStart.size() == data.demandProbes.size();
     // What bin b of probe p (its weighted corners `live`) brings: the top level's own segment, or
     // the weighted mean over the corners of what each chain reaches (`at` walks the shared codes).
-    const auto binRadiance = [&](int p, std::uint32_t live, SharedCursor& at, int b) {
+    const auto binRadiance = [&](int p, std::uint32_t live, SharedCursor& at, int b,
+                                 const CornerRows& rows) {
         if (!upper) {
             return chainRadiance(data.codes[std::size_t(p) * bins + b], passages, outgoing,
                                  data.sky[b], [] { return Rgb{}; });
+        }
+        if (at.shared && *at.shared == kContinue) {
+            ++at.shared;
+            return rows.mean(b);
         }
         const Corners& corners = data.corners[p];
         return mergeEntry(at, &data.codes[(std::size_t(p) * bins + b) * 8], corners, live, passages,
@@ -195,6 +231,8 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
         for (int i = begin; i < end; ++i) {
             const int p = demanded[i];
             const std::uint32_t live = upper ? weightedCorners(data.corners[p]) : 0;
+            const CornerRows rows =
+                upper ? CornerRows(data.corners[p], live, upper->childMean, bins) : CornerRows();
             SharedCursor at;
             if (hasShared) {
                 const LevelData::SharedStart& start = data.sharedStart[std::size_t(i)];
@@ -203,7 +241,7 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
             Rgb* row = &out[std::size_t(p) * entries];
             forEachDemanded(&data.demand[std::size_t(p) * words], words, [&](int e) {
                 if (!below) {
-                    row[e] = binRadiance(p, live, at, e);
+                    row[e] = binRadiance(p, live, at, e, rows);
                     return;
                 }
                 // The solid-angle mean of bin e's children here.
@@ -211,7 +249,7 @@ void mergeLevel(RadianceCascades::State& state, std::size_t k) {
                 double area = 0.0;
                 for (const int child : below->children(e)) {
                     const double a = data.bins.solidAngle[child];
-                    sum += binRadiance(p, live, at, child) * float(a);
+                    sum += binRadiance(p, live, at, child, rows) * float(a);
                     area += a;
                 }
                 row[e] = sum * float(1.0 / area);
@@ -328,9 +366,22 @@ double lightingPass(RadianceCascades::State& state) {
 
     const LevelData& level0 = state.levels.front();
     const int bins = level0.bins.count();
+    // What a face that sees only sky gathers (FaceData::skyOnly), per normal.
+    Rgb skyIrradiance[6];
+    for (int n = 0; n < 6; ++n) {
+        const auto& seen = faces.bins.cosine[n];
+        for (std::size_t i = 0; i < seen.bin.size(); ++i) {
+            skyIrradiance[n] += faces.sky[seen.bin[i]] * seen.weight[i];
+        }
+    }
+    const bool skyOnlyKnown = faces.skyOnly.size() == std::size_t(count);
     std::vector<Rgb> gathered(count);
     parallelForRange(count, 64, [&](int begin, int end) {
         for (int f = begin; f < end; ++f) {
+            if (skyOnlyKnown && faces.skyOnly[f]) {
+                gathered[f] = skyIrradiance[faces.table[f].normal];
+                continue;
+            }
             const auto& seen = faces.bins.cosine[faces.table[f].normal];
             const std::uint32_t* codes = &faces.codes[faces.codeOffset[f]];
             const Corners& corners = faces.corners[f];
@@ -340,9 +391,15 @@ double lightingPass(RadianceCascades::State& state) {
                 at = {&faces.shared[faces.codeOffset[f] / 8],
                       faces.mixed.data() + faces.mixedStart[f]};
             }
+            const CornerRows rows(corners, live, level0.radiance, bins);
             Rgb irradiance;
             for (std::size_t i = 0; i < seen.bin.size(); ++i) {
                 const int b = seen.bin[i];
+                if (at.shared && *at.shared == kContinue) {
+                    ++at.shared;
+                    irradiance += rows.mean(b) * seen.weight[i];
+                    continue;
+                }
                 const Rgb incoming =
                     mergeEntry(at, codes + i * 8, corners, live, state.passages, faces.outgoing,
                                faces.sky[b], [&](int c) {

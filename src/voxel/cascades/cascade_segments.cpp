@@ -7,6 +7,7 @@
 // start), so each chain of segments is an unbroken path and a wall anywhere on it stops the
 // light. The straight part, shared by the eight corners, samples the bin along its own
 // direction; only the short connector bends towards the corner.
+#include <bit>
 #include <cmath>
 #include <string>
 
@@ -132,6 +133,19 @@ void layOutFaces(FaceData& faces) {
     faces.codeOffset[count] = offset;
     faces.codes.assign(offset, kVoid);
     faces.corners.assign(std::size_t(count), Corners{});
+    faces.skyOnly.assign(std::size_t(count), 0);
+}
+
+// Whether every weighted corner of every bin of the face's codes leaves the world at once.
+bool seesOnlySky(const std::uint32_t* codes, std::size_t bins, const Corners& corners) {
+    const std::uint32_t live = weightedCorners(corners);
+    if (live == 0) return false;  // gathers nothing
+    for (std::size_t i = 0; i < bins; ++i) {
+        for (std::uint32_t l = live; l != 0; l &= l - 1) {
+            if (codes[i * 8 + std::countr_zero(l)] != kSky) return false;
+        }
+    }
+    return true;
 }
 
 void castFaces(RadianceCascades::State& state, PassageWriter& passages) {
@@ -156,6 +170,7 @@ void castFaces(RadianceCascades::State& state, PassageWriter& passages) {
                                  faces.bins.centre[seen.bin[i]] * level0.tStart, level0,
                                  faces.corners[f], codes + i * 8);
             }
+            faces.skyOnly[f] = seesOnlySky(codes, seen.bin.size(), faces.corners[f]);
         }
     });
 }

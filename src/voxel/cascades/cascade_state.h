@@ -84,6 +84,10 @@ struct FaceData {
     // (cascade_shared.h); `mixed`, the eight codes of each kMixed bin, face by face (face f's from
     // mixedStart[f]). Empty where cleared.
     std::vector<std::uint32_t> shared, mixed, mixedStart;
+    // Per face: 1 where every chain it gathers leaves the world at once (all its weighted corners'
+    // codes kSky in every bin: the faces on the world's floor and outer walls, over half of the
+    // terrain's), so its irradiance is its normal's sky irradiance, the same each pass.
+    std::vector<std::uint8_t> skyOnly;
     std::vector<Rgb> albedo, emission;
     // Mean transmittance of the face's rays over the sun's disk (0 blocked, 1 open, a colour
     // through glass: sunRayTransmittance, solver_sun.h).
