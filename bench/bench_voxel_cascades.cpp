@@ -1,8 +1,8 @@
 // Voxel radiance cascades (docs/algorithms/voxel-radiance-cascades.md): the parts of a real-time
 // frame on a shipped scene, in CPU time: one lighting pass (a bounce), the picture at 640x360 and
-// a whole frame (a pass and the picture) on each shipped scene (the five small ones and the
-// 256x96x256 terrain, whose cascades take about 5 s and 860 MiB to build), and the one-off build
-// on the cottage.
+// a whole frame (a pass and the picture) on each shipped scene (the five small ones and the three
+// 256x96x256 terrains, whose cascades take about 5 s and 860 MiB each to build), and the one-off
+// build on the cottage.
 // `--benchmark_filter=voxel_cascades`; the CPU column is the whole
 // process (all threads): on an idle 2-core machine a frame takes about half of it. The `_gpu`
 // benchmarks time the same pass, picture and frame of each scene on the GPU by its timestamps
@@ -165,7 +165,8 @@ BENCHMARK(BM_VoxelCascadesBuild)
     ->MeasureProcessCPUTime()
     ->Unit(benchmark::kMillisecond);
 // voxel_cascades/<kind>/<scene>: each shipped scene's pass, then picture, then frame.
-constexpr const char* kScenes[] = {"cottage", "fence", "garden", "glass", "thin-walls", "terrain"};
+constexpr const char* kScenes[] = {"cottage",    "fence",   "garden",          "glass",
+                                   "thin-walls", "terrain", "terrain-evening", "terrain-direct"};
 const bool kSceneBenchmarks = [] {
     using Run = void (*)(benchmark::State&, const std::string&);
     const std::pair<const char*, Run> kinds[] = {{"pass", BM_VoxelCascadesPass},
