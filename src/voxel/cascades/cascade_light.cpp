@@ -160,9 +160,10 @@ Rgb mergeEntry(SharedCursor& at, const std::uint32_t* codes, const Corners& corn
     return mergeShared(shared, codes, corners, live, passages, outgoing, sky, next);
 }
 
-// A face's weighted corners as rows of level 0's radiance, in mergeShared's order, and the
-// normaliser of the bins where they all continue: such a bin's mean without reading the corners'
-// probes and weights again, the same sums in the same order (the same bits).
+// The weighted corners of a face or a probe as rows of what the level above sends (level 0's
+// radiance for a face, the child means for a probe), in mergeShared's order, and the normaliser
+// of the bins where they all continue: such a bin's mean without reading the corners' probes and
+// weights again, the same sums in the same order (the same bits).
 class CornerRows {
   public:
     CornerRows() = default;
