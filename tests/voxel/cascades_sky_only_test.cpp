@@ -30,16 +30,7 @@ bool looksOutOfTheWorld(const VoxelWorld& world, const Face& face) {
 void expectTheLightOfTheBinByBinGather(RadianceCascades::State& fast,
                                        RadianceCascades::State& binByBin, int passes) {
     binByBin.faces.skyOnly.assign(binByBin.faces.skyOnly.size(), 0);
-    for (int i = 0; i < passes; ++i) {
-        lightingPass(fast);
-        lightingPass(binByBin);
-    }
-    ASSERT_EQ(fast.faces.irradiance.size(), binByBin.faces.irradiance.size());
-    for (std::size_t f = 0; f < fast.faces.irradiance.size(); ++f) {
-        const Rgb a = fast.faces.irradiance[f], b = binByBin.faces.irradiance[f];
-        const float scale = std::max(b.maxComponent(), 1e-6f);
-        for (int c = 0; c < 3; ++c) ASSERT_NEAR(a[c], b[c], 2e-6f * scale) << f << " " << c;
-    }
+    expectSameLightAfterPasses(fast, binByBin, passes, 2e-6f);
 }
 
 TEST(CascadesSkyOnly, FacesOnTheWorldsOuterSidesGatherTheSkyOnce) {

@@ -114,17 +114,10 @@ Rgb mergeShared(std::uint32_t shared, const std::uint32_t* codes, const Corners&
                 std::uint32_t live, const std::vector<Passage>& passages,
                 const std::vector<Rgb>& outgoing, Rgb sky, Next&& next) {
     if (shared == kVoid) return Rgb{};
-    Rgb sum;
-    float weight = 0.0f;
-    if (shared == kContinue) {
-        for (; live != 0; live &= live - 1) {
-            const int c = std::countr_zero(live);
-            const float w = corners.weight[c];
-            sum += next(c) * w;
-            weight += w;
-        }
-        return weight > 0.0f ? sum * (1.0f / weight) : Rgb{};
-    }
+    // The passes take these from CornerRows before they call mergeEntry (the same test inside
+    // mergeEntry left the terrain's pass about 5% slower); here they are merged from the codes.
+    if (shared == kContinue)
+        return mergeCorners(codes, corners, live, passages, outgoing, sky, next);
     Rgb radiance;  // what the shared chain brings, the same at every corner
     if (!isPassage(shared)) {
         radiance = codeRadiance(shared, outgoing, sky, Rgb{});
@@ -136,6 +129,8 @@ Rgb mergeShared(std::uint32_t shared, const std::uint32_t* codes, const Corners&
         }
         radiance = walk.light + walk.through * codeRadiance(walk.end, outgoing, sky, Rgb{});
     }
+    Rgb sum;
+    float weight = 0.0f;
     for (; live != 0; live &= live - 1) {
         const float w = corners.weight[std::countr_zero(live)];
         sum += radiance * w;
@@ -161,9 +156,9 @@ Rgb mergeEntry(SharedCursor& at, const std::uint32_t* codes, const Corners& corn
 }
 
 // The weighted corners of a face or a probe as rows of what the level above sends (level 0's
-// radiance for a face, the child means for a probe), in mergeShared's order, and the normaliser
-// of the bins where they all continue: such a bin's mean without reading the corners' probes and
-// weights again, the same sums in the same order (the same bits).
+// radiance for a face, the child means for a probe), in mergeCorners' order, and the normaliser
+// of the bins where they all continue: such a bin's mean without reading the corners' codes,
+// probes and weights again, the same sums in the same order (the same bits).
 class CornerRows {
   public:
     CornerRows() = default;
@@ -178,7 +173,7 @@ class CornerRows {
         }
         inverse_ = weight > 0.0f ? 1.0f / weight : 0.0f;
     }
-    // mergeShared's mean for a bin `b` where every weighted corner continues.
+    // mergeCorners' mean for a bin `b` where every weighted corner continues.
     Rgb mean(int b) const {
         Rgb sum;
         for (int j = 0; j < count_; ++j) sum += row_[j][b] * weight_[j];

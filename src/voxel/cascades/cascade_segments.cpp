@@ -7,7 +7,6 @@
 // start), so each chain of segments is an unbroken path and a wall anywhere on it stops the
 // light. The straight part, shared by the eight corners, samples the bin along its own
 // direction; only the short connector bends towards the corner.
-#include <bit>
 #include <cmath>
 #include <string>
 
@@ -136,14 +135,12 @@ void layOutFaces(FaceData& faces) {
     faces.skyOnly.assign(std::size_t(count), 0);
 }
 
-// Whether every weighted corner of every bin of the face's codes leaves the world at once.
+// Whether every weighted corner of every bin of the face's codes leaves the world at once (a
+// face with none gathers nothing: its bins share kVoid).
 bool seesOnlySky(const std::uint32_t* codes, std::size_t bins, const Corners& corners) {
     const std::uint32_t live = weightedCorners(corners);
-    if (live == 0) return false;  // gathers nothing
     for (std::size_t i = 0; i < bins; ++i) {
-        for (std::uint32_t l = live; l != 0; l &= l - 1) {
-            if (codes[i * 8 + std::countr_zero(l)] != kSky) return false;
-        }
+        if (sharedCode(codes + i * 8, live) != kSky) return false;
     }
     return true;
 }
